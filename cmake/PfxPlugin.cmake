@@ -1,0 +1,17 @@
+# pfx_add_plugin(NAME src...): a plugin shared library that exports exactly one symbol
+# (pfx_get_entry), has no "lib" prefix, and lands in build/plugins/ unless OUTPUT_DIR says otherwise.
+# It links nothing that brings GL or a window system: GL comes through the host.
+function(pfx_add_plugin name)
+  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES" ${ARGN})
+  if(NOT ARG_OUTPUT_DIR)
+    set(ARG_OUTPUT_DIR ${PFX_PLUGIN_OUTPUT_DIR})
+  endif()
+  add_library(${name} MODULE ${ARG_SOURCES} ${ARG_UNPARSED_ARGUMENTS})
+  target_link_libraries(${name} PRIVATE pfx::sdk)
+  set_target_properties(${name} PROPERTIES
+    PREFIX ""
+    LIBRARY_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
+  target_link_options(${name} PRIVATE
+    "LINKER:--version-script=${PROJECT_SOURCE_DIR}/cmake/plugin.map"
+    "LINKER:--no-undefined" "LINKER:--as-needed")
+endfunction()
