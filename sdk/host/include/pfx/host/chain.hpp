@@ -1,0 +1,97 @@
+// The chain: an ordered list of effect instances run over the host's framebuffers (DESIGN.md §4).
+// Every call on the GL thread with the context current.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pfx/pfx.h>
+
+#include "pfx/host/api.hpp"
+#include "pfx/host/frame_plan.hpp"
+#include "pfx/host/param_store.hpp"
+#include "pfx/host/plugin_registry.hpp"
+
+namespace pfx::host {
+
+// GL textures of the frame inputs; 0 where the frame has none (frame.inputs must agree).
+// color and the chain's output are RGBA16F textures of the frame's size.
+struct FrameTextures {
+  uint32_t color = 0, depth = 0, normal = 0, albedo = 0, emissive = 0;
+};
+
+enum class Timing {
+  OFF,
+  // GL timestamp queries around every pass; read back at the end of the frame.
+  GPU_QUERIES,
+  // glFinish before and after every pass, CPU clock: serialises the GPU but measures what a
+  // deferred software renderer (llvmpipe) really spends on each pass.
+  FINISH_AND_CLOCK
+};
+
+struct PassTime {
+  std::string effect, pass;
+  double ms = 0;
+};
+
+struct FrameReport {
+  std::vector<std::string> effects_run;      // enabled effects that declared passes, in order
+  std::vector<std::string> effects_skipped;  // disabled, or no-op with their settings
+  std::vector<PassTime> passes;              // every pass that ran (ms = 0 with Timing::OFF)
+  double total_ms = 0;
+  uint64_t peak_target_bytes = 0;            // pooled targets alive during the frame
+  uint64_t unpooled_target_bytes = 0;        // what they would cost without pooling
+  // Per effect that reports figures: its id and the JSON members it returned.
+  std::vector<std::pair<std::string, std::string>> effect_reports;
+};
+
+class PFX_HOST_API Chain {
+ public:
+  Chain(const PluginRegistry& registry, ParamStore& params);
+  // Destroys every instance and pooled GL object: the context must be current.
+  ~Chain();
+  Chain(const Chain&) = delete;
+  Chain& operator=(const Chain&) = delete;
+
+  // Appends an instance of an effect (created now, so its programs compile now) and registers its
+  // parameters in the store if they are not there yet. False with *error on an unknown id or a
+  // failing create.
+  bool add(const std::string& effect_id, std::string* error);
+  size_t size() const;
+  const std::string& effect_id(size_t index) const;
+  void set_enabled(size_t index, bool enabled);
+  bool enabled(size_t index) const;
+  void remove(size_t index);
+  void move(size_t from, size_t to);
+
+  void set_timing(Timing timing) { timing_ = timing; }
+
+  // Runs the enabled effects over the frame: reads textures (as frame.inputs says), writes
+  // output_texture. Effects that declare no passes are skipped at no cost; with none left the
+  // colour is copied. False with *error naming the effect, pass or input on failure.
+  bool render(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture, std::string* error);
+
+  const FrameReport& report() const { return report_; }
+  const FramePlan& plan() const { return plan_; }
+
+ private:
+  struct Instance;
+  struct GlResources;
+  bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
+  bool execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
+               const std::vector<int>& active, std::string* error);
+
+  const PluginRegistry& registry_;
+  ParamStore& params_;
+  std::vector<std::unique_ptr<Instance>> instances_;
+  std::unique_ptr<GlResources> gl_;
+  FramePlan plan_;
+  std::vector<int> planned_active_;  // the instances plan_ was made for
+  bool plan_valid_ = false;
+  Timing timing_ = Timing::GPU_QUERIES;
+  FrameReport report_;
+};
+
+}  // namespace pfx::host

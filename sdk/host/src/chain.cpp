@@ -1,0 +1,315 @@
+#include "pfx/host/chain.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include <glad/gl.h>
+
+#include "gl_pool.hpp"
+
+namespace pfx::host {
+
+struct Chain::Instance {
+  const EffectInfo* info = nullptr;
+  void* handle = nullptr;
+  bool enabled = true;
+  Declaration declaration;
+  bool has_declaration = false;
+};
+
+struct Chain::GlResources {
+  GlPool pool;
+};
+
+namespace {
+
+GLADapiproc load_through_registry(void* user, const char* name) {
+  auto* registry = static_cast<const PluginRegistry*>(user);
+  return reinterpret_cast<GLADapiproc>(registry->gl_loader()(name));
+}
+
+std::string gl_error_text(GLenum error) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "0x%04x", error);
+  return buffer;
+}
+
+}  // namespace
+
+Chain::Chain(const PluginRegistry& registry, ParamStore& params) : registry_(registry), params_(params) {
+  // libpfxhost keeps a private GL function table, loaded through the embedding program's loader.
+  gladLoadGLUserPtr(load_through_registry, const_cast<PluginRegistry*>(&registry_));
+  gl_ = std::make_unique<GlResources>();
+}
+
+Chain::~Chain() {
+  for (auto& instance : instances_) instance->info->desc->destroy(instance->handle);
+  instances_.clear();
+  gl_.reset();
+}
+
+bool Chain::add(const std::string& effect_id, std::string* error) {
+  const EffectInfo* info = registry_.find_effect(effect_id);
+  if (!info) {
+    std::string known;
+    for (const auto& effect : registry_.effects()) known += (known.empty() ? "" : ", ") + std::string(effect.desc->id);
+    if (error) *error = "unknown effect '" + effect_id + "' (loaded: " + (known.empty() ? "none" : known) + ")";
+    return false;
+  }
+  void* handle = nullptr;
+  pfx_status status = info->desc->create(info->plugin->host, &handle);
+  if (status != PFX_OK || !handle) {
+    if (error) *error = "effect '" + effect_id + "' could not be created (status " + std::to_string(status) + ")";
+    return false;
+  }
+  if (!params_.has_effect(effect_id)) params_.add_effect(info->desc);
+  auto instance = std::make_unique<Instance>();
+  instance->info = info;
+  instance->handle = handle;
+  instances_.push_back(std::move(instance));
+  plan_valid_ = false;
+  return true;
+}
+
+size_t Chain::size() const { return instances_.size(); }
+const std::string& Chain::effect_id(size_t index) const {
+  static std::string id;
+  id = instances_.at(index)->info->desc->id;
+  return id;
+}
+void Chain::set_enabled(size_t index, bool enabled) {
+  instances_.at(index)->enabled = enabled;
+  plan_valid_ = false;
+}
+bool Chain::enabled(size_t index) const { return instances_.at(index)->enabled; }
+void Chain::remove(size_t index) {
+  instances_.at(index)->info->desc->destroy(instances_[index]->handle);
+  instances_.erase(instances_.begin() + static_cast<long>(index));
+  plan_valid_ = false;
+}
+void Chain::move(size_t from, size_t to) {
+  auto instance = std::move(instances_.at(from));
+  instances_.erase(instances_.begin() + static_cast<long>(from));
+  instances_.insert(instances_.begin() + static_cast<long>(std::min(to, instances_.size())), std::move(instance));
+  plan_valid_ = false;
+}
+
+bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error) {
+  report_.effects_skipped.clear();
+  report_.effects_run.clear();
+  for (size_t i = 0; i < instances_.size(); ++i) {
+    Instance& instance = *instances_[i];
+    const char* id = instance.info->desc->id;
+    if (!instance.enabled) {
+      report_.effects_skipped.push_back(id);
+      continue;
+    }
+    // declare is cheap by contract, so it runs every frame; only a changed answer re-plans.
+    pfx_declaration raw{};
+    raw.struct_size = sizeof raw;
+    pfx_status status = instance.info->desc->declare(instance.handle, &frame, params_.values(id), &raw);
+    if (status != PFX_OK) {
+      *error = std::string("effect '") + id + "': declare failed (status " + std::to_string(status) + ")";
+      return false;
+    }
+    Declaration declaration;
+    std::string message;
+    if (!copy_declaration(raw, frame.width, frame.height, &declaration, &message)) {
+      *error = std::string("effect '") + id + "': " + message;
+      return false;
+    }
+    if (!instance.has_declaration || !(declaration == instance.declaration)) {
+      instance.declaration = std::move(declaration);
+      instance.has_declaration = true;
+      plan_valid_ = false;
+    }
+    if (instance.declaration.passes.empty()) {
+      report_.effects_skipped.push_back(id);
+      continue;
+    }
+    active->push_back(static_cast<int>(i));
+    report_.effects_run.push_back(id);
+  }
+  return true;
+}
+
+bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
+                   std::string* error) {
+  std::string message;
+  auto fail = [&](const std::string& text) {
+    if (error) *error = text;
+    return false;
+  };
+  if (frame.struct_size < sizeof(pfx_frame)) return fail("pfx_frame struct too small");
+  if (frame.width < 1 || frame.height < 1) return fail("frame size must be at least 1x1");
+  if (!textures.color || !(frame.inputs & PFX_INPUT_COLOR)) return fail("the frame has no colour input");
+  if (!output_texture || output_texture == textures.color) return fail("the output must be its own texture");
+
+  std::vector<int> active;
+  if (!declare_all(frame, &active, &message)) return fail(message);
+  if (!plan_valid_ || active != planned_active_ || plan_.passes.empty() != active.empty()) {
+    std::vector<PlanInput> inputs;
+    for (int index : active) inputs.push_back({instances_[index]->info->desc->id, &instances_[index]->declaration});
+    FramePlan plan;
+    if (!plan_frame(inputs, frame.width, frame.height, frame.inputs, &plan, &message)) return fail(message);
+    plan_ = std::move(plan);
+    planned_active_ = active;
+    plan_valid_ = true;
+    gl_->pool.match(plan_.slots);
+  }
+  report_.peak_target_bytes = plan_.peak_target_bytes;
+  report_.unpooled_target_bytes = plan_.unpooled_target_bytes;
+  return execute(frame, textures, output_texture, active, error);
+}
+
+bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
+                    const std::vector<int>& active, std::string* error) {
+  report_.passes.clear();
+  report_.effect_reports.clear();
+  report_.total_ms = 0;
+  GlPool& pool = gl_->pool;
+
+  while (glGetError() != GL_NO_ERROR) {
+  }  // errors of the embedding program are not ours to report
+  if (active.empty()) {
+    // Every effect is off or a no-op: the output is the input, at the cost of one copy.
+    glCopyImageSubData(textures.color, GL_TEXTURE_2D, 0, 0, 0, 0, output_texture, GL_TEXTURE_2D, 0, 0, 0, 0,
+                       static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height), 1);
+    GLenum gl_error = glGetError();
+    if (gl_error != GL_NO_ERROR) {
+      if (error) *error = "copying colour to the output failed (GL error " + gl_error_text(gl_error) +
+                          "): both must be RGBA16F textures of the frame size";
+      return false;
+    }
+    return true;
+  }
+
+  // The state every pass starts from (docs/sdk.md, "GL state").
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+
+  auto frame_input_texture = [&](const std::string& name) -> GLuint {
+    if (name == PFX_INPUT_NAME_COLOR) return textures.color;
+    if (name == PFX_INPUT_NAME_DEPTH) return textures.depth;
+    if (name == PFX_INPUT_NAME_NORMAL) return textures.normal;
+    if (name == PFX_INPUT_NAME_ALBEDO) return textures.albedo;
+    if (name == PFX_INPUT_NAME_EMISSIVE) return textures.emissive;
+    return 0;
+  };
+  auto resolve = [&](const ResourceRef& ref, uint32_t* width, uint32_t* height, pfx_format* format) -> GLuint {
+    *format = PFX_FORMAT_RGBA16F;
+    if (ref.kind == ResourceRef::POOLED) {
+      const PlannedResource& r = plan_.resources[ref.resource];
+      *width = r.width;
+      *height = r.height;
+      *format = r.format;
+      return pool.texture(r.slot);
+    }
+    *width = frame.width;
+    *height = frame.height;
+    if (ref.kind == ResourceRef::CHAIN_OUTPUT) return output_texture;
+    if (ref.kind == ResourceRef::FRAME_INPUT) return frame_input_texture(ref.frame_input);
+    return 0;
+  };
+
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> cpu_ms;
+  if (timing_ == Timing::GPU_QUERIES) glQueryCounter(pool.query(0), GL_TIMESTAMP);
+  if (timing_ == Timing::FINISH_AND_CLOCK) glFinish();
+
+  std::vector<pfx_bound_texture> bound;
+  for (size_t p = 0; p < plan_.passes.size(); ++p) {
+    const PlannedPass& planned = plan_.passes[p];
+    Instance& instance = *instances_[active[planned.effect]];
+    const DeclaredPass& pass = instance.declaration.passes[planned.pass];
+    const char* effect_id = instance.info->desc->id;
+
+    pfx_pass_context context{};
+    context.struct_size = sizeof context;
+    context.pass_index = static_cast<uint32_t>(planned.pass);
+    context.user_tag = pass.user_tag;
+    context.frame = &frame;
+    context.params = params_.values(effect_id);
+
+    if (planned.output.kind != ResourceRef::NONE) {
+      context.output_texture =
+          resolve(planned.output, &context.output_width, &context.output_height, &context.output_format);
+      context.output_framebuffer = planned.output.kind == ResourceRef::POOLED
+                                       ? pool.framebuffer(plan_.resources[planned.output.resource].slot)
+                                       : pool.framebuffer_for(output_texture);
+      glBindFramebuffer(GL_FRAMEBUFFER, context.output_framebuffer);
+      glViewport(0, 0, static_cast<GLsizei>(context.output_width), static_cast<GLsizei>(context.output_height));
+      if (pass.load == PFX_LOAD_CLEAR) {
+        const GLfloat zero[4] = {0, 0, 0, 0};
+        glClearBufferfv(GL_COLOR, 0, zero);
+      }
+    } else {
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+    if (pass.blend == PFX_BLEND_ADD) glEnable(GL_BLEND);
+    else glDisable(GL_BLEND);
+
+    bound.assign(planned.inputs.size(), pfx_bound_texture{});
+    for (size_t i = 0; i < planned.inputs.size(); ++i) {
+      pfx_format format;
+      bound[i].texture = resolve(planned.inputs[i], &bound[i].width, &bound[i].height, &format);
+      bound[i].unit = static_cast<uint32_t>(i);
+      glBindTextureUnit(static_cast<GLuint>(i), bound[i].texture);
+      glBindSampler(static_cast<GLuint>(i), pool.sampler(pass.inputs[i].filter, pass.inputs[i].wrap));
+    }
+    context.inputs = bound.data();
+    context.input_count = static_cast<uint32_t>(bound.size());
+    glBindVertexArray(pool.empty_vertex_array());
+
+    Clock::time_point start = Clock::now();
+    pfx_status status = instance.info->desc->run_pass(instance.handle, &context);
+    if (timing_ == Timing::GPU_QUERIES) glQueryCounter(pool.query(p + 1), GL_TIMESTAMP);
+    if (timing_ == Timing::FINISH_AND_CLOCK) {
+      glFinish();
+      cpu_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    for (size_t i = 0; i < bound.size(); ++i) glBindSampler(static_cast<GLuint>(i), 0);
+
+    const std::string label = std::string("effect '") + effect_id + "' pass '" + pass.name + "'";
+    if (status != PFX_OK) {
+      if (error) *error = label + " failed (status " + std::to_string(status) + ")";
+      return false;
+    }
+    GLenum gl_error = glGetError();
+    if (gl_error != GL_NO_ERROR) {
+      if (error) *error = label + " raised GL error " + gl_error_text(gl_error);
+      return false;
+    }
+    report_.passes.push_back({effect_id, pass.name, 0.0});
+  }
+
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  glUseProgram(0);
+
+  if (timing_ == Timing::GPU_QUERIES) {
+    std::vector<GLuint64> stamps(plan_.passes.size() + 1);
+    for (size_t i = 0; i < stamps.size(); ++i) glGetQueryObjectui64v(pool.query(i), GL_QUERY_RESULT, &stamps[i]);
+    for (size_t i = 0; i < report_.passes.size(); ++i) report_.passes[i].ms = double(stamps[i + 1] - stamps[i]) * 1e-6;
+  } else if (timing_ == Timing::FINISH_AND_CLOCK) {
+    for (size_t i = 0; i < report_.passes.size(); ++i) report_.passes[i].ms = cpu_ms[i];
+  }
+  for (const auto& pass : report_.passes) report_.total_ms += pass.ms;
+
+  for (int index : active) {
+    Instance& instance = *instances_[index];
+    if (!instance.info->desc->report_json) continue;
+    const char* figures = instance.info->desc->report_json(instance.handle);
+    if (figures && *figures) report_.effect_reports.emplace_back(instance.info->desc->id, figures);
+  }
+  return true;
+}
+
+}  // namespace pfx::host

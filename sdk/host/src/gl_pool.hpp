@@ -1,0 +1,50 @@
+// The GL objects behind a frame plan: one texture and framebuffer per pool slot, samplers per
+// (filter, wrap), the empty vertex array full-screen passes draw with, timer queries. Kept across
+// frames; rebuilt only when the plan's slots change.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "pfx/host/frame_plan.hpp"
+
+namespace pfx::host {
+
+GLenum gl_internal_format(pfx_format format);
+
+class GlPool {
+ public:
+  GlPool();
+  ~GlPool();
+  GlPool(const GlPool&) = delete;
+  GlPool& operator=(const GlPool&) = delete;
+
+  // Makes the slots match the plan: keeps textures whose format and size still fit, frees the rest.
+  void match(const std::vector<PoolSlot>& slots);
+  GLuint texture(int slot) const { return slots_[slot].texture; }
+  GLuint framebuffer(int slot) const { return slots_[slot].framebuffer; }
+  // A framebuffer around a texture the pool does not own (the chain's output); cached.
+  GLuint framebuffer_for(GLuint texture);
+  GLuint sampler(pfx_filter filter, pfx_wrap wrap);
+  GLuint empty_vertex_array() const { return vertex_array_; }
+  // Timestamp queries, grown on demand.
+  GLuint query(size_t index);
+
+ private:
+  struct Slot {
+    PoolSlot shape;
+    GLuint texture = 0, framebuffer = 0;
+  };
+  static Slot make_slot(const PoolSlot& shape);
+  static void free_slot(Slot& slot);
+  std::vector<Slot> slots_;
+  std::map<GLuint, GLuint> external_framebuffers_;
+  std::map<uint32_t, GLuint> samplers_;
+  std::vector<GLuint> queries_;
+  GLuint vertex_array_ = 0;
+};
+
+}  // namespace pfx::host

@@ -1,0 +1,212 @@
+#include "pfx/host/plugin_registry.hpp"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "descriptor_check.hpp"
+
+namespace fs = std::filesystem;
+
+namespace pfx::host {
+
+// What the registry keeps per plugin besides the public Plugin: the library handle, the entry and
+// the pfx_host handed to the plugin (its host_data points at this record).
+struct PluginRegistry::Record {
+  PluginRegistry* registry = nullptr;
+  std::string plugin_id;
+  void* library = nullptr;
+  const pfx_entry* entry = nullptr;
+  bool initialised = false;
+  pfx_host host{};
+};
+
+namespace {
+
+void host_log(void* host_data, pfx_log_level level, const char* message) {
+  auto* record = static_cast<PluginRegistry::Record*>(host_data);
+  if (record && record->registry && record->registry->log())
+    record->registry->log()(level, record->plugin_id, message ? message : "(null message)");
+}
+
+pfx_gl_proc host_get_proc_address(void* host_data, const char* name) {
+  auto* record = static_cast<PluginRegistry::Record*>(host_data);
+  if (!record || !name || !record->registry->gl_loader()) return nullptr;
+  return record->registry->gl_loader()(name);
+}
+
+bool is_elf_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  in.read(magic, 4);
+  return in.gcount() == 4 && std::memcmp(magic, "\x7f" "ELF", 4) == 0;
+}
+
+std::string text_or(const char* text, const char* fallback) { return text ? text : fallback; }
+
+}  // namespace
+
+PluginRegistry::PluginRegistry(GlProcLoader gl_loader, LogSink log, std::string host_name)
+    : gl_loader_(std::move(gl_loader)), log_(std::move(log)), host_name_(std::move(host_name)) {
+  if (!log_) log_ = [](pfx_log_level, const std::string&, const std::string&) {};
+}
+
+PluginRegistry::~PluginRegistry() {
+  // Reverse load order, so a plugin loaded later (which may rely on nothing earlier, but might)
+  // goes first.
+  for (auto it = records_.rbegin(); it != records_.rend(); ++it) {
+    Record& record = **it;
+    if (record.initialised && record.entry->deinit) record.entry->deinit();
+    if (record.library) dlclose(record.library);
+  }
+}
+
+bool PluginRegistry::load(const std::string& path, std::string* error) {
+  auto fail = [&](const std::string& reason) {
+    if (error) *error = path + ": " + reason;
+    return false;
+  };
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return fail("no such file");
+  if (!fs::is_regular_file(path, ec)) return fail("not a regular file");
+  if (!is_elf_file(path)) return fail("not a shared library (no ELF header)");
+
+  auto record = std::make_unique<Record>();
+  record->registry = this;
+  // RTLD_LOCAL: two plugins never bind each other's symbols. RTLD_NOW: a missing symbol is an
+  // error now, not a crash in the middle of a frame.
+  void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!library) return fail(std::string("cannot be loaded: ") + text_or(dlerror(), "unknown dlopen error"));
+  struct Closer {
+    void*& library;
+    ~Closer() { if (library) dlclose(library); }
+  } closer{library};
+
+  dlerror();
+  auto get_entry = reinterpret_cast<pfx_get_entry_fn>(dlsym(library, PFX_ENTRY_SYMBOL));
+  if (!get_entry) return fail("no entry symbol " PFX_ENTRY_SYMBOL " (not a pfx plugin)");
+  const pfx_entry* entry = get_entry();
+  if (!entry) return fail(PFX_ENTRY_SYMBOL "() returned NULL");
+  if (entry->struct_size < sizeof(pfx_entry))
+    return fail("entry struct is " + std::to_string(entry->struct_size) + " bytes, expected at least " +
+                std::to_string(sizeof(pfx_entry)));
+  if (entry->abi_major != PFX_ABI_MAJOR)
+    return fail("ABI major version mismatch: plugin built for ABI " + std::to_string(entry->abi_major) + "." +
+                std::to_string(entry->abi_minor) + ", host implements ABI " + std::to_string(PFX_ABI_MAJOR) +
+                "." + std::to_string(PFX_ABI_MINOR));
+  if (!entry->id || !*entry->id) return fail("entry has no plugin id");
+  if (!entry->init || !entry->deinit || !entry->get_factory)
+    return fail("entry lacks init, deinit or get_factory");
+  for (const auto& plugin : plugins_)
+    if (plugin->id == entry->id)
+      return fail("duplicate plugin id '" + plugin->id + "' (already loaded from " + plugin->path + ")");
+
+  record->plugin_id = entry->id;
+  record->entry = entry;
+  record->host.struct_size = sizeof(pfx_host);
+  record->host.abi_major = PFX_ABI_MAJOR;
+  record->host.abi_minor = PFX_ABI_MINOR;
+  record->host.host_name = host_name_.c_str();
+  record->host.host_data = record.get();
+  record->host.log = host_log;
+  record->host.get_proc_address = host_get_proc_address;
+
+  pfx_status status = entry->init(&record->host);
+  if (status != PFX_OK) return fail("init failed (status " + std::to_string(status) + ")");
+  record->initialised = true;
+  auto undo_init = [&](const std::string& reason) {
+    entry->deinit();
+    return fail(reason);
+  };
+
+  auto plugin = std::make_unique<Plugin>();
+  plugin->path = path;
+  plugin->id = entry->id;
+  plugin->name = text_or(entry->name, entry->id);
+  plugin->version = text_or(entry->version, "");
+  plugin->abi_minor = entry->abi_minor;
+  plugin->host = &record->host;
+
+  // A plugin may provide no effects (an importer only): a NULL factory is fine.
+  auto factory = static_cast<const pfx_effect_factory*>(entry->get_factory(PFX_EFFECTS_FACTORY_ID));
+  if (factory) {
+    if (factory->struct_size < sizeof(pfx_effect_factory) || !factory->effect_count || !factory->get_effect)
+      return undo_init("effect factory is incomplete");
+    std::set<std::string> own_ids;
+    for (uint32_t i = 0, n = factory->effect_count(); i < n; ++i) {
+      const pfx_effect_desc* desc = factory->get_effect(i);
+      std::string problem = check_effect_descriptor(desc);
+      if (!problem.empty()) return undo_init("effect #" + std::to_string(i) + ": " + problem);
+      if (!own_ids.insert(desc->id).second) return undo_init("duplicate effect id '" + std::string(desc->id) + "' within the plugin");
+      if (const EffectInfo* other = find_effect(desc->id))
+        return undo_init("duplicate effect id '" + std::string(desc->id) + "' (already provided by plugin '" +
+                         other->plugin->id + "' from " + other->plugin->path + ")");
+      plugin->effects.push_back(desc);
+    }
+  }
+
+  record->library = library;
+  library = nullptr;  // the record owns it now
+  for (const pfx_effect_desc* desc : plugin->effects) effect_index_.push_back({desc, plugin.get()});
+  log_(PFX_LOG_DEBUG, "host", "loaded " + plugin->id + " " + plugin->version + " from " + path);
+  plugins_.push_back(std::move(plugin));
+  records_.push_back(std::move(record));
+  return true;
+}
+
+std::vector<std::string> PluginRegistry::load_directory(const std::string& directory) {
+  std::vector<std::string> errors;
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec)) {
+    errors.push_back(directory + ": no such plugin directory");
+    return errors;
+  }
+  std::vector<std::string> files;
+  for (const auto& item : fs::directory_iterator(directory, ec))
+    if (item.path().extension() == ".so") files.push_back(item.path().string());
+  std::sort(files.begin(), files.end());
+  for (const auto& file : files) {
+    std::string error;
+    if (!load(file, &error)) errors.push_back(error);
+  }
+  return errors;
+}
+
+std::vector<std::string> PluginRegistry::search_path(const std::vector<std::string>& explicit_directories) {
+  std::vector<std::string> directories = explicit_directories;
+  if (const char* env = std::getenv("PFX_PLUGIN_PATH")) {
+    std::string list = env;
+    size_t start = 0;
+    while (start <= list.size()) {
+      size_t end = list.find(':', start);
+      if (end == std::string::npos) end = list.size();
+      if (end > start) directories.push_back(list.substr(start, end - start));
+      start = end + 1;
+    }
+  }
+  return directories;
+}
+
+std::vector<std::string> PluginRegistry::load_search_path(const std::vector<std::string>& explicit_directories) {
+  std::vector<std::string> errors;
+  for (const auto& directory : search_path(explicit_directories)) {
+    auto more = load_directory(directory);
+    errors.insert(errors.end(), more.begin(), more.end());
+  }
+  return errors;
+}
+
+std::vector<EffectInfo> PluginRegistry::effects() const { return effect_index_; }
+
+const EffectInfo* PluginRegistry::find_effect(const std::string& id) const {
+  for (const auto& info : effect_index_)
+    if (id == info.desc->id) return &info;
+  return nullptr;
+}
+
+}  // namespace pfx::host

@@ -1,0 +1,181 @@
+// The parameter store against hand-written descriptors: validation per descriptor, NaN always
+// refused, and text and JSON round trips.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include <pfx/host/param_store.hpp>
+
+using pfx::host::ParamStore;
+
+namespace {
+
+pfx_param_desc make_param(const char* id, pfx_param_type type, double lo, double hi, double def) {
+  pfx_param_desc p{};
+  p.struct_size = sizeof p;
+  p.id = id;
+  p.label = id;
+  p.tooltip = "";
+  p.unit = "";
+  p.group = "";
+  p.type = type;
+  p.hard_min = lo;
+  p.hard_max = hi;
+  p.display_min = lo;
+  p.display_max = hi;
+  p.step = 1;
+  for (double& v : p.default_value.v) v = 0;
+  p.default_value.v[0] = def;
+  return p;
+}
+
+const pfx_enum_item kModes[] = {{"chain", "Chain"}, {"chain13", "13-tap chain"}, {"gaussian", "Gaussian"}};
+
+struct Fixture {
+  pfx_param_desc params[6];
+  pfx_effect_desc effect{};
+  ParamStore store;
+  Fixture() {
+    params[0] = make_param("threshold", PFX_PARAM_FLOAT, 0, 100, 1);
+    params[1] = make_param("levels", PFX_PARAM_INT, 0, 16, 6);
+    params[1].flags = PFX_PARAM_REJECT_OUT_OF_RANGE;
+    params[2] = make_param("mode", PFX_PARAM_ENUM, 0, 2, 0);
+    params[2].items = kModes;
+    params[2].item_count = 3;
+    params[3] = make_param("tint", PFX_PARAM_COLOR, 0, 1000, 1);
+    params[3].default_value.v[1] = params[3].default_value.v[2] = 1;
+    params[4] = make_param("karis", PFX_PARAM_BOOL, 0, 1, 1);
+    params[5] = make_param("focus", PFX_PARAM_FLOAT, 0.01, std::numeric_limits<double>::infinity(), 10);
+    effect.struct_size = sizeof effect;
+    effect.id = "bloom";
+    effect.params = params;
+    effect.param_count = 6;
+    store.add_effect(&effect);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("values start at their defaults and parse in every text form", "[params]") {
+  Fixture f;
+  const pfx_value* v = f.store.values("bloom");
+  REQUIRE(v);
+  CHECK(v[0].v[0] == 1);
+  CHECK(v[1].v[0] == 6);
+  std::string error;
+  CHECK(f.store.set("bloom.threshold", "+.5", &error));
+  CHECK(v[0].v[0] == 0.5);
+  CHECK(f.store.set("bloom.mode", "chain13", &error));
+  CHECK(v[2].v[0] == 1);
+  CHECK(f.store.set("bloom.mode", "2", &error));
+  CHECK(v[2].v[0] == 2);
+  CHECK(f.store.set("bloom.tint", "1, 0.5,0.25", &error));
+  CHECK(v[3].v[1] == 0.5);
+  CHECK(v[3].v[2] == 0.25);
+  CHECK(f.store.set("bloom.tint", "2", &error));  // one number fills a colour
+  CHECK((v[3].v[0] == 2 && v[3].v[1] == 2 && v[3].v[2] == 2));
+  CHECK(f.store.set_assignment("bloom.karis = off", &error));
+  CHECK(v[4].v[0] == 0);
+  CHECK(f.store.set("bloom.focus", "inf", &error));  // the hard range includes infinity
+  CHECK(std::isinf(v[5].v[0]));
+}
+
+TEST_CASE("NaN is always refused and leaves the value alone", "[params][hard]") {
+  Fixture f;
+  std::string error;
+  for (const char* text : {"nan", "NaN", "-nan"}) {
+    CHECK_FALSE(f.store.set("bloom.threshold", text, &error));
+    CHECK(error == "bloom.threshold: NaN is not a valid value");
+  }
+  pfx_value nan_value{};
+  nan_value.v[0] = std::nan("");
+  CHECK_FALSE(f.store.set_value("bloom", "threshold", nan_value, &error));
+  CHECK(f.store.values("bloom")[0].v[0] == 1);
+}
+
+TEST_CASE("out-of-range values are clamped or refused as the descriptor says", "[params]") {
+  Fixture f;
+  std::string error, note;
+  CHECK(f.store.set("bloom.threshold", "1e9", &error, &note));
+  CHECK(f.store.values("bloom")[0].v[0] == 100);
+  CHECK(note == "clamped to 100");
+  CHECK(f.store.set("bloom.threshold", "-inf", &error, &note));
+  CHECK(f.store.values("bloom")[0].v[0] == 0);
+  CHECK_FALSE(f.store.set("bloom.levels", "17", &error));
+  CHECK(error == "bloom.levels: 17 is outside [0, 16]");
+  CHECK_FALSE(f.store.set("bloom.levels", "2.5", &error));
+  CHECK(error == "bloom.levels: 2.5 is not a whole number");
+  CHECK_FALSE(f.store.set("bloom.mode", "fast", &error));
+  CHECK(error == "bloom.mode: 'fast' is not one of: chain, chain13, gaussian");
+  CHECK_FALSE(f.store.set("bloom.tint", "1,2", &error));
+  CHECK_FALSE(f.store.set("bloom.threshold", "1.5x", &error));
+  CHECK(error == "bloom.threshold: '1.5x' is not a number");
+  CHECK(f.store.values("bloom")[1].v[0] == 6);
+}
+
+TEST_CASE("unknown keys name what exists", "[params]") {
+  Fixture f;
+  std::string error;
+  CHECK_FALSE(f.store.set("glare.threshold", "1", &error));
+  CHECK(error == "unknown effect 'glare' in 'glare.threshold'");
+  CHECK_FALSE(f.store.set("bloom.radius", "1", &error));
+  CHECK(error == "effect 'bloom' has no parameter 'radius' (it has: threshold, levels, mode, tint, karis, focus)");
+  CHECK_FALSE(f.store.set_assignment("bloom.threshold", &error));
+}
+
+TEST_CASE("text and JSON round trips reproduce every value exactly", "[params]") {
+  Fixture f;
+  std::string error;
+  REQUIRE(f.store.set("bloom.threshold", "0.1", &error));
+  REQUIRE(f.store.set("bloom.mode", "gaussian", &error));
+  REQUIRE(f.store.set("bloom.tint", "0.3,0.7,1e-7", &error));
+  REQUIRE(f.store.set("bloom.karis", "false", &error));
+  const std::string text = f.store.to_text();
+  CHECK(text.find("bloom.threshold=0.1\n") != std::string::npos);
+  CHECK(text.find("bloom.mode=gaussian\n") != std::string::npos);
+
+  Fixture g;
+  REQUIRE(g.store.from_text("# a preset\n\n" + text, &error));
+  Fixture h;
+  REQUIRE(h.store.from_json(f.store.to_json(), &error));
+  for (int i = 0; i < 6; ++i)
+    for (int c = 0; c < 4; ++c) {
+      CHECK(g.store.values("bloom")[i].v[c] == f.store.values("bloom")[i].v[c]);
+      CHECK(h.store.values("bloom")[i].v[c] == f.store.values("bloom")[i].v[c]);
+    }
+  CHECK(f.store.get_text("bloom.tint") == "0.3,0.7,1e-07");
+}
+
+TEST_CASE("a bad line or member changes nothing", "[params]") {
+  Fixture f;
+  std::string error;
+  CHECK_FALSE(f.store.from_text("bloom.threshold=3\nbloom.levels=99\n", &error));
+  CHECK(error == "line 2: bloom.levels: 99 is outside [0, 16]");
+  CHECK(f.store.values("bloom")[0].v[0] == 1);
+  CHECK_FALSE(f.store.from_json(R"({"bloom": {"threshold": 3, "mode": "nope"}})", &error));
+  CHECK(f.store.values("bloom")[0].v[0] == 1);
+  CHECK_FALSE(f.store.from_json("{\"bloom\": ", &error));
+  CHECK(error.rfind("not valid JSON", 0) == 0);
+  CHECK_FALSE(f.store.from_json(R"({"dof": {"focus": 1}})", &error));
+}
+
+TEST_CASE("re-registering a reloaded effect keeps values by id and type", "[params]") {
+  Fixture f;
+  std::string error;
+  REQUIRE(f.store.set("bloom.threshold", "7", &error));
+  REQUIRE(f.store.set("bloom.levels", "3", &error));
+  uint64_t before = f.store.revision("bloom");
+  // The reloaded plugin turned levels into a float and dropped the rest.
+  pfx_param_desc reloaded[2] = {make_param("threshold", PFX_PARAM_FLOAT, 0, 100, 1),
+                                make_param("levels", PFX_PARAM_FLOAT, 0, 16, 6)};
+  pfx_effect_desc effect{};
+  effect.struct_size = sizeof effect;
+  effect.id = "bloom";
+  effect.params = reloaded;
+  effect.param_count = 2;
+  f.store.add_effect(&effect);
+  CHECK(f.store.values("bloom")[0].v[0] == 7);
+  CHECK(f.store.values("bloom")[1].v[0] == 6);
+  CHECK(f.store.revision("bloom") > before);
+}
