@@ -131,13 +131,8 @@ TEST_CASE("reversed zero-to-one depth with a finite far plane decodes to view de
   CHECK(pfx_view_depth(1.0, PFX_DEPTH_HARDWARE_REVERSED, 0.1, 100.0) == Approx(0.1).epsilon(1e-12));
 }
 
-// KNOWN BUG in pfx/depth.h (reported, not ours to edit): with reversed Z and a finite far plane,
-// a stored 0 is exactly the far plane and should decode to far, as a stored 1 does for standard
-// depth; the header returns +INFINITY for any stored <= 0, which its own comment reserves for an
-// infinite far plane. [!shouldfail] keeps the suite green while the bug stands and turns this
-// test red the day the header is fixed: then drop the tag and let the test above include far.
-TEST_CASE("reversed zero-to-one depth at a finite far plane decodes to far",
-          "[depth][!shouldfail]") {
+// A stored 0 is exactly the far plane: it decodes to far, as a stored 1 does for standard depth.
+TEST_CASE("reversed zero-to-one depth at a finite far plane decodes to far", "[depth]") {
   for (Case c : {Case{0.1, 100.0}, Case{1.0, 50.0}}) {
     const Mat4 m = reversed_perspective(0.9, 16.0 / 9.0, c.near_plane, c.far_plane);
     INFO("near " << c.near_plane << " far " << c.far_plane);

@@ -41,6 +41,17 @@ Chain::Chain(const PluginRegistry& registry, ParamStore& params) : registry_(reg
   // libpfxhost keeps a private GL function table, loaded through the embedding program's loader.
   gladLoadGLUserPtr(load_through_registry, const_cast<PluginRegistry*>(&registry_));
   gl_ = std::make_unique<GlResources>();
+  set_timing(Timing::AUTO);
+}
+
+void Chain::set_timing(Timing timing) {
+  if (timing == Timing::AUTO) {
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    std::string name = renderer ? renderer : "";
+    bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+    timing = software ? Timing::FINISH_AND_CLOCK : Timing::GPU_QUERIES;
+  }
+  timing_ = timing;
 }
 
 Chain::~Chain() {
@@ -168,6 +179,7 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
   report_.passes.clear();
   report_.effect_reports.clear();
   report_.total_ms = 0;
+  report_.timing = timing_ == Timing::GPU_QUERIES ? "gpu-timestamps" : timing_ == Timing::FINISH_AND_CLOCK ? "finish+clock" : "off";
   GlPool& pool = gl_->pool;
 
   while (glGetError() != GL_NO_ERROR) {

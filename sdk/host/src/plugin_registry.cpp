@@ -150,6 +150,11 @@ bool PluginRegistry::load(const std::string& path, std::string* error) {
     }
   }
 
+  auto references = static_cast<const pfx_reference_factory*>(entry->get_factory(PFX_REFERENCES_FACTORY_ID));
+  if (references && references->struct_size >= sizeof(pfx_reference_factory) && references->has_reference &&
+      references->evaluate)
+    plugin->references = references;
+
   record->library = library;
   library = nullptr;  // the record owns it now
   for (const pfx_effect_desc* desc : plugin->effects) effect_index_.push_back({desc, plugin.get()});

@@ -34,8 +34,8 @@ static inline double pfx_view_depth(double stored, pfx_depth_encoding encoding, 
     }
     case PFX_DEPTH_HARDWARE_REVERSED: {
       /* zero-to-one clip: d = near*(far - z)/(z*(far - near)), or near/z when far is infinite */
-      if (stored <= 0.0) return inf; /* at or past an infinite far plane */
-      if (far_plane == inf) return near_plane / stored;
+      if (stored < 0.0) return inf; /* past the far plane */
+      if (far_plane == inf) return (stored == 0.0) ? inf : near_plane / stored;
       return near_plane * far_plane / (stored * (far_plane - near_plane) + near_plane);
     }
     default:

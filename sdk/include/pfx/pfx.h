@@ -7,5 +7,6 @@
 #include "pfx/effect.h"
 #include "pfx/importer.h"
 #include "pfx/depth.h"
+#include "pfx/reference.h"
 
 #endif /* PFX_PFX_H */

@@ -23,6 +23,9 @@ struct FrameTextures {
 };
 
 enum class Timing {
+  // FINISH_AND_CLOCK on a software renderer (llvmpipe, softpipe: their timestamp queries are taken
+  // when commands are queued, not when the deferred rasteriser runs them), GPU_QUERIES elsewhere.
+  AUTO,
   OFF,
   // GL timestamp queries around every pass; read back at the end of the frame.
   GPU_QUERIES,
@@ -41,6 +44,7 @@ struct FrameReport {
   std::vector<std::string> effects_skipped;  // disabled, or no-op with their settings
   std::vector<PassTime> passes;              // every pass that ran (ms = 0 with Timing::OFF)
   double total_ms = 0;
+  std::string timing;                        // "gpu-timestamps", "finish+clock" or "off"
   uint64_t peak_target_bytes = 0;            // pooled targets alive during the frame
   uint64_t unpooled_target_bytes = 0;        // what they would cost without pooling
   // Per effect that reports figures: its id and the JSON members it returned.
@@ -66,7 +70,8 @@ class PFX_HOST_API Chain {
   void remove(size_t index);
   void move(size_t from, size_t to);
 
-  void set_timing(Timing timing) { timing_ = timing; }
+  void set_timing(Timing timing);
+  Timing timing() const { return timing_; }
 
   // Runs the enabled effects over the frame: reads textures (as frame.inputs says), writes
   // output_texture. Effects that declare no passes are skipped at no cost; with none left the
@@ -90,7 +95,7 @@ class PFX_HOST_API Chain {
   FramePlan plan_;
   std::vector<int> planned_active_;  // the instances plan_ was made for
   bool plan_valid_ = false;
-  Timing timing_ = Timing::GPU_QUERIES;
+  Timing timing_ = Timing::AUTO;
   FrameReport report_;
 };
 

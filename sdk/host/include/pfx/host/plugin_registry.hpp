@@ -31,6 +31,8 @@ struct Plugin {
   std::string id, name, version;
   uint32_t abi_minor = 0;
   std::vector<const pfx_effect_desc*> effects;
+  // The plugin's CPU references ("pfx.references/1"), or null when it ships none.
+  const pfx_reference_factory* references = nullptr;
   // The services this plugin was given (host_data points back at the registry's record).
   const pfx_host* host = nullptr;
 };

@@ -1,0 +1,105 @@
+#include "bench_options.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace pfx::bench {
+
+std::string bench_usage() {
+  return
+      "usage: pfx-bench [--plugins DIR]... [--out DIR] [--sizes WxH,...] [--frames N] [--warmup N]\n"
+      "                 [--effects a,b,...] [--suite FILE] [--timing auto|gpu|finish] [--quick]\n"
+      "\n"
+      "Measures, in one process and one run, a plain full-screen copy pass at each size (the unit),\n"
+      "then every effect at every setting of the suite: median time over --frames frames after\n"
+      "--warmup frames, ratio to the copy pass, peak target bytes, time per pass, and the error\n"
+      "against the effect's CPU references where its plugin ships them (pfx/reference.h).\n"
+      "Writes DIR/bench.json, DIR/bench.md (tables) and DIR/error_vs_time.png (gnuplot; only when\n"
+      "some effect has an ideal reference). The input is the built-in demo image at each size.\n"
+      "\n"
+      "  --plugins DIR     plugin folder (repeatable; default: the one next to this program's folder)\n"
+      "  --out DIR         output folder (default out/bench)\n"
+      "  --sizes LIST      frame sizes (default 1280x720,1920x1080)\n"
+      "  --frames N        measured frames per row (default 15), --warmup N unmeasured ones first (3)\n"
+      "  --effects LIST    only these effects\n"
+      "  --suite FILE      rows to run, one per line: EFFECT [param=value ...] ('#' comments);\n"
+      "                    default: the built-in suite; loaded effects it does not name run at defaults\n"
+      "  --timing MODE     auto (default: glFinish + CPU clock on a software renderer, whose GL\n"
+      "                    timestamps are taken when commands are queued; GL timestamps elsewhere)\n"
+      "  --quick           one size (640x360), 5 frames, 2 warm-up: a smoke test under a minute\n"
+      "\n"
+      "exit codes: 0 ok, 1 internal error, 2 usage, 4 plugin or effect error\n";
+}
+
+bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out, std::string* error) {
+  BenchOptions options;
+  auto fail = [&](const std::string& message) {
+    *error = message;
+    return false;
+  };
+  auto split = [](const std::string& text) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= text.size()) {
+      size_t comma = text.find(',', start);
+      if (comma == std::string::npos) comma = text.size();
+      if (comma > start) items.push_back(text.substr(start, comma - start));
+      start = comma + 1;
+    }
+    return items;
+  };
+  bool sizes_given = false, frames_given = false, warmup_given = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    std::string text;
+    auto value = [&]() {
+      if (i + 1 >= args.size()) return fail(arg + " needs a value");
+      text = args[++i];
+      return true;
+    };
+    auto count = [&](int* into, int lo) {
+      if (!value()) return false;
+      char* end = nullptr;
+      long n = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end || n < lo || n > 100000) return fail(arg + " " + text + ": expected a whole number >= " + std::to_string(lo));
+      *into = static_cast<int>(n);
+      return true;
+    };
+    if (arg == "-h" || arg == "--help") options.help = true;
+    else if (arg == "--quick") options.quick = true;
+    else if (arg == "--plugins") { if (!value()) return false; options.plugin_dirs.push_back(text); }
+    else if (arg == "--out") { if (!value()) return false; options.out_dir = text; }
+    else if (arg == "--suite") { if (!value()) return false; options.suite_file = text; }
+    else if (arg == "--effects") { if (!value()) return false; options.effects = split(text); }
+    else if (arg == "--frames") { if (!count(&options.frames, 1)) return false; frames_given = true; }
+    else if (arg == "--warmup") { if (!count(&options.warmup, 0)) return false; warmup_given = true; }
+    else if (arg == "--timing") {
+      if (!value()) return false;
+      if (text != "auto" && text != "gpu" && text != "finish") return fail("--timing " + text + ": expected auto, gpu or finish");
+      options.timing = text;
+    } else if (arg == "--sizes") {
+      if (!value()) return false;
+      options.sizes.clear();
+      for (const auto& item : split(text)) {
+        int w = 0, h = 0;
+        char tail = 0;
+        if (std::sscanf(item.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
+          return fail("--sizes " + item + ": expected WxH with 1 <= W, H <= 16384");
+        options.sizes.push_back({w, h});
+      }
+      if (options.sizes.empty()) return fail("--sizes needs at least one size");
+      sizes_given = true;
+    } else {
+      return fail("unknown option '" + arg + "' (see --help)");
+    }
+  }
+  if (options.quick) {
+    if (!sizes_given) options.sizes = {{640, 360}};
+    if (!frames_given) options.frames = 5;
+    if (!warmup_given) options.warmup = 2;
+  }
+  *out = options;
+  return true;
+}
+
+}  // namespace pfx::bench

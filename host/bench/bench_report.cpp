@@ -1,0 +1,148 @@
+#include "bench_report.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.hpp"
+
+namespace pfx::bench {
+namespace {
+
+bool write_text(const std::string& path, const std::string& text, std::string* error) {
+  return pfx::app::write_atomically(
+      path,
+      [&](const std::string& temp, std::string* reason) {
+        std::ofstream out(temp, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) *reason = "write failed";
+        return static_cast<bool>(out);
+      },
+      error);
+}
+
+nlohmann::ordered_json metrics_json(const std::optional<ErrorMetrics>& m) {
+  if (!m) return nullptr;
+  return {{"relative_rmse", m->relative_rmse}, {"max_abs", m->max_abs}, {"nonfinite", m->nonfinite}};
+}
+
+std::string fixed(double value, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+  return buffer;
+}
+
+std::string error_cell(const std::optional<ErrorMetrics>& m) {
+  if (!m) return "—";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.3g / %.3g", m->relative_rmse, m->max_abs);
+  return buffer;
+}
+
+}  // namespace
+
+bool write_bench_json(const BenchResults& results, const std::string& path, std::string* error) {
+  nlohmann::ordered_json root;
+  root["renderer"] = results.renderer;
+  root["timing"] = results.timing;
+  root["frames"] = results.frames;
+  root["warmup"] = results.warmup;
+  root["units"] = nlohmann::ordered_json::array();
+  for (const auto& unit : results.units)
+    root["units"].push_back({{"width", unit.width}, {"height", unit.height}, {"copy_ms", unit.copy_ms}});
+  root["rows"] = nlohmann::ordered_json::array();
+  for (const auto& row : results.rows) {
+    nlohmann::ordered_json r;
+    r["effect"] = row.effect;
+    r["settings"] = row.settings;
+    r["width"] = row.width;
+    r["height"] = row.height;
+    r["median_ms"] = row.median_ms;
+    r["ratio_to_copy"] = row.ratio_to_copy;
+    r["peak_target_bytes"] = row.peak_target_bytes;
+    r["pass_count"] = row.pass_count;
+    r["passes"] = nlohmann::ordered_json::array();
+    for (const auto& pass : row.passes) r["passes"].push_back({{"pass", pass.pass}, {"median_ms", pass.median_ms}});
+    r["error_model"] = metrics_json(row.error_model);
+    r["error_ideal"] = metrics_json(row.error_ideal);
+    if (!row.note.empty()) r["note"] = row.note;
+    root["rows"].push_back(r);
+  }
+  root["notes"] = results.notes;
+  return write_text(path, root.dump(2) + "\n", error);
+}
+
+std::string bench_markdown(const BenchResults& results) {
+  std::string md = "# pfx-bench\n\nRenderer: " + results.renderer + "  \nTiming: " + results.timing + ", median of " +
+                   std::to_string(results.frames) + " frames after " + std::to_string(results.warmup) +
+                   " warm-up frames. Ratios are to a plain full-screen copy pass at the same size in the same run.\n\n";
+  for (const auto& unit : results.units) {
+    md += "## " + std::to_string(unit.width) + "x" + std::to_string(unit.height) + " — copy pass " +
+          fixed(unit.copy_ms, 3) + " ms\n\n";
+    md += "| effect | settings | passes | median ms | x copy | peak target bytes | error vs model (rel RMSE / max) | error vs ideal (rel RMSE / max) |\n";
+    md += "|---|---|---:|---:|---:|---:|---|---|\n";
+    for (const auto& row : results.rows) {
+      if (row.width != unit.width || row.height != unit.height) continue;
+      md += "| " + row.effect + " | " + row.settings + (row.note.empty() ? "" : " (" + row.note + ")") + " | " +
+            std::to_string(row.pass_count) + " | " + fixed(row.median_ms, 3) + " | " + fixed(row.ratio_to_copy, 2) +
+            " | " + std::to_string(row.peak_target_bytes) + " | " + error_cell(row.error_model) + " | " +
+            error_cell(row.error_ideal) + " |\n";
+    }
+    md += "\n";
+  }
+  if (!results.notes.empty()) {
+    md += "## Notes\n\n";
+    for (const auto& note : results.notes) md += "- " + note + "\n";
+  }
+  return md;
+}
+
+bool write_bench_markdown(const BenchResults& results, const std::string& path, std::string* error) {
+  return write_text(path, bench_markdown(results), error);
+}
+
+bool write_error_plot(const BenchResults& results, const std::string& path, std::string* error, std::string* skipped) {
+  // One curve per effect and size: (ratio to copy, relative RMSE against the ideal).
+  std::map<std::string, std::vector<std::pair<double, double>>> curves;
+  for (const auto& row : results.rows)
+    if (row.error_ideal)
+      curves[row.effect + " " + std::to_string(row.width) + "x" + std::to_string(row.height)].push_back(
+          {row.ratio_to_copy, row.error_ideal->relative_rmse});
+  if (curves.empty()) {
+    *skipped = "no effect has an ideal CPU reference yet: no error-against-time plot";
+    return true;
+  }
+  std::string script = "set terminal pngcairo size 900,600\nset output '__OUT__'\n"
+                       "set xlabel 'time (x plain copy pass)'\nset ylabel 'relative RMSE vs ideal'\n"
+                       "set logscale y\nset grid\nset key outside right\nset title '" + results.renderer + "'\nplot ";
+  std::string data;
+  bool first = true;
+  for (const auto& [name, points] : curves) {
+    script += std::string(first ? "" : ", ") + "'-' using 1:2 with linespoints title '" + name + "'";
+    first = false;
+    for (const auto& [x, y] : points) data += fixed(x, 6) + " " + fixed(y > 0 ? y : 1e-12, 12) + "\n";
+    data += "e\n";
+  }
+  script += "\n" + data;
+  return pfx::app::write_atomically(
+      path,
+      [&](const std::string& temp, std::string* reason) {
+        std::string text = script;
+        text.replace(text.find("__OUT__"), 7, temp);
+        FILE* gnuplot = popen("gnuplot", "w");
+        if (!gnuplot) {
+          *reason = "cannot run gnuplot (install gnuplot-nox)";
+          return false;
+        }
+        std::fwrite(text.data(), 1, text.size(), gnuplot);
+        int status = pclose(gnuplot);
+        if (status != 0) *reason = "gnuplot failed (status " + std::to_string(status) + ")";
+        return status == 0;
+      },
+      error);
+}
+
+}  // namespace pfx::bench

@@ -1,0 +1,43 @@
+// What one pfx-bench run measured, before it is written out as JSON, Markdown and a plot.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "error_metrics.hpp"
+
+namespace pfx::bench {
+
+struct PassMedian {
+  std::string pass;
+  double median_ms = 0;
+};
+
+struct BenchRow {
+  std::string effect, settings;
+  int width = 0, height = 0;
+  double median_ms = 0;
+  double ratio_to_copy = 0;
+  uint64_t peak_target_bytes = 0;
+  int pass_count = 0;
+  std::vector<PassMedian> passes;
+  std::optional<ErrorMetrics> error_model, error_ideal;
+  std::string note;  // e.g. "no-op with these settings"
+};
+
+struct SizeUnit {
+  int width = 0, height = 0;
+  double copy_ms = 0;  // median of the plain copy pass
+};
+
+struct BenchResults {
+  std::string renderer, timing;
+  int frames = 0, warmup = 0;
+  std::vector<SizeUnit> units;
+  std::vector<BenchRow> rows;
+  std::vector<std::string> notes;
+};
+
+}  // namespace pfx::bench

@@ -1,0 +1,189 @@
+#include "bench_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include <glad/gl.h>
+
+#include <pfx/host/chain.hpp>
+
+#include "camera_options.hpp"
+#include "copy_pass.hpp"
+#include "demo_image.hpp"
+#include "image_texture.hpp"
+
+namespace pfx::bench {
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+pfx::host::Timing timing_of(const std::string& name) {
+  if (name == "gpu") return pfx::host::Timing::GPU_QUERIES;
+  if (name == "finish") return pfx::host::Timing::FINISH_AND_CLOCK;
+  return pfx::host::Timing::AUTO;
+}
+
+// Times the copy pass exactly as the chain times its passes, so the ratio compares like with like.
+double time_copy(CopyPass& copy, uint32_t source, uint32_t target, int w, int h, pfx::host::Timing timing) {
+  if (timing == pfx::host::Timing::GPU_QUERIES) {
+    GLuint queries[2];
+    glGenQueries(2, queries);
+    glQueryCounter(queries[0], GL_TIMESTAMP);
+    copy.run(source, target, w, h);
+    glQueryCounter(queries[1], GL_TIMESTAMP);
+    GLuint64 start = 0, end = 0;
+    glGetQueryObjectui64v(queries[0], GL_QUERY_RESULT, &start);
+    glGetQueryObjectui64v(queries[1], GL_QUERY_RESULT, &end);
+    glDeleteQueries(2, queries);
+    return double(end - start) * 1e-6;
+  }
+  glFinish();
+  auto start = std::chrono::steady_clock::now();
+  copy.run(source, target, w, h);
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<float> read_back(uint32_t texture, int w, int h) {
+  return pfx::app::flip_rows(pfx::app::download_color_texture(texture, w, h).rgba, w, h, 4);
+}
+
+}  // namespace
+
+BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegistry& registry,
+                       const std::string& renderer, const std::vector<SuiteRow>& rows) {
+  BenchResults results;
+  results.renderer = renderer;
+  results.frames = options.frames;
+  results.warmup = options.warmup;
+
+  for (const auto& [width, height] : options.sizes) {
+    pfx::app::Image demo = pfx::app::make_demo_image(width, height);
+    const uint32_t color = pfx::app::upload_color_texture(demo);
+    const uint32_t depth = pfx::app::upload_depth_texture(demo);
+    const uint32_t output = pfx::app::create_color_texture(width, height);
+    // Bottom-first copies of the input for the CPU references (pfx/reference.h).
+    const std::vector<float> color_gl = pfx::app::flip_rows(demo.rgba, width, height, 4);
+    const std::vector<float> depth_gl = pfx::app::flip_rows(demo.depth, width, height, 1);
+
+    pfx_frame frame{};
+    frame.struct_size = sizeof frame;
+    frame.width = static_cast<uint32_t>(width);
+    frame.height = static_cast<uint32_t>(height);
+    frame.inputs = PFX_INPUT_COLOR | PFX_INPUT_DEPTH;
+    frame.depth_encoding = PFX_DEPTH_LINEAR;
+    frame.camera = pfx::app::make_camera(pfx::app::CameraOptions{}, width, height);
+    frame.light_struct_size = sizeof(pfx_light);
+    pfx::host::FrameTextures textures;
+    textures.color = color;
+    textures.depth = depth;
+
+    // The unit: resolve the timing method once through a chain, so both use the same one.
+    pfx::host::ParamStore unit_params;
+    pfx::host::Chain probe(registry, unit_params);
+    probe.set_timing(timing_of(options.timing));
+    const pfx::host::Timing timing = probe.timing();
+    results.timing = timing == pfx::host::Timing::GPU_QUERIES ? "gpu-timestamps" : "finish+clock";
+    {
+      CopyPass copy;
+      std::vector<double> times;
+      for (int i = 0; i < options.warmup + options.frames; ++i) {
+        double ms = time_copy(copy, color, output, width, height, timing);
+        if (i >= options.warmup) times.push_back(ms);
+      }
+      results.units.push_back({width, height, median(times)});
+      std::fprintf(stderr, "pfx-bench: %dx%d copy pass %.3f ms\n", width, height, results.units.back().copy_ms);
+    }
+    const double copy_ms = results.units.back().copy_ms;
+
+    for (const auto& suite_row : rows) {
+      BenchRow row;
+      row.effect = suite_row.effect;
+      row.settings = suite_row.label();
+      row.width = width;
+      row.height = height;
+      pfx::host::ParamStore params;
+      for (const auto& effect : registry.effects()) params.add_effect(effect.desc);
+      std::string message;
+      bool settings_ok = true;
+      for (const auto& setting : suite_row.settings)
+        if (!params.set_assignment(suite_row.effect + "." + setting, &message)) {
+          results.notes.push_back("row '" + suite_row.effect + " " + row.settings + "' skipped: " + message);
+          settings_ok = false;
+          break;
+        }
+      if (!settings_ok) continue;
+
+      pfx::host::Chain chain(registry, params);
+      chain.set_timing(timing);
+      if (!chain.add(suite_row.effect, &message)) {
+        results.notes.push_back("row '" + suite_row.effect + " " + row.settings + "' skipped: " + message);
+        continue;
+      }
+      std::vector<double> totals;
+      std::vector<std::vector<double>> per_pass;
+      bool failed = false;
+      for (int i = 0; i < options.warmup + options.frames && !failed; ++i) {
+        frame.frame_index = static_cast<uint64_t>(i);
+        if (!chain.render(frame, textures, output, &message)) {
+          results.notes.push_back("row '" + suite_row.effect + " " + row.settings + "' at " + std::to_string(width) +
+                                  "x" + std::to_string(height) + " failed: " + message);
+          failed = true;
+          break;
+        }
+        if (i < options.warmup) continue;
+        const auto& report = chain.report();
+        totals.push_back(report.total_ms);
+        per_pass.resize(report.passes.size());
+        for (size_t p = 0; p < report.passes.size(); ++p) per_pass[p].push_back(report.passes[p].ms);
+      }
+      if (failed) continue;
+      const auto& report = chain.report();
+      row.median_ms = median(totals);
+      row.ratio_to_copy = copy_ms > 0 ? row.median_ms / copy_ms : 0;
+      row.peak_target_bytes = report.peak_target_bytes;
+      row.pass_count = static_cast<int>(report.passes.size());
+      for (size_t p = 0; p < report.passes.size(); ++p) row.passes.push_back({report.passes[p].pass, median(per_pass[p])});
+      if (report.passes.empty()) row.note = "no-op with these settings";
+
+      const pfx::host::EffectInfo* info = registry.find_effect(suite_row.effect);
+      const pfx_reference_factory* references = info ? info->plugin->references : nullptr;
+      if (references) {
+        const std::vector<float> out = read_back(output, width, height);
+        for (pfx_reference_kind kind : {PFX_REFERENCE_MODEL, PFX_REFERENCE_IDEAL}) {
+          if (!references->has_reference(suite_row.effect.c_str(), kind)) continue;
+          std::vector<float> expected(out.size());
+          pfx_reference_request request{};
+          request.struct_size = sizeof request;
+          request.effect_id = suite_row.effect.c_str();
+          request.kind = kind;
+          request.frame = &frame;
+          request.params = params.values(suite_row.effect);
+          request.color = color_gl.data();
+          request.depth = depth_gl.data();
+          request.output = expected.data();
+          if (references->evaluate(&request) != PFX_OK) {
+            results.notes.push_back("reference of '" + suite_row.effect + "' failed for " + row.settings);
+            continue;
+          }
+          (kind == PFX_REFERENCE_MODEL ? row.error_model : row.error_ideal) = compare_rgb(out, expected);
+        }
+      }
+      std::fprintf(stderr, "pfx-bench: %dx%d %-12s %-30s %8.3f ms  x%.2f copy\n", width, height, row.effect.c_str(),
+                   row.settings.c_str(), row.median_ms, row.ratio_to_copy);
+      results.rows.push_back(std::move(row));
+    }
+    pfx::app::delete_texture(color);
+    pfx::app::delete_texture(depth);
+    pfx::app::delete_texture(output);
+  }
+  return results;
+}
+
+}  // namespace pfx::bench

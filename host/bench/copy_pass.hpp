@@ -1,0 +1,23 @@
+// The unit every time is divided by: a plain full-screen pass copying an RGBA16F texture into
+// another of the same size, the cheapest thing a post effect can do. Absolute times on a shared
+// software renderer drift; ratios to this pass, measured in the same run, do not.
+#pragma once
+
+#include <cstdint>
+
+namespace pfx::bench {
+
+class CopyPass {
+ public:
+  CopyPass();  // compiles the program; GL current
+  ~CopyPass();
+  CopyPass(const CopyPass&) = delete;
+  CopyPass& operator=(const CopyPass&) = delete;
+  // Draws source into the framebuffer around target (both width x height).
+  void run(uint32_t source, uint32_t target, int width, int height);
+
+ private:
+  uint32_t program_ = 0, vertex_array_ = 0, framebuffer_ = 0;
+};
+
+}  // namespace pfx::bench

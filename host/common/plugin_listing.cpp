@@ -1,0 +1,131 @@
+#include "plugin_listing.hpp"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+namespace pfx::app {
+namespace {
+
+const char* type_name(pfx_param_type type) {
+  switch (type) {
+    case PFX_PARAM_FLOAT: return "float";
+    case PFX_PARAM_INT: return "int";
+    case PFX_PARAM_BOOL: return "bool";
+    case PFX_PARAM_ENUM: return "enum";
+    case PFX_PARAM_COLOR: return "color";
+    case PFX_PARAM_VEC2: return "vec2";
+    case PFX_PARAM_VEC3: return "vec3";
+    default: return "unknown";
+  }
+}
+
+int components(pfx_param_type type) {
+  return type == PFX_PARAM_VEC2 ? 2 : (type == PFX_PARAM_COLOR || type == PFX_PARAM_VEC3) ? 3 : 1;
+}
+
+// JSON has no infinity: unbounded ranges are written as null.
+nlohmann::ordered_json number(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+}
+
+std::string default_text(const pfx_param_desc& p) {
+  if (p.type == PFX_PARAM_ENUM) {
+    auto index = static_cast<uint32_t>(p.default_value.v[0]);
+    return index < p.item_count ? p.items[index].id : "?";
+  }
+  if (p.type == PFX_PARAM_BOOL) return p.default_value.v[0] != 0 ? "true" : "false";
+  std::string text;
+  for (int i = 0; i < components(p.type); ++i) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", p.default_value.v[i]);
+    text += (i ? "," : "") + std::string(buffer);
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors) {
+  std::string out;
+  char line[512];
+  for (const auto& plugin : registry.plugins()) {
+    out += plugin->id + " " + plugin->version + " (" + plugin->name + ")  " + plugin->path + "\n";
+    for (const pfx_effect_desc* effect : plugin->effects) {
+      out += "  effect " + std::string(effect->id) + ": " + (effect->description ? effect->description : "") + "\n";
+      for (uint32_t i = 0; i < effect->param_count; ++i) {
+        const pfx_param_desc& p = effect->params[i];
+        std::snprintf(line, sizeof line, "    %s.%-18s %-6s default %-10s range [%g, %g] %s\n", effect->id, p.id,
+                      type_name(p.type), default_text(p).c_str(), p.hard_min, p.hard_max, p.unit ? p.unit : "");
+        out += line;
+        if (p.type == PFX_PARAM_ENUM) {
+          out += "      one of:";
+          for (uint32_t k = 0; k < p.item_count; ++k) out += std::string(" ") + p.items[k].id;
+          out += "\n";
+        }
+      }
+    }
+  }
+  if (registry.plugins().empty()) out += "no plugins loaded\n";
+  for (const auto& error : load_errors) out += "not loaded: " + error + "\n";
+  return out;
+}
+
+std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors) {
+  nlohmann::ordered_json root;
+  root["plugins"] = nlohmann::ordered_json::array();
+  for (const auto& plugin : registry.plugins()) {
+    nlohmann::ordered_json p;
+    p["id"] = plugin->id;
+    p["name"] = plugin->name;
+    p["version"] = plugin->version;
+    p["path"] = plugin->path;
+    p["abi"] = std::to_string(PFX_ABI_MAJOR) + "." + std::to_string(plugin->abi_minor);
+    p["effects"] = nlohmann::ordered_json::array();
+    for (const pfx_effect_desc* effect : plugin->effects) {
+      nlohmann::ordered_json e;
+      e["id"] = effect->id;
+      e["label"] = effect->label ? effect->label : effect->id;
+      e["description"] = effect->description ? effect->description : "";
+      e["parameters"] = nlohmann::ordered_json::array();
+      for (uint32_t i = 0; i < effect->param_count; ++i) {
+        const pfx_param_desc& d = effect->params[i];
+        nlohmann::ordered_json q;
+        q["id"] = d.id;
+        q["key"] = std::string(effect->id) + "." + d.id;
+        q["label"] = d.label ? d.label : d.id;
+        q["tooltip"] = d.tooltip ? d.tooltip : "";
+        q["unit"] = d.unit ? d.unit : "";
+        q["group"] = d.group ? d.group : "";
+        q["type"] = type_name(d.type);
+        q["hard_min"] = number(d.hard_min);
+        q["hard_max"] = number(d.hard_max);
+        q["display_min"] = number(d.display_min);
+        q["display_max"] = number(d.display_max);
+        q["step"] = number(d.step);
+        q["out_of_range"] = (d.flags & PFX_PARAM_REJECT_OUT_OF_RANGE) ? "reject" : "clamp";
+        q["logarithmic"] = (d.flags & PFX_PARAM_LOGARITHMIC) != 0;
+        if (d.type == PFX_PARAM_ENUM) {
+          q["default"] = default_text(d);
+          q["items"] = nlohmann::ordered_json::array();
+          for (uint32_t k = 0; k < d.item_count; ++k)
+            q["items"].push_back({{"id", d.items[k].id}, {"label", d.items[k].label ? d.items[k].label : d.items[k].id}});
+        } else if (d.type == PFX_PARAM_BOOL) {
+          q["default"] = d.default_value.v[0] != 0;
+        } else if (components(d.type) == 1) {
+          q["default"] = number(d.default_value.v[0]);
+        } else {
+          q["default"] = nlohmann::ordered_json::array();
+          for (int c = 0; c < components(d.type); ++c) q["default"].push_back(number(d.default_value.v[c]));
+        }
+        e["parameters"].push_back(q);
+      }
+      p["effects"].push_back(e);
+    }
+    root["plugins"].push_back(p);
+  }
+  root["load_errors"] = load_errors;
+  return root.dump(2);
+}
+
+}  // namespace pfx::app

@@ -1,0 +1,15 @@
+// What --list prints: every loaded plugin, its effects and every parameter with its metadata,
+// as aligned text or as JSON. Shared by our programs so they all describe plugins the same way.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <pfx/host/plugin_registry.hpp>
+
+namespace pfx::app {
+
+std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors);
+std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors);
+
+}  // namespace pfx::app

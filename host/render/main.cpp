@@ -1,0 +1,207 @@
+// pfx-render: the command-line host. Loads plugins, runs a chain of effects over one frame
+// headless, writes EXR/PNG and optionally a JSON report. Exit codes in render_usage().
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <pfx/host/chain.hpp>
+
+#include "demo_image.hpp"
+#include "exr_io.hpp"
+#include "headless_context.hpp"
+#include "image_stats.hpp"
+#include "image_texture.hpp"
+#include "plugin_directory.hpp"
+#include "plugin_listing.hpp"
+#include "png_io.hpp"
+#include "render_options.hpp"
+#include "tonemap.hpp"
+
+using namespace pfx::app;
+namespace host = pfx::host;
+
+namespace {
+
+enum ExitCode { kOk = 0, kInternal = 1, kUsage = 2, kBadInput = 3, kEffectError = 4 };
+
+int error_exit(int code, const std::string& message) {
+  std::fprintf(stderr, "pfx-render: %s\n", message.c_str());
+  return code;
+}
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Lighting makes the colour, depth of field works on scene-referred colour, bloom and glare
+// spread what is left; anything else runs after them in load order.
+std::vector<std::string> default_chain(const host::PluginRegistry& registry) {
+  const std::vector<std::string> preferred = {"tiledlights", "dof", "bloom", "glare"};
+  std::vector<std::string> chain;
+  for (const auto& id : preferred)
+    if (registry.find_effect(id)) chain.push_back(id);
+  for (const auto& effect : registry.effects())
+    if (std::find(chain.begin(), chain.end(), effect.desc->id) == chain.end()) chain.push_back(effect.desc->id);
+  return chain;
+}
+
+bool load_input(const RenderOptions& options, Image* image, std::string* error) {
+  if (options.demo) {
+    *image = make_demo_image(options.width, options.height);
+    return true;
+  }
+  if (!read_exr(options.input, image, error)) return false;
+  if (!options.depth.empty()) {
+    Image depth;
+    if (!read_exr(options.depth, &depth, error)) return false;
+    if (depth.width != image->width || depth.height != image->height) {
+      *error = options.depth + ": depth is " + std::to_string(depth.width) + "x" + std::to_string(depth.height) +
+               " but the image is " + std::to_string(image->width) + "x" + std::to_string(image->height);
+      return false;
+    }
+    if (depth.has_depth()) {
+      image->depth = depth.depth;
+    } else {
+      image->depth.resize(image->pixel_count());
+      for (size_t i = 0; i < image->depth.size(); ++i) image->depth[i] = depth.rgba[i * 4];
+    }
+  }
+  return true;
+}
+
+bool write_outputs(const RenderOptions& options, const Image& result, std::string* error) {
+  for (const auto& path : options.outputs) {
+    bool ok = ends_with(path, ".png")
+                  ? write_png(path, tonemap_to_srgb8(result, options.tone), error)
+                  : write_exr(path, result, options.float_exr ? ExrPixelType::Float : ExrPixelType::Half, error);
+    if (!ok) return false;
+  }
+  return true;
+}
+
+nlohmann::ordered_json report_json(const std::string& renderer, const host::FrameReport& report,
+                                   const ImageStats& stats, const std::vector<std::string>& outputs) {
+  nlohmann::ordered_json root;
+  root["renderer"] = renderer;
+  root["effects"] = report.effects_run;
+  root["effects_skipped"] = report.effects_skipped;
+  root["passes"] = nlohmann::ordered_json::array();
+  for (const auto& pass : report.passes)
+    root["passes"].push_back({{"effect", pass.effect}, {"pass", pass.pass}, {"ms", pass.ms}});
+  root["total_ms"] = report.total_ms;
+  root["timing"] = report.timing;
+  root["peak_target_bytes"] = report.peak_target_bytes;
+  root["unpooled_target_bytes"] = report.unpooled_target_bytes;
+  root["output"] = {{"width", stats.width}, {"height", stats.height}, {"min", stats.min}, {"max", stats.max},
+                    {"mean", stats.mean}, {"nonfinite", stats.nonfinite}};
+  root["files"] = outputs;
+  for (const auto& [effect, members] : report.effect_reports) {
+    // An effect's figures are JSON members without braces; a malformed report is shown as text.
+    auto parsed = nlohmann::ordered_json::parse("{" + members + "}", nullptr, false);
+    root["effect_reports"][effect] = parsed.is_discarded() ? nlohmann::ordered_json(members) : parsed;
+  }
+  return root;
+}
+
+int run(const RenderOptions& options) {
+  std::unique_ptr<HeadlessContext> context;
+  std::string message;
+  if (!options.list) {
+    context = HeadlessContext::create(&message);
+    if (!context) return error_exit(kInternal, message);
+  }
+  host::PluginRegistry registry([](const char* name) { return HeadlessContext::get_proc_address(nullptr, name); },
+                                host::stderr_log_sink(options.verbose ? PFX_LOG_DEBUG : PFX_LOG_INFO),
+                                "pfx-render " PFX_VERSION);
+  std::vector<std::string> dirs = options.plugin_dirs;
+  if (dirs.empty()) {
+    std::string fallback = default_plugin_directory();
+    if (!fallback.empty()) dirs.push_back(fallback);
+  }
+  std::vector<std::string> load_errors = registry.load_search_path(dirs);
+  if (options.list) {
+    std::fputs((options.json ? plugin_listing_json(registry, load_errors) + "\n"
+                             : plugin_listing_text(registry, load_errors)).c_str(), stdout);
+    return kOk;
+  }
+  for (const auto& error : load_errors) std::fprintf(stderr, "pfx-render: warning: plugin not loaded: %s\n", error.c_str());
+
+  Image input;
+  if (!load_input(options, &input, &message)) return error_exit(kBadInput, message);
+
+  host::ParamStore params;
+  for (const auto& effect : registry.effects()) params.add_effect(effect.desc);
+  for (const auto& assignment : options.sets) {
+    std::string note;
+    if (!params.set_assignment(assignment, &message, &note)) return error_exit(kUsage, "--set " + message);
+    if (!note.empty()) std::fprintf(stderr, "pfx-render: warning: --set %s: %s\n", assignment.c_str(), note.c_str());
+  }
+
+  host::Chain chain(registry, params);
+  chain.set_timing(options.timing == "off"      ? host::Timing::OFF
+                   : options.timing == "finish" ? host::Timing::FINISH_AND_CLOCK
+                   : options.timing == "gpu"    ? host::Timing::GPU_QUERIES
+                                                : host::Timing::AUTO);
+  for (const auto& id : options.chain_given ? options.chain : default_chain(registry))
+    if (!chain.add(id, &message)) return error_exit(kEffectError, message);
+
+  pfx_frame frame{};
+  frame.struct_size = sizeof frame;
+  frame.width = static_cast<uint32_t>(input.width);
+  frame.height = static_cast<uint32_t>(input.height);
+  frame.inputs = PFX_INPUT_COLOR;
+  if (input.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
+  frame.depth_encoding = input.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
+  frame.camera = make_camera(options.camera, input.width, input.height);
+  frame.light_struct_size = sizeof(pfx_light);
+
+  host::FrameTextures textures;
+  textures.color = upload_color_texture(input);
+  textures.depth = upload_depth_texture(input);
+  uint32_t output = create_color_texture(input.width, input.height);
+  bool rendered = chain.render(frame, textures, output, &message);
+  Image result;
+  if (rendered) result = download_color_texture(output, input.width, input.height);
+  delete_texture(textures.color);
+  delete_texture(textures.depth);
+  delete_texture(output);
+  if (!rendered) return error_exit(kEffectError, message);
+
+  if (!write_outputs(options, result, &message)) return error_exit(kInternal, message);
+  const host::FrameReport& report = chain.report();
+  if (options.json) {
+    std::puts(report_json(context->renderer(), report, compute_image_stats(result), options.outputs).dump(2).c_str());
+  } else {
+    std::fprintf(stderr, "renderer: %s (timing: %s)\n", context->renderer().c_str(), report.timing.c_str());
+    for (const auto& pass : report.passes)
+      std::fprintf(stderr, "  %-12s %-16s %8.3f ms\n", pass.effect.c_str(), pass.pass.c_str(), pass.ms);
+    std::fprintf(stderr, "  total %.3f ms over %zu passes; peak target memory %llu bytes\n", report.total_ms,
+                 report.passes.size(), static_cast<unsigned long long>(report.peak_target_bytes));
+    if (report.passes.empty()) std::fprintf(stderr, "  no effect ran: the output is the input\n");
+  }
+  return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  RenderOptions options;
+  std::string error;
+  if (!parse_render_options(std::vector<std::string>(argv + 1, argv + argc), &options, &error)) {
+    std::fprintf(stderr, "pfx-render: %s\n\n%s", error.c_str(), render_usage().c_str());
+    return kUsage;
+  }
+  if (options.help) {
+    std::fputs(render_usage().c_str(), stdout);
+    return kOk;
+  }
+  try {
+    return run(options);
+  } catch (const std::exception& e) {
+    return error_exit(kInternal, std::string("internal error: ") + e.what());
+  }
+}

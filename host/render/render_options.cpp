@@ -1,0 +1,148 @@
+#include "render_options.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace pfx::app {
+namespace {
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> items;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t comma = text.find(',', start);
+    if (comma == std::string::npos) comma = text.size();
+    if (comma > start) items.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
+
+}  // namespace
+
+std::string render_usage() {
+  return
+      "usage: pfx-render [--plugins DIR]... (--demo | --input IMG.exr [--depth DEPTH.exr])\n"
+      "                  [--size WxH] [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
+      "                  [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
+      "       pfx-render --list [--json] [--plugins DIR]...\n"
+      "\n"
+      "Runs a chain of pfx effects over one frame, headless (EGL, no window), and writes the result.\n"
+      "\n"
+      "input\n"
+      "  --demo               the built-in procedural HDR image (bright spots, fine detail, a depth\n"
+      "                       ramp), made in code; --size WxH sets its size (default 1280x720)\n"
+      "  --input IMG.exr      an OpenEXR image: RGB(A) half or float; a Z channel is linear depth (m)\n"
+      "  --depth DEPTH.exr    linear depth from another EXR (its Z channel, else its R channel)\n"
+      "  --camera K=V,...     the camera the effects see: fovy (degrees, default 45), near (m, 0.1),\n"
+      "                       far (m, 1000, or inf); the camera sits at the origin looking down -Z\n"
+      "\n"
+      "effects\n"
+      "  --plugins DIR        load plugins from DIR (repeatable); default: the plugins folder next to\n"
+      "                       this program's folder; PFX_PLUGIN_PATH (':'-separated) adds more\n"
+      "  --chain a,b,...      the effects to run, in order (default: every loaded effect, lighting\n"
+      "                       first, then depth of field, then bloom and glare, then the rest)\n"
+      "  --set E.P=V          set parameter P of effect E (repeatable); see --list for every parameter\n"
+      "  --list               list plugins, effects and parameters (with --json: all metadata)\n"
+      "\n"
+      "output\n"
+      "  --out FILE           .exr (half; --float for 32-bit) or .png (tone-mapped, sRGB);\n"
+      "                       repeatable; every file is written to a temporary name, then renamed\n"
+      "  --float              32-bit float EXR output\n"
+      "  --exposure EV        exposure for PNG output (default 0)\n"
+      "  --tone NAME          tone curve for PNG output: linear (default), reinhard, aces\n"
+      "  --json               print one JSON object to stdout: renderer, effects, per-pass times,\n"
+      "                       total_ms, peak_target_bytes, output statistics, effect reports\n"
+      "  --timing MODE        auto (default: finish on a software renderer, gpu elsewhere), gpu\n"
+      "                       (GL timestamp queries), finish (glFinish + CPU clock around each\n"
+      "                       pass: what llvmpipe really spends), off\n"
+      "  -v, --verbose        also print debug messages\n"
+      "\n"
+      "exit codes: 0 ok, 1 internal error (e.g. no OpenGL 4.5 context), 2 usage, 3 bad input file,\n"
+      "            4 plugin or effect error\n";
+}
+
+bool parse_render_options(const std::vector<std::string>& args, RenderOptions* out, std::string* error) {
+  RenderOptions options;
+  auto fail = [&](const std::string& message) {
+    *error = message;
+    return false;
+  };
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&](std::string* into) {
+      if (i + 1 >= args.size()) return fail(arg + " needs a value");
+      *into = args[++i];
+      return true;
+    };
+    std::string text;
+    if (arg == "-h" || arg == "--help") options.help = true;
+    else if (arg == "--list") options.list = true;
+    else if (arg == "--json") options.json = true;
+    else if (arg == "--demo") options.demo = true;
+    else if (arg == "--float") options.float_exr = true;
+    else if (arg == "-v" || arg == "--verbose") options.verbose = true;
+    else if (arg == "--input") { if (!value(&options.input)) return false; }
+    else if (arg == "--depth") { if (!value(&options.depth)) return false; }
+    else if (arg == "--plugins") {
+      if (!value(&text)) return false;
+      options.plugin_dirs.push_back(text);
+    } else if (arg == "--set") {
+      if (!value(&text)) return false;
+      options.sets.push_back(text);
+    } else if (arg == "--out") {
+      if (!value(&text)) return false;
+      if (!ends_with(text, ".exr") && !ends_with(text, ".png"))
+        return fail("--out " + text + ": the file name must end in .exr or .png");
+      options.outputs.push_back(text);
+    } else if (arg == "--chain") {
+      if (!value(&text)) return false;
+      options.chain_given = true;
+      options.chain = split_commas(text);
+    } else if (arg == "--size") {
+      if (!value(&text)) return false;
+      int w = 0, h = 0;
+      char tail = 0;
+      if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
+        return fail("--size " + text + ": expected WxH with 1 <= W, H <= 16384");
+      options.width = w;
+      options.height = h;
+      options.size_given = true;
+    } else if (arg == "--camera") {
+      if (!value(&text)) return false;
+      if (!parse_camera_options(text, &options.camera, error)) return false;
+    } else if (arg == "--exposure") {
+      if (!value(&text)) return false;
+      char* end = nullptr;
+      options.tone.exposure_ev = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end || !(options.tone.exposure_ev == options.tone.exposure_ev))
+        return fail("--exposure " + text + ": not a number");
+    } else if (arg == "--tone") {
+      if (!value(&text)) return false;
+      if (!parse_tone_curve(text, &options.tone.curve, error)) return false;
+    } else if (arg == "--timing") {
+      if (!value(&options.timing)) return false;
+      if (options.timing != "auto" && options.timing != "gpu" && options.timing != "finish" && options.timing != "off")
+        return fail("--timing " + options.timing + ": expected auto, gpu, finish or off");
+    } else {
+      return fail("unknown option '" + arg + "' (see --help)");
+    }
+  }
+  if (options.help || options.list) {
+    *out = options;
+    return true;
+  }
+  if (options.demo == !options.input.empty())
+    return fail("give exactly one of --demo or --input IMG.exr");
+  if (!options.depth.empty() && options.input.empty()) return fail("--depth goes with --input");
+  if (options.size_given && !options.demo) return fail("--size applies to --demo (an input image has its own size)");
+  if (options.outputs.empty() && !options.json) return fail("nothing to do: give --out FILE and/or --json");
+  *out = options;
+  return true;
+}
+
+}  // namespace pfx::app

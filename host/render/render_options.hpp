@@ -1,0 +1,36 @@
+// pfx-render's command line, parsed into plain data so it can be tested (and fuzzed) on its own.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "camera_options.hpp"
+#include "tonemap.hpp"
+
+namespace pfx::app {
+
+struct RenderOptions {
+  bool help = false;
+  bool list = false;
+  bool json = false;
+  bool demo = false;
+  std::string input, depth;             // --input IMG.exr [--depth DEPTH.exr]
+  int width = 1280, height = 720;       // --size, --demo only
+  bool size_given = false;
+  CameraOptions camera;
+  std::vector<std::string> plugin_dirs;  // --plugins, repeatable
+  bool chain_given = false;
+  std::vector<std::string> chain;        // --chain a,b,c (empty list: no effect)
+  std::vector<std::string> sets;         // --set effect.param=value, repeatable
+  std::vector<std::string> outputs;      // --out FILE.exr|FILE.png, repeatable
+  bool float_exr = false;
+  ToneMapSettings tone;
+  std::string timing = "auto";           // auto | gpu | finish | off
+  bool verbose = false;
+};
+
+// Parses argv (without argv[0]). False with *error for a usage error (exit code 2).
+bool parse_render_options(const std::vector<std::string>& args, RenderOptions* out, std::string* error);
+std::string render_usage();
+
+}  // namespace pfx::app
