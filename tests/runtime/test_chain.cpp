@@ -63,7 +63,7 @@ TEST_CASE("gain multiplies every colour channel and keeps alpha", "[chain]") {
   CHECK(rig.chain->report().peak_target_bytes == 0);  // it writes the chain output directly
 }
 
-TEST_CASE("disabled and no-op effects cost no pass and no target; the output is the input", "[chain]") {
+TEST_CASE("disabled and no-op effects cost no pass and no target, and the output is the input", "[chain]") {
   Rig rig;
   std::string error;
   REQUIRE(rig.chain->add("gain", &error));     // gain 1: a no-op

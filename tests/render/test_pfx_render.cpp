@@ -1,0 +1,176 @@
+// pfx-render as a user runs it: exit codes, --help, --list, --json, the files it writes.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "exr_io.hpp"
+#include "png_io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  std::string out;  // stdout; stderr goes to err
+  std::string err;
+};
+
+// Runs pfx-render with the fixture plugins (never the default folder) and returns its exit code
+// and output. A death by signal is reported as 128 + signal, which no test accepts.
+Result pfx_render(const std::string& args, bool with_plugins = true) {
+  static int counter = 0;
+  const fs::path err_file = fs::temp_directory_path() / ("pfx-render-test-" + std::to_string(::getpid()) + "-" +
+                                                         std::to_string(counter++) + ".err");
+  std::string command = std::string(PFX_RENDER) + (with_plugins ? " --plugins " PFX_TEST_PLUGIN_DIR : "") + " " +
+                        args + " 2>" + err_file.string();
+  Result result;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[4096];
+  size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  std::ifstream in(err_file);
+  result.err.assign(std::istreambuf_iterator<char>(in), {});
+  fs::remove(err_file);
+  return result;
+}
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("pfx-render-files-" + std::to_string(::getpid()));
+  Scratch() { fs::create_directories(dir); }
+  ~Scratch() { fs::remove_all(dir); }
+  std::string operator/(const std::string& name) const { return (dir / name).string(); }
+  // Only the named files: nothing left under a temporary name.
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& item : fs::directory_iterator(dir)) names.push_back(item.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("help documents every option and exit code", "[render]") {
+  Result r = pfx_render("--help", false);
+  CHECK(r.exit_code == 0);
+  for (const char* option : {"--plugins", "--demo", "--input", "--depth", "--size", "--camera", "--chain", "--set",
+                             "--out", "--json", "--list", "--float", "--exposure", "--tone", "--timing",
+                             "exit codes: 0 ok, 1 internal", "2 usage", "3 bad input file", "4 plugin or effect error"})
+    CHECK(r.out.find(option) != std::string::npos);
+}
+
+TEST_CASE("usage errors exit 2 with a message", "[render][errors]") {
+  CHECK(pfx_render("").exit_code == 2);
+  CHECK(pfx_render("--demo --input x.exr --json").exit_code == 2);
+  CHECK(pfx_render("--demo --out x.tiff").exit_code == 2);
+  CHECK(pfx_render("--demo --size 0x5 --json").exit_code == 2);
+  CHECK(pfx_render("--demo --camera fovy=45,near=1,far=1 --json").exit_code == 2);
+  Result r = pfx_render("--demo --json --set gain.gain=nan");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("gain.gain: NaN is not a valid value") != std::string::npos);
+  r = pfx_render("--frobnicate");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("unknown option '--frobnicate'") != std::string::npos);
+}
+
+TEST_CASE("bad input files exit 3 naming the file", "[render][errors][hard]") {
+  Scratch scratch;
+  Result r = pfx_render("--input " + scratch / "missing.exr" + " --json");
+  CHECK(r.exit_code == 3);
+  CHECK(r.err.find(scratch / "missing.exr") != std::string::npos);
+  std::ofstream(scratch / "text.exr") << "this is not an EXR file\n";
+  r = pfx_render("--input " + scratch / "text.exr" + " --json");
+  CHECK(r.exit_code == 3);
+  CHECK(r.err.find(scratch / "text.exr") != std::string::npos);
+}
+
+TEST_CASE("an unknown effect exits 4", "[render][errors]") {
+  Result r = pfx_render("--demo --size 8x8 --chain nothing --json");
+  CHECK(r.exit_code == 4);
+  CHECK(r.err.find("unknown effect 'nothing'") != std::string::npos);
+}
+
+TEST_CASE("list in JSON lists the fixture effects with their parameter metadata", "[render]") {
+  Result r = pfx_render("--list --json");
+  REQUIRE(r.exit_code == 0);
+  auto json = nlohmann::json::parse(r.out);
+  REQUIRE(json["plugins"].size() == 1);
+  const auto& effects = json["plugins"][0]["effects"];
+  REQUIRE(effects.size() == 2);
+  CHECK(effects[0]["id"] == "gain");
+  const auto& gain = effects[0]["parameters"][0];
+  CHECK(gain["key"] == "gain.gain");
+  CHECK(gain["type"] == "float");
+  CHECK(gain["default"] == 1.0);
+  CHECK(gain["hard_max"] == 1000.0);
+  CHECK(effects[0]["parameters"][1]["items"][1]["id"] == "luma");
+}
+
+TEST_CASE("demo with JSON reports passes, memory and output statistics, and its files land complete", "[render]") {
+  Scratch scratch;
+  Result plain = pfx_render("--demo --size 64x48 --chain gain --json");
+  REQUIRE(plain.exit_code == 0);
+  auto before = nlohmann::json::parse(plain.out);
+  CHECK(before["effects"].empty());  // gain 1 is a no-op
+  CHECK(before["passes"].empty());
+
+  Result r = pfx_render("--demo --size 64x48 --chain gain,boxblur --set gain.gain=2 --set boxblur.radius=1 --json --out " +
+                        scratch / "a.exr" + " --out " + scratch / "a.png");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  auto json = nlohmann::json::parse(r.out);
+  CHECK(json["renderer"].get<std::string>().find("4.5") != std::string::npos);
+  CHECK(json["effects"] == nlohmann::json::array({"gain", "boxblur"}));
+  CHECK(json["passes"].size() == 4);
+  CHECK(json["passes"][0]["effect"] == "gain");
+  // gain's 64x48 output is an intermediate; boxblur's two 32x24 targets: 8 bytes a pixel.
+  CHECK(json["peak_target_bytes"] == 64 * 48 * 8 + 2 * 32 * 24 * 8);
+  CHECK(json["output"]["width"] == 64);
+  CHECK(json["output"]["nonfinite"] == 0);
+  // A blur keeps the mean (up to the edges) and gain 2 doubles it.
+  for (int c = 0; c < 3; ++c)
+    CHECK(json["output"]["mean"][c].get<double>() ==
+          Approx(2 * before["output"]["mean"][c].get<double>()).epsilon(0.05));
+  CHECK(scratch.files() == std::vector<std::string>{"a.exr", "a.png"});
+
+  pfx::app::Image exr;
+  std::string error;
+  REQUIRE(pfx::app::read_exr(scratch / "a.exr", &exr, &error));
+  CHECK(exr.width == 64);
+  CHECK(exr.height == 48);
+  pfx::app::DisplayImage png;
+  REQUIRE(pfx::app::read_png(scratch / "a.png", &png, &error));
+  CHECK(png.width == 64);
+}
+
+TEST_CASE("an EXR written by pfx-render reads back as input, depth included", "[render]") {
+  Scratch scratch;
+  REQUIRE(pfx_render("--demo --size 40x30 --chain gain --out " + scratch / "in.exr --float").exit_code == 0);
+  Result r = pfx_render("--input " + scratch / "in.exr" + " --chain gain --set gain.gain=0.5 --json --out " +
+                        scratch / "out.exr");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  pfx::app::Image in, out;
+  std::string error;
+  REQUIRE(pfx::app::read_exr(scratch / "in.exr", &in, &error));
+  REQUIRE(pfx::app::read_exr(scratch / "out.exr", &out, &error));
+  for (size_t i = 0; i < in.rgba.size(); i += 4) REQUIRE(out.rgba[i] == Approx(in.rgba[i] * 0.5).epsilon(1.0 / 512));
+}
+
+TEST_CASE("an output into a missing folder fails without leaving anything behind", "[render][errors]") {
+  Scratch scratch;
+  Result r = pfx_render("--demo --size 8x8 --out " + scratch / "no/such/dir/x.exr");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("x.exr") != std::string::npos);
+}
