@@ -1,0 +1,66 @@
+// pfx-bench --quick as CI runs it: the copy unit, a row per effect, the files it promises.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "bench_report.hpp"
+#include "error_metrics.hpp"
+#include "suite.hpp"
+
+namespace fs = std::filesystem;
+
+TEST_CASE("quick bench measures the copy unit and every fixture effect", "[bench]") {
+  const fs::path out = fs::temp_directory_path() / ("pfx-bench-test-" + std::to_string(::getpid()));
+  std::string command = std::string(PFX_BENCH) + " --quick --plugins " PFX_TEST_PLUGIN_DIR " --out " + out.string() +
+                        " > /dev/null 2>&1";
+  int status = std::system(command.c_str());
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == 0);
+  std::ifstream in(out / "bench.json");
+  REQUIRE(in);
+  auto json = nlohmann::json::parse(in);
+  CHECK(json["renderer"].get<std::string>().find("4.5") != std::string::npos);
+  REQUIRE(json["units"].size() == 1);
+  CHECK(json["units"][0]["width"] == 640);
+  CHECK(json["units"][0]["copy_ms"].get<double>() > 0);
+  std::map<std::string, nlohmann::json> rows;
+  for (const auto& row : json["rows"]) rows[row["effect"].get<std::string>()] = row;
+  REQUIRE(rows.count("gain"));
+  REQUIRE(rows.count("boxblur"));
+  CHECK(rows["gain"]["pass_count"] == 0);  // a no-op at its defaults
+  CHECK(rows["boxblur"]["pass_count"] == 3);
+  CHECK(rows["boxblur"]["peak_target_bytes"] == 2 * 320 * 180 * 8);
+  CHECK(rows["boxblur"]["ratio_to_copy"].get<double>() > 0);
+  CHECK(fs::exists(out / "bench.md"));
+  fs::remove_all(out);
+}
+
+TEST_CASE("suite rows parse and malformed rows name their line", "[bench]") {
+  std::vector<pfx::bench::SuiteRow> rows;
+  std::string error;
+  REQUIRE(pfx::bench::parse_suite("# comment\nbloom mode=chain levels=6\n\ndof\n", &rows, &error));
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0].label() == "mode=chain levels=6");
+  CHECK(rows[1].label() == "defaults");
+  CHECK_FALSE(pfx::bench::parse_suite("bloom mode\n", &rows, &error));
+  CHECK(error == "suite line 1: 'mode' is not param=value");
+  REQUIRE(pfx::bench::parse_suite(pfx::bench::default_suite_text(), &rows, &error));
+}
+
+TEST_CASE("relative RMSE and max error against a reference", "[bench]") {
+  // Reference (1,2,2) and (0,0,0); output off by (0,0,1) in the first pixel: RMSE 1/sqrt(9).
+  std::vector<float> reference = {1, 2, 2, 1, 0, 0, 0, 1};
+  std::vector<float> output = {1, 2, 3, 0, 0, 0, 0, 7};  // alpha is ignored
+  auto metrics = pfx::bench::compare_rgb(output, reference);
+  CHECK(metrics.relative_rmse == Approx(1.0 / 3.0));
+  CHECK(metrics.max_abs == 1.0);
+  output[0] = std::nanf("");
+  CHECK(pfx::bench::compare_rgb(output, reference).nonfinite == 1);
+}
