@@ -1,5 +1,7 @@
 #include "bench_options.hpp"
 
+#include "cli_text.hpp"
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -37,17 +39,6 @@ bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out
     *error = message;
     return false;
   };
-  auto split = [](const std::string& text) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    while (start <= text.size()) {
-      size_t comma = text.find(',', start);
-      if (comma == std::string::npos) comma = text.size();
-      if (comma > start) items.push_back(text.substr(start, comma - start));
-      start = comma + 1;
-    }
-    return items;
-  };
   bool sizes_given = false, frames_given = false, warmup_given = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
@@ -70,7 +61,7 @@ bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out
     else if (arg == "--plugins") { if (!value()) return false; options.plugin_dirs.push_back(text); }
     else if (arg == "--out") { if (!value()) return false; options.out_dir = text; }
     else if (arg == "--suite") { if (!value()) return false; options.suite_file = text; }
-    else if (arg == "--effects") { if (!value()) return false; options.effects = split(text); }
+    else if (arg == "--effects") { if (!value()) return false; options.effects = pfx::app::split_list(text); }
     else if (arg == "--frames") { if (!count(&options.frames, 1)) return false; frames_given = true; }
     else if (arg == "--warmup") { if (!count(&options.warmup, 0)) return false; warmup_given = true; }
     else if (arg == "--timing") {
@@ -80,11 +71,9 @@ bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out
     } else if (arg == "--sizes") {
       if (!value()) return false;
       options.sizes.clear();
-      for (const auto& item : split(text)) {
+      for (const auto& item : pfx::app::split_list(text)) {
         int w = 0, h = 0;
-        char tail = 0;
-        if (std::sscanf(item.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
-          return fail("--sizes " + item + ": expected WxH with 1 <= W, H <= 16384");
+        if (!pfx::app::parse_frame_size("--sizes", item, &w, &h, error)) return false;
         options.sizes.push_back({w, h});
       }
       if (options.sizes.empty()) return fail("--sizes needs at least one size");

@@ -10,6 +10,7 @@
 
 #include <pfx/host/chain.hpp>
 
+#include "cli_text.hpp"
 #include "demo_image.hpp"
 #include "exr_io.hpp"
 #include "headless_context.hpp"
@@ -31,10 +32,6 @@ enum ExitCode { kOk = 0, kInternal = 1, kUsage = 2, kBadInput = 3, kEffectError 
 int error_exit(int code, const std::string& message) {
   std::fprintf(stderr, "pfx-render: %s\n", message.c_str());
   return code;
-}
-
-bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // Lighting makes the colour, depth of field works on scene-referred colour, bloom and glare

@@ -1,28 +1,11 @@
 #include "render_options.hpp"
 
+#include "cli_text.hpp"
+
 #include <cstdio>
 #include <cstdlib>
 
 namespace pfx::app {
-namespace {
-
-bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> items;
-  size_t start = 0;
-  while (start <= text.size()) {
-    size_t comma = text.find(',', start);
-    if (comma == std::string::npos) comma = text.size();
-    if (comma > start) items.push_back(text.substr(start, comma - start));
-    start = comma + 1;
-  }
-  return items;
-}
-
-}  // namespace
 
 std::string render_usage() {
   return
@@ -102,15 +85,10 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     } else if (arg == "--chain") {
       if (!value(&text)) return false;
       options.chain_given = true;
-      options.chain = split_commas(text);
+      options.chain = split_list(text);
     } else if (arg == "--size") {
       if (!value(&text)) return false;
-      int w = 0, h = 0;
-      char tail = 0;
-      if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
-        return fail("--size " + text + ": expected WxH with 1 <= W, H <= 16384");
-      options.width = w;
-      options.height = h;
+      if (!parse_frame_size("--size", text, &options.width, &options.height, error)) return false;
       options.size_given = true;
     } else if (arg == "--camera") {
       if (!value(&text)) return false;

@@ -39,13 +39,16 @@ std::string gl_error_text(GLenum error) {
 
 Chain::Chain(const PluginRegistry& registry, ParamStore& params) : registry_(registry), params_(params) {
   // libpfxhost keeps a private GL function table, loaded through the embedding program's loader.
-  gladLoadGLUserPtr(load_through_registry, const_cast<PluginRegistry*>(&registry_));
+  // Without a current 4.5 context this fails; render() then refuses instead of crashing.
+  gl_loaded_ = gladLoadGLUserPtr(load_through_registry, const_cast<PluginRegistry*>(&registry_)) != 0 &&
+               GLAD_GL_VERSION_4_5;
+  if (!gl_loaded_) return;
   gl_ = std::make_unique<GlResources>();
   set_timing(Timing::AUTO);
 }
 
 void Chain::set_timing(Timing timing) {
-  if (timing == Timing::AUTO) {
+  if (timing == Timing::AUTO && gl_loaded_) {
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     std::string name = renderer ? renderer : "";
     bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
@@ -61,6 +64,10 @@ Chain::~Chain() {
 }
 
 bool Chain::add(const std::string& effect_id, std::string* error) {
+  if (!gl_loaded_) {
+    if (error) *error = "no OpenGL 4.5 context was current when the chain was made";
+    return false;
+  }
   const EffectInfo* info = registry_.find_effect(effect_id);
   if (!info) {
     std::string known;
@@ -84,11 +91,7 @@ bool Chain::add(const std::string& effect_id, std::string* error) {
 }
 
 size_t Chain::size() const { return instances_.size(); }
-const std::string& Chain::effect_id(size_t index) const {
-  static std::string id;
-  id = instances_.at(index)->info->desc->id;
-  return id;
-}
+std::string Chain::effect_id(size_t index) const { return instances_.at(index)->info->desc->id; }
 void Chain::set_enabled(size_t index, bool enabled) {
   instances_.at(index)->enabled = enabled;
   plan_valid_ = false;
@@ -152,6 +155,7 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
     if (error) *error = text;
     return false;
   };
+  if (!gl_loaded_) return fail("no OpenGL 4.5 context was current when the chain was made");
   if (frame.struct_size < sizeof(pfx_frame)) return fail("pfx_frame struct too small");
   if (frame.width < 1 || frame.height < 1) return fail("frame size must be at least 1x1");
   if (!textures.color || !(frame.inputs & PFX_INPUT_COLOR)) return fail("the frame has no colour input");

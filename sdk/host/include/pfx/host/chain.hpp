@@ -64,7 +64,7 @@ class PFX_HOST_API Chain {
   // failing create.
   bool add(const std::string& effect_id, std::string* error);
   size_t size() const;
-  const std::string& effect_id(size_t index) const;
+  std::string effect_id(size_t index) const;
   void set_enabled(size_t index, bool enabled);
   bool enabled(size_t index) const;
   void remove(size_t index);
@@ -95,6 +95,7 @@ class PFX_HOST_API Chain {
   FramePlan plan_;
   std::vector<int> planned_active_;  // the instances plan_ was made for
   bool plan_valid_ = false;
+  bool gl_loaded_ = false;
   Timing timing_ = Timing::AUTO;
   FrameReport report_;
 };

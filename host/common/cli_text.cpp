@@ -1,0 +1,35 @@
+#include "cli_text.hpp"
+
+#include <cstdio>
+
+namespace pfx::app {
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::vector<std::string> split_list(const std::string& text, char separator) {
+  std::vector<std::string> items;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find(separator, start);
+    if (end == std::string::npos) end = text.size();
+    if (end > start) items.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return items;
+}
+
+bool parse_frame_size(const std::string& option, const std::string& text, int* width, int* height, std::string* error) {
+  int w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384) {
+    *error = option + " " + text + ": expected WxH with 1 <= W, H <= 16384";
+    return false;
+  }
+  *width = w;
+  *height = h;
+  return true;
+}
+
+}  // namespace pfx::app
