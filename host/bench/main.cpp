@@ -77,12 +77,7 @@ int main(int argc, char** argv) {
   pfx::host::PluginRegistry registry(
       [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); },
       pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
-  std::vector<std::string> dirs = options.plugin_dirs;
-  if (dirs.empty()) {
-    std::string fallback = pfx::app::default_plugin_directory();
-    if (!fallback.empty()) dirs.push_back(fallback);
-  }
-  for (const auto& error : registry.load_search_path(dirs))
+  for (const auto& error : pfx::app::load_plugins(registry, options.plugin_dirs))
     std::fprintf(stderr, "pfx-bench: warning: plugin not loaded: %s\n", error.c_str());
   for (const auto& id : options.effects)
     if (!registry.find_effect(id)) return error_exit(4, "--effects: effect '" + id + "' is not loaded");

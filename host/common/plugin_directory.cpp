@@ -20,4 +20,13 @@ std::string default_plugin_directory() {
   return "";
 }
 
+std::vector<std::string> load_plugins(pfx::host::PluginRegistry& registry, const std::vector<std::string>& folders) {
+  std::vector<std::string> search = folders;
+  if (search.empty()) {
+    std::string fallback = default_plugin_directory();
+    if (!fallback.empty()) search.push_back(fallback);
+  }
+  return registry.load_search_path(search);
+}
+
 }  // namespace pfx::app

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include <pfx/host/plugin_registry.hpp>
 
 namespace pfx::app {
 
@@ -10,5 +13,8 @@ namespace pfx::app {
 std::string executable_directory();
 // The default plugin folder; empty when neither layout exists.
 std::string default_plugin_directory();
+// Loads the plugins of the given folders (the default folder when none is given) and of
+// PFX_PLUGIN_PATH; returns the message of every plugin or folder refused.
+std::vector<std::string> load_plugins(pfx::host::PluginRegistry& registry, const std::vector<std::string>& folders);
 
 }  // namespace pfx::app

@@ -114,12 +114,7 @@ int run(const RenderOptions& options) {
   host::PluginRegistry registry([](const char* name) { return HeadlessContext::get_proc_address(nullptr, name); },
                                 host::stderr_log_sink(options.verbose ? PFX_LOG_DEBUG : PFX_LOG_INFO),
                                 "pfx-render " PFX_VERSION);
-  std::vector<std::string> dirs = options.plugin_dirs;
-  if (dirs.empty()) {
-    std::string fallback = default_plugin_directory();
-    if (!fallback.empty()) dirs.push_back(fallback);
-  }
-  std::vector<std::string> load_errors = registry.load_search_path(dirs);
+  std::vector<std::string> load_errors = load_plugins(registry, options.plugin_dirs);
   if (options.list) {
     std::fputs((options.json ? plugin_listing_json(registry, load_errors) + "\n"
                              : plugin_listing_text(registry, load_errors)).c_str(), stdout);
