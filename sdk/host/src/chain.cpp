@@ -163,7 +163,7 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
 
   std::vector<int> active;
   if (!declare_all(frame, &active, &message)) return fail(message);
-  if (!plan_valid_ || active != planned_active_ || plan_.passes.empty() != active.empty()) {
+  if (!plan_valid_ || active != planned_active_) {
     std::vector<PlanInput> inputs;
     for (int index : active) inputs.push_back({instances_[index]->info->desc->id, &instances_[index]->declaration});
     FramePlan plan;
