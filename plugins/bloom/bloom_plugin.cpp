@@ -1,0 +1,68 @@
+// The bloom plugin's entry point: the effect factory and the CPU reference factory. Everything here
+// is static data; GL is loaded only when an instance is created.
+#include <cstring>
+#include <new>
+
+#include <pfx/pfx.h>
+#include <pfx/reference.h>
+
+#include "bloom_effect.hpp"
+#include "bloom_params.hpp"
+#include "reference/bloom_model.hpp"
+
+namespace pfx_bloom {
+namespace {
+
+uint32_t effect_count() { return 1; }
+const pfx_effect_desc* get_effect(uint32_t index) { return index == 0 ? &kBloomEffect : nullptr; }
+
+const pfx_effect_factory kEffectFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
+
+int has_reference(const char* effect_id, pfx_reference_kind kind) {
+  return effect_id && std::strcmp(effect_id, "bloom") == 0 && kind == PFX_REFERENCE_MODEL;
+}
+
+pfx_status evaluate(const pfx_reference_request* request) {
+  if (!request || request->struct_size < sizeof(pfx_reference_request) || !request->frame ||
+      request->frame->struct_size < sizeof(pfx_frame) || !request->params || !request->color || !request->output ||
+      request->frame->width == 0 || request->frame->height == 0)
+    return PFX_INVALID_ARGUMENT;
+  if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
+  const Settings settings = settings_from(request->params);
+  if (settings.mode != MODE_CHAIN) return PFX_UNSUPPORTED;
+  try {
+    evaluate_chain_model(settings, request->frame->width, request->frame->height, request->color, request->output);
+  } catch (const std::bad_alloc&) {
+    return PFX_OUT_OF_MEMORY;
+  } catch (...) {
+    return PFX_ERROR;
+  }
+  return PFX_OK;
+}
+
+const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+
+// No GL and no state: init is trivially idempotent.
+pfx_status plugin_init(const pfx_host* host) {
+  if (!host || host->struct_size < sizeof(pfx_host) || !host->log || !host->get_proc_address)
+    return PFX_INVALID_ARGUMENT;
+  return PFX_OK;
+}
+
+void plugin_deinit() {}
+
+const void* plugin_get_factory(const char* factory_id) {
+  if (!factory_id) return nullptr;
+  if (std::strcmp(factory_id, PFX_EFFECTS_FACTORY_ID) == 0) return &kEffectFactory;
+  if (std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return &kReferenceFactory;
+  return nullptr;
+}
+
+const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR,  PFX_ABI_MINOR,      "org.pfx.bloom",
+                          "pfx bloom",       "0.1.0",        plugin_init,        plugin_deinit,
+                          plugin_get_factory};
+
+}  // namespace
+}  // namespace pfx_bloom
+
+extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &pfx_bloom::kEntry; }
