@@ -1,0 +1,173 @@
+#include "bloom_rig.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "bloom_levels.hpp"
+#include "bloom_params.hpp"
+#include "gl_test_support.hpp"
+#include "image_texture.hpp"
+
+namespace bloom_test {
+
+Picture::Picture(int w, int h, float r, float g, float b, float a) : width(w), height(h) {
+  rgba.resize(static_cast<size_t>(w) * h * 4);
+  for (size_t i = 0; i < rgba.size(); i += 4) rgba[i] = r, rgba[i + 1] = g, rgba[i + 2] = b, rgba[i + 3] = a;
+}
+
+Picture scene(int width, int height) {
+  Picture p(width, height, 0, 0, 0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float* c = p.at(x, y);
+      // Multiples of 1/64 below 1: exact in half.
+      c[0] = float((x * 5 + y * 3) % 48) / 64.0f;
+      c[1] = float((x * 2 + y * 7) % 40) / 64.0f;
+      c[2] = float((x + y) % 56) / 64.0f;
+    }
+  struct Spot {
+    double fx, fy;
+    int radius;
+    float r, g, b;
+  };
+  const Spot spots[] = {{0.3, 0.6, 0, 40.0f, 30.0f, 20.0f},
+                        {0.7, 0.3, 1, 3.0f, 6.0f, 1.5f},
+                        {0.55, 0.75, 2, 0.5f, 1.25f, 9.0f},
+                        {0.0, 0.0, 1, 12.0f, 12.0f, 12.0f}};  // on the corner: the border matters
+  for (const Spot& s : spots) {
+    const int cx = int(s.fx * (width - 1)), cy = int(s.fy * (height - 1));
+    for (int y = cy - s.radius; y <= cy + s.radius; ++y)
+      for (int x = cx - s.radius; x <= cx + s.radius; ++x)
+        if (x >= 0 && y >= 0 && x < width && y < height) {
+          float* c = p.at(x, y);
+          c[0] = s.r, c[1] = s.g, c[2] = s.b;
+        }
+  }
+  return p;
+}
+
+Rig::Rig() : registry_(pfx::test::make_registry()) {
+  std::string error;
+  INFO(error);
+  REQUIRE(registry_->load(PFX_BLOOM_PLUGIN, &error));
+  const pfx::host::EffectInfo* info = registry_->find_effect("bloom");
+  REQUIRE(info);
+  references_ = info->plugin->references;
+  REQUIRE(references_);
+  chain_ = std::make_unique<pfx::host::Chain>(*registry_, params_);
+  REQUIRE(chain_->add("bloom", &error));
+}
+
+void Rig::set(const std::string& assignment) {
+  std::string error;
+  INFO(assignment << ": " << error);
+  REQUIRE(params_.set_assignment(assignment, &error));
+}
+
+namespace {
+
+Picture from_image(const pfx::app::Image& img) {
+  Picture p;
+  p.width = img.width;
+  p.height = img.height;
+  p.rgba = pfx::app::flip_rows(img.rgba, img.width, img.height, 4);
+  return p;
+}
+
+}  // namespace
+
+Rendered Rig::render(const Picture& picture) {
+  const int w = picture.width, h = picture.height;
+  pfx::app::Image img;
+  img.width = w;
+  img.height = h;
+  img.rgba = pfx::app::flip_rows(picture.rgba, w, h, 4);
+  pfx::host::FrameTextures textures;
+  textures.color = pfx::app::upload_color_texture(img);
+  const uint32_t output = pfx::app::create_color_texture(w, h);
+  const pfx_frame frame = pfx::test::make_frame(w, h);
+  std::string error;
+  const bool ok = chain_->render(frame, textures, output, &error);
+  INFO(error);
+  REQUIRE(ok);
+
+  Rendered r;
+  r.input = from_image(pfx::app::download_color_texture(textures.color, w, h));
+  r.output = from_image(pfx::app::download_color_texture(output, w, h));
+  pfx::app::delete_texture(textures.color);
+  pfx::app::delete_texture(output);
+  r.passes = chain_->report().passes.size();
+
+  const pfx_value* values = params_.values("bloom");
+  const pfx_bloom::Settings settings = pfx_bloom::settings_from(values);
+  r.levels = r.passes ? pfx_bloom::plan_levels(w, h, settings.levels, settings.auto_min_size).count : 0;
+  r.model = Picture(w, h, 0, 0, 0, 0);
+  pfx_reference_request request{};
+  request.struct_size = sizeof request;
+  request.effect_id = "bloom";
+  request.kind = PFX_REFERENCE_MODEL;
+  request.frame = &frame;
+  request.params = values;
+  request.color = r.input.rgba.data();  // exactly what the GPU read
+  request.output = r.model.rgba.data();
+  REQUIRE(references_->evaluate(&request) == PFX_OK);
+  return r;
+}
+
+// The tolerance, per pixel and channel:
+//
+//   |gpu - model| <= B * ((L + 2) * 2^-10 + 2^-7) + |model| * 2^-10
+//
+// B is the largest bloom the model adds anywhere in the image (its output minus the input), L the
+// level count. Why:
+// - Half-float storage: a half has an 11-bit significand, so one store is off by at most 2^-11
+//   relative rounding to nearest, 2^-10 rounding toward zero (which Mesa does on some paths). The
+//   bloom is stored in its level (L stores: the bright pass or a downsample, then the up-pass
+//   blends that accumulate into it, each of a sum no larger than B) and the output once more;
+//   L + 2 stores of at most B each. The output store of colour + bloom adds |model| * 2^-10.
+// - Bilinear weights: GPUs compute filter weights in fixed point with (typically) 8 fractional
+//   bits, so a tap's weight along one axis is off by up to 2^-8 (truncated), and a tap's value by
+//   2^-8 of the spread of the texels it mixes per axis, 2^-7 for both, with every texel <= B.
+//   Taps are averaged with weights summing to 1 at every stage, so this does not grow along the
+//   chain beyond the level values, all bounded by B.
+// A wrong tap offset, weight, wrap mode or level size moves the bloom by far more (the tests check
+// that a 10% change of strength fails).
+double worst_error_ratio(const Picture& output, const Picture& model, const Picture& input, int levels) {
+  double bloom_max = 0;
+  for (size_t i = 0; i < model.rgba.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const float in = input.rgba[i];
+    const double finite_in = std::isnan(in) ? 0.0 : std::fmax(-65504.0, std::fmin(65504.0, double(in)));
+    bloom_max = std::fmax(bloom_max, std::fabs(double(model.rgba[i]) - finite_in));
+  }
+  double worst = 0;
+  for (size_t i = 0; i < model.rgba.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const double m = model.rgba[i], o = output.rgba[i];
+    const double tolerance =
+        bloom_max * ((levels + 2) * std::ldexp(1.0, -10) + std::ldexp(1.0, -7)) + std::fabs(m) * std::ldexp(1.0, -10) + 1e-7;
+    const double ratio = std::isfinite(o) ? std::fabs(o - m) / tolerance : HUGE_VAL;
+    worst = std::fmax(worst, ratio);
+  }
+  return worst;
+}
+
+void require_matches_model(const Rendered& r) {
+  const double worst = worst_error_ratio(r.output, r.model, r.input, r.levels);
+  INFO(r.input.width << "x" << r.input.height << ", " << r.levels << " levels: worst error / tolerance = " << worst);
+  // BLOOM_TEST_VERBOSE=1 prints the margin of every comparison (llvmpipe: at most about 0.5).
+  if (std::getenv("BLOOM_TEST_VERBOSE")) std::fprintf(stderr, "%dx%d L%d worst %.4f\n", r.input.width, r.input.height, r.levels, worst);
+  REQUIRE(worst <= 1.0);
+}
+
+bool all_finite(const Picture& p) {
+  for (float v : p.rgba)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace bloom_test

@@ -1,0 +1,206 @@
+// The named hard cases of issue 3: bad values in the frame (NaN, +-Inf, above the half-float
+// maximum, negative), tiny and odd sizes, and settings at their edges.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "bloom_rig.hpp"
+
+using namespace bloom_test;
+
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// Pixels where the model's output changes when pixel (px, py) goes from 0 to the brightest value
+// the bright pass lets through: how far one pixel can reach with these settings. Grown by one pixel
+// for the GPU's coordinate rounding.
+std::vector<bool> reach_of(Rig& rig, const Picture& base, int px, int py) {
+  Picture zero = base, bright = base;
+  float* z = zero.at(px, py);
+  float* b = bright.at(px, py);
+  for (int c = 0; c < 3; ++c) z[c] = 0.0f, b[c] = 65472.0f;
+  const Rendered rz = rig.render(zero), rb = rig.render(bright);
+  const int w = base.width, h = base.height;
+  std::vector<bool> changed(size_t(w) * h, false), reach(size_t(w) * h, false);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (x == px && y == py) continue;  // the pixel itself changes anyway
+      for (int c = 0; c < 3; ++c)
+        if (rz.model.at(x, y)[c] != rb.model.at(x, y)[c]) changed[size_t(y) * w + x] = true;
+    }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int sx = x + dx, sy = y + dy;
+          if (sx >= 0 && sy >= 0 && sx < w && sy < h && changed[size_t(sy) * w + sx]) reach[size_t(y) * w + x] = true;
+        }
+  return reach;
+}
+
+// The number of pixels, besides (px, py), where a and b differ, and how many of them lie outside reach.
+std::pair<int, int> differences(const Picture& a, const Picture& b, const std::vector<bool>& reach, int px, int py) {
+  int inside = 0, outside = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      if (x == px && y == py) continue;
+      bool differs = false;
+      for (int c = 0; c < 4; ++c) differs |= a.at(x, y)[c] != b.at(x, y)[c];
+      if (differs) ++(reach[size_t(y) * a.width + x] ? inside : outside);
+    }
+  return {inside, outside};
+}
+
+}  // namespace
+
+TEST_CASE("a NaN pixel contributes nothing: the output is that of the pixel zeroed, everywhere", "[bloom][hard]") {
+  Rig rig;
+  rig.set("bloom.threshold=0.5");
+  Picture zeroed = scene(40, 30);
+  zeroed.at(20, 15)[0] = zeroed.at(20, 15)[1] = zeroed.at(20, 15)[2] = 0.0f;
+  Picture with_nan = zeroed;
+  for (int c = 0; c < 4; ++c) with_nan.at(20, 15)[c] = std::nanf("");
+  const Rendered a = rig.render(with_nan), b = rig.render(zeroed);
+  REQUIRE(std::isnan(a.input.at(20, 15)[0]));  // the GPU really held a NaN
+  REQUIRE(all_finite(a.output));
+  require_matches_model(a);
+  CHECK(a.output.at(20, 15)[3] == 0.0f);  // alpha, too, is made finite
+  for (size_t i = 0; i < a.output.rgba.size(); ++i)
+    if (i / 4 != size_t(15 * 40 + 20) || i % 4 != 3) REQUIRE(a.output.rgba[i] == b.output.rgba[i]);
+}
+
+TEST_CASE("a single NaN pixel does not spread beyond the kernel's reach", "[bloom][hard]") {
+  // Two levels keep the reach well inside the frame, so spreading would show.
+  Rig rig;
+  rig.set("bloom.levels=2");
+  const Picture base = scene(96, 72);
+  const std::vector<bool> reach = reach_of(rig, base, 60, 40);
+  Picture zeroed = base, with_nan = base;
+  for (int c = 0; c < 3; ++c) zeroed.at(60, 40)[c] = 0.0f, with_nan.at(60, 40)[c] = std::nanf("");
+  const Rendered a = rig.render(with_nan), b = rig.render(zeroed);
+  REQUIRE(all_finite(a.output));
+  const auto [inside, outside] = differences(a.output, b.output, reach, 60, 40);
+  CHECK(outside == 0);
+  CHECK(inside == 0);  // NaN counts as black, so it changes nothing at all
+}
+
+TEST_CASE("a +Inf pixel is clamped before any target is written and reaches no further than the kernel", "[bloom][hard]") {
+  Rig rig;
+  rig.set("bloom.levels=2");
+  const Picture base = scene(96, 72);
+  const std::vector<bool> reach = reach_of(rig, base, 60, 40);
+  Picture zeroed = base, with_inf = base;
+  for (int c = 0; c < 3; ++c) zeroed.at(60, 40)[c] = 0.0f, with_inf.at(60, 40)[c] = kInf;
+  const Rendered a = rig.render(with_inf), b = rig.render(zeroed);
+  REQUIRE(std::isinf(a.input.at(60, 40)[0]));
+  REQUIRE(all_finite(a.output));
+  require_matches_model(a);
+  CHECK(a.output.at(60, 40)[0] == 65504.0f);
+  const auto [inside, outside] = differences(a.output, b.output, reach, 60, 40);
+  CHECK(outside == 0);
+  CHECK(inside > 0);  // it does bloom, as the clamp's value
+}
+
+TEST_CASE("a -Inf pixel becomes -65504 there and adds no light", "[bloom][hard]") {
+  Rig rig;
+  Picture zeroed = scene(24, 16), with_inf = zeroed;
+  for (int c = 0; c < 3; ++c) zeroed.at(5, 5)[c] = 0.0f, with_inf.at(5, 5)[c] = -kInf;
+  const Rendered a = rig.render(with_inf), b = rig.render(zeroed);
+  REQUIRE(all_finite(a.output));
+  require_matches_model(a);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 24; ++x)
+      for (int c = 0; c < 3; ++c) {
+        if (x == 5 && y == 5) continue;
+        REQUIRE(a.output.at(x, y)[c] == b.output.at(x, y)[c]);
+      }
+  // -65504 plus the neighbours' bloom, rounded to half (32 apart there).
+  CHECK(a.output.at(5, 5)[0] == Approx(-65504.0f + b.output.at(5, 5)[0]).margin(32));
+}
+
+TEST_CASE("a 70000 pixel (above the half-float maximum) gives a finite output", "[bloom][hard]") {
+  Rig rig;
+  Picture input = scene(32, 24);
+  for (int c = 0; c < 3; ++c) input.at(10, 12)[c] = 70000.0f;
+  const Rendered r = rig.render(input);
+  // The upload to RGBA16F already overflowed it (to +Inf, or to 65504 on a GL that saturates).
+  CHECK(r.input.at(10, 12)[0] >= 65504.0f);
+  REQUIRE(all_finite(r.output));
+  require_matches_model(r);
+  for (float v : r.output.rgba) REQUIRE(v <= 65504.0f);
+}
+
+TEST_CASE("strength 100 on a frame of 65472 everywhere does not overflow the levels", "[bloom][hard]") {
+  Rig rig;
+  rig.set("bloom.strength=100");
+  rig.set("bloom.threshold=0");
+  const Rendered r = rig.render(Picture(20, 12, 65472.0f, 65472.0f, 65472.0f));
+  REQUIRE(all_finite(r.output));
+  require_matches_model(r);
+}
+
+TEST_CASE("negative colours contribute no light", "[bloom][hard]") {
+  Rig rig;
+  rig.set("bloom.threshold=0");
+  Picture zeroed = scene(24, 16), negative = zeroed;
+  const float v[3] = {-50.0f, -3.0f, -0.5f};
+  for (int c = 0; c < 3; ++c) zeroed.at(7, 9)[c] = 0.0f, negative.at(7, 9)[c] = v[c];
+  const Rendered a = rig.render(negative), b = rig.render(zeroed);
+  require_matches_model(a);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 24; ++x)
+      for (int c = 0; c < 3; ++c) {
+        if (x == 7 && y == 9)  // the pixel keeps its own (negative) colour plus its neighbours' bloom
+          REQUIRE(a.output.at(x, y)[c] == Approx(b.output.at(x, y)[c] + v[c]).epsilon(1.0 / 512));
+        else
+          REQUIRE(a.output.at(x, y)[c] == b.output.at(x, y)[c]);
+      }
+  // A frame of nothing but negative colour is returned as it came.
+  const Rendered all = rig.render(Picture(9, 7, -2.0f, -0.25f, -8.0f));
+  for (size_t i = 0; i < all.input.rgba.size(); ++i) REQUIRE(all.output.rgba[i] == all.input.rgba[i]);
+}
+
+TEST_CASE("1x1: one 1x1 level; half of the light falls on the black border", "[bloom][hard][size]") {
+  Rig rig;
+  const Rendered r = rig.render(Picture(1, 1, 8.0f, 4.0f, 2.0f));
+  CHECK(r.levels == 1);
+  CHECK(r.passes == 2);
+  require_matches_model(r);
+  // Bright part (8,4,2) * (8 - 1) / 8; the four corner taps read the border, so level 0 holds half
+  // of it (4 of the 8 weights), and the tent over a 1x1 level is that texel.
+  CHECK(r.output.at(0, 0)[0] == Approx(8.0 + 3.5).epsilon(1.0 / 512));
+  CHECK(r.output.at(0, 0)[1] == Approx(4.0 + 1.75).epsilon(1.0 / 512));
+  CHECK(r.output.at(0, 0)[2] == Approx(2.0 + 0.875).epsilon(1.0 / 512));
+}
+
+TEST_CASE("2x3 and other odd sizes match the model", "[bloom][hard][size]") {
+  Rig rig;
+  rig.set("bloom.threshold=0.25");
+  for (auto [w, h] : {std::pair{2, 3}, std::pair{3, 2}, std::pair{5, 1}, std::pair{1, 9}, std::pair{33, 17}}) {
+    Picture input = scene(w, h);
+    input.at(w / 2, h / 2)[0] = 20.0f;
+    const Rendered r = rig.render(input);
+    INFO(w << "x" << h);
+    require_matches_model(r);
+  }
+}
+
+TEST_CASE("1917x1079: levels are clamped to what the size allows and the output matches the model", "[bloom][hard][size]") {
+  Rig rig;
+  rig.set("bloom.levels=16");
+  const Rendered r = rig.render(scene(1917, 1079));
+  CHECK(r.levels == 10);  // 958x539 ... 3x2, 1x1
+  CHECK(r.passes == 20);
+  require_matches_model(r);
+}
+
+TEST_CASE("a threshold above every pixel leaves the frame exactly as it was", "[bloom][hard]") {
+  Rig rig;
+  rig.set("bloom.threshold=100");  // the scene's brightest pixel is 40
+  const Rendered r = rig.render(scene(30, 20));
+  CHECK(r.passes > 0);  // not a no-op by its settings: the passes run and add exact zeros
+  REQUIRE(all_finite(r.output));
+  for (size_t i = 0; i < r.input.rgba.size(); ++i) REQUIRE(r.output.rgba[i] == r.input.rgba[i]);
+}
