@@ -5,7 +5,7 @@ namespace pfx_bloom::shaders {
 // The bright pass cannot let the hardware filter the frame: one NaN texel poisons every bilinear
 // tap that touches it, even with weight 0 (NaN * 0 = NaN), and from there the whole pyramid. So it
 // fetches texels itself, makes each one safe (NaN -> 0, negative -> 0, at most the firefly clamp,
-// which also catches +Inf), and only then does the seed's bilinear taps in arithmetic, with
+// which also catches +Inf), and only then does the seed's five bilinear taps in arithmetic, with
 // clamp-to-border (black outside the frame). NaN is tested on the bits: a compiler may assume
 // floats are never NaN and fold isnan() away.
 const char* const kBright = R"glsl(#version 450 core
@@ -28,17 +28,6 @@ vec3 safe_texel(ivec2 p) {
   return clamp(c, vec3(0.0), vec3(u_clamp));
 }
 
-// A bilinear tap at p, in texels (texel centres at +0.5), as GL_LINEAR would take it.
-vec3 tap(vec2 p) {
-  vec2 q = p - 0.5;
-  vec2 base = floor(q);
-  vec2 f = q - base;
-  ivec2 i = ivec2(base);
-  vec3 bottom = mix(safe_texel(i), safe_texel(i + ivec2(1, 0)), f.x);
-  vec3 top = mix(safe_texel(i + ivec2(0, 1)), safe_texel(i + ivec2(1, 1)), f.x);
-  return mix(bottom, top, f.y);
-}
-
 vec3 bright_part(vec3 c) {
   float b = u_measure == 1 ? dot(c, vec3(0.2126, 0.7152, 0.0722)) : max(c.r, max(c.g, c.b));
   float t = u_curve.x, k = u_curve.y;
@@ -50,14 +39,27 @@ vec3 bright_part(vec3 c) {
   return c * (part / max(b, 1e-5));
 }
 
+// The five taps (the centre, and one texel off along each diagonal) fall at the same fraction
+// between texels, so together they read the 4x4 texels around the centre: fetched once, then
+// mixed as GL_LINEAR would (texel centres at +0.5).
+vec3 tap(vec3 t[4][4], int x, int y, vec2 f) {
+  return mix(mix(t[y][x], t[y][x + 1], f.x), mix(t[y + 1][x], t[y + 1][x + 1], f.x), f.y);
+}
+
 void main() {
   g_size = textureSize(u_color, 0);
-  vec2 p = gl_FragCoord.xy / u_out_size * vec2(g_size);
-  vec3 sum = 4.0 * bright_part(tap(p));
-  sum += bright_part(tap(p + vec2(-1.0, 1.0)));
-  sum += bright_part(tap(p + vec2(1.0, 1.0)));
-  sum += bright_part(tap(p + vec2(-1.0, -1.0)));
-  sum += bright_part(tap(p + vec2(1.0, -1.0)));
+  vec2 q = gl_FragCoord.xy / u_out_size * vec2(g_size) - 0.5;
+  vec2 base = floor(q);
+  vec2 f = q - base;
+  ivec2 i = ivec2(base) - 1;
+  vec3 t[4][4];
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) t[y][x] = safe_texel(i + ivec2(x, y));
+  vec3 sum = 4.0 * bright_part(tap(t, 1, 1, f));
+  sum += bright_part(tap(t, 0, 2, f));
+  sum += bright_part(tap(t, 2, 2, f));
+  sum += bright_part(tap(t, 0, 0, f));
+  sum += bright_part(tap(t, 2, 0, f));
   o_color = vec4(min(sum * (1.0 / 8.0) * u_gain, vec3(u_cap)), 0.0);
 }
 )glsl";
