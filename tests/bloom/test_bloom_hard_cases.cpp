@@ -204,3 +204,29 @@ TEST_CASE("a threshold above every pixel leaves the frame exactly as it was", "[
   REQUIRE(all_finite(r.output));
   for (size_t i = 0; i < r.input.rgba.size(); ++i) REQUIRE(r.output.rgba[i] == r.input.rgba[i]);
 }
+
+TEST_CASE("4096x16: twelve levels, down to 1x1, match the model", "[bloom][hard][size]") {
+  Rig rig;
+  rig.set("bloom.levels=16");
+  const Rendered r = rig.render(scene(4096, 16));
+  CHECK(r.levels == 12);  // 2048x8, 1024x4, 512x2, 256x1 ... 1x1
+  require_matches_model(r);
+}
+
+TEST_CASE("a constant frame stays constant in the interior and darkens toward the border", "[bloom][hard][edges]") {
+  // Threshold 0, strength 1: the interior gains exactly its own value (docs/effects/bloom.md has
+  // the border figures). Two levels reach about 12 pixels, so the middle of 64x48 is interior.
+  Rig rig;
+  rig.set("bloom.threshold=0");
+  rig.set("bloom.levels=2");
+  const Rendered r = rig.render(Picture(64, 48, 0.5f, 0.25f, 2.0f));
+  require_matches_model(r);
+  for (int y = 16; y < 32; ++y)
+    for (int x = 16; x < 48; ++x) {
+      REQUIRE(r.output.at(x, y)[0] == Approx(1.0).epsilon(1.0 / 256));
+      REQUIRE(r.output.at(x, y)[1] == Approx(0.5).epsilon(1.0 / 256));
+      REQUIRE(r.output.at(x, y)[2] == Approx(4.0).epsilon(1.0 / 256));
+    }
+  CHECK(r.output.at(0, 0)[2] < r.output.at(0, 24)[2]);
+  CHECK(r.output.at(0, 24)[2] < 3.9f);
+}
