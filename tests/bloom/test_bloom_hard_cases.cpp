@@ -230,3 +230,26 @@ TEST_CASE("a constant frame stays constant in the interior and darkens toward th
   CHECK(r.output.at(0, 0)[2] < r.output.at(0, 24)[2]);
   CHECK(r.output.at(0, 24)[2] < 3.9f);
 }
+
+namespace {
+
+// The float a half-float bit pattern stands for (every pattern, NaNs and denormals included).
+float half_to_float(uint16_t h) {
+  const int sign = (h >> 15) ? -1 : 1, exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
+  if (exponent == 0x1f) return mantissa ? std::nanf("") : sign * kInf;
+  if (exponent == 0) return sign * std::ldexp(float(mantissa), -24);
+  return sign * std::ldexp(float(mantissa | 0x400), exponent - 25);
+}
+
+}  // namespace
+
+TEST_CASE("a frame holding every half-float value gives a finite output that matches the model", "[bloom][hard]") {
+  // 256x256 RGBA: every bit pattern four times (40503 is odd, so i * 40503 mod 2^16 runs through
+  // them all), NaNs, +-Inf, denormals, +-65504 and -0 among them.
+  Picture input(256, 256, 0, 0, 0);
+  for (size_t i = 0; i < input.rgba.size(); ++i) input.rgba[i] = half_to_float(uint16_t((i * 40503u) & 0xffffu));
+  Rig rig;
+  const Rendered r = rig.render(input);
+  REQUIRE(all_finite(r.output));
+  require_matches_model(r);
+}
