@@ -4,45 +4,22 @@
 #include <string>
 
 #include <glad/gl.h>
+#include <pfx/cpp/gl_program.hpp>
 
 namespace pfx::bench {
 namespace {
-
-const char* kVertex = R"(#version 450 core
-void main() {
-  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-})";
 
 const char* kFragment = R"(#version 450 core
 layout(binding = 0) uniform sampler2D source;
 out vec4 color;
 void main() { color = texelFetch(source, ivec2(gl_FragCoord.xy), 0); })";
 
-GLuint compile(GLenum stage, const char* text) {
-  GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("copy pass shader: ") + log);
-  }
-  return shader;
-}
-
 }  // namespace
 
 CopyPass::CopyPass() {
-  GLuint vs = compile(GL_VERTEX_SHADER, kVertex), fs = compile(GL_FRAGMENT_SHADER, kFragment);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  std::string error;
+  program_ = pfx::gl::build_fullscreen_program(kFragment, &error);
+  if (!program_) throw std::runtime_error("copy pass shader: " + error);
   glCreateVertexArrays(1, &vertex_array_);
   glCreateFramebuffers(1, &framebuffer_);
 }

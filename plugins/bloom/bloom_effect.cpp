@@ -6,6 +6,8 @@
 //   composite   color + tent(level0) -> output
 #include "bloom_effect.hpp"
 
+#include <pfx/cpp/descriptors.hpp>
+
 #include <cstdio>
 #include <cstdlib>
 #include <new>
@@ -84,21 +86,6 @@ pfx_status create(const pfx_host* host, void** out) {
   return PFX_OK;
 }
 
-pfx_pass_desc make_pass(const char* name, const char* output, const pfx_pass_input* inputs, uint32_t input_count,
-                        pfx_blend blend, pfx_load load, uint32_t user_tag) {
-  pfx_pass_desc pass{};
-  pass.struct_size = sizeof pass;
-  pass.name = name;
-  pass.kind = PFX_PASS_FULLSCREEN;
-  pass.output = output;
-  pass.inputs = inputs;
-  pass.input_count = input_count;
-  pass.blend = blend;
-  pass.load = load;
-  pass.user_tag = user_tag;
-  return pass;
-}
-
 pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   Instance* inst = static_cast<Instance*>(self);
   if (!inst || !frame || !params || !out || frame->struct_size < sizeof(pfx_frame) ||
@@ -123,15 +110,15 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
     t.height = static_cast<uint32_t>(plan.height[i]);
   }
   uint32_t n = 0;
-  inst->passes[n++] = make_pass("bright", kLevelNames[0], inst->bright_inputs, 1, PFX_BLEND_NONE,
+  inst->passes[n++] = pfx::desc::fullscreen_pass("bright", kLevelNames[0], inst->bright_inputs, 1, PFX_BLEND_NONE,
                                 PFX_LOAD_DONT_CARE, tag(PASS_BRIGHT, 0));
   for (int i = 1; i < levels; ++i)
-    inst->passes[n++] = make_pass(kDownNames[i], kLevelNames[i], inst->down_inputs[i], 1, PFX_BLEND_NONE,
+    inst->passes[n++] = pfx::desc::fullscreen_pass(kDownNames[i], kLevelNames[i], inst->down_inputs[i], 1, PFX_BLEND_NONE,
                                   PFX_LOAD_DONT_CARE, tag(PASS_DOWN, i));
   for (int i = levels - 2; i >= 0; --i)
-    inst->passes[n++] = make_pass(kUpNames[i], kLevelNames[i], inst->up_inputs[i], 1, PFX_BLEND_ADD, PFX_LOAD_KEEP,
+    inst->passes[n++] = pfx::desc::fullscreen_pass(kUpNames[i], kLevelNames[i], inst->up_inputs[i], 1, PFX_BLEND_ADD, PFX_LOAD_KEEP,
                                   tag(PASS_UP, i));
-  inst->passes[n++] = make_pass("composite", PFX_OUTPUT_NAME, inst->composite_inputs, 2, PFX_BLEND_NONE,
+  inst->passes[n++] = pfx::desc::fullscreen_pass("composite", PFX_OUTPUT_NAME, inst->composite_inputs, 2, PFX_BLEND_NONE,
                                 PFX_LOAD_DONT_CARE, tag(PASS_COMPOSITE, 0));
   out->targets = inst->targets;
   out->target_count = static_cast<uint32_t>(levels);

@@ -4,6 +4,8 @@
 
 #include "bloom_levels.hpp"
 
+#include <pfx/cpp/descriptors.hpp>
+
 namespace pfx_bloom {
 namespace {
 
@@ -14,72 +16,46 @@ const pfx_enum_item kMeasureItems[] = {
     {"max_rgb", "Largest of R, G, B (the seed's)"},
     {"luminance", "Rec. 709 luminance"}};
 
-pfx_param_desc make(const char* id, const char* label, const char* tooltip, const char* unit, const char* group,
-                    pfx_param_type type, double hard_min, double hard_max, double display_min, double display_max,
-                    double step, pfx_value default_value) {
-  pfx_param_desc d{};
-  d.struct_size = sizeof(pfx_param_desc);
-  d.id = id;
-  d.label = label;
-  d.tooltip = tooltip;
-  d.unit = unit;
-  d.group = group;
-  d.type = type;
-  d.hard_min = hard_min;
-  d.hard_max = hard_max;
-  d.display_min = display_min;
-  d.display_max = display_max;
-  d.step = step;
-  d.default_value = default_value;
-  return d;
-}
-
-pfx_param_desc with_items(pfx_param_desc d, const pfx_enum_item* items, uint32_t count) {
-  d.items = items;
-  d.item_count = count;
-  return d;
-}
-
 }  // namespace
 
 // Hard ranges are finite so "inf" from a user clamps to something the shaders can use. Threshold
 // and knee stop at the half-float maximum: no stored colour is brighter than that.
 const pfx_param_desc kParams[PARAM_COUNT] = {
-    with_items(make("mode", "Mode",
+    pfx::desc::with_items(pfx::desc::param("mode", "Mode",
                     "Which bloom algorithm runs. chain: the seed's pyramid (bright pass into half size, "
                     "8x8 blurred downsamples, 3x3 tent upsamples added back up).",
                     "", "Bloom", PFX_PARAM_ENUM, 0, 0, 0, 0, 1, {{MODE_CHAIN}}),
                kModeItems, 1),
-    make("threshold", "Threshold",
+    pfx::desc::param("threshold", "Threshold",
          "Brightness above which light blooms. Scene-linear: 1 is the brightness of diffuse white.",
          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 8, 0.05, {{1.0}}),
-    make("knee", "Knee",
+    pfx::desc::param("knee", "Knee",
          "Width of the soft transition around the threshold: brightness from threshold - knee to "
          "threshold + knee blooms gradually (quadratic). 0 is the seed's hard threshold; the knee is "
          "never wider than the threshold.",
          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 2, 0.05, {{0.0}}),
-    make("strength", "Strength",
+    pfx::desc::param("strength", "Strength",
          "How much light the bloom adds: 1 spreads exactly the light above the threshold. Divided among "
          "the levels, as in the seed. 0 turns the effect off (no pass runs).",
          "", "Bloom", PFX_PARAM_FLOAT, 0, 100, 0, 4, 0.05, {{1.0}}),
-    make("levels", "Levels",
+    pfx::desc::param("levels", "Levels",
          "Number of half-size pyramid levels; more levels spread the light further. 0 chooses "
          "automatically from the frame size (see Automatic minimum size). Clamped to what the frame allows.",
          "", "Bloom", PFX_PARAM_INT, 0, kMaxLevels, 0, 10, 1, {{0}}),
-    make("auto_min_size", "Automatic minimum size",
+    pfx::desc::param("auto_min_size", "Automatic minimum size",
          "With levels 0, no level is added whose shorter side would be below this many pixels "
          "(16 gives the seed's 6 levels at 1920x1080).",
          "px", "Bloom", PFX_PARAM_INT, 1, 4096, 1, 64, 1, {{16}}),
-    with_items(make("measure", "Brightness measure",
+    pfx::desc::with_items(pfx::desc::param("measure", "Brightness measure",
                     "How a pixel's brightness is measured against the threshold: the largest of R, G, B "
                     "(the seed's; saturated blue blooms like white) or Rec. 709 luminance.",
                     "", "Bright pass", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{MEASURE_MAX_RGB}}),
                kMeasureItems, 2),
-    make("firefly_clamp", "Firefly clamp",
+    pfx::desc::param("firefly_clamp", "Firefly clamp",
          "Every colour channel is clamped to this before the bright pass, so single very bright (or "
          "infinite) pixels cannot dominate the bloom. Not-a-number pixels count as black.",
          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 1, kHalfMax, 1, {{65472.0}}),
-    make("tint", "Tint", "Colour the added light is multiplied by.", "", "Bloom", PFX_PARAM_COLOR, 0, 16, 0, 1,
+    pfx::desc::param("tint", "Tint", "Colour the added light is multiplied by.", "", "Bloom", PFX_PARAM_COLOR, 0, 16, 0, 1,
          0.01, {{1.0, 1.0, 1.0}}),
 };
 
