@@ -1,6 +1,7 @@
 // pfx-render: the command-line host. Loads plugins, runs a chain of effects over one frame
 // headless, writes EXR/PNG and optionally a JSON report. Exit codes in render_usage().
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -12,7 +13,9 @@
 
 #include "cli_text.hpp"
 #include "demo_image.hpp"
+#include "demo_scene.hpp"
 #include "exr_io.hpp"
+#include "gbuffer.hpp"
 #include "headless_context.hpp"
 #include "image_stats.hpp"
 #include "image_texture.hpp"
@@ -47,7 +50,7 @@ std::vector<std::string> default_chain(const host::PluginRegistry& registry) {
 }
 
 bool load_input(const RenderOptions& options, Image* image, std::string* error) {
-  if (options.demo) {
+  if (options.demo_image) {
     *image = make_demo_image(options.width, options.height);
     return true;
   }
@@ -70,6 +73,15 @@ bool load_input(const RenderOptions& options, Image* image, std::string* error) 
   return true;
 }
 
+// --camera keys replace the scene camera's lens settings; its place and aim stay.
+void apply_camera_keys(const RenderOptions& options, Camera* camera) {
+  for (const auto& key : options.camera_keys) {
+    if (key == "fovy") camera->fovy_radians = options.camera.fovy_degrees * M_PI / 180.0;
+    if (key == "near") camera->near_plane = options.camera.near_plane;
+    if (key == "far") camera->far_plane = options.camera.far_plane;
+  }
+}
+
 bool write_outputs(const RenderOptions& options, const Image& result, std::string* error) {
   for (const auto& path : options.outputs) {
     bool ok = ends_with(path, ".png")
@@ -80,10 +92,12 @@ bool write_outputs(const RenderOptions& options, const Image& result, std::strin
   return true;
 }
 
-nlohmann::ordered_json report_json(const std::string& renderer, const host::FrameReport& report,
-                                   const ImageStats& stats, const std::vector<std::string>& outputs) {
+nlohmann::ordered_json report_json(const std::string& renderer, const pfx_frame& frame,
+                                   const host::FrameReport& report, const ImageStats& stats,
+                                   const std::vector<std::string>& outputs) {
   nlohmann::ordered_json root;
   root["renderer"] = renderer;
+  root["lights"] = frame.light_count;
   root["effects"] = report.effects_run;
   root["effects_skipped"] = report.effects_skipped;
   root["passes"] = nlohmann::ordered_json::array();
@@ -122,9 +136,6 @@ int run(const RenderOptions& options) {
   }
   for (const auto& error : load_errors) std::fprintf(stderr, "pfx-render: warning: plugin not loaded: %s\n", error.c_str());
 
-  Image input;
-  if (!load_input(options, &input, &message)) return error_exit(kBadInput, message);
-
   host::ParamStore params;
   for (const auto& effect : registry.effects()) params.add_effect(effect.desc);
   for (const auto& assignment : options.sets) {
@@ -141,32 +152,51 @@ int run(const RenderOptions& options) {
   for (const auto& id : options.chain_given ? options.chain : default_chain(registry))
     if (!chain.add(id, &message)) return error_exit(kEffectError, message);
 
+  // The frame: the demo scene's G-buffer, or an image's colour (and depth).
+  Scene scene;
+  std::unique_ptr<SceneRenderer> scene_renderer;
+  Image input;
   pfx_frame frame{};
-  frame.struct_size = sizeof frame;
-  frame.width = static_cast<uint32_t>(input.width);
-  frame.height = static_cast<uint32_t>(input.height);
-  frame.inputs = PFX_INPUT_COLOR;
-  if (input.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
-  frame.depth_encoding = input.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
-  frame.camera = make_camera(options.camera, input.width, input.height);
-  frame.light_struct_size = sizeof(pfx_light);
-
   host::FrameTextures textures;
-  textures.color = upload_color_texture(input);
-  textures.depth = upload_depth_texture(input);
-  uint32_t output = create_color_texture(input.width, input.height);
+  if (options.demo) {
+    scene = make_demo_scene({options.extra_lights, options.seed});
+    apply_camera_keys(options, &scene.camera);
+    if (!validate_scene(scene, &message)) return error_exit(kUsage, "--camera: " + message);
+    scene_renderer = SceneRenderer::create(scene, &message);
+    if (!scene_renderer) return error_exit(kInternal, message);
+    scene_renderer->render(scene.camera, options.width, options.height);
+    frame = make_scene_frame(scene, scene.camera, options.width, options.height);
+    textures = scene_renderer->textures();
+  } else {
+    if (!load_input(options, &input, &message)) return error_exit(kBadInput, message);
+    frame.struct_size = sizeof frame;
+    frame.width = static_cast<uint32_t>(input.width);
+    frame.height = static_cast<uint32_t>(input.height);
+    frame.inputs = PFX_INPUT_COLOR;
+    if (input.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
+    frame.depth_encoding = input.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
+    frame.camera = make_camera(options.camera, input.width, input.height);
+    frame.light_struct_size = sizeof(pfx_light);
+    textures.color = upload_color_texture(input);
+    textures.depth = upload_depth_texture(input);
+  }
+
+  const int width = static_cast<int>(frame.width), height = static_cast<int>(frame.height);
+  uint32_t output = create_color_texture(width, height);
   bool rendered = chain.render(frame, textures, output, &message);
   Image result;
-  if (rendered) result = download_color_texture(output, input.width, input.height);
-  delete_texture(textures.color);
-  delete_texture(textures.depth);
+  if (rendered) result = download_color_texture(output, width, height);
+  if (!scene_renderer) {
+    delete_texture(textures.color);
+    delete_texture(textures.depth);
+  }
   delete_texture(output);
   if (!rendered) return error_exit(kEffectError, message);
 
   if (!write_outputs(options, result, &message)) return error_exit(kInternal, message);
   const host::FrameReport& report = chain.report();
   if (options.json) {
-    std::puts(report_json(context->renderer(), report, compute_image_stats(result), options.outputs).dump(2).c_str());
+    std::puts(report_json(context->renderer(), frame, report, compute_image_stats(result), options.outputs).dump(2).c_str());
   } else {
     std::fprintf(stderr, "renderer: %s (timing: %s)\n", context->renderer().c_str(), report.timing.c_str());
     for (const auto& pass : report.passes)

@@ -6,23 +6,42 @@
 #include <cstdlib>
 
 namespace pfx::app {
+namespace {
+
+// A whole number >= 0 in decimal, nothing else.
+bool parse_count(const std::string& text, long long* out) {
+  if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos) return false;
+  *out = std::stoll(text);
+  return true;
+}
+
+}  // namespace
 
 std::string render_usage() {
   return
-      "usage: pfx-render [--plugins DIR]... (--demo | --input IMG.exr [--depth DEPTH.exr])\n"
-      "                  [--size WxH] [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
+      "usage: pfx-render [--plugins DIR]... (--demo [--lights N] [--seed S] | --demo-image\n"
+      "                  | --input IMG.exr [--depth DEPTH.exr]) [--size WxH]\n"
+      "                  [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
       "                  [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
       "       pfx-render --list [--json] [--plugins DIR]...\n"
       "\n"
       "Runs a chain of pfx effects over one frame, headless (EGL, no window), and writes the result.\n"
       "\n"
       "input\n"
-      "  --demo               the built-in procedural HDR image (bright spots, fine detail, a depth\n"
-      "                       ramp), made in code; --size WxH sets its size (default 1280x720)\n"
+      "  --demo               the built-in 3D scene, made in code: a floor, boxes and spheres, emissive\n"
+      "                       objects and 400 point lights (seed 003's grid); the host renders its\n"
+      "                       G-buffer, so effects get colour (emissive + ambient), linear depth,\n"
+      "                       normal, albedo, emissive and the lights; --size WxH (default 1280x720)\n"
+      "  --lights N           with --demo: N more lights at random inside the scene (default 0)\n"
+      "  --seed S             with --demo: the seed of every random choice (default 1)\n"
+      "  --demo-image         the procedural HDR image (bright spots, fine detail, a depth ramp):\n"
+      "                       colour and depth only, no lights\n"
       "  --input IMG.exr      an OpenEXR image: RGB(A) half or float; a Z channel is linear depth (m)\n"
       "  --depth DEPTH.exr    linear depth from another EXR (its Z channel, else its R channel)\n"
       "  --camera K=V,...     the camera the effects see: fovy (degrees, default 45), near (m, 0.1),\n"
-      "                       far (m, 1000, or inf); the camera sits at the origin looking down -Z\n"
+      "                       far (m, 1000, or inf); for an image the camera sits at the origin\n"
+      "                       looking down -Z; for --demo the keys given replace the scene camera's\n"
+      "                       (it keeps its place and its other settings)\n"
       "\n"
       "effects\n"
       "  --plugins DIR        load plugins from DIR (repeatable); default: the plugins folder next to\n"
@@ -67,6 +86,7 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     else if (arg == "--list") options.list = true;
     else if (arg == "--json") options.json = true;
     else if (arg == "--demo") options.demo = true;
+    else if (arg == "--demo-image") options.demo_image = true;
     else if (arg == "--float") options.float_exr = true;
     else if (arg == "-v" || arg == "--verbose") options.verbose = true;
     else if (arg == "--input") { if (!value(&options.input)) return false; }
@@ -93,6 +113,20 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     } else if (arg == "--camera") {
       if (!value(&text)) return false;
       if (!parse_camera_options(text, &options.camera, error)) return false;
+      for (const auto& item : split_list(text)) options.camera_keys.push_back(item.substr(0, item.find('=')));
+    } else if (arg == "--lights") {
+      if (!value(&text)) return false;
+      long long count = 0;
+      if (!parse_count(text, &count) || count > 10000000)
+        return fail("--lights " + text + ": expected a whole number from 0 to 10000000");
+      options.extra_lights = static_cast<int>(count);
+      options.lights_given = true;
+    } else if (arg == "--seed") {
+      if (!value(&text)) return false;
+      long long seed = 0;
+      if (!parse_count(text, &seed)) return fail("--seed " + text + ": expected a whole number >= 0");
+      options.seed = static_cast<uint64_t>(seed);
+      options.seed_given = true;
     } else if (arg == "--exposure") {
       if (!value(&text)) return false;
       char* end = nullptr;
@@ -114,10 +148,12 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     *out = options;
     return true;
   }
-  if (options.demo == !options.input.empty())
-    return fail("give exactly one of --demo or --input IMG.exr");
+  if (int(options.demo) + int(options.demo_image) + int(!options.input.empty()) != 1)
+    return fail("give exactly one of --demo, --demo-image or --input IMG.exr");
   if (!options.depth.empty() && options.input.empty()) return fail("--depth goes with --input");
-  if (options.size_given && !options.demo) return fail("--size applies to --demo (an input image has its own size)");
+  if (options.size_given && !options.input.empty())
+    return fail("--size applies to --demo and --demo-image (an input image has its own size)");
+  if ((options.lights_given || options.seed_given) && !options.demo) return fail("--lights and --seed go with --demo");
   if (options.outputs.empty() && !options.json) return fail("nothing to do: give --out FILE and/or --json");
   *out = options;
   return true;

@@ -1,6 +1,7 @@
 // pfx-render's command line, parsed into plain data so it can be tested (and fuzzed) on its own.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,11 +14,16 @@ struct RenderOptions {
   bool help = false;
   bool list = false;
   bool json = false;
-  bool demo = false;
+  bool demo = false;                    // --demo: the built-in 3D scene through its G-buffer
+  bool demo_image = false;              // --demo-image: the procedural HDR image (colour + depth only)
+  int extra_lights = 0;                 // --lights N, --demo only
+  uint64_t seed = 1;                    // --seed S, --demo only
+  bool lights_given = false, seed_given = false;
   std::string input, depth;             // --input IMG.exr [--depth DEPTH.exr]
-  int width = 1280, height = 720;       // --size, --demo only
+  int width = 1280, height = 720;       // --size, --demo and --demo-image only
   bool size_given = false;
   CameraOptions camera;
+  std::vector<std::string> camera_keys;  // the keys --camera gave ("fovy", "near", "far")
   std::vector<std::string> plugin_dirs;  // --plugins, repeatable
   bool chain_given = false;
   std::vector<std::string> chain;        // --chain a,b,c (empty list: no effect)

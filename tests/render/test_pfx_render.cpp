@@ -64,7 +64,7 @@ struct Scratch {
 TEST_CASE("help documents every option and exit code", "[render]") {
   Result r = pfx_render("--help", false);
   CHECK(r.exit_code == 0);
-  for (const char* option : {"--plugins", "--demo", "--input", "--depth", "--size", "--camera", "--chain", "--set",
+  for (const char* option : {"--plugins", "--demo", "--demo-image", "--lights", "--seed", "--input", "--depth", "--size", "--camera", "--chain", "--set",
                              "--out", "--json", "--list", "--float", "--exposure", "--tone", "--timing",
                              "exit codes: 0 ok, 1 internal", "2 usage", "3 bad input file", "4 plugin or effect error"})
     CHECK(r.out.find(option) != std::string::npos);
@@ -173,4 +173,24 @@ TEST_CASE("an output into a missing folder fails without leaving anything behind
   Result r = pfx_render("--demo --size 8x8 --out " + scratch / "no/such/dir/x.exr");
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("x.exr") != std::string::npos);
+}
+
+TEST_CASE("the demo scene reports its lights, --lights adds to them, and the options check their values", "[render]") {
+  Result r = pfx_render("--demo --size 32x18 --chain gain --json");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(nlohmann::json::parse(r.out)["lights"] == 400);
+  r = pfx_render("--demo --size 32x18 --lights 25 --seed 9 --chain gain --json");
+  REQUIRE(r.exit_code == 0);
+  CHECK(nlohmann::json::parse(r.out)["lights"] == 425);
+  r = pfx_render("--demo-image --size 32x18 --chain gain --json");
+  REQUIRE(r.exit_code == 0);
+  CHECK(nlohmann::json::parse(r.out)["lights"] == 0);
+  CHECK(pfx_render("--demo --lights -3 --json").exit_code == 2);
+  CHECK(pfx_render("--demo --lights many --json").exit_code == 2);
+  CHECK(pfx_render("--demo-image --lights 3 --json").exit_code == 2);
+  CHECK(pfx_render("--demo --demo-image --json").exit_code == 2);
+  r = pfx_render("--demo --size 8x8 --camera near=500 --json");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("far must be greater than near") != std::string::npos);
 }

@@ -1,7 +1,7 @@
 // Header-only C++ helpers for plugin authors (DESIGN.md §2): loading a plugin's private GL table
-// through the host, and building full-screen programs. Needs a GL 4.5 loader header declaring the
-// GL functions (glad, as this tree generates it) included as <glad/gl.h>; built in this tree, not
-// installed (an out-of-tree plugin brings its own loader, docs/sdk.md §1.10).
+// through the host, and building full-screen, compute and other programs. Needs a GL 4.5 loader
+// header declaring the GL functions (glad, as this tree generates it) included as <glad/gl.h>;
+// built in this tree, not installed (an out-of-tree plugin brings its own loader, docs/sdk.md §1.10).
 #pragma once
 
 #include <string>
@@ -31,15 +31,13 @@ inline bool load_gl(const pfx_host* host) {
   return gladLoadGLUserPtr(loader, const_cast<pfx_host*>(host)) && GLAD_GL_VERSION_4_5;
 }
 
-// Links the full-screen vertex shader with fragment_source. Returns 0 and the compiler's or
-// linker's message in *error on failure.
-inline GLuint build_fullscreen_program(const char* fragment_source, std::string* error) {
-  const char* sources[2] = {fullscreen_vertex_shader(), fragment_source};
-  const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+// Compiles and links one shader per stage. Returns 0 and the compiler's or linker's message in
+// *error on failure.
+inline GLuint build_program(const GLenum* stages, const char* const* sources, int count, std::string* error) {
   char info[2048] = "";
   GLuint program = glCreateProgram();
   GLint ok = 1;
-  for (int i = 0; i < 2 && ok; ++i) {
+  for (int i = 0; i < count && ok; ++i) {
     GLuint shader = glCreateShader(stages[i]);
     glShaderSource(shader, 1, &sources[i], nullptr);
     glCompileShader(shader);
@@ -57,6 +55,19 @@ inline GLuint build_fullscreen_program(const char* fragment_source, std::string*
   if (error) *error = info;
   glDeleteProgram(program);
   return 0;
+}
+
+// Links the full-screen vertex shader with fragment_source.
+inline GLuint build_fullscreen_program(const char* fragment_source, std::string* error) {
+  const char* sources[2] = {fullscreen_vertex_shader(), fragment_source};
+  const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+  return build_program(stages, sources, 2, error);
+}
+
+// A compute program of one shader.
+inline GLuint build_compute_program(const char* source, std::string* error) {
+  const GLenum stage = GL_COMPUTE_SHADER;
+  return build_program(&stage, &source, 1, error);
 }
 
 }  // namespace pfx::gl

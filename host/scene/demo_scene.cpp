@@ -1,0 +1,134 @@
+#include "demo_scene.hpp"
+
+#include <cmath>
+
+#include "shapes.hpp"
+
+namespace pfx::app {
+namespace {
+
+// SplitMix64: tiny, fast, and the same numbers everywhere.
+class Random {
+ public:
+  explicit Random(uint64_t seed) : state_(seed) {}
+  uint64_t next() {
+    uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [lo, hi): 53 random bits.
+  double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
+  // Uniform integer in [lo, hi].
+  int integer(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<uint64_t>(hi - lo + 1)); }
+
+ private:
+  uint64_t state_;
+};
+
+// One of the seed's light colours: c in 1..7 read as the bits (R, G, B), times the intensity.
+pfx_light seed_light(const glm::vec3& position, Random& random) {
+  pfx_light light{};
+  light.position[0] = position.x;
+  light.position[1] = position.y;
+  light.position[2] = position.z;
+  light.range = 0;  // derived by the effect
+  const double intensity = random.uniform(0.25, 4.0);
+  const int c = random.integer(1, 7);
+  light.color[0] = float(c & 1);
+  light.color[1] = float((c >> 1) & 1);
+  light.color[2] = float((c >> 2) & 1);
+  light.intensity = static_cast<float>(intensity);
+  return light;
+}
+
+// A checker board, so a moving or blurred floor is easy to see.
+AlbedoTexture checker_texture() {
+  AlbedoTexture texture;
+  texture.width = texture.height = 64;
+  texture.rgb.resize(64 * 64 * 3);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const bool light = ((x / 8) + (y / 8)) % 2 == 0;
+      float* p = &texture.rgb[(static_cast<size_t>(y) * 64 + x) * 3];
+      p[0] = light ? 0.75f : 0.35f;
+      p[1] = light ? 0.72f : 0.34f;
+      p[2] = light ? 0.68f : 0.33f;
+    }
+  return texture;
+}
+
+int add_material(Scene* scene, const glm::vec3& albedo, const glm::vec3& emissive = glm::vec3(0), int texture = -1) {
+  Material material;
+  material.albedo = albedo;
+  material.emissive = emissive;
+  material.albedo_texture = texture;
+  scene->materials.push_back(material);
+  return static_cast<int>(scene->materials.size()) - 1;
+}
+
+}  // namespace
+
+void add_seed_light_grid(Scene* scene, uint64_t seed) {
+  Random random(seed);
+  for (int i = 0; i < 400; ++i) {
+    const float x = static_cast<float>(i % 20) * 2 - 19;
+    const float z = static_cast<float>(i / 20) * 2 - 19;
+    scene->lights.push_back(seed_light(glm::vec3(x, 1.0f, z), random));
+  }
+}
+
+void add_random_lights(Scene* scene, int count, const glm::vec3& lo, const glm::vec3& hi, uint64_t seed) {
+  // A different stream from the grid's, so adding lights never recolours the grid.
+  Random random(seed ^ 0x5eed11675eed1167ull);
+  for (int i = 0; i < count; ++i) {
+    const glm::vec3 position(static_cast<float>(random.uniform(lo.x, hi.x)),
+                             static_cast<float>(random.uniform(lo.y, hi.y)),
+                             static_cast<float>(random.uniform(lo.z, hi.z)));
+    scene->lights.push_back(seed_light(position, random));
+  }
+}
+
+Scene make_demo_scene(const DemoSceneOptions& options) {
+  Scene scene;
+  scene.textures.push_back(checker_texture());
+  const int floor = add_material(&scene, glm::vec3(1.0f), glm::vec3(0), 0);
+  const int white = add_material(&scene, glm::vec3(0.8f));
+  const int clay = add_material(&scene, glm::vec3(0.7f, 0.45f, 0.3f));
+  const int teal = add_material(&scene, glm::vec3(0.2f, 0.6f, 0.6f));
+  // Emissive objects: a warm lamp sphere, a blue bar, a small very bright red cube, well above
+  // the usual bloom threshold of 1.
+  const int lamp = add_material(&scene, glm::vec3(0.9f), glm::vec3(40.0f, 28.0f, 12.0f));
+  const int neon = add_material(&scene, glm::vec3(0.1f), glm::vec3(2.0f, 8.0f, 30.0f));
+  const int ember = add_material(&scene, glm::vec3(0.1f), glm::vec3(60.0f, 4.0f, 2.0f));
+
+  scene.meshes.push_back(make_floor(glm::vec3(0), 44.0f, 11.0f, floor));
+  // Boxes and spheres between the lights (the grid is at odd coordinates, objects near even ones).
+  scene.meshes.push_back(make_box(glm::vec3(-8, 1.5f, -6), glm::vec3(1.5f, 1.5f, 1.5f), white));
+  scene.meshes.push_back(make_box(glm::vec3(6, 1.0f, 4), glm::vec3(2.0f, 1.0f, 1.0f), clay));
+  scene.meshes.push_back(make_box(glm::vec3(12, 3.0f, -12), glm::vec3(1.0f, 3.0f, 1.0f), teal));
+  scene.meshes.push_back(make_box(glm::vec3(-14, 0.5f, 10), glm::vec3(2.5f, 0.5f, 2.5f), white));
+  scene.meshes.push_back(make_sphere(glm::vec3(0, 2.0f, -2), 2.0f, 48, 24, white));
+  scene.meshes.push_back(make_sphere(glm::vec3(-4, 1.0f, 8), 1.0f, 32, 16, teal));
+  scene.meshes.push_back(make_sphere(glm::vec3(10, 1.5f, 12), 1.5f, 32, 16, clay));
+  scene.meshes.push_back(make_sphere(glm::vec3(-12, 0.8f, -14), 0.8f, 24, 12, clay));
+  scene.meshes.push_back(make_sphere(glm::vec3(4, 0.5f, -8), 0.5f, 24, 12, lamp));
+  scene.meshes.push_back(make_box(glm::vec3(-2, 0.25f, 14), glm::vec3(3.0f, 0.15f, 0.15f), neon));
+  scene.meshes.push_back(make_box(glm::vec3(14, 0.3f, 0), glm::vec3(0.3f, 0.3f, 0.3f), ember));
+  update_bounds(&scene);
+
+  add_seed_light_grid(&scene, options.seed);
+  // Extra lights fill the floor's box from just above it to 4 m up.
+  add_random_lights(&scene, options.extra_lights, glm::vec3(scene.bounds_min.x, 0.2f, scene.bounds_min.z),
+                    glm::vec3(scene.bounds_max.x, 4.0f, scene.bounds_max.z), options.seed);
+
+  scene.camera.position = glm::dvec3(0, 17, 31);
+  scene.camera.target = glm::dvec3(0, 0, 1);
+  scene.camera.up = glm::dvec3(0, 1, 0);
+  scene.camera.fovy_radians = 50.0 * M_PI / 180.0;
+  scene.camera.near_plane = 0.1;
+  scene.camera.far_plane = 200.0;
+  return scene;
+}
+
+}  // namespace pfx::app
