@@ -11,7 +11,8 @@
 namespace pfx::host {
 
 struct Chain::Instance {
-  const EffectInfo* info = nullptr;
+  // Copied, not a pointer into the registry's index, which a load or reload rebuilds.
+  EffectInfo info;
   void* handle = nullptr;
   bool enabled = true;
   Declaration declaration;
@@ -58,7 +59,7 @@ void Chain::set_timing(Timing timing) {
 }
 
 Chain::~Chain() {
-  for (auto& instance : instances_) instance->info->desc->destroy(instance->handle);
+  for (auto& instance : instances_) instance->info.desc->destroy(instance->handle);
   instances_.clear();
   gl_.reset();
 }
@@ -83,7 +84,7 @@ bool Chain::add(const std::string& effect_id, std::string* error) {
   }
   if (!params_.has_effect(effect_id)) params_.add_effect(info->desc);
   auto instance = std::make_unique<Instance>();
-  instance->info = info;
+  instance->info = *info;
   instance->handle = handle;
   instances_.push_back(std::move(instance));
   plan_valid_ = false;
@@ -91,14 +92,14 @@ bool Chain::add(const std::string& effect_id, std::string* error) {
 }
 
 size_t Chain::size() const { return instances_.size(); }
-std::string Chain::effect_id(size_t index) const { return instances_.at(index)->info->desc->id; }
+std::string Chain::effect_id(size_t index) const { return instances_.at(index)->info.desc->id; }
 void Chain::set_enabled(size_t index, bool enabled) {
   instances_.at(index)->enabled = enabled;
   plan_valid_ = false;
 }
 bool Chain::enabled(size_t index) const { return instances_.at(index)->enabled; }
 void Chain::remove(size_t index) {
-  instances_.at(index)->info->desc->destroy(instances_[index]->handle);
+  instances_.at(index)->info.desc->destroy(instances_[index]->handle);
   instances_.erase(instances_.begin() + static_cast<long>(index));
   plan_valid_ = false;
 }
@@ -109,12 +110,53 @@ void Chain::move(size_t from, size_t to) {
   plan_valid_ = false;
 }
 
+bool Chain::refresh(std::vector<std::string>* dropped, std::string* error) {
+  struct Replacement {
+    size_t index;
+    EffectInfo info;
+    void* handle;
+  };
+  std::vector<Replacement> replacements;
+  std::vector<size_t> gone;
+  for (size_t i = 0; i < instances_.size(); ++i) {
+    const EffectInfo* now = registry_.find_effect(instances_[i]->info.desc->id);
+    if (!now) {
+      gone.push_back(i);
+      continue;
+    }
+    if (now->desc == instances_[i]->info.desc && now->plugin == instances_[i]->info.plugin) continue;
+    void* handle = nullptr;
+    pfx_status status = now->desc->create(now->plugin->host, &handle);
+    if (status != PFX_OK || !handle) {
+      for (auto& made : replacements) made.info.desc->destroy(made.handle);
+      if (error)
+        *error = "effect '" + std::string(now->desc->id) + "' of the new version could not be created (status " +
+                 std::to_string(status) + ")";
+      return false;
+    }
+    replacements.push_back({i, *now, handle});
+  }
+  for (auto& made : replacements) {
+    Instance& instance = *instances_[made.index];
+    instance.info.desc->destroy(instance.handle);
+    instance.info = made.info;
+    instance.handle = made.handle;
+    instance.has_declaration = false;
+  }
+  for (auto it = gone.rbegin(); it != gone.rend(); ++it) {
+    if (dropped) dropped->insert(dropped->begin(), instances_[*it]->info.desc->id);
+    remove(*it);
+  }
+  if (!replacements.empty() || !gone.empty()) plan_valid_ = false;
+  return true;
+}
+
 bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error) {
   report_.effects_skipped.clear();
   report_.effects_run.clear();
   for (size_t i = 0; i < instances_.size(); ++i) {
     Instance& instance = *instances_[i];
-    const char* id = instance.info->desc->id;
+    const char* id = instance.info.desc->id;
     if (!instance.enabled) {
       report_.effects_skipped.push_back(id);
       continue;
@@ -122,7 +164,7 @@ bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::s
     // declare is cheap by contract, so it runs every frame; only a changed answer re-plans.
     pfx_declaration raw{};
     raw.struct_size = sizeof raw;
-    pfx_status status = instance.info->desc->declare(instance.handle, &frame, params_.values(id), &raw);
+    pfx_status status = instance.info.desc->declare(instance.handle, &frame, params_.values(id), &raw);
     if (status != PFX_OK) {
       *error = std::string("effect '") + id + "': declare failed (status " + std::to_string(status) + ")";
       return false;
@@ -165,7 +207,7 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
   if (!declare_all(frame, &active, &message)) return fail(message);
   if (!plan_valid_ || active != planned_active_) {
     std::vector<PlanInput> inputs;
-    for (int index : active) inputs.push_back({instances_[index]->info->desc->id, &instances_[index]->declaration});
+    for (int index : active) inputs.push_back({instances_[index]->info.desc->id, &instances_[index]->declaration});
     FramePlan plan;
     if (!plan_frame(inputs, frame.width, frame.height, frame.inputs, &plan, &message)) return fail(message);
     plan_ = std::move(plan);
@@ -244,7 +286,7 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     const PlannedPass& planned = plan_.passes[p];
     Instance& instance = *instances_[active[planned.effect]];
     const DeclaredPass& pass = instance.declaration.passes[planned.pass];
-    const char* effect_id = instance.info->desc->id;
+    const char* effect_id = instance.info.desc->id;
 
     pfx_pass_context context{};
     context.struct_size = sizeof context;
@@ -284,7 +326,7 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     glBindVertexArray(pool.empty_vertex_array());
 
     Clock::time_point start = Clock::now();
-    pfx_status status = instance.info->desc->run_pass(instance.handle, &context);
+    pfx_status status = instance.info.desc->run_pass(instance.handle, &context);
     if (timing_ == Timing::GPU_QUERIES) glQueryCounter(pool.query(p + 1), GL_TIMESTAMP);
     if (timing_ == Timing::FINISH_AND_CLOCK) {
       glFinish();
@@ -321,9 +363,9 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
 
   for (int index : active) {
     Instance& instance = *instances_[index];
-    if (!instance.info->desc->report_json) continue;
-    const char* figures = instance.info->desc->report_json(instance.handle);
-    if (figures && *figures) report_.effect_reports.emplace_back(instance.info->desc->id, figures);
+    if (!instance.info.desc->report_json) continue;
+    const char* figures = instance.info.desc->report_json(instance.handle);
+    if (figures && *figures) report_.effect_reports.emplace_back(instance.info.desc->id, figures);
   }
   return true;
 }

@@ -35,6 +35,16 @@ void ParamStore::add_effect(const pfx_effect_desc* desc) {
   effects_[desc->id] = std::move(fresh);
 }
 
+void ParamStore::remove_effect(const std::string& effect) {
+  effects_.erase(effect);
+  order_.erase(std::remove(order_.begin(), order_.end(), effect), order_.end());
+}
+
+const pfx_effect_desc* ParamStore::effect_descriptor(const std::string& effect) const {
+  auto it = effects_.find(effect);
+  return it == effects_.end() ? nullptr : it->second.desc;
+}
+
 bool ParamStore::find(const std::string& key, EffectParams** effect, uint32_t* index, std::string* error) {
   size_t dot = key.find('.');
   if (dot == std::string::npos) {

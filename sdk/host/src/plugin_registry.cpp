@@ -1,6 +1,7 @@
 #include "pfx/host/plugin_registry.hpp"
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -51,6 +52,24 @@ std::string text_or(const char* text, const char* fallback) { return text ? text
 
 }  // namespace
 
+// A plugin opened and checked but not yet part of the registry.
+struct PluginRegistry::Opened {
+  std::unique_ptr<Record> record;
+  std::unique_ptr<Plugin> plugin;
+};
+
+namespace {
+
+// Undoes a successful open: deinit, then dlclose. The record must hold no live instances.
+void unload(PluginRegistry::Record& record) {
+  if (record.initialised && record.entry->deinit) record.entry->deinit();
+  record.initialised = false;
+  if (record.library) dlclose(record.library);
+  record.library = nullptr;
+}
+
+}  // namespace
+
 PluginRegistry::PluginRegistry(GlProcLoader gl_loader, LogSink log, std::string host_name)
     : gl_loader_(std::move(gl_loader)), log_(std::move(log)), host_name_(std::move(host_name)) {
   if (!log_) log_ = [](pfx_log_level, const std::string&, const std::string&) {};
@@ -59,28 +78,25 @@ PluginRegistry::PluginRegistry(GlProcLoader gl_loader, LogSink log, std::string 
 PluginRegistry::~PluginRegistry() {
   // Reverse load order, so a plugin loaded later (which may rely on nothing earlier, but might)
   // goes first.
-  for (auto it = records_.rbegin(); it != records_.rend(); ++it) {
-    Record& record = **it;
-    if (record.initialised && record.entry->deinit) record.entry->deinit();
-    if (record.library) dlclose(record.library);
-  }
+  for (auto it = records_.rbegin(); it != records_.rend(); ++it) unload(**it);
 }
 
-bool PluginRegistry::load(const std::string& path, std::string* error) {
+bool PluginRegistry::open_plugin(const std::string& path, const std::string& file, const Plugin* replacing,
+                                 Opened* out, std::string* error) {
   auto fail = [&](const std::string& reason) {
     if (error) *error = path + ": " + reason;
     return false;
   };
   std::error_code ec;
-  if (!fs::exists(path, ec)) return fail("no such file");
-  if (!fs::is_regular_file(path, ec)) return fail("not a regular file");
-  if (!is_elf_file(path)) return fail("not a shared library (no ELF header)");
+  if (!fs::exists(file, ec)) return fail("no such file");
+  if (!fs::is_regular_file(file, ec)) return fail("not a regular file");
+  if (!is_elf_file(file)) return fail("not a shared library (no ELF header)");
 
   auto record = std::make_unique<Record>();
   record->registry = this;
   // RTLD_LOCAL: two plugins never bind each other's symbols. RTLD_NOW: a missing symbol is an
   // error now, not a crash in the middle of a frame.
-  void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  void* library = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!library) return fail(std::string("cannot be loaded: ") + text_or(dlerror(), "unknown dlopen error"));
   struct Closer {
     void*& library;
@@ -102,8 +118,10 @@ bool PluginRegistry::load(const std::string& path, std::string* error) {
   if (!entry->id || !*entry->id) return fail("entry has no plugin id");
   if (!entry->init || !entry->deinit || !entry->get_factory)
     return fail("entry lacks init, deinit or get_factory");
+  if (replacing && replacing->id != entry->id)
+    return fail("the rebuilt library has plugin id '" + std::string(entry->id) + "', not '" + replacing->id + "'");
   for (const auto& plugin : plugins_)
-    if (plugin->id == entry->id)
+    if (plugin.get() != replacing && plugin->id == entry->id)
       return fail("duplicate plugin id '" + plugin->id + "' (already loaded from " + plugin->path + ")");
 
   record->plugin_id = entry->id;
@@ -143,7 +161,8 @@ bool PluginRegistry::load(const std::string& path, std::string* error) {
       std::string problem = check_effect_descriptor(desc);
       if (!problem.empty()) return undo_init("effect #" + std::to_string(i) + ": " + problem);
       if (!own_ids.insert(desc->id).second) return undo_init("duplicate effect id '" + std::string(desc->id) + "' within the plugin");
-      if (const EffectInfo* other = find_effect(desc->id))
+      const EffectInfo* other = find_effect(desc->id);
+      if (other && other->plugin != replacing)
         return undo_init("duplicate effect id '" + std::string(desc->id) + "' (already provided by plugin '" +
                          other->plugin->id + "' from " + other->plugin->path + ")");
       plugin->effects.push_back(desc);
@@ -157,11 +176,85 @@ bool PluginRegistry::load(const std::string& path, std::string* error) {
 
   record->library = library;
   library = nullptr;  // the record owns it now
-  for (const pfx_effect_desc* desc : plugin->effects) effect_index_.push_back({desc, plugin.get()});
-  log_(PFX_LOG_DEBUG, "host", "loaded " + plugin->id + " " + plugin->version + " from " + path);
-  plugins_.push_back(std::move(plugin));
-  records_.push_back(std::move(record));
+  out->record = std::move(record);
+  out->plugin = std::move(plugin);
   return true;
+}
+
+bool PluginRegistry::load(const std::string& path, std::string* error) {
+  Opened opened;
+  if (!open_plugin(path, path, nullptr, &opened, error)) return false;
+  log_(PFX_LOG_DEBUG, "host", "loaded " + opened.plugin->id + " " + opened.plugin->version + " from " + path);
+  plugins_.push_back(std::move(opened.plugin));
+  records_.push_back(std::move(opened.record));
+  rebuild_effect_index();
+  return true;
+}
+
+namespace {
+
+// A copy of the plugin file under a name no library was loaded from, beside the original (a
+// temporary folder may be mounted noexec) or, when that folder is read-only, in the temporary
+// folder. The name does not end in .so, so a folder scan never picks it up.
+bool make_private_copy(const std::string& path, uint64_t serial, std::string* copy, std::string* reason) {
+  const fs::path original(path);
+  const std::string name = "." + original.filename().string() + ".pfx-reload-" + std::to_string(::getpid()) + "-" +
+                           std::to_string(serial);
+  std::error_code ec;
+  for (const fs::path& folder : {original.parent_path(), fs::temp_directory_path(ec)}) {
+    fs::path candidate = folder / name;
+    if (fs::copy_file(original, candidate, fs::copy_options::overwrite_existing, ec)) {
+      *copy = candidate.string();
+      return true;
+    }
+    *reason = ec.message();
+  }
+  return false;
+}
+
+}  // namespace
+
+bool PluginRegistry::reload(const std::string& plugin_id, const AdoptFn& adopt, std::string* error) {
+  auto at = std::find_if(plugins_.begin(), plugins_.end(), [&](const auto& p) { return p->id == plugin_id; });
+  if (at == plugins_.end()) {
+    if (error) *error = "no plugin '" + plugin_id + "' is loaded";
+    return false;
+  }
+  const size_t index = static_cast<size_t>(at - plugins_.begin());
+  const std::string path = plugins_[index]->path;
+  std::string copy, reason;
+  if (!make_private_copy(path, ++reload_count_, &copy, &reason)) {
+    if (error) *error = path + ": cannot make a private copy to reload from: " + reason;
+    return false;
+  }
+  Opened opened;
+  bool ok = open_plugin(path, copy, plugins_[index].get(), &opened, error);
+  // The mapping keeps the library alive; the copy's name is not needed any more.
+  std::error_code ec;
+  fs::remove(copy, ec);
+  if (!ok) return false;
+
+  std::swap(plugins_[index], opened.plugin);
+  std::swap(records_[index], opened.record);
+  rebuild_effect_index();
+  // `opened` now holds the old version, still loaded, so adopt can destroy what was made from it.
+  if (adopt && !adopt(&reason)) {
+    std::swap(plugins_[index], opened.plugin);
+    std::swap(records_[index], opened.record);
+    rebuild_effect_index();
+    unload(*opened.record);
+    if (error) *error = path + ": " + reason;
+    return false;
+  }
+  unload(*opened.record);
+  log_(PFX_LOG_DEBUG, "host", "reloaded " + plugin_id + " " + plugins_[index]->version + " from " + path);
+  return true;
+}
+
+void PluginRegistry::rebuild_effect_index() {
+  effect_index_.clear();
+  for (const auto& plugin : plugins_)
+    for (const pfx_effect_desc* desc : plugin->effects) effect_index_.push_back({desc, plugin.get()});
 }
 
 std::vector<std::string> PluginRegistry::load_directory(const std::string& directory) {
@@ -207,6 +300,12 @@ std::vector<std::string> PluginRegistry::load_search_path(const std::vector<std:
 }
 
 std::vector<EffectInfo> PluginRegistry::effects() const { return effect_index_; }
+
+const Plugin* PluginRegistry::find_plugin(const std::string& plugin_id) const {
+  for (const auto& plugin : plugins_)
+    if (plugin->id == plugin_id) return plugin.get();
+  return nullptr;
+}
 
 const EffectInfo* PluginRegistry::find_effect(const std::string& id) const {
   for (const auto& info : effect_index_)

@@ -70,6 +70,13 @@ class PFX_HOST_API Chain {
   void remove(size_t index);
   void move(size_t from, size_t to);
 
+  // After PluginRegistry::reload (use reload_plugin() in hot_reload.hpp, which also moves the
+  // parameters over): re-creates every instance whose effect now comes from another library
+  // version, keeping its place and enabled flag, and removes those whose effect is gone (their ids
+  // are appended to *dropped). All or nothing: the new instances are created first, and when one
+  // fails the old ones stay and *error names the effect. The old version must still be loaded.
+  bool refresh(std::vector<std::string>* dropped, std::string* error);
+
   void set_timing(Timing timing);
   Timing timing() const { return timing_; }
 

@@ -20,6 +20,10 @@ class PFX_HOST_API ParamStore {
   // plugin) keeps the value of every parameter whose id and type are unchanged.
   void add_effect(const pfx_effect_desc* desc);
   bool has_effect(const std::string& effect) const { return effects_.count(effect) != 0; }
+  // Forgets an effect and its values (its plugin was reloaded without it).
+  void remove_effect(const std::string& effect);
+  // The descriptor the effect's values were registered with; null for an unknown effect.
+  const pfx_effect_desc* effect_descriptor(const std::string& effect) const;
 
   // Parses and sets one value. Text forms: float/int "1.5" "3"; bool true/false/1/0/on/off/yes/no;
   // enum: the item id (or its index); colour and vectors: "r,g,b". NaN is always refused; a value

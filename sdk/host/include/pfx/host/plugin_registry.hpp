@@ -3,6 +3,7 @@
 // host or the other plugins down.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -55,8 +56,22 @@ class PFX_HOST_API PluginRegistry {
   // load_directory over search_path(explicit_directories); a missing folder is an error message.
   std::vector<std::string> load_search_path(const std::vector<std::string>& explicit_directories);
 
+  // Hot reload: loads the file of the loaded plugin `plugin_id` again, from a private copy under a
+  // fresh name (dlopen would hand back the library already mapped for the same path). The new
+  // version must keep the plugin id and pass every check load() makes. It then takes the old
+  // version's place in plugins() and effects() and `adopt` is called, with the old version still
+  // loaded: it must move everything made from the old version over to the new one (Chain::refresh,
+  // ParamStore::add_effect) and return true, or return false with *reason to refuse the new
+  // version. Only then is the old version unloaded (deinit, dlclose).
+  // Returns false, with *error "PATH: reason", when the new version is refused - by the loader or
+  // by `adopt` - and the registry is then exactly as before: the old version keeps running.
+  using AdoptFn = std::function<bool(std::string* reason)>;
+  bool reload(const std::string& plugin_id, const AdoptFn& adopt, std::string* error);
+
   const std::vector<std::unique_ptr<Plugin>>& plugins() const { return plugins_; }
+  const Plugin* find_plugin(const std::string& plugin_id) const;
   std::vector<EffectInfo> effects() const;  // in load order
+  // Valid until the next load or reload; do not keep it across them.
   const EffectInfo* find_effect(const std::string& id) const;
 
   const LogSink& log() const { return log_; }
@@ -66,12 +81,20 @@ class PFX_HOST_API PluginRegistry {
   struct Record;
 
  private:
+  struct Opened;
+  // Opens `file` (the plugin's own path, or a private copy of it) and checks it, reporting errors
+  // against `path`. `replacing` is the plugin a reload replaces: its ids do not count as duplicates.
+  bool open_plugin(const std::string& path, const std::string& file, const Plugin* replacing, Opened* out,
+                   std::string* error);
+  void rebuild_effect_index();
+
   GlProcLoader gl_loader_;
   LogSink log_;
   std::string host_name_;
   std::vector<std::unique_ptr<Plugin>> plugins_;
   std::vector<std::unique_ptr<Record>> records_;  // parallel to plugins_
   std::vector<EffectInfo> effect_index_;
+  uint64_t reload_count_ = 0;  // makes every private copy's name unique
 };
 
 }  // namespace pfx::host
