@@ -1,0 +1,69 @@
+// The depth-of-field plugin's entry point: the effect factory and the CPU reference factory.
+// Everything here is static data; GL is loaded only when an instance is created.
+#include <cstring>
+#include <new>
+
+#include <pfx/pfx.h>
+#include <pfx/reference.h>
+
+#include "dof_camera.hpp"
+#include "dof_effect.hpp"
+#include "dof_params.hpp"
+#include "reference/dof_seed_model.hpp"
+
+namespace pfx_dof {
+namespace {
+
+uint32_t effect_count() { return 1; }
+const pfx_effect_desc* get_effect(uint32_t index) { return index == 0 ? &kDofEffect : nullptr; }
+
+const pfx_effect_factory kEffectFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
+
+int has_reference(const char* effect_id, pfx_reference_kind kind) {
+  return effect_id && std::strcmp(effect_id, "dof") == 0 && kind == PFX_REFERENCE_MODEL;
+}
+
+pfx_status evaluate(const pfx_reference_request* request) {
+  if (!request || request->struct_size < sizeof(pfx_reference_request) || !request->frame ||
+      request->frame->struct_size < sizeof(pfx_frame) || !request->params || !request->color || !request->output ||
+      !request->depth || request->frame->width == 0 || request->frame->height == 0)
+    return PFX_INVALID_ARGUMENT;
+  if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
+  if (!camera_problem(*request->frame).empty()) return PFX_INVALID_ARGUMENT;
+  const Settings settings = settings_from(request->params);
+  try {
+    if (settings.mode != MODE_SEED) return PFX_UNSUPPORTED;
+    evaluate_seed_model(settings, *request->frame, request->color, request->depth, request->output);
+  } catch (const std::bad_alloc&) {
+    return PFX_OUT_OF_MEMORY;
+  } catch (...) {
+    return PFX_ERROR;
+  }
+  return PFX_OK;
+}
+
+const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+
+// No GL and no state: init is trivially idempotent.
+pfx_status plugin_init(const pfx_host* host) {
+  if (!host || host->struct_size < sizeof(pfx_host) || !host->log || !host->get_proc_address)
+    return PFX_INVALID_ARGUMENT;
+  return PFX_OK;
+}
+
+void plugin_deinit() {}
+
+const void* plugin_get_factory(const char* factory_id) {
+  if (!factory_id) return nullptr;
+  if (std::strcmp(factory_id, PFX_EFFECTS_FACTORY_ID) == 0) return &kEffectFactory;
+  if (std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return &kReferenceFactory;
+  return nullptr;
+}
+
+const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR, "org.pfx.dof", "pfx depth of field",
+                          "0.1.0",           plugin_init,   plugin_deinit, plugin_get_factory};
+
+}  // namespace
+}  // namespace pfx_dof
+
+extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &pfx_dof::kEntry; }

@@ -1,0 +1,24 @@
+// GLSL of the "dof" passes. Every program is kCommon followed by its body; uniform locations are
+// listed with each and are what dof_effect.cpp sets.
+#pragma once
+
+#include <string>
+
+namespace pfx_dof::shaders {
+
+// Shared by every program: the depth decoding of pfx/depth.h (locations 0: int encoding,
+// 1: vec2 near/far planes, 2: int far plane infinite), making colour safe, and the CoC from the
+// lens texel (C, 1/P) with 3: float max CoC.
+extern const char* const kCommon;
+
+// depth -> lens (1x1 RG32F: C, 1/P). 4: vec4 (image distance mm, px per mm, f-number, focus
+// distance m), 5: ivec2 autofocus texel, 6: int autofocus on, 7: vec2 focus distance hard range.
+extern const char* const kLens;
+
+// color -> half-size copy, one bilinear tap of the safe colour per half texel.
+extern const char* const kSeedHalf;
+
+// color, depth, half, lens -> output: the seed's 16-tap disk. The disk is spliced in as text.
+std::string seed_body();
+
+}  // namespace pfx_dof::shaders

@@ -1,0 +1,29 @@
+#include "reference/dof_inputs.hpp"
+
+#include "reference/half_float.hpp"
+
+namespace pfx_dof {
+
+void store_half(Texture* t) {
+  for (Texel& texel : t->texels)
+    for (double& v : texel) v = to_half(v);
+}
+
+Texture safe_color(const pfx_frame& frame, const float* color) {
+  Texture t(static_cast<int>(frame.width), static_cast<int>(frame.height));
+  for (size_t i = 0; i < t.texels.size(); ++i)
+    for (int k = 0; k < 4; ++k) t.texels[i][k] = safe_value(color[i * 4 + k]);
+  return t;
+}
+
+Lens frame_lens(const pfx_frame& frame, const Settings& settings, const float* depth) {
+  return make_lens(frame, settings, focus_distance(frame, settings, depth));
+}
+
+std::vector<double> coc_image(const pfx_frame& frame, const Lens& lens, const float* depth) {
+  std::vector<double> coc(static_cast<size_t>(frame.width) * frame.height);
+  for (size_t i = 0; i < coc.size(); ++i) coc[i] = coc_pixels(lens, view_depth(frame, depth[i]));
+  return coc;
+}
+
+}  // namespace pfx_dof

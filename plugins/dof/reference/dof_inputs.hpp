@@ -1,0 +1,29 @@
+// What every CPU reference of "dof" reads first, exactly as the GPU passes read it: the colour made
+// safe (NaN -> 0, magnitudes clamped to the largest half float, so +-Inf and > 65504 stay finite),
+// the lens (with autofocus resolved against the depth), and each pixel's signed CoC.
+#pragma once
+
+#include <vector>
+
+#include <pfx/effect.h>
+
+#include "dof_camera.hpp"
+#include "dof_params.hpp"
+#include "reference/dof_image.hpp"
+
+namespace pfx_dof {
+
+constexpr double kHalfMax = 65504.0;
+
+inline double safe_value(double v) { return std::isnan(v) ? 0.0 : std::clamp(v, -kHalfMax, kHalfMax); }
+
+// color: width * height RGBA, rows bottom first.
+Texture safe_color(const pfx_frame& frame, const float* color);
+
+// The lens the passes use for this frame (autofocus read from depth).
+Lens frame_lens(const pfx_frame& frame, const Settings& settings, const float* depth);
+
+// Signed CoC diameter in pixels per pixel, rows bottom first.
+std::vector<double> coc_image(const pfx_frame& frame, const Lens& lens, const float* depth);
+
+}  // namespace pfx_dof
