@@ -1,15 +1,13 @@
 #include "bloom_gl.hpp"
 
-#include <string>
-
 #include <pfx/cpp/gl_program.hpp>
+
+#include "bloom_params.hpp"
 
 namespace pfx_bloom {
 namespace {
 
-void log_error(const pfx_host* host, const std::string& message) {
-  host->log(host->host_data, PFX_LOG_ERROR, message.c_str());
-}
+void log_error(const pfx_host* host, const char* message) { host->log(host->host_data, PFX_LOG_ERROR, message); }
 
 }  // namespace
 
@@ -21,11 +19,27 @@ bool load_gl(const pfx_host* host) {
   return false;
 }
 
-GLuint build_program(const pfx_host* host, const char* name, const char* fragment_source) {
-  std::string error;
-  GLuint program = pfx::gl::build_fullscreen_program(fragment_source, &error);
-  if (!program) log_error(host, std::string("bloom: shader '") + name + "': " + error);
-  return program;
+GLuint build_program(const pfx_host* host, const char* name, const std::string& fragment_source) {
+  try {
+    std::string error;
+    GLuint program = pfx::gl::build_fullscreen_program(fragment_source.c_str(), &error);
+    if (!program) log_error(host, (std::string("bloom: shader '") + name + "': " + error).c_str());
+    return program;
+  } catch (...) {  // only std::bad_alloc; nothing may cross the ABI
+    return 0;
+  }
+}
+
+void set_bright_uniforms(GLuint program, const Settings& s, int measure_override) {
+  glProgramUniform2f(program, 1, static_cast<float>(s.threshold), static_cast<float>(s.knee));
+  glProgramUniform1i(program, 2, measure_override >= 0 ? measure_override : s.measure);
+  glProgramUniform1f(program, 3, static_cast<float>(s.firefly_clamp));
+}
+
+void draw_fullscreen(GLuint program) {
+  glUseProgram(program);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glUseProgram(0);
 }
 
 }  // namespace pfx_bloom

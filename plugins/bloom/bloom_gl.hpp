@@ -1,17 +1,29 @@
 // The little GL this plugin needs beyond its passes: loading its private GL function table through
-// the host, and building programs whose failures are logged with the shader's name.
+// the host, building programs whose failures are logged with the shader's name, and the uniforms
+// and draw every pass shares.
 #pragma once
+
+#include <string>
 
 #include <glad/gl.h>
 #include <pfx/core.h>
 
 namespace pfx_bloom {
 
+struct Settings;
+
 // False (after logging) when the host's context lacks OpenGL 4.5 core.
 bool load_gl(const pfx_host* host);
 
 // A program of the shared full-screen-triangle vertex shader and this fragment shader; 0 after
-// logging "bloom: shader 'NAME': <compiler message>".
-GLuint build_program(const pfx_host* host, const char* name, const char* fragment_source);
+// logging "bloom: shader 'NAME': <compiler message>". Never throws.
+GLuint build_program(const pfx_host* host, const char* name, const std::string& fragment_source);
+
+// The bright programs' shared uniforms (locations 1-3, shaders_common.cpp); measure_override
+// >= 0 replaces the settings' measure (2: every channel on its own, as seed 002).
+void set_bright_uniforms(GLuint program, const Settings& s, int measure_override = -1);
+
+// Binds the program, draws the full-screen triangle, unbinds the program.
+void draw_fullscreen(GLuint program);
 
 }  // namespace pfx_bloom

@@ -1,29 +1,35 @@
 #include "bloom_levels.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "bloom_params.hpp"
 
 namespace pfx_bloom {
 namespace {
 
-int half_of(int size) { return std::max(1, size / 2); }
+int fraction_of(int size, int divisor) { return std::max(1, size / divisor); }
 
 }  // namespace
 
-int max_levels(uint32_t frame_width, uint32_t frame_height) {
-  int w = half_of(static_cast<int>(frame_width)), h = half_of(static_cast<int>(frame_height));
+int max_levels(uint32_t frame_width, uint32_t frame_height, int first_divisor) {
+  int w = fraction_of(static_cast<int>(frame_width), first_divisor);
+  int h = fraction_of(static_cast<int>(frame_height), first_divisor);
   int count = 1;
   while ((w > 1 || h > 1) && count < kMaxLevels) {
-    w = half_of(w);
-    h = half_of(h);
+    w = fraction_of(w, 2);
+    h = fraction_of(h, 2);
     ++count;
   }
   return count;
 }
 
-LevelPlan plan_levels(uint32_t frame_width, uint32_t frame_height, int requested, int auto_min_size) {
+LevelPlan plan_levels(uint32_t frame_width, uint32_t frame_height, int requested, int auto_min_size,
+                      int first_divisor) {
   LevelPlan plan;
-  const int limit = max_levels(frame_width, frame_height);
-  int w = half_of(static_cast<int>(frame_width)), h = half_of(static_cast<int>(frame_height));
+  const int limit = max_levels(frame_width, frame_height, first_divisor);
+  int w = fraction_of(static_cast<int>(frame_width), first_divisor);
+  int h = fraction_of(static_cast<int>(frame_height), first_divisor);
   for (int i = 0; i < limit; ++i) {
     const bool automatic = requested <= 0;
     if (automatic && i > 0 && std::min(w, h) < auto_min_size) break;
@@ -31,8 +37,36 @@ LevelPlan plan_levels(uint32_t frame_width, uint32_t frame_height, int requested
     plan.width[i] = w;
     plan.height[i] = h;
     plan.count = i + 1;
-    w = half_of(w);
-    h = half_of(h);
+    w = fraction_of(w, 2);
+    h = fraction_of(h, 2);
+  }
+  return plan;
+}
+
+void level_weights(const Settings& s, int count, double* out) {
+  double sum = 0;
+  for (int i = 0; i < count; ++i) sum += out[i] = s.mode == MODE_MGF ? std::pow(s.mgf_ratio, i) : 1.0;
+  for (int i = 0; i < count; ++i) out[i] /= sum;
+}
+
+LevelPlan plan_for(const Settings& s, uint32_t frame_width, uint32_t frame_height) {
+  if (s.mode == MODE_GAUSSIAN) {
+    LevelPlan plan;
+    plan.count = 1;
+    plan.width[0] = fraction_of(static_cast<int>(frame_width), s.downscale);
+    plan.height[0] = fraction_of(static_cast<int>(frame_height), s.downscale);
+    return plan;
+  }
+  LevelPlan plan = plan_levels(frame_width, frame_height, s.levels, s.auto_min_size, s.mode == MODE_MGF ? 4 : 2);
+  if (s.levels > 0 || s.auto_min_share <= 0) return plan;
+  // The share rule: stop before the first level whose own share would fall below the minimum.
+  for (int n = 2; n <= plan.count; ++n) {
+    double weights[kMaxLevels];
+    level_weights(s, n, weights);
+    if (weights[n - 1] < s.auto_min_share) {
+      plan.count = n - 1;
+      break;
+    }
   }
   return plan;
 }

@@ -9,8 +9,11 @@
 namespace pfx_bloom {
 namespace {
 
-const pfx_enum_item kModeItems[] = {
-    {"chain", "Seed chain: 5-tap bright pass, 8x8 downsample, 3x3 tent upsample"}};
+const pfx_enum_item kModeItems[MODE_COUNT] = {
+    {"chain", "Seed chain: 5-tap bright pass, 8x8 downsample, 3x3 tent upsample"},
+    {"chain13", "13-tap chain: 13-tap downsample, Karis average on the first level"},
+    {"gaussian", "Separable Gaussian at a chosen downscale (seed 002)"},
+    {"mgf", "Kawase multi-Gaussian: Gaussians on 1/4, 1/8 ... buffers, summed (seed 004)"}};
 
 const pfx_enum_item kMeasureItems[] = {
     {"max_rgb", "Largest of R, G, B (the seed's)"},
@@ -18,37 +21,45 @@ const pfx_enum_item kMeasureItems[] = {
 
 }  // namespace
 
+const char* mode_name(int mode) { return mode >= 0 && mode < MODE_COUNT ? kModeItems[mode].id : "?"; }
+
 // Hard ranges are finite so "inf" from a user clamps to something the shaders can use. Threshold
 // and knee stop at the half-float maximum: no stored colour is brighter than that.
 const pfx_param_desc kParams[PARAM_COUNT] = {
     pfx::desc::with_items(pfx::desc::param("mode", "Mode",
-                    "Which bloom algorithm runs. chain: the seed's pyramid (bright pass into half size, "
-                    "8x8 blurred downsamples, 3x3 tent upsamples added back up).",
-                    "", "Bloom", PFX_PARAM_ENUM, 0, 0, 0, 0, 1, {{MODE_CHAIN}}),
-               kModeItems, 1),
+                    "Which bloom algorithm runs. chain: the seed's pyramid; chain13: the same with the "
+                    "13-tap downsample and a Karis average against fireflies; gaussian: one separable "
+                    "Gaussian at a downscale; mgf: Kawase's sum of Gaussians on 1/4, 1/8 ... buffers.",
+                    "", "Bloom", PFX_PARAM_ENUM, 0, MODE_COUNT - 1, 0, MODE_COUNT - 1, 1, {{MODE_CHAIN}}),
+               kModeItems, MODE_COUNT),
     pfx::desc::param("threshold", "Threshold",
          "Brightness above which light blooms. Scene-linear: 1 is the brightness of diffuse white.",
          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 8, 0.05, {{1.0}}),
     pfx::desc::param("knee", "Knee",
          "Width of the soft transition around the threshold: brightness from threshold - knee to "
-         "threshold + knee blooms gradually (quadratic). 0 is the seed's hard threshold; the knee is "
+         "threshold + knee blooms gradually (quadratic). 0 is the seeds' hard threshold; the knee is "
          "never wider than the threshold.",
          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 2, 0.05, {{0.0}}),
     pfx::desc::param("strength", "Strength",
-         "How much light the bloom adds: 1 spreads exactly the light above the threshold. Divided among "
-         "the levels, as in the seed. 0 turns the effect off (no pass runs).",
+         "How much light the bloom adds: 1 spreads exactly the light above the threshold. 0 adds "
+         "nothing (no pass runs, unless the gaussian mode's tone scale is below 1).",
          "", "Bloom", PFX_PARAM_FLOAT, 0, 100, 0, 4, 0.05, {{1.0}}),
     pfx::desc::param("levels", "Levels",
-         "Number of half-size pyramid levels; more levels spread the light further. 0 chooses "
-         "automatically from the frame size (see Automatic minimum size). Clamped to what the frame allows.",
+         "Pyramid levels (chain, chain13) or Gaussian buffers (mgf); more spread the light further. "
+         "0 chooses automatically (see the two automatic limits). Clamped to what the frame allows.",
          "", "Bloom", PFX_PARAM_INT, 0, kMaxLevels, 0, 10, 1, {{0}}),
     pfx::desc::param("auto_min_size", "Automatic minimum size",
          "With levels 0, no level is added whose shorter side would be below this many pixels "
          "(16 gives the seed's 6 levels at 1920x1080).",
          "px", "Bloom", PFX_PARAM_INT, 1, 4096, 1, 64, 1, {{16}}),
+    pfx::desc::param("auto_min_share", "Automatic minimum share",
+         "With levels 0, no level is added that would carry less than this fraction of the bloom's "
+         "light. Chain levels each carry 1/levels; mgf buffers follow the mgf ratio. 0 turns this off.",
+         "", "Bloom", PFX_PARAM_FLOAT, 0, 1, 0, 0.2, 0.005, {{0.0}}),
     pfx::desc::with_items(pfx::desc::param("measure", "Brightness measure",
                     "How a pixel's brightness is measured against the threshold: the largest of R, G, B "
-                    "(the seed's; saturated blue blooms like white) or Rec. 709 luminance.",
+                    "(the seed's; saturated blue blooms like white) or Rec. 709 luminance. The gaussian "
+                    "mode thresholds each channel on its own (seed 002) and ignores this.",
                     "", "Bright pass", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{MEASURE_MAX_RGB}}),
                kMeasureItems, 2),
     pfx::desc::param("firefly_clamp", "Firefly clamp",
@@ -57,11 +68,35 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 1, kHalfMax, 1, {{65472.0}}),
     pfx::desc::param("tint", "Tint", "Colour the added light is multiplied by.", "", "Bloom", PFX_PARAM_COLOR, 0, 16, 0, 1,
          0.01, {{1.0, 1.0, 1.0}}),
+    pfx::desc::param("sigma", "Sigma",
+         "gaussian mode: the Gaussian's standard deviation, in pixels of the frame (whatever the "
+         "downscale). The bloom's radius grows with it; so must the tap count.",
+         "px", "Gaussian", PFX_PARAM_FLOAT, 0.1, 4000, 1, 200, 0.5, {{8.0}}),
+    pfx::desc::param("taps", "Taps",
+         "gaussian mode: taps of each 1-D blur, one texel of the downscaled buffer apart (the seed's "
+         "15). An even count is rounded up to the next odd one. To cover the Gaussian, taps x "
+         "downscale should reach about 6 sigma.",
+         "", "Gaussian", PFX_PARAM_INT, 1, 2 * kMaxHalfTaps + 1, 1, 63, 2, {{15}}),
+    pfx::desc::param("downscale", "Downscale",
+         "gaussian mode: the blur runs on a buffer this many times smaller than the frame on each "
+         "side (each texel the average of downscale x downscale pixels); 1 blurs at full resolution.",
+         "", "Gaussian", PFX_PARAM_INT, 1, 16, 1, 8, 1, {{4}}),
+    pfx::desc::param("tone_scale", "Tone scale",
+         "gaussian mode: the frame is multiplied by this before the bloom is added (seed 002's "
+         "toneScale, which it sets to 0.7). 1 keeps the frame as it is.",
+         "", "Gaussian", PFX_PARAM_FLOAT, 0, 16, 0, 1, 0.05, {{1.0}}),
+    pfx::desc::param("mgf_ratio", "Multi-Gaussian ratio",
+         "mgf mode: each coarser buffer's Gaussian carries this many times the light of the finer one "
+         "(Kawase's kernel e^-(0.25r)^2 + 2e^-(0.5r)^2 + 4e^-r^2 ...: 2). The weights are normalised "
+         "so all buffers together carry strength x the light above the threshold.",
+         "", "Multi-Gaussian", PFX_PARAM_FLOAT, 0.1, 10, 0.5, 4, 0.1, {{2.0}}),
 };
 
-bool Settings::is_noop() const {
+bool Settings::adds_nothing() const {
   return strength <= 0 || firefly_clamp <= 0 || (tint[0] <= 0 && tint[1] <= 0 && tint[2] <= 0);
 }
+
+bool Settings::is_noop() const { return adds_nothing() && (mode != MODE_GAUSSIAN || tone_scale == 1.0); }
 
 Settings settings_from(const pfx_value* values) {
   Settings s;
@@ -73,9 +108,15 @@ Settings settings_from(const pfx_value* values) {
   s.strength = values[PARAM_STRENGTH].v[0];
   s.levels = static_cast<int>(values[PARAM_LEVELS].v[0]);
   s.auto_min_size = static_cast<int>(values[PARAM_AUTO_MIN_SIZE].v[0]);
+  s.auto_min_share = values[PARAM_AUTO_MIN_SHARE].v[0];
   s.measure = static_cast<int>(values[PARAM_MEASURE].v[0]);
   s.firefly_clamp = values[PARAM_FIREFLY_CLAMP].v[0];
   for (int c = 0; c < 3; ++c) s.tint[c] = values[PARAM_TINT].v[c];
+  s.sigma = values[PARAM_SIGMA].v[0];
+  s.half_taps = std::min(static_cast<int>(values[PARAM_TAPS].v[0]) / 2, kMaxHalfTaps);
+  s.downscale = static_cast<int>(values[PARAM_DOWNSCALE].v[0]);
+  s.tone_scale = values[PARAM_TONE_SCALE].v[0];
+  s.mgf_ratio = values[PARAM_MGF_RATIO].v[0];
   return s;
 }
 

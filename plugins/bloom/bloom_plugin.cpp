@@ -29,9 +29,8 @@ pfx_status evaluate(const pfx_reference_request* request) {
     return PFX_INVALID_ARGUMENT;
   if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
   const Settings settings = settings_from(request->params);
-  if (settings.mode != MODE_CHAIN) return PFX_UNSUPPORTED;
   try {
-    evaluate_chain_model(settings, request->frame->width, request->frame->height, request->color, request->output);
+    evaluate_model(settings, request->frame->width, request->frame->height, request->color, request->output);
   } catch (const std::bad_alloc&) {
     return PFX_OUT_OF_MEMORY;
   } catch (...) {

@@ -11,6 +11,8 @@
 #include <pfx/host/param_store.hpp>
 #include <pfx/host/plugin_registry.hpp>
 
+#include "reference/bloom_model.hpp"
+
 namespace bloom_test {
 
 // RGBA floats, rows bottom first.
@@ -30,6 +32,9 @@ struct Rendered {
   Picture input;   // what the GPU's RGBA16F colour texture holds (the upload read back)
   Picture output;  // the chain's output read back
   Picture model;   // PFX_REFERENCE_MODEL of the same input and settings
+  pfx_bloom::ModelTrace trace;  // what the model saw of the GPU's rounding
+  std::string mode;
+  double frame_scale = 1;  // the gaussian mode's tone scale
   int levels = 0;  // levels the pyramid used (0 when no pass ran)
   size_t passes = 0;
 };
@@ -48,11 +53,17 @@ class Rig {
   const pfx_reference_factory* references_ = nullptr;
 };
 
-// The GPU output must equal the model within what its rounding allows; see bloom_rig.cpp for the
-// derivation. Fails the calling test naming the first pixel outside the tolerance.
+// The GPU output must equal the model within what its rounding allows, per pixel and in the RMS
+// sense; see bloom_rig.cpp for the derivations. Fails the calling test naming the first pixel outside the tolerance.
 void require_matches_model(const Rendered& r);
 // The largest |output - model| over the tolerance at that pixel (<= 1 passes).
-double worst_error_ratio(const Picture& output, const Picture& model, const Picture& input, int levels);
+double worst_error_ratio(const Picture& output, const Picture& model, const pfx_bloom::ModelTrace& trace);
+// rms(gpu - model) over its allowed value (S * 2^-10 + 2^-7) * rms(bloom) (<= 1 passes).
+double rms_error_ratio(const Picture& output, const Picture& model, const Picture& input,
+                       const pfx_bloom::ModelTrace& trace, double frame_scale);
+
+// Every mode of the effect, as the mode parameter spells them.
+inline const char* const kModes[] = {"chain", "chain13", "gaussian", "mgf"};
 
 bool all_finite(const Picture& p);
 

@@ -1,7 +1,9 @@
-// The pyramid's level plan: the seed's halving, never below one pixel, clamped to the frame.
+// The level plans: the seed's halving (from a half or a quarter), never below one pixel, clamped to
+// the frame; the level weights and the automatic share rule.
 #include <catch2/catch.hpp>
 
 #include "bloom_levels.hpp"
+#include "bloom_params.hpp"
 
 using pfx_bloom::plan_levels;
 
@@ -39,4 +41,49 @@ TEST_CASE("requested levels are clamped to what the frame allows", "[bloom][leve
   REQUIRE(seed.count == 6);
   CHECK((seed.width[0] == 958 && seed.height[0] == 539));
   CHECK((seed.width[5] == 29 && seed.height[5] == 16));
+}
+
+namespace {
+
+pfx_bloom::Settings with(int mode, int levels = 0) {
+  pfx_value values[pfx_bloom::PARAM_COUNT];
+  for (uint32_t i = 0; i < pfx_bloom::PARAM_COUNT; ++i) values[i] = pfx_bloom::kParams[i].default_value;
+  values[pfx_bloom::PARAM_MODE].v[0] = mode;
+  values[pfx_bloom::PARAM_LEVELS].v[0] = levels;
+  return pfx_bloom::settings_from(values);
+}
+
+}  // namespace
+
+TEST_CASE("mgf buffers start at a quarter of the frame, gaussian has one buffer at its downscale", "[bloom][levels]") {
+  const auto mgf = pfx_bloom::plan_for(with(pfx_bloom::MODE_MGF), 1920, 1080);
+  REQUIRE(mgf.count == 5);  // 480x270 ... 30x16; 15x8 is below the automatic minimum of 16
+  CHECK((mgf.width[0] == 480 && mgf.height[0] == 270));
+  CHECK((mgf.width[4] == 30 && mgf.height[4] == 16));
+  CHECK(pfx_bloom::max_levels(1917, 1079, 4) == 9);
+  CHECK(pfx_bloom::plan_for(with(pfx_bloom::MODE_MGF, 16), 3, 3).count == 1);
+  pfx_bloom::Settings g = with(pfx_bloom::MODE_GAUSSIAN, 5);
+  g.downscale = 3;
+  const auto one = pfx_bloom::plan_for(g, 1920, 1081);
+  REQUIRE(one.count == 1);
+  CHECK((one.width[0] == 640 && one.height[0] == 360));
+  CHECK(pfx_bloom::plan_for(with(pfx_bloom::MODE_CHAIN13), 1920, 1080).count == 6);
+}
+
+TEST_CASE("level weights: equal for the chains, ratio^i for mgf, and the automatic share rule", "[bloom][levels]") {
+  double w[pfx_bloom::kMaxLevels];
+  pfx_bloom::level_weights(with(pfx_bloom::MODE_CHAIN), 4, w);
+  for (int i = 0; i < 4; ++i) CHECK(w[i] == Approx(0.25));
+  pfx_bloom::level_weights(with(pfx_bloom::MODE_MGF), 3, w);  // ratio 2: 1, 2, 4 over 7
+  CHECK(w[0] == Approx(1.0 / 7));
+  CHECK(w[2] == Approx(4.0 / 7));
+  pfx_bloom::Settings s = with(pfx_bloom::MODE_CHAIN);
+  s.auto_min_share = 0.2;  // levels carry 1/n: at most 5 levels
+  CHECK(pfx_bloom::plan_for(s, 1920, 1080).count == 5);
+  s = with(pfx_bloom::MODE_MGF);
+  s.mgf_ratio = 0.5;
+  s.auto_min_share = 0.1;  // 1, 1/2, 1/4, 1/8 over 1.875: the fourth carries 0.067
+  CHECK(pfx_bloom::plan_for(s, 1920, 1080).count == 3);
+  s.levels = 5;  // an explicit count is kept
+  CHECK(pfx_bloom::plan_for(s, 1920, 1080).count == 5);
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bloom_params.hpp"
+#include "gaussian_taps.hpp"
 #include "reference/bloom_model.hpp"
 
 using pfx_bloom::Settings;
@@ -24,7 +25,7 @@ struct Frame {
 
 std::vector<float> run(const Settings& s, const Frame& f) {
   std::vector<float> out(f.rgba.size());
-  pfx_bloom::evaluate_chain_model(s, f.w, f.h, f.rgba.data(), out.data());
+  pfx_bloom::evaluate_model(s, f.w, f.h, f.rgba.data(), out.data());
   return out;
 }
 
@@ -143,4 +144,60 @@ TEST_CASE("the model treats bad values as the shaders do", "[bloom][model]") {
   hot.at(16, 16)[0] = inf;
   s.strength = 100;
   for (float v : run(s, hot)) REQUIRE(v <= 65504.0f);
+}
+
+TEST_CASE("gaussian and mgf keep the light: a lone pixel adds exactly strength x its bright part", "[bloom][model]") {
+  // Block averages, normalised Gaussians and bilinear upsampling all keep the light away from the
+  // border when the blocks tile the frame (480 is a multiple of every downscale here); mgf's weights
+  // sum to 1. Both take 11 - 1 = 10 of each channel.
+  Frame f(480, 480, 0.0f);
+  f.at(250, 241)[0] = f.at(250, 241)[1] = f.at(250, 241)[2] = 11.0f;
+  Settings s = defaults();
+  s.strength = 1.5;
+  s.mode = pfx_bloom::MODE_GAUSSIAN;
+  for (int downscale : {1, 2, 4, 5}) {
+    s.downscale = downscale;
+    INFO("downscale " << downscale);
+    CHECK(added_energy(f, run(s, f)) == Approx(1.5 * 3 * 10.0).epsilon(1e-6));
+  }
+  s.mode = pfx_bloom::MODE_MGF;
+  s.levels = 3;
+  CHECK(added_energy(f, run(s, f)) == Approx(1.5 * 3 * 10.0).epsilon(1e-6));
+}
+
+TEST_CASE("the gaussian mode at full resolution is the discrete Gaussian the seed describes", "[bloom][model][gaussian]") {
+  // One pixel, downscale 1: the bloom at (dx, dy) is strength x bright x w[dx] x w[dy], with w the
+  // normalised weights exp(-k^2 / 2 sigma^2) over the taps (computed here, not by the plugin).
+  Frame f(64, 64, 0.0f);
+  f.at(30, 33)[1] = 5.0f;  // green only: 4 above the threshold
+  Settings s = defaults();
+  s.mode = pfx_bloom::MODE_GAUSSIAN;
+  s.downscale = 1;
+  s.sigma = 3.0;
+  s.half_taps = 6;
+  std::vector<double> w(7);
+  double sum = 0;
+  for (int k = 0; k <= 6; ++k) sum += (k ? 2 : 1) * (w[k] = std::exp(-k * k / 18.0));
+  const std::vector<float> out = run(s, f);
+  for (int dy = -8; dy <= 8; ++dy)
+    for (int dx = -8; dx <= 8; ++dx) {
+      const double expected = std::abs(dx) <= 6 && std::abs(dy) <= 6 ? 4.0 * w[std::abs(dx)] * w[std::abs(dy)] / (sum * sum) : 0.0;
+      const float* o = &out[(size_t(33 + dy) * 64 + 30 + dx) * 4];
+      REQUIRE(o[1] - f.at(30 + dx, 33 + dy)[1] == Approx(expected).margin(1e-6));
+      REQUIRE(o[0] == 0.0f);
+    }
+}
+
+TEST_CASE("chain13's Karis average takes light from a lone bright pixel, none from a flat area", "[bloom][model]") {
+  Settings s = defaults();
+  s.mode = pfx_bloom::MODE_CHAIN13;
+  s.threshold = 0.0;
+  s.levels = 3;
+  Frame lone(128, 128, 0.0f);
+  lone.at(64, 60)[0] = lone.at(64, 60)[1] = lone.at(64, 60)[2] = 11.0f;
+  const double kept = added_energy(lone, run(s, lone)) / (3 * 11.0);
+  CHECK(kept < 0.5);  // the firefly is tamed
+  Frame flat(128, 128, 2.0f);
+  const std::vector<float> out = run(s, flat);
+  CHECK(out[(size_t(64) * 128 + 64) * 4] == Approx(4.0));  // a constant keeps all of its light
 }

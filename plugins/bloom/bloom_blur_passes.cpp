@@ -1,0 +1,125 @@
+// The Gaussian modes as declared passes.
+//
+// gaussian (seed 002), one buffer of frame / downscale:
+//   bright      color -> blur0              (block average of each pixel's max(c - threshold, 0))
+//   blur_y0     blur0 -> blur_tmp0          (vertical Gaussian, as the seed: vertical first)
+//   blur_x0     blur_tmp0 -> blur0_out      (horizontal)
+//   composite   color * tone_scale + bilinear(blur0_out) -> output
+//
+// mgf (seed 004), buffers of frame / 4, / 8 ...; each Gaussian has deviation 2.5 texels of its
+// buffer and the next buffer is made from the previous blurred one, as in the seed:
+//   bright      color -> blur0              (block average of 4x4 bright parts)
+//   blur_x i    blur i (i = 0) or gauss i-1 (read at half size: each tap a 2x2 average) -> blur_tmp i
+//   blur_y i    blur_tmp i -> gauss i
+//   composite   color + sum of w_i * bilinear(gauss i) -> output
+#include "bloom_passes.hpp"
+
+#include "gaussian_taps.hpp"
+
+namespace pfx_bloom {
+namespace {
+
+const IndexedNames kBlurNames("blur"), kTempNames("blur_tmp"), kGaussNames("gauss");
+const IndexedNames kBlurXNames("blur_x"), kBlurYNames("blur_y");
+
+pfx_pass_input linear_border(const char* name) { return input(name, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER); }
+pfx_pass_input linear_edge(const char* name) { return input(name, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE); }
+pfx_pass_input frame_texels() { return input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE); }
+
+void declare_bright(DeclarationBuilder& out, const LevelPlan& plan) {
+  out.target(kBlurNames[0], plan.width[0], plan.height[0]);
+  out.pass("bright", kBlurNames[0], {frame_texels()}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, pass_tag(PASS_BOX_BRIGHT, 0));
+}
+
+void set_blur_uniforms(GLuint program, double deviation, int half_taps, bool horizontal) {
+  double weights[kMaxHalfTaps + 1];
+  gaussian_weights(deviation, half_taps, weights);
+  float as_float[kMaxHalfTaps + 1];
+  for (int k = 0; k <= half_taps; ++k) as_float[k] = static_cast<float>(weights[k]);
+  glProgramUniform2i(program, 4, horizontal ? 1 : 0, horizontal ? 0 : 1);
+  glProgramUniform1i(program, 5, half_taps);
+  glProgramUniform1fv(program, 6, half_taps + 1, as_float);
+}
+
+}  // namespace
+
+void declare_gaussian(const Settings& s, const LevelPlan& plan, DeclarationBuilder& out) {
+  if (!s.adds_nothing()) {
+    declare_bright(out, plan);
+    out.target(kTempNames[0], plan.width[0], plan.height[0]);
+    out.target(kGaussNames[0], plan.width[0], plan.height[0]);
+    out.pass(kBlurYNames[0], kTempNames[0], {linear_border(kBlurNames[0])}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
+             pass_tag(PASS_BLUR_Y, 0));
+    out.pass(kBlurXNames[0], kGaussNames[0], {linear_border(kTempNames[0])}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
+             pass_tag(PASS_BLUR_X, 0));
+    out.pass("composite", PFX_OUTPUT_NAME, {frame_texels(), linear_edge(kGaussNames[0])}, PFX_BLEND_NONE,
+             PFX_LOAD_DONT_CARE, pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));
+  } else {  // only the tone scale changes the frame
+    out.pass("composite", PFX_OUTPUT_NAME, {frame_texels()}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
+             pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));
+  }
+}
+
+void declare_mgf(const Settings&, const LevelPlan& plan, DeclarationBuilder& out) {
+  declare_bright(out, plan);
+  for (int i = 0; i < plan.count; ++i) {
+    out.target(kTempNames[i], plan.width[i], plan.height[i]);
+    out.target(kGaussNames[i], plan.width[i], plan.height[i]);
+    const char* source = i == 0 ? kBlurNames[0] : kGaussNames[i - 1];
+    out.pass(kBlurXNames[i], kTempNames[i], {linear_border(source)}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
+             pass_tag(PASS_BLUR_X, i));
+    out.pass(kBlurYNames[i], kGaussNames[i], {linear_border(kTempNames[i])}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
+             pass_tag(PASS_BLUR_Y, i));
+  }
+  out.pass("composite", PFX_OUTPUT_NAME, {frame_texels()}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
+           pass_tag(PASS_MGF_COMPOSITE, 0));
+  for (int i = 0; i < plan.count; ++i) out.add_input(linear_edge(kGaussNames[i]));
+}
+
+void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& plan, const pfx_pass_context& context) {
+  const float out_w = static_cast<float>(context.output_width), out_h = static_cast<float>(context.output_height);
+  const bool mgf = s.mode == MODE_MGF;
+  GLuint program = 0;
+  switch (tag_kind(context.user_tag)) {
+    case PASS_BOX_BRIGHT: {
+      program = programs[PROGRAM_BOX_BRIGHT];
+      // seed 002 thresholds every channel on its own; the mgf's seed leaves the bright pass open,
+      // so it takes the bloom's own (the chain's, with its measure).
+      set_bright_uniforms(program, s, mgf ? -1 : 2);
+      glProgramUniform1i(program, 4, mgf ? 4 : s.downscale);
+      glProgramUniform3f(program, 5, static_cast<float>(s.strength * s.tint[0]), static_cast<float>(s.strength * s.tint[1]),
+                         static_cast<float>(s.strength * s.tint[2]));
+      glProgramUniform1f(program, 6, static_cast<float>(kLevelSumMax));
+      break;
+    }
+    case PASS_BLUR_X:
+    case PASS_BLUR_Y: {
+      program = programs[PROGRAM_BLUR];
+      const bool x = tag_kind(context.user_tag) == PASS_BLUR_X;
+      const double deviation = mgf ? kMgfDeviation : gaussian_mode_deviation(s);
+      const int half_taps = mgf ? kMgfTaps / 2 : s.half_taps;
+      set_blur_uniforms(program, deviation, half_taps, x);
+      break;
+    }
+    case PASS_GAUSSIAN_COMPOSITE:
+      program = programs[PROGRAM_GAUSSIAN_COMPOSITE];
+      glProgramUniform1f(program, 4, static_cast<float>(s.tone_scale));
+      glProgramUniform1i(program, 5, context.input_count > 1 ? 1 : 0);
+      break;
+    case PASS_MGF_COMPOSITE: {
+      program = programs[PROGRAM_MGF_COMPOSITE];
+      double weights[kMaxLevels];
+      level_weights(s, plan.count, weights);
+      float as_float[kMaxLevels];
+      for (int i = 0; i < plan.count; ++i) as_float[i] = static_cast<float>(weights[i]);
+      glProgramUniform1i(program, 4, plan.count);
+      glProgramUniform1fv(program, 5, plan.count, as_float);
+      break;
+    }
+    default: return;
+  }
+  glProgramUniform2f(program, 0, out_w, out_h);
+  draw_fullscreen(program);
+}
+
+}  // namespace pfx_bloom

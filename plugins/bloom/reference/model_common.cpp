@@ -1,0 +1,91 @@
+#include "model_common.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pfx_bloom::model {
+
+double largest(const Plane& p) {
+  double m = 0;
+  for (double v : p.rgb) m = std::max(m, v);
+  return m;
+}
+
+void texel(const Plane& p, int x, int y, Wrap wrap, double out[3]) {
+  if (wrap == Wrap::Border && (x < 0 || y < 0 || x >= p.w || y >= p.h)) {
+    out[0] = out[1] = out[2] = 0.0;
+    return;
+  }
+  const double* t = p.at(std::clamp(x, 0, p.w - 1), std::clamp(y, 0, p.h - 1));
+  out[0] = t[0], out[1] = t[1], out[2] = t[2];
+}
+
+void bilinear(const Plane& p, double px, double py, Wrap wrap, double out[3]) {
+  const double u = px - 0.5, v = py - 0.5;
+  const double fu = std::floor(u), fv = std::floor(v);
+  const double a = u - fu, b = v - fv;
+  const int i = static_cast<int>(fu), j = static_cast<int>(fv);
+  double t00[3], t10[3], t01[3], t11[3];
+  texel(p, i, j, wrap, t00);
+  texel(p, i + 1, j, wrap, t10);
+  texel(p, i, j + 1, wrap, t01);
+  texel(p, i + 1, j + 1, wrap, t11);
+  for (int c = 0; c < 3; ++c)
+    out[c] = (1 - b) * ((1 - a) * t00[c] + a * t10[c]) + b * ((1 - a) * t01[c] + a * t11[c]);
+}
+
+Plane safe_frame(const float* color, int w, int h, double clamp_to) {
+  Plane p(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float v = color[(static_cast<size_t>(y) * w + x) * 4 + c];
+        p.at(x, y)[c] = std::isnan(v) ? 0.0 : std::clamp(static_cast<double>(v), 0.0, clamp_to);
+      }
+  return p;
+}
+
+double soft_part(const Settings& s, double b) {
+  double part = std::max(b - s.threshold, 0.0);
+  if (s.knee > 0) {
+    const double soft = std::clamp(b - s.threshold + s.knee, 0.0, 2.0 * s.knee);
+    part = std::max(part, soft * soft / (4.0 * s.knee));
+  }
+  return part;
+}
+
+void bright_part(const Settings& s, int measure, double c[3]) {
+  if (measure == kMeasurePerChannel) {
+    for (int i = 0; i < 3; ++i) c[i] = soft_part(s, c[i]);
+    return;
+  }
+  const double b = measure == MEASURE_LUMINANCE ? 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+                                                : std::max(c[0], std::max(c[1], c[2]));
+  const double ratio = soft_part(s, b) / std::max(b, kBrightnessFloor);
+  for (int i = 0; i < 3; ++i) c[i] *= ratio;
+}
+
+Plane box_bright(const Settings& s, int measure, const Plane& frame, int w, int h, int block, const double gain[3],
+                 double cap) {
+  Plane out(w, h);
+  const double count = static_cast<double>(block) * block;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int x0 = static_cast<int>(static_cast<long long>(x) * frame.w / w);
+      const int y0 = static_cast<int>(static_cast<long long>(y) * frame.h / h);
+      double sum[3] = {0, 0, 0};
+      for (int j = 0; j < block; ++j)
+        for (int i = 0; i < block; ++i) {
+          double t[3];
+          texel(frame, x0 + i, y0 + j, Wrap::Border, t);
+          bright_part(s, measure, t);
+          for (int c = 0; c < 3; ++c) sum[c] += t[c];
+        }
+      for (int c = 0; c < 3; ++c) out.at(x, y)[c] = std::min(sum[c] / count * gain[c], cap);
+    }
+  return out;
+}
+
+double finite_signed(float v) { return std::isnan(v) ? 0.0 : std::clamp(static_cast<double>(v), -kHalfMax, kHalfMax); }
+
+}  // namespace pfx_bloom::model

@@ -1,0 +1,94 @@
+// The programs of the Gaussian modes (gaussian: seed 002; mgf: seed 004's multi-Gaussian), and the
+// box bright pass they share with glare.
+#include "bloom_shaders.hpp"
+#include "shaders_common.hpp"
+
+namespace pfx_bloom::shaders {
+
+// Every texel of the frame is made safe and thresholded on its own, then a block x block square is
+// averaged: the average keeps the light, and no texel is filtered before it is made safe. Block
+// (x, y) starts at pixel floor((x, y) * frame / buffer), so the blocks tile the frame exactly when
+// its size is a multiple of the block and overlap or skip a pixel otherwise.
+std::string box_bright() {
+  return std::string(kHeader) + kBrightCommon + R"glsl(
+layout(binding = 0) uniform sampler2D u_color;
+layout(location = 4) uniform int u_block;
+layout(location = 5) uniform vec3 u_gain;
+layout(location = 6) uniform float u_cap;
+
+void main() {
+  ivec2 size = textureSize(u_color, 0);
+  ivec2 start = ivec2(gl_FragCoord.xy) * size / ivec2(u_out_size);
+  vec3 sum = vec3(0.0);
+  for (int y = 0; y < u_block; ++y)
+    for (int x = 0; x < u_block; ++x) sum += bright_part(safe_texel(u_color, start + ivec2(x, y), size));
+  o_color = vec4(min(sum / float(u_block * u_block) * u_gain, vec3(u_cap)), 0.0);
+}
+)glsl";
+}
+
+// Taps one output texel apart along the direction. At the same size as the source every tap is a
+// texel, fetched exactly (black outside): a bilinear read there would, through the sampler's
+// rounding of coordinates, give the next texel a tiny weight and the kernel one texel more reach.
+// Reading a buffer twice the size, the host's sampler (linear, clamp-to-border) makes each tap
+// the average of 2x2 of its texels.
+std::string blur() {
+  return std::string(kHeader) + R"glsl(
+layout(binding = 0) uniform sampler2D u_source;
+layout(location = 4) uniform ivec2 u_direction;
+layout(location = 5) uniform int u_half_taps;
+layout(location = 6) uniform float u_weights[512];
+
+vec3 at(int k) {
+  if (textureSize(u_source, 0) == ivec2(u_out_size)) {
+    ivec2 p = ivec2(gl_FragCoord.xy) + k * u_direction;
+    if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, ivec2(u_out_size)))) return vec3(0.0);
+    return texelFetch(u_source, p, 0).rgb;
+  }
+  return texture(u_source, (gl_FragCoord.xy + float(k) * vec2(u_direction)) / u_out_size).rgb;
+}
+
+void main() {
+  vec3 sum = u_weights[0] * at(0);
+  for (int k = 1; k <= u_half_taps; ++k) sum += u_weights[k] * (at(k) + at(-k));
+  o_color = vec4(sum, 0.0);
+}
+)glsl";
+}
+
+// The bloom buffer is upsampled with one bilinear tap (clamp-to-edge).
+std::string gaussian_composite() {
+  return std::string(kHeader) + kFiniteFrame + R"glsl(
+layout(binding = 0) uniform sampler2D u_color;
+layout(binding = 1) uniform sampler2D u_bloom;
+layout(location = 4) uniform float u_tone;
+layout(location = 5) uniform int u_has_bloom;
+
+void main() {
+  vec4 c = finite_frame(texelFetch(u_color, ivec2(gl_FragCoord.xy), 0));
+  vec3 sum = c.rgb * u_tone;
+  if (u_has_bloom != 0) sum += texture(u_bloom, gl_FragCoord.xy / u_out_size).rgb;
+  o_color = vec4(clamp(sum, vec3(-65504.0), vec3(65504.0)), c.a);
+}
+)glsl";
+}
+
+// Every blurred buffer upsampled with one bilinear tap (clamp-to-edge) and weighted.
+std::string mgf_composite() {
+  return std::string(kHeader) + kFiniteFrame + R"glsl(
+layout(binding = 0) uniform sampler2D u_color;
+layout(binding = 1) uniform sampler2D u_levels[15];
+layout(location = 4) uniform int u_count;
+layout(location = 5) uniform float u_weights[15];
+
+void main() {
+  vec4 c = finite_frame(texelFetch(u_color, ivec2(gl_FragCoord.xy), 0));
+  vec2 uv = gl_FragCoord.xy / u_out_size;
+  vec3 bloom = vec3(0.0);
+  for (int i = 0; i < u_count; ++i) bloom += u_weights[i] * texture(u_levels[i], uv).rgb;
+  o_color = vec4(min(c.rgb + bloom, vec3(65504.0)), c.a);
+}
+)glsl";
+}
+
+}  // namespace pfx_bloom::shaders
