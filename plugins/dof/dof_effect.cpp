@@ -1,40 +1,62 @@
 // The "dof" effect on the GPU: the declared passes of each mode.
 //
-// seed    lens   depth -> lens (1x1: C, 1/P; autofocus reads the depth here)
-//         half   color -> half (half-size copy, safe colour)
-//         seed   color, depth, half, lens -> output (16 taps, mixed in as |CoC| passes 1 px)
+// both      lens      depth -> lens (1x1: C, 1/P; autofocus reads the depth here)
+// seed      half      color -> half (half-size copy of the safe colour)
+//           seed      color, depth, half, lens -> output (16 taps, mixed in as |CoC| passes 1 px)
+// gather    prepare   color, depth, lens -> work (safe colour + signed CoC, half or full resolution)
+//           tiles     work -> tiles (largest near CoC and largest |CoC| per 16 frame px)
+//           dilate    tiles -> dilated (near CoC spread to the tiles it can reach)
+//           gather    work, dilated, color -> output (full) or blur (half): near/far ring gather
+//           composite color, depth, lens, work, blur, dilated -> output (half only)
 #include "dof_effect.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <new>
 #include <string>
+#include <vector>
 
 #include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/gl_program.hpp>
 
 #include "dof_camera.hpp"
+#include "dof_gather_plan.hpp"
 #include "dof_params.hpp"
+#include "dof_rings.hpp"
 #include "dof_shaders.hpp"
 #include "reference/dof_seed_model.hpp"
 
 namespace pfx_dof {
 namespace {
 
-enum PassTag : uint32_t { PASS_LENS, PASS_SEED_HALF, PASS_SEED };
-enum Program { PROGRAM_LENS, PROGRAM_SEED_HALF, PROGRAM_SEED, PROGRAM_COUNT };
+enum Program {
+  PROGRAM_LENS,
+  PROGRAM_SEED_HALF,
+  PROGRAM_SEED,
+  PROGRAM_PREPARE,
+  PROGRAM_TILES,
+  PROGRAM_DILATE,
+  PROGRAM_GATHER,
+  PROGRAM_COMPOSITE,
+  PROGRAM_COUNT
+};
 
 constexpr uint32_t kMaxTargets = 8, kMaxPasses = 8;
+
+// The inputs of every pass, by program; each pass's tag is its program.
+struct PassInputs {
+  pfx_pass_input lens[1], seed_half[1], seed[4], prepare[3], tiles[1], dilate[1], gather[3], composite[6];
+};
 
 struct Instance {
   const pfx_host* host = nullptr;
   GLuint programs[PROGRAM_COUNT] = {};
+  GLuint rings = 0;         // shader storage: the gather's ring samples
+  int ring_count = 0;       // the sample count they were made for
+  PassInputs inputs{};
   // What declare hands the host; valid until the next declare or destroy, as the ABI asks.
   pfx_target_desc targets[kMaxTargets] = {};
   pfx_pass_desc passes[kMaxPasses] = {};
-  pfx_pass_input lens_inputs[1] = {};
-  pfx_pass_input half_inputs[1] = {};
-  pfx_pass_input seed_inputs[4] = {};
   char report[256] = "";
   std::string last_problem;
 };
@@ -47,6 +69,7 @@ void destroy(void* self) {
   Instance* inst = static_cast<Instance*>(self);
   if (!inst) return;
   for (GLuint program : inst->programs) glDeleteProgram(program);  // 0 is a silent no-op
+  if (inst->rings) glDeleteBuffers(1, &inst->rings);
   delete inst;
 }
 
@@ -56,6 +79,34 @@ GLuint build(Instance* inst, const char* name, const std::string& body) {
   GLuint program = pfx::gl::build_fullscreen_program(source.c_str(), &error);
   if (!program) log(inst, PFX_LOG_ERROR, std::string("shader '") + name + "': " + error);
   return program;
+}
+
+void set_inputs(PassInputs* in) {
+  const pfx_pass_input color = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  const pfx_pass_input depth = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  const pfx_pass_input lens = {"lens", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  const pfx_pass_input work = {"work", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  const pfx_pass_input dilated = {"dilated", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  in->lens[0] = depth;
+  in->seed_half[0] = color;
+  in->seed[0] = color;
+  in->seed[1] = depth;
+  in->seed[2] = {"half", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};  // the seed's bilinear taps
+  in->seed[3] = lens;
+  in->prepare[0] = color;
+  in->prepare[1] = depth;
+  in->prepare[2] = lens;
+  in->tiles[0] = work;
+  in->dilate[0] = {"tiles", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  in->gather[0] = work;
+  in->gather[1] = dilated;
+  in->gather[2] = color;
+  in->composite[0] = color;
+  in->composite[1] = depth;
+  in->composite[2] = lens;
+  in->composite[3] = work;
+  in->composite[4] = {"blur", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  in->composite[5] = dilated;
 }
 
 pfx_status create(const pfx_host* host, void** out) {
@@ -68,8 +119,10 @@ pfx_status create(const pfx_host* host, void** out) {
   if (!inst) return PFX_OUT_OF_MEMORY;
   inst->host = host;
   try {
-    const char* names[PROGRAM_COUNT] = {"lens", "seed_half", "seed"};
-    const std::string bodies[PROGRAM_COUNT] = {shaders::kLens, shaders::kSeedHalf, shaders::seed_body()};
+    const char* names[PROGRAM_COUNT] = {"lens", "seed_half", "seed", "prepare", "tiles", "dilate", "gather", "composite"};
+    const std::string bodies[PROGRAM_COUNT] = {shaders::kLens,    shaders::kSeedHalf, shaders::seed_body(),
+                                               shaders::kPrepare, shaders::kTiles,    shaders::kDilate,
+                                               shaders::kGather,  shaders::kComposite};
     for (int i = 0; i < PROGRAM_COUNT; ++i) {
       inst->programs[i] = build(inst, names[i], bodies[i]);
       if (!inst->programs[i]) {
@@ -81,26 +134,21 @@ pfx_status create(const pfx_host* host, void** out) {
     destroy(inst);
     return PFX_OUT_OF_MEMORY;
   }
-  const pfx_pass_input depth = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
-  const pfx_pass_input color = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
-  inst->lens_inputs[0] = depth;
-  inst->half_inputs[0] = color;
-  inst->seed_inputs[0] = color;
-  inst->seed_inputs[1] = depth;
-  inst->seed_inputs[2] = {"half", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};
-  inst->seed_inputs[3] = {"lens", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  glCreateBuffers(1, &inst->rings);
+  glNamedBufferStorage(inst->rings, sizeof(float) * 4 * kMaxSamples, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  set_inputs(&inst->inputs);
   *out = inst;
   return PFX_OK;
 }
 
-pfx_target_desc fixed_target(const char* name, pfx_format format, uint32_t width, uint32_t height) {
+pfx_target_desc fixed_target(const char* name, pfx_format format, int width, int height) {
   pfx_target_desc t{};
   t.struct_size = sizeof t;
   t.name = name;
   t.format = format;
   t.size_mode = PFX_SIZE_FIXED;
-  t.width = width;
-  t.height = height;
+  t.width = static_cast<uint32_t>(width);
+  t.height = static_cast<uint32_t>(height);
   return t;
 }
 
@@ -118,18 +166,38 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   }
   inst->last_problem.clear();
   const Settings s = settings_from(params);
-  const uint32_t hw = static_cast<uint32_t>(half_size(static_cast<int>(frame->width)));
-  const uint32_t hh = static_cast<uint32_t>(half_size(static_cast<int>(frame->height)));
+  PassInputs& in = inst->inputs;
   uint32_t t = 0, n = 0;
+  auto pass = [&](const char* name, const char* output, const pfx_pass_input* inputs, uint32_t count, Program tag) {
+    inst->passes[n++] = pfx::desc::fullscreen_pass(name, output, inputs, count, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, tag);
+  };
   inst->targets[t++] = fixed_target("lens", PFX_FORMAT_RG32F, 1, 1);
-  inst->passes[n++] = pfx::desc::fullscreen_pass("lens", "lens", inst->lens_inputs, 1, PFX_BLEND_NONE,
-                                                 PFX_LOAD_DONT_CARE, PASS_LENS);
-  (void)s;
-  inst->targets[t++] = fixed_target("half", PFX_FORMAT_RGBA16F, hw, hh);
-  inst->passes[n++] = pfx::desc::fullscreen_pass("half", "half", inst->half_inputs, 1, PFX_BLEND_NONE,
-                                                 PFX_LOAD_DONT_CARE, PASS_SEED_HALF);
-  inst->passes[n++] = pfx::desc::fullscreen_pass("seed", PFX_OUTPUT_NAME, inst->seed_inputs, 4, PFX_BLEND_NONE,
-                                                 PFX_LOAD_DONT_CARE, PASS_SEED);
+  pass("lens", "lens", in.lens, 1, PROGRAM_LENS);
+  if (s.mode == MODE_SEED) {
+    inst->targets[t++] = fixed_target("half", PFX_FORMAT_RGBA16F, half_size(static_cast<int>(frame->width)),
+                                      half_size(static_cast<int>(frame->height)));
+    pass("half", "half", in.seed_half, 1, PROGRAM_SEED_HALF);
+    pass("seed", PFX_OUTPUT_NAME, in.seed, 4, PROGRAM_SEED);
+    std::snprintf(inst->report, sizeof inst->report, "\"mode\": \"seed\", \"taps\": 16");
+  } else {
+    const GatherPlan plan = plan_gather(frame->width, frame->height, s);
+    inst->targets[t++] = fixed_target("work", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
+    inst->targets[t++] = fixed_target("tiles", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
+    inst->targets[t++] = fixed_target("dilated", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
+    pass("prepare", "work", in.prepare, 3, PROGRAM_PREPARE);
+    pass("tiles", "tiles", in.tiles, 1, PROGRAM_TILES);
+    pass("dilate", "dilated", in.dilate, 1, PROGRAM_DILATE);
+    if (plan.half) {
+      inst->targets[t++] = fixed_target("blur", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
+      pass("gather", "blur", in.gather, 3, PROGRAM_GATHER);
+      pass("composite", PFX_OUTPUT_NAME, in.composite, 6, PROGRAM_COMPOSITE);
+    } else {
+      pass("gather", PFX_OUTPUT_NAME, in.gather, 3, PROGRAM_GATHER);
+    }
+    std::snprintf(inst->report, sizeof inst->report,
+                  "\"mode\": \"gather\", \"samples\": %d, \"work\": \"%dx%d\", \"tiles\": \"%dx%d\", \"dilation\": %d",
+                  s.samples, plan.work_width, plan.work_height, plan.tiles_width, plan.tiles_height, plan.dilation);
+  }
   out->targets = inst->targets;
   out->target_count = t;
   out->passes = inst->passes;
@@ -138,37 +206,58 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
 }
 
 void set_common_uniforms(GLuint program, const pfx_frame& frame, const Settings& s) {
+  const bool infinite = std::isinf(frame.camera.far_plane);
   glProgramUniform1i(program, 0, static_cast<GLint>(frame.depth_encoding));
-  glProgramUniform2f(program, 1, frame.camera.near_plane, std::isinf(frame.camera.far_plane) ? 0.0f : frame.camera.far_plane);
-  glProgramUniform1i(program, 2, std::isinf(frame.camera.far_plane) ? 1 : 0);
+  glProgramUniform2f(program, 1, frame.camera.near_plane, infinite ? 0.0f : frame.camera.far_plane);
+  glProgramUniform1i(program, 2, infinite ? 1 : 0);
   glProgramUniform1f(program, 3, static_cast<float>(s.max_coc));
+}
+
+void set_lens_uniforms(GLuint program, const pfx_frame& frame, const Settings& s) {
+  const Lens lens = make_lens(frame, s, s.focus_distance);
+  uint32_t fx = 0, fy = 0;
+  focus_texel(frame.width, frame.height, s, &fx, &fy);
+  glProgramUniform4f(program, 4, static_cast<float>(lens.image_distance_mm), static_cast<float>(lens.px_per_mm),
+                     static_cast<float>(s.f_number), static_cast<float>(lens.focus_distance_m));
+  glProgramUniform2i(program, 5, static_cast<GLint>(fx), static_cast<GLint>(fy));
+  glProgramUniform1i(program, 6, s.autofocus == AUTOFOCUS_POINT ? 1 : 0);
+  glProgramUniform2f(program, 7, static_cast<float>(kMinFocusDistance), static_cast<float>(kMaxFocusDistance));
+}
+
+void upload_rings(Instance* inst, int count) {
+  if (inst->ring_count == count) return;
+  const std::vector<RingSample> rings = ring_samples(count);
+  std::vector<float> data;
+  for (const RingSample& r : rings) data.insert(data.end(), {r.x, r.y, r.area, 0.0f});
+  glNamedBufferSubData(inst->rings, 0, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data());
+  inst->ring_count = count;
 }
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !context || context->struct_size < sizeof(pfx_pass_context)) return PFX_INVALID_ARGUMENT;
+  if (!inst || !context || context->struct_size < sizeof(pfx_pass_context) || context->user_tag >= PROGRAM_COUNT)
+    return PFX_INVALID_ARGUMENT;
   const pfx_frame& frame = *context->frame;
   const Settings s = settings_from(context->params);
-  GLuint program = 0;
+  const GatherPlan plan = plan_gather(frame.width, frame.height, s);
+  const GLuint program = inst->programs[context->user_tag];
   switch (context->user_tag) {
-    case PASS_LENS: {
-      program = inst->programs[PROGRAM_LENS];
-      const Lens lens = make_lens(frame, s, s.focus_distance);
-      uint32_t fx = 0, fy = 0;
-      focus_texel(frame.width, frame.height, s, &fx, &fy);
-      glProgramUniform4f(program, 4, static_cast<float>(lens.image_distance_mm), static_cast<float>(lens.px_per_mm),
-                         static_cast<float>(s.f_number), static_cast<float>(lens.focus_distance_m));
-      glProgramUniform2i(program, 5, static_cast<GLint>(fx), static_cast<GLint>(fy));
-      glProgramUniform1i(program, 6, s.autofocus == AUTOFOCUS_POINT ? 1 : 0);
-      glProgramUniform2f(program, 7, static_cast<float>(kMinFocusDistance), static_cast<float>(kMaxFocusDistance));
-      break;
-    }
-    case PASS_SEED_HALF:
-      program = inst->programs[PROGRAM_SEED_HALF];
+    case PROGRAM_LENS: set_lens_uniforms(program, frame, s); break;
+    case PROGRAM_SEED_HALF:
       glProgramUniform2f(program, 4, static_cast<float>(context->output_width), static_cast<float>(context->output_height));
       break;
-    case PASS_SEED: program = inst->programs[PROGRAM_SEED]; break;
-    default: return PFX_INVALID_ARGUMENT;
+    case PROGRAM_PREPARE: glProgramUniform1i(program, 4, plan.half ? 1 : 0); break;
+    case PROGRAM_TILES: glProgramUniform1i(program, 4, plan.tile); break;
+    case PROGRAM_DILATE: glProgramUniform1i(program, 5, plan.dilation); break;
+    case PROGRAM_GATHER:
+      upload_rings(inst, s.samples);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, inst->rings);
+      glProgramUniform1i(program, 4, inst->ring_count);
+      glProgramUniform1f(program, 5, plan.half ? 0.5f : 1.0f);
+      glProgramUniform1i(program, 6, plan.tile);
+      glProgramUniform1i(program, 7, plan.half ? 0 : 1);
+      break;
+    default: break;
   }
   set_common_uniforms(program, frame, s);
   glUseProgram(program);
@@ -177,11 +266,7 @@ pfx_status run_pass(void* self, const pfx_pass_context* context) {
   return PFX_OK;
 }
 
-const char* report_json(void* self) {
-  Instance* inst = static_cast<Instance*>(self);
-  std::snprintf(inst->report, sizeof inst->report, "\"mode\": \"seed\"");
-  return inst->report;
-}
+const char* report_json(void* self) { return static_cast<Instance*>(self)->report; }
 
 }  // namespace
 
@@ -190,7 +275,7 @@ const pfx_effect_desc kDofEffect = {
     "dof",
     "Depth of field",
     "Thin-lens depth of field from the frame's depth and camera: the seed's 16-tap disk, or a halo-free "
-    "near/far gather over 16 px CoC tiles.",
+    "near/far gather over 16 px CoC tiles that leaves in-focus tiles untouched.",
     kParams,
     PARAM_COUNT,
     create,

@@ -30,8 +30,8 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                          "seed: the seed's 16-tap disk from a half-size copy, blended in as the blur passes 1 px "
                          "(halos around in-focus objects). gather: the quality mode, with separate near and far "
                          "fields, ring samples sized per 16 px tile, and in-focus tiles left exactly as they were.",
-                         "", "Depth of field", PFX_PARAM_ENUM, 0, 0, 0, 0, 1, {{MODE_SEED}}),
-        kModeItems, 1),
+                         "", "Depth of field", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{MODE_GATHER}}),
+        kModeItems, 2),
     logarithmic(pfx::desc::param(
         "focus_distance", "Focus distance",
         "Distance from the lens to the plane in perfect focus, in metres along the view axis. Ignored while "

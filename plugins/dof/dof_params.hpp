@@ -38,7 +38,7 @@ constexpr int kMaxSamples = 256;
 extern const pfx_param_desc kParams[PARAM_COUNT];
 
 struct Settings {
-  int mode = MODE_SEED;
+  int mode = MODE_GATHER;
   double focus_distance = 10.0;  // m
   int autofocus = AUTOFOCUS_OFF;
   double focus_point[2] = {0.5, 0.5};  // 0..1 across the frame, (0, 0) the top-left corner

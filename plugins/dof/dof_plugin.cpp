@@ -9,6 +9,7 @@
 #include "dof_camera.hpp"
 #include "dof_effect.hpp"
 #include "dof_params.hpp"
+#include "reference/dof_gather_model.hpp"
 #include "reference/dof_seed_model.hpp"
 
 namespace pfx_dof {
@@ -32,8 +33,10 @@ pfx_status evaluate(const pfx_reference_request* request) {
   if (!camera_problem(*request->frame).empty()) return PFX_INVALID_ARGUMENT;
   const Settings settings = settings_from(request->params);
   try {
-    if (settings.mode != MODE_SEED) return PFX_UNSUPPORTED;
-    evaluate_seed_model(settings, *request->frame, request->color, request->depth, request->output);
+    if (settings.mode == MODE_SEED)
+      evaluate_seed_model(settings, *request->frame, request->color, request->depth, request->output);
+    else
+      evaluate_gather_model(settings, *request->frame, request->color, request->depth, request->output);
   } catch (const std::bad_alloc&) {
     return PFX_OUT_OF_MEMORY;
   } catch (...) {

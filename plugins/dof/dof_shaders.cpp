@@ -118,3 +118,169 @@ void main() {
 }
 
 }  // namespace pfx_dof::shaders
+
+namespace pfx_dof::shaders {
+
+const char* const kPrepare = R"glsl(
+layout(binding = 0) uniform sampler2D u_color;
+layout(binding = 1) uniform sampler2D u_depth;
+layout(binding = 2) uniform sampler2D u_lens;
+layout(location = 4) uniform int u_half;
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec2 lens = texelFetch(u_lens, ivec2(0), 0).xy;
+  if (u_half == 0) {
+    o_color = vec4(safe_color(texelFetch(u_color, p, 0)).rgb, coc_of(lens, view_depth(texelFetch(u_depth, p, 0).r)));
+    return;
+  }
+  // The block's mean colour; its nearest CoC, so a foreground edge keeps its reach.
+  ivec2 hi = textureSize(u_color, 0) - 1;
+  vec3 sum = vec3(0.0);
+  float nearest = u_max_coc;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      ivec2 q = min(2 * p + ivec2(i, j), hi);
+      sum += safe_color(texelFetch(u_color, q, 0)).rgb;
+      nearest = min(nearest, coc_of(lens, view_depth(texelFetch(u_depth, q, 0).r)));
+    }
+  o_color = vec4(sum * 0.25, nearest);
+}
+)glsl";
+
+const char* const kTiles = R"glsl(
+layout(binding = 0) uniform sampler2D u_work;
+layout(location = 4) uniform int u_tile;
+
+void main() {
+  ivec2 t = ivec2(gl_FragCoord.xy), size = textureSize(u_work, 0);
+  float near = 0.0, reach = 0.0;
+  for (int y = 0; y < u_tile; ++y)
+    for (int x = 0; x < u_tile; ++x) {
+      ivec2 q = t * u_tile + ivec2(x, y);
+      if (q.x >= size.x || q.y >= size.y) continue;
+      float coc = texelFetch(u_work, q, 0).a;
+      near = max(near, -coc);
+      reach = max(reach, abs(coc));
+    }
+  o_color = vec4(near, reach, 0.0, 0.0);
+}
+)glsl";
+
+const char* const kDilate = R"glsl(
+layout(binding = 0) uniform sampler2D u_tiles;
+layout(location = 5) uniform int u_dilation;
+
+void main() {
+  ivec2 t = ivec2(gl_FragCoord.xy), hi = textureSize(u_tiles, 0) - 1;
+  float near = 0.0;
+  for (int y = -u_dilation; y <= u_dilation; ++y)
+    for (int x = -u_dilation; x <= u_dilation; ++x)
+      near = max(near, texelFetch(u_tiles, clamp(t + ivec2(x, y), ivec2(0), hi), 0).r);
+  o_color = vec4(near, texelFetch(u_tiles, t, 0).g, 0.0, 0.0);
+}
+)glsl";
+
+// Scatter as gather, in two fields (docs/effects/dof.md). A sample in front of the pixel (smaller
+// CoC) is near: it covers the pixel if its own blur reaches it, with the density of its own disc,
+// and the summed coverage is the near field's alpha. Every other sample is far: it counts only
+// within the pixel's own blur radius, so a sharp pixel takes nothing from a blurred background
+// behind it and a blurred background takes nothing from a sharp object in front (no halo).
+const char* const kGather = R"glsl(
+layout(binding = 0) uniform sampler2D u_work;
+layout(binding = 1) uniform sampler2D u_dilated;
+layout(binding = 2) uniform sampler2D u_color;
+layout(std430, binding = 0) readonly buffer Rings { vec4 u_rings[]; };
+layout(location = 4) uniform int u_sample_count;
+layout(location = 5) uniform float u_scale;
+layout(location = 6) uniform int u_tile;
+layout(location = 7) uniform int u_full;
+
+float coverage(float d, float r) { return clamp(r - d + 0.5, 0.0, 1.0); }
+float density(float r) { return 1.0 / (3.14159265358979 * (r * r + 1.0 / 12.0)); }
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy), hi = textureSize(u_work, 0) - 1;
+  vec2 tile = texelFetch(u_dilated, p / u_tile, 0).rg;
+  float reach = max(tile.r, tile.g);
+  vec4 center = texelFetch(u_work, p, 0);
+  if (reach < 1.0) {  // in focus, and no blurred foreground can reach: skip all gather work
+    o_color = u_full != 0 ? safe_color(texelFetch(u_color, p, 0)) : vec4(center.rgb, 1.0);
+    return;
+  }
+  float radius = ceil(0.5 * reach * u_scale);
+  float r_p = max(0.5 * abs(center.a) * u_scale, 0.5);
+  float far_weight = density(r_p);
+  vec3 far_sum = center.rgb * far_weight;
+  vec3 near_sum = vec3(0.0);
+  float near_weight = 0.0;
+  for (int i = 0; i < u_sample_count; ++i) {
+    vec4 s = u_rings[i];
+    ivec2 o = ivec2(floor(s.xy * radius + 0.5));
+    if (o == ivec2(0)) continue;
+    float d = length(vec2(o));
+    vec4 q = texelFetch(u_work, clamp(p + o, ivec2(0), hi), 0);
+    float area = s.z * radius * radius;
+    if (q.a < center.a) {
+      float r_q = max(0.5 * abs(q.a) * u_scale, 0.5);
+      float w = area * coverage(d, r_q) * density(r_q);
+      near_sum += w * q.rgb;
+      near_weight += w;
+    } else {
+      float w = area * coverage(d, r_p) * density(r_p);
+      far_sum += w * q.rgb;
+      far_weight += w;
+    }
+  }
+  float alpha = min(near_weight, 1.0);
+  vec3 near = near_weight > 0.0 ? near_sum / near_weight : vec3(0.0);
+  vec3 result = mix(far_sum / far_weight, near, alpha);
+  o_color = u_full != 0 ? vec4(result, safe_color(texelFetch(u_color, p, 0)).a) : vec4(result, 1.0 - alpha);
+}
+)glsl";
+
+// Upsampling weighs the four half texels around the pixel by how close their CoC is to the
+// pixel's own, so a blurred background's texels do not leak into a sharp edge (and back). The
+// sharp pixel replaces the half-resolution one where the pixel's CoC is under 1 px, behind what
+// the near field covers: out = blur + visible * (1 - t) * (sharp - half).
+const char* const kComposite = R"glsl(
+layout(binding = 0) uniform sampler2D u_color;
+layout(binding = 1) uniform sampler2D u_depth;
+layout(binding = 2) uniform sampler2D u_lens;
+layout(binding = 3) uniform sampler2D u_work;
+layout(binding = 4) uniform sampler2D u_blur;
+layout(binding = 5) uniform sampler2D u_dilated;
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 sharp = safe_color(texelFetch(u_color, p, 0));
+  vec2 tile = texelFetch(u_dilated, p / 16, 0).rg;
+  if (max(tile.r, tile.g) < 1.0) {
+    o_color = sharp;
+    return;
+  }
+  float coc = coc_of(texelFetch(u_lens, ivec2(0), 0).xy, view_depth(texelFetch(u_depth, p, 0).r));
+  float t = clamp(abs(coc) - 1.0, 0.0, 1.0);
+  vec2 h = vec2(p) * 0.5 - 0.25;
+  vec2 base = floor(h), f = h - base;
+  ivec2 b = ivec2(base), hi = textureSize(u_work, 0) - 1;
+  vec4 blur = vec4(0.0);
+  vec3 half_color = vec3(0.0);
+  float total = 0.0;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      ivec2 q = clamp(b + ivec2(i, j), ivec2(0), hi);
+      vec4 work = texelFetch(u_work, q, 0);
+      float bilinear = (i == 1 ? f.x : 1.0 - f.x) * (j == 1 ? f.y : 1.0 - f.y);
+      float w = bilinear * max(1e-3, 1.0 - abs(work.a - coc) / (1.0 + 0.25 * abs(coc)));
+      blur += w * texelFetch(u_blur, q, 0);
+      half_color += w * work.rgb;
+      total += w;
+    }
+  blur /= total;
+  half_color /= total;
+  o_color = vec4(blur.rgb + blur.a * (1.0 - t) * (sharp.rgb - half_color), sharp.a);
+}
+)glsl";
+
+}  // namespace pfx_dof::shaders

@@ -21,4 +21,18 @@ extern const char* const kSeedHalf;
 // color, depth, half, lens -> output: the seed's 16-tap disk. The disk is spliced in as text.
 std::string seed_body();
 
+// gather mode. prepare: color, depth, lens -> work (safe colour, a = signed CoC in frame pixels);
+// 4: int half (2x2 blocks: mean colour, the nearest CoC).
+extern const char* const kPrepare;
+// work -> tiles (r: largest near CoC, g: largest |CoC|). 4: int work pixels per tile.
+extern const char* const kTiles;
+// tiles -> dilated (r: largest near CoC within 5: int tiles each way, g: the tile's own |CoC|).
+extern const char* const kDilate;
+// work, dilated, color -> output (full) or blur (half; a = what the near field leaves visible).
+// Ring samples in the shader storage buffer at binding 0 (vec4: x, y, area, 0). 4: int sample
+// count, 5: float work pixels per frame pixel, 6: int work pixels per tile, 7: int full resolution.
+extern const char* const kGather;
+// color, depth, lens, work, blur, dilated -> output: the half-resolution gather over the sharp frame.
+extern const char* const kComposite;
+
 }  // namespace pfx_dof::shaders

@@ -12,15 +12,18 @@ using namespace dof_test;
 
 namespace {
 
-const char* const kModes[] = {"seed"};
+// Every mode and working resolution: "mode" or "mode/resolution".
+const char* const kModes[] = {"seed", "gather/half", "gather/full"};
 
-Rig& rig_for(const char* mode) {
+Rig& rig_for(const std::string& mode) {
   static Rig* rig = nullptr;
   if (!rig) rig = new Rig;
   for (const char* assignment : {"dof.focus_distance=5", "dof.f_number=0.1", "dof.max_coc=32", "dof.autofocus=off",
                                  "dof.sensor_width=36", "dof.samples=32", "dof.resolution=half"})
     rig->set(assignment);
-  rig->set(std::string("dof.mode=") + mode);
+  const size_t slash = mode.find('/');
+  rig->set("dof.mode=" + mode.substr(0, slash));
+  if (slash != std::string::npos) rig->set("dof.resolution=" + mode.substr(slash + 1));
   return *rig;
 }
 

@@ -1,0 +1,19 @@
+// The gather's sample set: N points over the unit disc in concentric rings, each with the area of
+// the disc it stands for (they sum to pi), so a gather can weigh samples by area and keep energy
+// constant whatever N is. Ring k of K holds samples in proportion to its area (2k - 1) / K^2, at the
+// radius that splits the ring's area in half; alternate rings are turned by half a step.
+// K = round(sqrt(N) / 2): 16 -> 2 rings (4 + 12), 64 -> 4 (4, 12, 20, 28), 256 -> 8.
+#pragma once
+
+#include <vector>
+
+namespace pfx_dof {
+
+struct RingSample {
+  float x, y;  // in the unit disc
+  float area;  // of the unit disc's area pi
+};
+
+std::vector<RingSample> ring_samples(int count);
+
+}  // namespace pfx_dof
