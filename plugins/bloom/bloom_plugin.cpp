@@ -8,18 +8,25 @@
 
 #include "bloom_effect.hpp"
 #include "bloom_params.hpp"
+#include "glare_effect.hpp"
 #include "reference/bloom_model.hpp"
+#include "reference/glare_model.hpp"
 
 namespace pfx_bloom {
 namespace {
 
-uint32_t effect_count() { return 1; }
-const pfx_effect_desc* get_effect(uint32_t index) { return index == 0 ? &kBloomEffect : nullptr; }
+const pfx_effect_desc* const kEffects[] = {&kBloomEffect, &kGlareEffect};
+
+uint32_t effect_count() { return 2; }
+const pfx_effect_desc* get_effect(uint32_t index) { return index < 2 ? kEffects[index] : nullptr; }
 
 const pfx_effect_factory kEffectFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
 
+bool is_bloom(const char* effect_id) { return effect_id && std::strcmp(effect_id, "bloom") == 0; }
+bool is_glare(const char* effect_id) { return effect_id && std::strcmp(effect_id, "glare") == 0; }
+
 int has_reference(const char* effect_id, pfx_reference_kind kind) {
-  return effect_id && std::strcmp(effect_id, "bloom") == 0 && kind == PFX_REFERENCE_MODEL;
+  return (is_bloom(effect_id) || is_glare(effect_id)) && kind == PFX_REFERENCE_MODEL;
 }
 
 pfx_status evaluate(const pfx_reference_request* request) {
@@ -28,9 +35,12 @@ pfx_status evaluate(const pfx_reference_request* request) {
       request->frame->width == 0 || request->frame->height == 0)
     return PFX_INVALID_ARGUMENT;
   if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
-  const Settings settings = settings_from(request->params);
+  const uint32_t w = request->frame->width, h = request->frame->height;
   try {
-    evaluate_model(settings, request->frame->width, request->frame->height, request->color, request->output);
+    if (is_glare(request->effect_id))
+      evaluate_glare_model(glare_settings_from(request->params), w, h, request->color, request->output);
+    else
+      evaluate_model(settings_from(request->params), w, h, request->color, request->output);
   } catch (const std::bad_alloc&) {
     return PFX_OUT_OF_MEMORY;
   } catch (...) {

@@ -30,4 +30,10 @@ std::string blur();
 std::string gaussian_composite();
 // mgf: frame + sum of weighted buffers -> output. 4: int count, 5..: float weights[count].
 std::string mgf_composite();
+// glare: one pass of one streak, 16 taps. 4: vec2 step (uv between taps: direction * b / size),
+// 5: float weights[16] (normalised a^(b*s), divided by the streak count in the last pass).
+std::string streak();
+// glare: frame + gain * bilinear streaks -> output. 4: vec3 gain (strength * tint).
+std::string glare_composite();
+
 }  // namespace pfx_bloom::shaders

@@ -10,6 +10,7 @@
 
 #include "bloom_levels.hpp"
 #include "bloom_params.hpp"
+#include "reference/glare_model.hpp"
 #include "gl_test_support.hpp"
 #include "image_texture.hpp"
 
@@ -51,22 +52,31 @@ Picture scene(int width, int height) {
   return p;
 }
 
-Rig::Rig() : registry_(pfx::test::make_registry()) {
+Rig::Rig(const std::string& effect) : effect_(effect), registry_(pfx::test::make_registry()) {
   std::string error;
   INFO(error);
   REQUIRE(registry_->load(PFX_BLOOM_PLUGIN, &error));
-  const pfx::host::EffectInfo* info = registry_->find_effect("bloom");
+  const pfx::host::EffectInfo* info = registry_->find_effect(effect_);
   REQUIRE(info);
   references_ = info->plugin->references;
   REQUIRE(references_);
-  chain_ = std::make_unique<pfx::host::Chain>(*registry_, params_);
-  REQUIRE(chain_->add("bloom", &error));
+  chain_ = std::make_unique<pfx::host::Chain>(*registry_, *params_);
+  REQUIRE(chain_->add(effect_, &error));
 }
 
 void Rig::set(const std::string& assignment) {
+  const size_t dot = assignment.find('.'), equals = assignment.find('=');
+  const std::string full = dot < equals ? assignment : effect_ + "." + assignment;
   std::string error;
-  INFO(assignment << ": " << error);
-  REQUIRE(params_.set_assignment(assignment, &error));
+  INFO(full << ": " << error);
+  REQUIRE(params_->set_assignment(full, &error));
+}
+
+Rig rig_for(const char* variant) {
+  if (std::string(variant) == "glare") return Rig("glare");
+  Rig rig("bloom");
+  rig.set(std::string("mode=") + variant);
+  return rig;
 }
 
 namespace {
@@ -103,18 +113,24 @@ Rendered Rig::render(const Picture& picture) {
   pfx::app::delete_texture(output);
   r.passes = chain_->report().passes.size();
 
-  const pfx_value* values = params_.values("bloom");
-  const pfx_bloom::Settings settings = pfx_bloom::settings_from(values);
-  r.levels = r.passes ? pfx_bloom::plan_for(settings, w, h).count : 0;
-  r.mode = pfx_bloom::mode_name(settings.mode);
-  r.frame_scale = settings.mode == pfx_bloom::MODE_GAUSSIAN ? settings.tone_scale : 1.0;
+  const pfx_value* values = params_->values(effect_);
   r.model = Picture(w, h, 0, 0, 0, 0);
-  pfx_bloom::evaluate_model(settings, w, h, r.input.rgba.data(), r.model.rgba.data(), &r.trace);  // exactly what the GPU read
+  if (effect_ == "glare") {
+    r.mode = "glare";
+    evaluate_glare_model(pfx_bloom::glare_settings_from(values), w, h, r.input.rgba.data(), r.model.rgba.data(), &r.trace);
+  } else {
+    const pfx_bloom::Settings settings = pfx_bloom::settings_from(values);
+    r.levels = r.passes ? pfx_bloom::plan_for(settings, w, h).count : 0;
+    r.mode = pfx_bloom::mode_name(settings.mode);
+    r.frame_scale = settings.mode == pfx_bloom::MODE_GAUSSIAN ? settings.tone_scale : 1.0;
+    // exactly what the GPU read
+    pfx_bloom::evaluate_model(settings, w, h, r.input.rgba.data(), r.model.rgba.data(), &r.trace);
+  }
   if (w * h <= 64 * 64) {  // small frames: the reference factory hosts see gives the very same model
     Picture through_abi(w, h, 0, 0, 0, 0);
     pfx_reference_request request{};
     request.struct_size = sizeof request;
-    request.effect_id = "bloom";
+    request.effect_id = effect_.c_str();
     request.kind = PFX_REFERENCE_MODEL;
     request.frame = &frame;
     request.params = values;

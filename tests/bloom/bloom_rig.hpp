@@ -33,22 +33,27 @@ struct Rendered {
   Picture output;  // the chain's output read back
   Picture model;   // PFX_REFERENCE_MODEL of the same input and settings
   pfx_bloom::ModelTrace trace;  // what the model saw of the GPU's rounding
-  std::string mode;
+  std::string mode;  // the bloom mode, or "glare"
   double frame_scale = 1;  // the gaussian mode's tone scale
   int levels = 0;  // levels the pyramid used (0 when no pass ran)
   size_t passes = 0;
 };
 
+// A chain holding one effect of the bloom plugin ("bloom" or "glare").
 class Rig {
  public:
-  Rig();
+  explicit Rig(const std::string& effect = "bloom");
+  // "param=value" for this rig's effect, or a full "effect.param=value".
   void set(const std::string& assignment);
   Rendered render(const Picture& picture);
   pfx::host::Chain& chain() { return *chain_; }
+  const std::string& effect() const { return effect_; }
 
  private:
+  std::string effect_;
+  // Behind pointers, so a moved Rig keeps what the chain refers to.
   std::unique_ptr<pfx::host::PluginRegistry> registry_;
-  pfx::host::ParamStore params_;
+  std::unique_ptr<pfx::host::ParamStore> params_ = std::make_unique<pfx::host::ParamStore>();
   std::unique_ptr<pfx::host::Chain> chain_;
   const pfx_reference_factory* references_ = nullptr;
 };
@@ -62,8 +67,13 @@ double worst_error_ratio(const Picture& output, const Picture& model, const pfx_
 double rms_error_ratio(const Picture& output, const Picture& model, const Picture& input,
                        const pfx_bloom::ModelTrace& trace, double frame_scale);
 
-// Every mode of the effect, as the mode parameter spells them.
+// Every mode of the bloom effect, as the mode parameter spells them.
 inline const char* const kModes[] = {"chain", "chain13", "gaussian", "mgf"};
+// The bloom modes and the glare effect: what the hard cases run on.
+inline const char* const kVariants[] = {"chain", "chain13", "gaussian", "mgf", "glare"};
+
+// A rig for a variant: the bloom effect in that mode, or the glare effect.
+Rig rig_for(const char* variant);
 
 bool all_finite(const Picture& p);
 

@@ -1,4 +1,4 @@
-// The named hard cases of issue 3, each for every mode: bad values in the frame (NaN, +-Inf, above
+// The named hard cases of issue 3, each for every bloom mode and for glare: bad values in the frame (NaN, +-Inf, above
 // the half-float maximum, negative), tiny and odd sizes, and settings at their edges.
 #include <catch2/catch.hpp>
 
@@ -55,21 +55,13 @@ std::pair<int, int> differences(const Picture& a, const Picture& b, const std::v
   return {inside, outside};
 }
 
-// A rig in this mode; "levels=2" keeps every mode's reach well inside the frames below (the
-// gaussian mode has no levels; its defaults reach about 30 pixels).
-Rig in_mode(const char* mode) {
-  Rig rig;
-  rig.set(std::string("bloom.mode=") + mode);
-  return rig;
-}
-
 }  // namespace
 
 TEST_CASE("a NaN pixel contributes nothing: the output is that of the pixel zeroed, everywhere", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.threshold=0.5");
+    Rig rig = rig_for(mode);
+    rig.set("threshold=0.5");
     Picture zeroed = scene(40, 30);
     zeroed.at(20, 15)[0] = zeroed.at(20, 15)[1] = zeroed.at(20, 15)[2] = 0.0f;
     Picture with_nan = zeroed;
@@ -85,10 +77,10 @@ TEST_CASE("a NaN pixel contributes nothing: the output is that of the pixel zero
 }
 
 TEST_CASE("a single NaN pixel does not spread beyond the kernel's reach", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.levels=2");
+    Rig rig = rig_for(mode);
+    if (rig.effect() == "bloom") rig.set("levels=2");
     const Picture base = scene(160, 120);
     const std::vector<bool> reach = reach_of(rig, base, 100, 70);
     Picture zeroed = base, with_nan = base;
@@ -102,10 +94,10 @@ TEST_CASE("a single NaN pixel does not spread beyond the kernel's reach", "[bloo
 }
 
 TEST_CASE("a +Inf pixel is clamped before any target is written and reaches no further than the kernel", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.levels=2");
+    Rig rig = rig_for(mode);
+    if (rig.effect() == "bloom") rig.set("levels=2");
     const Picture base = scene(160, 120);
     const std::vector<bool> reach = reach_of(rig, base, 100, 70);
     Picture zeroed = base, with_inf = base;
@@ -122,9 +114,9 @@ TEST_CASE("a +Inf pixel is clamped before any target is written and reaches no f
 }
 
 TEST_CASE("a -Inf pixel becomes -65504 there and adds no light", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
+    Rig rig = rig_for(mode);
     Picture zeroed = scene(24, 16), with_inf = zeroed;
     for (int c = 0; c < 3; ++c) zeroed.at(5, 5)[c] = 0.0f, with_inf.at(5, 5)[c] = -kInf;
     const Rendered a = rig.render(with_inf), b = rig.render(zeroed);
@@ -142,9 +134,9 @@ TEST_CASE("a -Inf pixel becomes -65504 there and adds no light", "[bloom][hard]"
 }
 
 TEST_CASE("a 70000 pixel (above the half-float maximum) gives a finite output", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
+    Rig rig = rig_for(mode);
     Picture input = scene(32, 24);
     for (int c = 0; c < 3; ++c) input.at(10, 12)[c] = 70000.0f;
     const Rendered r = rig.render(input);
@@ -157,11 +149,11 @@ TEST_CASE("a 70000 pixel (above the half-float maximum) gives a finite output", 
 }
 
 TEST_CASE("strength 100 on a frame of 65472 everywhere does not overflow the levels", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.strength=100");
-    rig.set("bloom.threshold=0");
+    Rig rig = rig_for(mode);
+    rig.set("strength=100");
+    rig.set("threshold=0");
     const Rendered r = rig.render(Picture(20, 12, 65472.0f, 65472.0f, 65472.0f));
     REQUIRE(all_finite(r.output));
     require_matches_model(r);
@@ -169,10 +161,10 @@ TEST_CASE("strength 100 on a frame of 65472 everywhere does not overflow the lev
 }
 
 TEST_CASE("negative colours contribute no light", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.threshold=0");
+    Rig rig = rig_for(mode);
+    rig.set("threshold=0");
     Picture zeroed = scene(24, 16), negative = zeroed;
     const float v[3] = {-50.0f, -3.0f, -0.5f};
     for (int c = 0; c < 3; ++c) zeroed.at(7, 9)[c] = 0.0f, negative.at(7, 9)[c] = v[c];
@@ -198,13 +190,14 @@ TEST_CASE("1x1: one 1x1 level, the light the border does not take is added", "[b
   // and the tent over a 1x1 level is that texel. chain13: only the centre tap sees the pixel; it is
   // one of four taps in each corner box, whose Karis weights are 1 / (1 + luma(b)) against 1 for
   // the three black taps. gaussian (downscale 4), mgf (block 4): the one pixel is 1 of the 16 of
-  // its block, and the blurs' side taps read the border: w0^2 of it stays.
+  // its block, and the blurs' side taps read the border: w0^2 of it stays. glare (full
+  // resolution): every streak's three passes keep only their tap 0, weighted 1 / sum_s a^(b*s).
   double w[8];
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
+    Rig rig = rig_for(mode);
     const Rendered r = rig.render(Picture(1, 1, 8.0f, 4.0f, 2.0f));
-    CHECK(r.levels == 1);
+    if (rig.effect() == "bloom") CHECK(r.levels == 1);
     require_matches_model(r);
     const std::string m = mode;
     double expected[3] = {3.5, 1.75, 0.875};
@@ -215,6 +208,14 @@ TEST_CASE("1x1: one 1x1 level, the light the border does not take is added", "[b
       pfx_bloom::gaussian_weights(m == "mgf" ? 2.5 : std::sqrt(64.0 - 15.0 / 4.0) / 4.0, 7, w);
       const double bright[3] = {7.0, m == "mgf" ? 3.5 : 3.0, m == "mgf" ? 1.75 : 1.0};
       for (int c = 0; c < 3; ++c) expected[c] = bright[c] / 16.0 * w[0] * w[0];
+    } else if (m == "glare") {
+      double kept = 1;
+      for (double b : {1.0, 4.0, 16.0}) {
+        double sum = 0;
+        for (int t = 0; t < 16; ++t) sum += std::pow(0.925, b * t);
+        kept /= sum;
+      }
+      for (double& e : expected) e *= 2.0 * kept;
     }
     CHECK(r.output.at(0, 0)[0] == Approx(8.0 + expected[0]).epsilon(1.0 / 512));
     CHECK(r.output.at(0, 0)[1] == Approx(4.0 + expected[1]).epsilon(1.0 / 512));
@@ -223,9 +224,9 @@ TEST_CASE("1x1: one 1x1 level, the light the border does not take is added", "[b
 }
 
 TEST_CASE("2x3 and other odd sizes match the model", "[bloom][hard][size]") {
-  for (const char* mode : kModes) {
-    Rig rig = in_mode(mode);
-    rig.set("bloom.threshold=0.25");
+  for (const char* mode : kVariants) {
+    Rig rig = rig_for(mode);
+    rig.set("threshold=0.25");
     for (auto [w, h] : {std::pair{2, 3}, std::pair{3, 2}, std::pair{5, 1}, std::pair{1, 9}, std::pair{33, 17}}) {
       Picture input = scene(w, h);
       input.at(w / 2, h / 2)[0] = 20.0f;
@@ -238,10 +239,11 @@ TEST_CASE("2x3 and other odd sizes match the model", "[bloom][hard][size]") {
 
 TEST_CASE("1917x1079: levels are clamped to what the size allows and the output matches the model", "[bloom][hard][size]") {
   const Picture input = scene(1917, 1079);
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.levels=16");
+    Rig rig = rig_for(mode);
+    if (rig.effect() == "bloom") rig.set("levels=16");
+    if (rig.effect() == "glare") rig.set("resolution=quarter");  // its model at full size takes 20 s
     const Rendered r = rig.render(input);
     const std::string m = mode;
     if (m == "chain" || m == "chain13") {
@@ -250,16 +252,18 @@ TEST_CASE("1917x1079: levels are clamped to what the size allows and the output 
     } else if (m == "mgf") {
       CHECK(r.levels == 9);  // 479x269 ... 3x2, 1x1
       CHECK(r.passes == 20);
+    } else if (m == "glare") {
+      CHECK(r.passes == 14);  // bright, 4 streaks x 3, composite
     }
     require_matches_model(r);
   }
 }
 
 TEST_CASE("a threshold above every pixel leaves the frame exactly as it was", "[bloom][hard]") {
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.threshold=100");  // the scene's brightest pixel is 40
+    Rig rig = rig_for(mode);
+    rig.set("threshold=100");  // the scene's brightest pixel is 40
     const Rendered r = rig.render(scene(30, 20));
     CHECK(r.passes > 0);  // not a no-op by its settings: the passes run and add exact zeros
     REQUIRE(all_finite(r.output));
@@ -269,10 +273,10 @@ TEST_CASE("a threshold above every pixel leaves the frame exactly as it was", "[
 
 TEST_CASE("4096x16: levels down to 1x1 match the model", "[bloom][hard][size]") {
   const Picture input = scene(4096, 16);
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
-    rig.set("bloom.levels=16");
+    Rig rig = rig_for(mode);
+    if (rig.effect() == "bloom") rig.set("levels=16");
     const Rendered r = rig.render(input);
     const std::string m = mode;
     if (m == "chain" || m == "chain13") CHECK(r.levels == 12);  // 2048x8, 1024x4, 512x2, 256x1 ... 1x1
@@ -283,8 +287,8 @@ TEST_CASE("4096x16: levels down to 1x1 match the model", "[bloom][hard][size]") 
 
 TEST_CASE("a constant frame stays constant in the interior and darkens toward the border", "[bloom][hard][edges]") {
   // Threshold 0, strength 1: the interior gains exactly its own value (docs/effects/bloom.md has
-  // the border figures). Each mode is set to reach about 12 pixels (mgf: 40), so the middle of the
-  // frame is interior.
+  // the border figures). Each mode is set to reach about 12 pixels (mgf: 40; glare's weights fall
+  // below 1e-5 of the light within about 150), so the middle of the frame is interior.
   const struct {
     const char* mode;
     const char* settings;
@@ -292,11 +296,12 @@ TEST_CASE("a constant frame stays constant in the interior and darkens toward th
   } cases[] = {{"chain", "bloom.levels=2", 64, 48, 16},
                {"chain13", "bloom.levels=2", 64, 48, 16},
                {"gaussian", "bloom.sigma=3", 64, 48, 16},
-               {"mgf", "bloom.levels=1", 128, 96, 44}};
+               {"mgf", "bloom.levels=1", 128, 96, 44},
+               {"glare", "glare.streaks=4", 320, 320, 150}};
   for (const auto& c : cases) {
     INFO(c.mode);
-    Rig rig = in_mode(c.mode);
-    rig.set("bloom.threshold=0");
+    Rig rig = rig_for(c.mode);
+    rig.set("threshold=0");
     rig.set(c.settings);
     const Rendered r = rig.render(Picture(c.w, c.h, 0.5f, 0.25f, 2.0f));
     require_matches_model(r);
@@ -328,9 +333,9 @@ TEST_CASE("a frame holding every half-float value gives a finite output that mat
   // them all), NaNs, +-Inf, denormals, +-65504 and -0 among them.
   Picture input(256, 256, 0, 0, 0);
   for (size_t i = 0; i < input.rgba.size(); ++i) input.rgba[i] = half_to_float(uint16_t((i * 40503u) & 0xffffu));
-  for (const char* mode : kModes) {
+  for (const char* mode : kVariants) {
     INFO(mode);
-    Rig rig = in_mode(mode);
+    Rig rig = rig_for(mode);
     const Rendered r = rig.render(input);
     REQUIRE(all_finite(r.output));
     require_matches_model(r);
