@@ -14,7 +14,7 @@ int param_component_count(pfx_param_type type) {
   }
 }
 
-static bool is_identifier(const char* text) {
+bool is_identifier(const char* text) {
   if (!text || !*text) return false;
   for (const char* c = text; *c; ++c)
     if (!((*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9') || *c == '_')) return false;
@@ -62,6 +62,22 @@ std::string check_effect_descriptor(const pfx_effect_desc* desc) {
     std::string problem = check_param_descriptor(desc->params[i]);
     if (!problem.empty()) return name + problem;
     if (!ids.insert(desc->params[i].id).second) return name + "duplicate parameter id '" + desc->params[i].id + "'";
+  }
+  return "";
+}
+
+std::string check_importer_descriptor(const pfx_importer_desc* desc) {
+  if (!desc) return "NULL importer descriptor";
+  if (desc->struct_size < sizeof(pfx_importer_desc)) return "importer descriptor struct too small";
+  if (!is_identifier(desc->id)) return "importer id must be non-empty [a-z0-9_]+";
+  const std::string name = std::string("importer '") + desc->id + "': ";
+  if (!desc->import || !desc->release) return name + "import and release are required";
+  if (desc->extension_count == 0 || !desc->extensions) return name + "declares no file extension";
+  for (uint32_t i = 0; i < desc->extension_count; ++i) {
+    const char* ext = desc->extensions[i];
+    if (!ext || !*ext || *ext == '.') return name + "extension #" + std::to_string(i) + " is empty or starts with '.'";
+    for (const char* c = ext; *c; ++c)
+      if (*c >= 'A' && *c <= 'Z') return name + "extension '" + ext + "' must be lower case";
   }
   return "";
 }

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -169,6 +170,27 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
     }
   }
 
+  auto importer_factory =
+      static_cast<const pfx_importer_factory*>(entry->get_factory(PFX_IMPORTERS_FACTORY_ID));
+  if (importer_factory) {
+    if (importer_factory->struct_size < sizeof(pfx_importer_factory) || !importer_factory->importer_count ||
+        !importer_factory->get_importer)
+      return undo_init("importer factory is incomplete");
+    std::set<std::string> own_ids;
+    for (uint32_t i = 0, n = importer_factory->importer_count(); i < n; ++i) {
+      const pfx_importer_desc* desc = importer_factory->get_importer(i);
+      std::string problem = check_importer_descriptor(desc);
+      if (!problem.empty()) return undo_init("importer #" + std::to_string(i) + ": " + problem);
+      if (!own_ids.insert(desc->id).second)
+        return undo_init("duplicate importer id '" + std::string(desc->id) + "' within the plugin");
+      const ImporterInfo* other = find_importer(desc->id);
+      if (other && other->plugin != replacing)
+        return undo_init("duplicate importer id '" + std::string(desc->id) + "' (already provided by plugin '" +
+                         other->plugin->id + "' from " + other->plugin->path + ")");
+      plugin->importers.push_back(desc);
+    }
+  }
+
   auto references = static_cast<const pfx_reference_factory*>(entry->get_factory(PFX_REFERENCES_FACTORY_ID));
   if (references && references->struct_size >= sizeof(pfx_reference_factory) && references->has_reference &&
       references->evaluate)
@@ -253,8 +275,11 @@ bool PluginRegistry::reload(const std::string& plugin_id, const AdoptFn& adopt, 
 
 void PluginRegistry::rebuild_effect_index() {
   effect_index_.clear();
-  for (const auto& plugin : plugins_)
+  importer_index_.clear();
+  for (const auto& plugin : plugins_) {
     for (const pfx_effect_desc* desc : plugin->effects) effect_index_.push_back({desc, plugin.get()});
+    for (const pfx_importer_desc* desc : plugin->importers) importer_index_.push_back({desc, plugin.get()});
+  }
 }
 
 std::vector<std::string> PluginRegistry::load_directory(const std::string& directory) {
@@ -310,6 +335,26 @@ const Plugin* PluginRegistry::find_plugin(const std::string& plugin_id) const {
 const EffectInfo* PluginRegistry::find_effect(const std::string& id) const {
   for (const auto& info : effect_index_)
     if (id == info.desc->id) return &info;
+  return nullptr;
+}
+
+std::vector<ImporterInfo> PluginRegistry::importers() const { return importer_index_; }
+
+const ImporterInfo* PluginRegistry::find_importer(const std::string& id) const {
+  for (const auto& info : importer_index_)
+    if (id == info.desc->id) return &info;
+  return nullptr;
+}
+
+const ImporterInfo* PluginRegistry::find_importer_for_path(const std::string& path) const {
+  std::string extension = fs::path(path).extension().string();
+  if (extension.size() < 2) return nullptr;
+  extension.erase(0, 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const auto& info : importer_index_)
+    for (uint32_t i = 0; i < info.desc->extension_count; ++i)
+      if (extension == info.desc->extensions[i]) return &info;
   return nullptr;
 }
 

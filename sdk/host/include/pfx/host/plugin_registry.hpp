@@ -26,12 +26,19 @@ struct EffectInfo {
   const Plugin* plugin = nullptr;
 };
 
+struct ImporterInfo {
+  const pfx_importer_desc* desc = nullptr;
+  const Plugin* plugin = nullptr;
+};
+
 // One loaded library. Owned by the registry; pointers stay valid until the registry dies.
 struct Plugin {
   std::string path;
   std::string id, name, version;
   uint32_t abi_minor = 0;
   std::vector<const pfx_effect_desc*> effects;
+  // The plugin's importers ("pfx.importers/1"); empty when it has none.
+  std::vector<const pfx_importer_desc*> importers;
   // The plugin's CPU references ("pfx.references/1"), or null when it ships none.
   const pfx_reference_factory* references = nullptr;
   // The services this plugin was given (host_data points back at the registry's record).
@@ -73,6 +80,11 @@ class PFX_HOST_API PluginRegistry {
   std::vector<EffectInfo> effects() const;  // in load order
   // Valid until the next load or reload; do not keep it across them.
   const EffectInfo* find_effect(const std::string& id) const;
+  std::vector<ImporterInfo> importers() const;  // in load order
+  const ImporterInfo* find_importer(const std::string& id) const;
+  // The first importer (in load order) declaring the path's extension, compared case-insensitively
+  // ("Model.OBJ" -> "obj"); null when none does.
+  const ImporterInfo* find_importer_for_path(const std::string& path) const;
 
   const LogSink& log() const { return log_; }
   const GlProcLoader& gl_loader() const { return gl_loader_; }
@@ -86,6 +98,7 @@ class PFX_HOST_API PluginRegistry {
   // against `path`. `replacing` is the plugin a reload replaces: its ids do not count as duplicates.
   bool open_plugin(const std::string& path, const std::string& file, const Plugin* replacing, Opened* out,
                    std::string* error);
+  // Rebuilds effects() and importers() from plugins_.
   void rebuild_effect_index();
 
   GlProcLoader gl_loader_;
@@ -94,6 +107,7 @@ class PFX_HOST_API PluginRegistry {
   std::vector<std::unique_ptr<Plugin>> plugins_;
   std::vector<std::unique_ptr<Record>> records_;  // parallel to plugins_
   std::vector<EffectInfo> effect_index_;
+  std::vector<ImporterInfo> importer_index_;
   uint64_t reload_count_ = 0;  // makes every private copy's name unique
 };
 

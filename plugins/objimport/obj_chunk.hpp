@@ -1,0 +1,89 @@
+// One chunk of an OBJ file, parsed on its own: the chunks of a file are cut at line ends
+// (obj_split.hpp) and parsed in parallel, then merged in file order (obj_import.cpp). A chunk
+// cannot know what came before it, so everything that depends on earlier text is recorded in a
+// form the merge can finish: relative indices, the material and smoothing group in force at the
+// chunk's start, and line numbers counted from the chunk's first line.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pfx_obj {
+
+// An index field a corner lacks (no vt, no vn) before resolution, and after it.
+constexpr uint32_t kAbsent = 0;
+constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+// OBJ indices as written must fit in 31 bits (a file with 2^31 vertices would be over 16 GB).
+constexpr int64_t kMaxWrittenIndex = 0x7FFFFFFF;
+
+// A message at a line counted from the chunk's first line (0-based), merged later into
+// "FILE:LINE: text".
+struct LocalMessage {
+  uint64_t line = 0;
+  std::string text;
+};
+
+struct Face {
+  uint32_t corner_count;
+  uint32_t line;  // chunk-local, 0-based
+};
+
+// A statement that changes what later faces use, recorded at the face it applies from.
+struct StateChange {
+  enum Kind : uint32_t { kMaterial = 0, kSmoothing = 1 };
+  uint32_t first_face;  // chunk-local index of the first face it applies to
+  Kind kind;
+  uint32_t value;  // kMaterial: index into ChunkData::material_names; kSmoothing: group, 0 = off
+};
+
+// Statements counted and skipped with one warning per keyword (free-form geometry, unknown ones).
+struct IgnoredKeyword {
+  uint64_t first_line = 0;  // chunk-local
+  uint64_t count = 0;
+  bool valid_obj = false;   // a statement of the OBJ format pfx does not mesh, not an unknown one
+};
+
+struct ChunkData {
+  uint64_t line_ends = 0;  // physical line ends in the chunk: the next chunk's first line follows
+
+  // Vertex data in file order within the chunk.
+  std::vector<float> positions;  // x y z per v
+  std::vector<float> colors;     // r g b per v, or empty while no v of the chunk has a colour
+  std::vector<float> texcoords;  // u v per vt
+  std::vector<float> normals;    // x y z per vn
+  uint32_t position_count() const { return static_cast<uint32_t>(positions.size() / 3); }
+
+  // Face corners, three fields each (v, vt, vn): a positive index as written, kAbsent for a
+  // missing vt or vn, or for a relative (negative) index the 1-based position it denotes counted
+  // from the chunk's first element — which may be zero or negative (stored two's complement),
+  // when it reaches back into earlier chunks. relative_fields marks those, one bit per field.
+  std::vector<uint32_t> corners;
+  std::vector<uint64_t> relative_fields;
+  std::vector<Face> faces;
+  std::vector<StateChange> changes;
+  std::vector<std::string> material_names;  // usemtl names, in order of first use in the chunk
+  std::vector<uint64_t> material_name_lines;  // the chunk-local line of each name's first usemtl
+
+  struct MaterialLibrary {
+    uint64_t line;
+    std::string text;  // the rest of the mtllib line: one name, or several separated by blanks
+  };
+  std::vector<MaterialLibrary> material_libraries;
+
+  uint64_t lines_skipped = 0;   // `l` statements
+  uint64_t points_skipped = 0;  // `p` statements
+  std::map<std::string, IgnoredKeyword> ignored;
+
+  std::vector<LocalMessage> warnings;  // at most the first kMaxKeptWarnings
+  uint64_t warning_total = 0;
+  bool failed = false;
+  LocalMessage error;  // the first error; parsing stops there
+};
+
+// Parses the chunk's text. `first_in_file` lets a UTF-8 byte-order mark be skipped.
+void parse_chunk(std::string_view text, bool first_in_file, ChunkData* out);
+
+}  // namespace pfx_obj

@@ -1,0 +1,42 @@
+// One vertex per distinct face corner. A corner is keyed by its full 32-bit indices — position,
+// texture coordinate, normal — plus, for a corner without a normal, the smoothing group its
+// normal will be generated for (obj_import.cpp). Nothing is packed, so nothing collides: the
+// seed's 21-bit packing merged distinct corners past 2^21 elements.
+//
+// The work is split by hash into one shard per thread; every thread walks all corners in file
+// order and keeps those of its shard. Vertices are numbered in the order of their first corner in
+// the file, whatever the thread count, so the output never depends on it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "obj_chunk.hpp"
+
+namespace pfx_obj {
+
+struct VertexKey {
+  uint32_t v;      // 0-based position index
+  uint32_t vt;     // 0-based texture coordinate index, or kNoIndex
+  uint32_t vn;     // 0-based normal index, or kNoIndex
+  uint32_t group;  // 0 when vn is given; otherwise which generated normal (see obj_import.cpp)
+  bool operator==(const VertexKey& o) const { return v == o.v && vt == o.vt && vn == o.vn && group == o.group; }
+};
+
+// The corners of one chunk after resolution: three fields per corner (0-based or kNoIndex), the
+// faces, and each face's normal group.
+struct DedupChunk {
+  const uint32_t* corners = nullptr;  // 3 per corner
+  uint64_t corner_count = 0;
+  const Face* faces = nullptr;
+  uint64_t face_count = 0;
+  const uint32_t* face_groups = nullptr;
+  uint64_t first_corner = 0;  // ordinal of the chunk's first corner in the file
+};
+
+// vertices: the distinct keys in order of first use. corner_vertex[c][k]: the vertex of corner k
+// of chunk c.
+void deduplicate(const std::vector<DedupChunk>& chunks, unsigned threads, std::vector<VertexKey>* vertices,
+                 std::vector<std::vector<uint32_t>>* corner_vertex);
+
+}  // namespace pfx_obj

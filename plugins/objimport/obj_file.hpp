@@ -1,0 +1,31 @@
+// A file's bytes in one piece: mapped read-only when it is a regular file (no copy), read in one
+// go otherwise (a pipe, /dev/stdin).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace pfx_obj {
+
+class FileBytes {
+ public:
+  FileBytes() = default;
+  ~FileBytes();
+  FileBytes(const FileBytes&) = delete;
+  FileBytes& operator=(const FileBytes&) = delete;
+
+  // False with *error = "PATH: reason" (no such file, a folder, unreadable, ...).
+  bool open(const std::string& path, std::string* error);
+  std::string_view bytes() const { return {data_, size_}; }
+
+ private:
+  const char* data_ = "";
+  size_t size_ = 0;
+  void* mapping_ = nullptr;
+  std::string copy_;
+};
+
+// The whole of a small file (a material library) as a string; false when it cannot be read.
+bool read_small_file(const std::string& path, std::string* out, std::string* error);
+
+}  // namespace pfx_obj

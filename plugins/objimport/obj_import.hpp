@@ -1,0 +1,50 @@
+// The OBJ importer as a C++ function, for the plugin's C entry point and for the tests: text in,
+// one deduplicated, triangulated mesh out, or a message "FILE:LINE: reason".
+//
+// The text is cut into chunks at line ends, the chunks are parsed in parallel, and the merge runs
+// in file order, so the result is the same for every thread count (the tests compare bytes).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "obj_mtl.hpp"
+
+namespace pfx_obj {
+
+struct ObjMesh {
+  std::vector<float> positions;  // 3 per vertex
+  std::vector<float> normals;    // 3 per vertex
+  std::vector<float> texcoords;  // 2 per vertex, or empty when no corner has one
+  std::vector<float> colors;     // 3 per vertex, or empty when no v has a colour
+  std::vector<uint32_t> indices;
+  struct Submesh {
+    uint32_t first_index, index_count, material;  // material: index or kNoIndex (no usemtl)
+  };
+  std::vector<Submesh> submeshes;
+  std::vector<Material> materials;
+  float bounds_min[3] = {0, 0, 0}, bounds_max[3] = {0, 0, 0};
+  uint64_t lines_skipped = 0, points_skipped = 0, faces = 0;
+  std::vector<std::string> warnings;  // the first kMaxWarnings, in file order
+  uint64_t warning_total = 0;
+  uint32_t vertex_count() const { return static_cast<uint32_t>(positions.size() / 3); }
+};
+
+constexpr size_t kMaxWarnings = 100;
+
+struct ImportOptions {
+  unsigned threads = 0;                  // 0: std::thread::hardware_concurrency()
+  std::function<void(float)> progress;   // 0..1, on the calling thread
+  size_t chunk_bytes = 0;                // 0: chosen from the size and thread count (tests set it)
+};
+
+// name: the file name in messages. directory: where mtllib files are looked for; empty means
+// material libraries are not read (a warning says so).
+bool import_obj_text(std::string_view text, const std::string& name, const std::string& directory,
+                     const ImportOptions& options, ObjMesh* out, std::string* error);
+bool import_obj_file(const std::string& path, const ImportOptions& options, ObjMesh* out, std::string* error);
+
+}  // namespace pfx_obj

@@ -1,0 +1,186 @@
+#include "obj_mtl.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "obj_text.hpp"
+
+namespace pfx_obj {
+
+namespace {
+
+class MtlParser {
+ public:
+  MtlParser(std::string_view text, const std::string& file_name, const std::string& directory,
+            std::vector<Material>* materials, std::vector<std::string>* warnings)
+      : cursor_{text.data(), text.data() + text.size()}, file_name_(file_name), directory_(directory),
+        materials_(materials), warnings_(warnings) {}
+
+  void run() {
+    if (cursor_.end - cursor_.p >= 3 && static_cast<unsigned char>(cursor_.p[0]) == 0xEF &&
+        static_cast<unsigned char>(cursor_.p[1]) == 0xBB && static_cast<unsigned char>(cursor_.p[2]) == 0xBF)
+      cursor_.p += 3;
+    while (!cursor_.at_end()) {
+      line_ = cursor_.line_ends + 1;
+      statement();
+      cursor_.skip_statement();
+    }
+  }
+
+ private:
+  void warn(const std::string& text) {
+    warnings_->push_back(file_name_ + ":" + std::to_string(line_) + ": " + text);
+  }
+
+  Material* current(std::string_view keyword) {
+    if (materials_->size() > first_ && current_) return &materials_->back();
+    warn(std::string(keyword) + " before any newmtl: ignored");
+    return nullptr;
+  }
+
+  void statement() {
+    cursor_.skip_blanks();
+    if (cursor_.at_statement_end()) return;
+    std::string_view keyword = cursor_.token();
+    for (char c : keyword) {
+      unsigned char byte = static_cast<unsigned char>(c);
+      if (byte < 0x20 || byte == 0x7f) {
+        warn("binary data: not a material library; the rest of the file is ignored");
+        cursor_.p = cursor_.end;
+        return;
+      }
+    }
+    if (keyword == "newmtl") {
+      cursor_.skip_blanks();
+      std::string name = cursor_.rest_of_line();
+      if (name.empty()) { warn("newmtl: needs a name"); current_ = false; return; }
+      for (size_t i = 0; i < materials_->size(); ++i)
+        if ((*materials_)[i].name == name) {
+          warn("material '" + name + "' defined again: the first definition is kept");
+          current_ = false;
+          return;
+        }
+      materials_->push_back(Material{});
+      materials_->back().name = name;
+      current_ = true;
+    } else if (keyword == "Kd" || keyword == "Ks" || keyword == "Ke") {
+      float rgb[3];
+      if (!color(keyword, rgb)) return;
+      Material* m = current(keyword);
+      if (!m) return;
+      float* into = keyword == "Kd" ? m->diffuse : keyword == "Ks" ? m->specular : m->emissive;
+      for (int i = 0; i < 3; ++i) into[i] = rgb[i];
+    } else if (keyword == "Ns" || keyword == "d" || keyword == "Tr") {
+      cursor_.skip_blanks();
+      if (keyword == "d" && cursor_.end - cursor_.p >= 5 && std::string_view(cursor_.p, 5) == "-halo") {
+        cursor_.token();
+        cursor_.skip_blanks();
+      }
+      float value;
+      if (!number(keyword, &value)) return;
+      Material* m = current(keyword);
+      if (!m) return;
+      if (keyword == "Ns") m->shininess = value;
+      else if (keyword == "d") m->opacity = value;
+      else m->opacity = 1.0f - value;
+    } else if (keyword == "map_Kd" || keyword == "map_Ke") {
+      std::string path = map_path(keyword);
+      if (path.empty()) return;
+      Material* m = current(keyword);
+      if (!m) return;
+      (keyword == "map_Kd" ? m->diffuse_map : m->emissive_map) = resolve_path(directory_, path);
+    }
+    // Everything else (Ka, Ni, illum, map_Ks, bump, ...) is valid MTL that pfx does not use.
+  }
+
+  bool number(std::string_view keyword, float* out) {
+    cursor_.skip_blanks();
+    std::string_view token = cursor_.token();
+    float value;
+    if (!parse_float(token, &value) || !std::isfinite(value)) {
+      warn(std::string(keyword) + ": '" + printable(token) + "' is not a finite number: ignored");
+      return false;
+    }
+    *out = value;
+    return true;
+  }
+
+  // "Kd r g b" or "Kd v" (grey); spectral and xyz forms are not supported.
+  bool color(std::string_view keyword, float rgb[3]) {
+    cursor_.skip_blanks();
+    if (cursor_.end - cursor_.p >= 8 && std::string_view(cursor_.p, 8) == "spectral") {
+      warn(std::string(keyword) + " spectral: not supported, ignored");
+      return false;
+    }
+    if (cursor_.end - cursor_.p >= 3 && std::string_view(cursor_.p, 3) == "xyz") {
+      warn(std::string(keyword) + " xyz: not supported, ignored");
+      return false;
+    }
+    int count = 0;
+    while (count < 3) {
+      cursor_.skip_blanks();
+      if (cursor_.at_statement_end()) break;
+      if (!number(keyword, &rgb[count])) return false;
+      ++count;
+    }
+    cursor_.skip_blanks();
+    if (count == 1) rgb[1] = rgb[2] = rgb[0];
+    else if (count != 3 || !cursor_.at_statement_end()) {
+      warn(std::string(keyword) + ": expected r g b: ignored");
+      return false;
+    }
+    return true;
+  }
+
+  // The file name of a map statement after its options (-s 1 1 1, -bm 0.5, -clamp on, ...).
+  std::string map_path(std::string_view keyword) {
+    for (;;) {
+      cursor_.skip_blanks();
+      if (cursor_.p >= cursor_.end || *cursor_.p != '-') break;
+      std::string_view option = cursor_.token();
+      int max_args = 1, min_args = 1;
+      if (option == "-o" || option == "-s" || option == "-t") max_args = 3;
+      else if (option == "-mm") min_args = max_args = 2;
+      for (int i = 0; i < max_args; ++i) {
+        cursor_.skip_blanks();
+        const char* save = cursor_.p;
+        std::string_view arg = cursor_.token();
+        float unused;
+        bool numeric = parse_float(arg, &unused);
+        if (arg.empty() || (i >= min_args && !numeric)) {
+          cursor_.p = save;
+          break;
+        }
+      }
+    }
+    std::string path = cursor_.rest_of_line();
+    if (path.empty()) warn(std::string(keyword) + ": needs a file name");
+    return path;
+  }
+
+  Cursor cursor_;
+  const std::string& file_name_;
+  const std::string& directory_;
+  std::vector<Material>* materials_;
+  std::vector<std::string>* warnings_;
+  size_t first_ = 0;
+  bool current_ = false;
+  uint64_t line_ = 0;
+};
+
+}  // namespace
+
+void parse_mtl(std::string_view text, const std::string& file_name, const std::string& directory,
+               std::vector<Material>* materials, std::vector<std::string>* warnings) {
+  MtlParser(text, file_name, directory, materials, warnings).run();
+}
+
+std::string resolve_path(const std::string& directory, std::string path) {
+  for (char& c : path)
+    if (c == '\\') c = '/';
+  std::filesystem::path p(path);
+  if (p.is_absolute() || directory.empty()) return p.lexically_normal().string();
+  return (std::filesystem::path(directory) / p).lexically_normal().string();
+}
+
+}  // namespace pfx_obj

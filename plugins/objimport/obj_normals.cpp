@@ -1,0 +1,86 @@
+#include "obj_normals.hpp"
+
+#include <cmath>
+
+#include "obj_parallel.hpp"
+#include "obj_vertex_table.hpp"
+
+namespace pfx_obj {
+
+void generate_normals(const std::vector<VertexKey>& keys, const std::vector<float>& positions,
+                      const std::vector<uint32_t>& indices, unsigned threads, std::vector<float>* normals) {
+  const size_t count = keys.size();
+  std::vector<uint8_t> generated(count);
+  bool any = false, with_texcoords = false;
+  for (size_t i = 0; i < count; ++i) {
+    generated[i] = keys[i].vn == kNoIndex;
+    any |= generated[i] != 0;
+    with_texcoords |= generated[i] && keys[i].vt != kNoIndex;
+  }
+  if (!any) return;
+  std::vector<float>& n = *normals;
+  for (size_t i = 0; i < count; ++i)
+    if (generated[i]) n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;
+
+  // Each worker owns a range of vertices and adds every triangle's normal to the ones it owns, in
+  // index order: no two workers write one vertex, and the order of each sum is fixed.
+  const unsigned workers = threads < 1 ? 1 : threads;
+  run_on_each_worker(workers, [&](unsigned w) {
+    const uint64_t lo = count * w / workers, hi = count * (w + 1) / workers;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+      const bool owns_a = a >= lo && a < hi && generated[a], owns_b = b >= lo && b < hi && generated[b],
+                 owns_c = c >= lo && c < hi && generated[c];
+      if (!owns_a && !owns_b && !owns_c) continue;
+      const float* pa = &positions[3 * size_t{a}];
+      const float* pb = &positions[3 * size_t{b}];
+      const float* pc = &positions[3 * size_t{c}];
+      const float e1[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+      const float e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+      const float cross[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                              e1[0] * e2[1] - e1[1] * e2[0]};
+      for (uint32_t v : {a, b, c}) {
+        if (v < lo || v >= hi || !generated[v]) continue;
+        for (int k = 0; k < 3; ++k) n[3 * size_t{v} + k] += cross[k];
+      }
+    }
+  });
+
+  // Vertices that differ only by texture coordinate (a UV seam) share a position and smoothing
+  // group, so they must share one normal: add their sums, in vertex order.
+  if (with_texcoords) {
+    VertexTable table(count / 2);
+    std::vector<uint32_t> representative(count, kNoIndex);
+    std::vector<uint32_t> first_of;
+    for (size_t i = 0; i < count; ++i) {
+      if (!generated[i]) continue;
+      const VertexKey key{keys[i].v, kNoIndex, kNoIndex, keys[i].group};
+      bool inserted;
+      uint32_t slot = table.find_or_insert(key, hash_key(key), static_cast<uint32_t>(first_of.size()), &inserted);
+      if (inserted) first_of.push_back(static_cast<uint32_t>(i));
+      const uint32_t first = first_of[slot];
+      representative[i] = first;
+      if (first != i)
+        for (int k = 0; k < 3; ++k) n[3 * size_t{first} + k] += n[3 * i + k];
+    }
+    for (size_t i = 0; i < count; ++i)
+      if (generated[i] && representative[i] != i)
+        for (int k = 0; k < 3; ++k) n[3 * i + k] = n[3 * size_t{representative[i]} + k];
+  }
+
+  run_parallel(workers, workers, [&](size_t w, unsigned) {
+    const uint64_t lo = count * w / workers, hi = count * (w + 1) / workers;
+    for (uint64_t i = lo; i < hi; ++i) {
+      if (!generated[i]) continue;
+      float* v = &n[3 * i];
+      const double length = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
+      if (length > 0 && std::isfinite(length)) {
+        for (int k = 0; k < 3; ++k) v[k] = static_cast<float>(v[k] / length);
+      } else {
+        v[0] = 0.0f, v[1] = 0.0f, v[2] = 1.0f;
+      }
+    }
+  });
+}
+
+}  // namespace pfx_obj

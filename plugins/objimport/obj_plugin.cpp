@@ -1,0 +1,173 @@
+// The OBJ importer plugin: importer "obj" behind the C ABI (pfx/importer.h). The result handed
+// out is a plain C struct pointing into C++ storage the plugin keeps until release.
+#include <chrono>
+#include <filesystem>
+#include <cstring>
+#include <mutex>
+#include <new>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <pfx/pfx.h>
+
+#include "obj_chunk.hpp"
+#include "obj_import.hpp"
+
+namespace pfx_obj {
+namespace {
+
+static_assert(kNoIndex == PFX_IMPORT_NONE, "no material is the same number on both sides");
+
+struct ResultStorage {
+  pfx_import_result result{};
+  ObjMesh mesh;
+  std::string error;
+  std::vector<pfx_import_submesh> submeshes;
+  std::vector<pfx_import_material> materials;
+  std::vector<const char*> warnings;
+};
+
+// Results handed out and not yet released: release ignores any other pointer.
+std::mutex g_results_mutex;
+std::unordered_map<const pfx_import_result*, ResultStorage*> g_results;
+
+void publish(ResultStorage* s) {
+  pfx_import_result& r = s->result;
+  const ObjMesh& m = s->mesh;
+  r.vertex_count = m.vertex_count();
+  r.positions = m.positions.empty() ? nullptr : m.positions.data();
+  r.normals = m.normals.empty() ? nullptr : m.normals.data();
+  r.texcoords = m.texcoords.empty() ? nullptr : m.texcoords.data();
+  r.colors = m.colors.empty() ? nullptr : m.colors.data();
+  r.index_count = static_cast<uint32_t>(m.indices.size());
+  r.indices = m.indices.empty() ? nullptr : m.indices.data();
+  for (const auto& sub : m.submeshes)
+    s->submeshes.push_back(pfx_import_submesh{sub.first_index, sub.index_count, sub.material});
+  r.submesh_count = static_cast<uint32_t>(s->submeshes.size());
+  r.submeshes = s->submeshes.empty() ? nullptr : s->submeshes.data();
+  for (const Material& material : m.materials) {
+    pfx_import_material out{};
+    out.struct_size = sizeof(pfx_import_material);
+    out.name = material.name.c_str();
+    std::memcpy(out.diffuse, material.diffuse, sizeof out.diffuse);
+    std::memcpy(out.specular, material.specular, sizeof out.specular);
+    std::memcpy(out.emissive, material.emissive, sizeof out.emissive);
+    out.shininess = material.shininess;
+    out.opacity = material.opacity;
+    out.diffuse_map = material.diffuse_map.empty() ? nullptr : material.diffuse_map.c_str();
+    out.emissive_map = material.emissive_map.empty() ? nullptr : material.emissive_map.c_str();
+    s->materials.push_back(out);
+  }
+  r.material_count = static_cast<uint32_t>(s->materials.size());
+  r.materials = s->materials.empty() ? nullptr : s->materials.data();
+  std::memcpy(r.bounds_min, m.bounds_min, sizeof r.bounds_min);
+  std::memcpy(r.bounds_max, m.bounds_max, sizeof r.bounds_max);
+  r.lines_skipped = m.lines_skipped;
+  r.points_skipped = m.points_skipped;
+  r.faces = m.faces;
+  for (const std::string& w : m.warnings) s->warnings.push_back(w.c_str());
+  r.warning_count = static_cast<uint32_t>(s->warnings.size());
+  r.warnings = s->warnings.empty() ? nullptr : s->warnings.data();
+  r.warning_total = m.warning_total;
+}
+
+pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
+  if (!out) return PFX_INVALID_ARGUMENT;
+  *out = nullptr;
+  ResultStorage* storage = new (std::nothrow) ResultStorage;
+  if (!storage) return PFX_OUT_OF_MEMORY;
+  const auto start = std::chrono::steady_clock::now();
+  pfx_import_result& r = storage->result;
+  r.struct_size = sizeof(pfx_import_result);
+  try {
+    if (!request || request->struct_size < sizeof(pfx_import_request) || (!request->path && !request->bytes) ||
+        (request->bytes && request->byte_count > 0 && !request->bytes) || (request->path && request->bytes)) {
+      r.status = PFX_INVALID_ARGUMENT;
+      storage->error = "import request: give either path or bytes";
+    } else {
+      ImportOptions options;
+      options.threads = request->threads;
+      if (request->progress) {
+        pfx_import_progress_fn progress = request->progress;
+        void* user = request->progress_user;
+        options.progress = [progress, user](float fraction) { progress(user, fraction); };
+      }
+      bool ok;
+      if (request->path) {
+        ok = import_obj_file(request->path, options, &storage->mesh, &storage->error);
+      } else {
+        std::string name = request->name ? request->name : "<memory>";
+        std::string directory;
+        if (request->name) {
+          directory = std::filesystem::path(request->name).parent_path().string();
+          if (directory.empty()) directory = ".";
+        }
+        ok = import_obj_text(std::string_view(static_cast<const char*>(request->bytes), request->byte_count), name,
+                             directory, options, &storage->mesh, &storage->error);
+      }
+      r.status = ok ? PFX_OK : PFX_ERROR;
+      if (ok) publish(storage);
+    }
+  } catch (const std::bad_alloc&) {
+    storage->mesh = ObjMesh{};
+    storage->error = "out of memory";
+    r.status = PFX_OUT_OF_MEMORY;
+  } catch (...) {
+    storage->mesh = ObjMesh{};
+    storage->error = "internal error";
+    r.status = PFX_ERROR;
+  }
+  if (r.status != PFX_OK) r.error = storage->error.c_str();
+  r.parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  try {
+    std::lock_guard<std::mutex> lock(g_results_mutex);
+    g_results[&r] = storage;
+  } catch (...) {
+    delete storage;
+    return PFX_OUT_OF_MEMORY;
+  }
+  *out = &r;
+  return r.status;
+}
+
+void release(pfx_import_result* result) {
+  if (!result) return;
+  ResultStorage* storage = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(g_results_mutex);
+    auto it = g_results.find(result);
+    if (it == g_results.end()) return;
+    storage = it->second;
+    g_results.erase(it);
+  }
+  delete storage;
+}
+
+const char* const kExtensions[] = {"obj"};
+const pfx_importer_desc kObjImporter = {sizeof(pfx_importer_desc), "obj", "Wavefront OBJ", kExtensions, 1,
+                                        import, release};
+
+uint32_t importer_count() { return 1; }
+const pfx_importer_desc* get_importer(uint32_t index) { return index == 0 ? &kObjImporter : nullptr; }
+const pfx_importer_factory kFactory = {sizeof(pfx_importer_factory), importer_count, get_importer};
+
+pfx_status plugin_init(const pfx_host* host) {
+  if (!host || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
+  return PFX_OK;
+}
+
+void plugin_deinit() {}
+
+const void* plugin_get_factory(const char* factory_id) {
+  if (factory_id && std::strcmp(factory_id, PFX_IMPORTERS_FACTORY_ID) == 0) return &kFactory;
+  return nullptr;
+}
+
+const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR,      "org.pfx.objimport", "pfx OBJ importer",
+                          "0.1.0",           plugin_init,   plugin_deinit,      plugin_get_factory};
+
+}  // namespace
+}  // namespace pfx_obj
+
+extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &pfx_obj::kEntry; }

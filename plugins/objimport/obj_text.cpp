@@ -1,0 +1,147 @@
+#include "obj_text.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace pfx_obj {
+
+namespace {
+
+// 10^0 .. 10^22 are exact in a double: a mantissa below 2^53 times or divided by one of them is
+// rounded once, correctly (Clinger's fast path).
+constexpr double kExactPowersOf10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+bool equals_lower(std::string_view text, std::string_view word) {
+  if (text.size() != word.size()) return false;
+  for (size_t i = 0; i < text.size(); ++i)
+    if (lower(text[i]) != word[i]) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string Cursor::rest_of_line() {
+  std::string text;
+  while (p < end) {
+    if (at_continuation()) {
+      ++p;
+      consume_line_end();
+      text += ' ';
+      continue;
+    }
+    if (is_line_end(*p)) break;
+    text += *p++;
+  }
+  size_t first = 0, last = text.size();
+  while (first < last && is_blank(text[first])) ++first;
+  while (last > first && is_blank(text[last - 1])) --last;
+  return text.substr(first, last - first);
+}
+
+bool parse_double(std::string_view token, double* out) {
+  const char* p = token.data();
+  const char* end = p + token.size();
+  bool negative = false;
+  if (p < end && (*p == '+' || *p == '-')) negative = *p++ == '-';
+  const char* number_start = p;
+  uint64_t mantissa = 0;
+  int significant = 0;     // digits accumulated in mantissa (at most 19 fit in 64 bits)
+  int exponent = 0;        // decimal exponent to apply to mantissa
+  bool truncated = false;  // a digit did not fit: only the exact slow path may round
+  bool any_digit = false;
+  while (p < end && *p == '0') { ++p; any_digit = true; }  // leading zeros are not significant
+  for (; p < end && is_digit(*p); ++p) {
+    any_digit = true;
+    if (significant < 19) { mantissa = mantissa * 10 + static_cast<uint64_t>(*p - '0'); ++significant; }
+    else { ++exponent; truncated = true; }
+  }
+  if (p < end && *p == '.') {
+    ++p;
+    if (significant == 0)
+      while (p < end && *p == '0') { ++p; --exponent; any_digit = true; }
+    for (; p < end && is_digit(*p); ++p) {
+      any_digit = true;
+      if (significant < 19) { mantissa = mantissa * 10 + static_cast<uint64_t>(*p - '0'); ++significant; --exponent; }
+      else truncated = true;
+    }
+  }
+  if (!any_digit) return false;
+  if (p < end && (*p == 'e' || *p == 'E')) {
+    ++p;
+    bool exponent_negative = false;
+    if (p < end && (*p == '+' || *p == '-')) exponent_negative = *p++ == '-';
+    if (p >= end || !is_digit(*p)) return false;
+    int written = 0;
+    for (; p < end && is_digit(*p); ++p)
+      if (written < 100000) written = written * 10 + (*p - '0');
+    exponent += exponent_negative ? -written : written;
+  }
+  if (p != end) return false;
+  double value;
+  if (mantissa == 0) {
+    value = 0.0;
+  } else if (!truncated && mantissa < (uint64_t{1} << 53) && exponent >= -22 && exponent <= 22) {
+    value = static_cast<double>(mantissa);
+    value = exponent < 0 ? value / kExactPowersOf10[-exponent] : value * kExactPowersOf10[exponent];
+  } else {
+    // Rare: long mantissas or large exponents. from_chars is exact and locale-independent; it
+    // takes no '+', which was stepped over above.
+    auto result = std::from_chars(number_start, end, value);
+    if (result.ec == std::errc::result_out_of_range) value = (exponent > 0) ? HUGE_VAL : 0.0;
+    else if (result.ec != std::errc() || result.ptr != end) return false;
+  }
+  *out = negative ? -value : value;
+  return true;
+}
+
+bool parse_float(std::string_view token, float* out) {
+  double value;
+  if (!parse_double(token, &value)) return false;
+  *out = static_cast<float>(value);
+  return true;
+}
+
+bool is_non_finite_word(std::string_view token) {
+  if (!token.empty() && (token[0] == '+' || token[0] == '-')) token.remove_prefix(1);
+  return equals_lower(token, "nan") || equals_lower(token, "inf") || equals_lower(token, "infinity") ||
+         (token.size() > 3 && equals_lower(token.substr(0, 4), "nan("));
+}
+
+bool parse_integer(std::string_view token, int64_t* out) {
+  const char* p = token.data();
+  const char* end = p + token.size();
+  bool negative = false;
+  if (p < end && (*p == '+' || *p == '-')) negative = *p++ == '-';
+  if (p >= end || end - p > 18) return false;
+  int64_t value = 0;
+  for (; p < end; ++p) {
+    if (!is_digit(*p)) return false;
+    value = value * 10 + (*p - '0');
+  }
+  *out = negative ? -value : value;
+  return true;
+}
+
+std::string printable(std::string_view token) {
+  std::string text;
+  for (size_t i = 0; i < token.size() && i < 40; ++i) {
+    unsigned char c = static_cast<unsigned char>(token[i]);
+    if (c < 0x20 || c >= 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      text += hex;
+    } else {
+      text += static_cast<char>(c);
+    }
+  }
+  if (token.size() > 40) text += "...";
+  return text;
+}
+
+}  // namespace pfx_obj

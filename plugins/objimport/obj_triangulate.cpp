@@ -1,0 +1,116 @@
+#include "obj_triangulate.hpp"
+
+#include <cmath>
+
+namespace pfx_obj {
+
+namespace {
+
+void fan(uint32_t first, const std::vector<uint32_t>& next, uint32_t remaining, std::vector<uint32_t>* triangles) {
+  uint32_t a = next[first];
+  for (uint32_t k = 0; k + 2 < remaining; ++k) {
+    uint32_t b = next[a];
+    triangles->insert(triangles->end(), {first, a, b});
+    a = b;
+  }
+}
+
+}  // namespace
+
+Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::vector<uint32_t>* triangles,
+                                  TriangulationScratch* s) {
+  s->previous.resize(n);
+  s->next.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    s->previous[i] = (i + n - 1) % n;
+    s->next[i] = (i + 1) % n;
+  }
+  if (n > kMaxEarClipCorners) {
+    fan(0, s->next, n, triangles);
+    return Triangulation::kFanTooLarge;
+  }
+  // Newell's normal: robust for non-planar and concave polygons; its largest component says
+  // which axis to drop when projecting to 2D.
+  double normal[3] = {0, 0, 0};
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* a = corners[i];
+    const float* b = corners[(i + 1) % n];
+    normal[0] += (double(a[1]) - b[1]) * (double(a[2]) + b[2]);
+    normal[1] += (double(a[2]) - b[2]) * (double(a[0]) + b[0]);
+    normal[2] += (double(a[0]) - b[0]) * (double(a[1]) + b[1]);
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::fmin(lo[k], a[k]);
+      hi[k] = std::fmax(hi[k], a[k]);
+    }
+  }
+  int drop = 2;
+  if (std::fabs(normal[0]) >= std::fabs(normal[1]) && std::fabs(normal[0]) >= std::fabs(normal[2])) drop = 0;
+  else if (std::fabs(normal[1]) >= std::fabs(normal[2])) drop = 1;
+  const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
+  double extent2 = 0;
+  for (int k = 0; k < 3; ++k) extent2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+  // Twice the projected area equals the dropped normal component; relative to the size squared it
+  // says whether the polygon has any area at all.
+  if (!(std::fabs(normal[drop]) > 1e-12 * extent2)) {
+    fan(0, s->next, n, triangles);
+    return Triangulation::kFanDegenerate;
+  }
+  s->xy.resize(2 * size_t{n});
+  for (uint32_t i = 0; i < n; ++i) {
+    s->xy[2 * i] = corners[i][u];
+    s->xy[2 * i + 1] = corners[i][v];
+  }
+  const double* xy = s->xy.data();
+  // The winding in the projection (the axis order flips it for some dropped axes).
+  double area2 = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t j = (i + 1) % n;
+    area2 += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+  }
+  const double orientation = area2 > 0 ? 1.0 : -1.0;
+  // Positive for a left turn a -> b -> c in the polygon's own winding.
+  auto turn = [&](uint32_t a, uint32_t b, uint32_t c) {
+    return orientation * ((xy[2 * b] - xy[2 * a]) * (xy[2 * c + 1] - xy[2 * a + 1]) -
+                          (xy[2 * b + 1] - xy[2 * a + 1]) * (xy[2 * c] - xy[2 * a]));
+  };
+  auto same_point = [&](uint32_t a, uint32_t b) { return xy[2 * a] == xy[2 * b] && xy[2 * a + 1] == xy[2 * b + 1]; };
+  s->reflex.resize(n);
+  for (uint32_t i = 0; i < n; ++i) s->reflex[i] = !(turn(s->previous[i], i, s->next[i]) > 0);
+
+  // An ear: a convex corner whose triangle holds no reflex (or flat) corner of what remains.
+  auto is_ear = [&](uint32_t i) {
+    if (s->reflex[i]) return false;
+    const uint32_t p = s->previous[i], q = s->next[i];
+    for (uint32_t k = s->next[q]; k != p; k = s->next[k]) {
+      if (!s->reflex[k] || same_point(k, p) || same_point(k, i) || same_point(k, q)) continue;
+      if (turn(p, i, k) >= 0 && turn(i, q, k) >= 0 && turn(q, p, k) >= 0) return false;
+    }
+    return true;
+  };
+
+  uint32_t remaining = n, current = 0, misses = 0;
+  while (remaining > 3) {
+    if (!is_ear(current)) {
+      current = s->next[current];
+      if (++misses > remaining) {
+        fan(current, s->next, remaining, triangles);
+        return Triangulation::kFanSelfIntersecting;
+      }
+      continue;
+    }
+    const uint32_t p = s->previous[current], q = s->next[current];
+    triangles->insert(triangles->end(), {p, current, q});
+    s->next[p] = q;
+    s->previous[q] = p;
+    --remaining;
+    s->reflex[p] = !(turn(s->previous[p], p, q) > 0);
+    s->reflex[q] = !(turn(p, q, s->next[q]) > 0);
+    current = q;
+    misses = 0;
+  }
+  triangles->insert(triangles->end(), {s->previous[current], current, s->next[current]});
+  return Triangulation::kEarClipped;
+}
+
+}  // namespace pfx_obj

@@ -1,0 +1,39 @@
+// What the OBJ importer tests share: importing text in one call, and a mesh seen as a triangle
+// soup (each corner's position, texture coordinate and normal), which compares two meshes
+// independently of how their vertices are numbered.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "obj_import.hpp"
+
+namespace pfx_obj_test {
+
+struct Imported {
+  bool ok = false;
+  pfx_obj::ObjMesh mesh;
+  std::string error;
+};
+
+// Imports `text` as the file "test.obj" (no material libraries read) or, with `directory`, as a
+// file in that folder.
+Imported import_text(const std::string& text, unsigned threads = 1, size_t chunk_bytes = 0,
+                     const std::string& directory = "");
+
+struct SoupCorner {
+  std::array<float, 3> position{};
+  std::array<float, 2> texcoord{};
+  std::array<float, 3> normal{};
+  bool operator==(const SoupCorner& o) const {
+    return position == o.position && texcoord == o.texcoord && normal == o.normal;
+  }
+};
+// Three corners per triangle, in index order.
+std::vector<SoupCorner> soup(const pfx_obj::ObjMesh& mesh);
+
+// The error of a failed import (the test fails if it succeeded).
+std::string error_of(const std::string& text);
+
+}  // namespace pfx_obj_test

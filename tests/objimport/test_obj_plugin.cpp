@@ -1,0 +1,138 @@
+// The importer through the C ABI as a host sees it: libpfxhost loads the plugin, finds the
+// importer by extension, imports a file and bytes, and gets errors as "FILE:LINE: reason".
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include <pfx/host/plugin_registry.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::unique_ptr<pfx::host::PluginRegistry> load_obj_plugin() {
+  auto registry = std::make_unique<pfx::host::PluginRegistry>([](const char*) { return pfx_gl_proc{nullptr}; },
+                                                              nullptr, "test_obj_plugin");
+  std::string error;
+  REQUIRE(registry->load(PFX_TEST_OBJ_PLUGIN, &error));
+  return registry;
+}
+
+pfx_import_request request_for_path(const char* path) {
+  pfx_import_request request{};
+  request.struct_size = sizeof request;
+  request.path = path;
+  request.threads = 2;
+  return request;
+}
+
+}  // namespace
+
+TEST_CASE("obj plugin: the registry finds the importer by id and extension", "[objimport][plugin]") {
+  auto registry = load_obj_plugin();
+  REQUIRE(registry->importers().size() == 1);
+  const pfx::host::ImporterInfo* info = registry->find_importer("obj");
+  REQUIRE(info);
+  CHECK(std::string(info->desc->label) == "Wavefront OBJ");
+  CHECK(registry->find_importer_for_path("/x/model.obj") == info);
+  CHECK(registry->find_importer_for_path("MODEL.OBJ") == info);
+  CHECK(registry->find_importer_for_path("model.fbx") == nullptr);
+  CHECK(registry->find_importer_for_path("obj") == nullptr);
+  CHECK(registry->effects().empty());
+}
+
+TEST_CASE("obj plugin: a file with a material library, through the C structures", "[objimport][plugin]") {
+  auto registry = load_obj_plugin();
+  const pfx_importer_desc* importer = registry->find_importer("obj")->desc;
+  const fs::path dir = fs::temp_directory_path() / ("pfx-obj-plugin-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "m.mtl") << "newmtl shiny\nKd 0.25 0.5 1\nKe 2 2 2\nmap_Kd albedo.png\n";
+  std::ofstream(dir / "quad.obj") << "mtllib m.mtl\nv 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                     "usemtl shiny\nf 1/1 2/2 3/3 4/4\nl 1 2\np 3\n";
+  const std::string path = (dir / "quad.obj").string();
+  pfx_import_request request = request_for_path(path.c_str());
+  float last_progress = -1;
+  bool progress_monotonic = true;
+  request.progress = [](void* user, float fraction) {
+    auto* state = static_cast<std::pair<float*, bool*>*>(user);
+    if (fraction < *state->first) *state->second = false;
+    *state->first = fraction;
+  };
+  std::pair<float*, bool*> progress_state{&last_progress, &progress_monotonic};
+  request.progress_user = &progress_state;
+  pfx_import_result* result = nullptr;
+  REQUIRE(importer->import(&request, &result) == PFX_OK);
+  REQUIRE(result);
+  CHECK(result->struct_size == sizeof(pfx_import_result));
+  CHECK(result->status == PFX_OK);
+  CHECK(result->error == nullptr);
+  CHECK(result->vertex_count == 4);
+  CHECK(result->index_count == 6);
+  REQUIRE(result->texcoords);
+  CHECK(result->colors == nullptr);
+  CHECK(result->normals[2] == 1.0f);
+  CHECK(result->bounds_min[0] == 0.0f);
+  CHECK(result->bounds_max[0] == 2.0f);
+  CHECK(result->bounds_max[1] == 1.0f);
+  CHECK(result->lines_skipped == 1);
+  CHECK(result->points_skipped == 1);
+  CHECK(result->faces == 1);
+  REQUIRE(result->submesh_count == 1);
+  CHECK(result->submeshes[0].material == 0);
+  REQUIRE(result->material_count == 1);
+  const pfx_import_material& m = result->materials[0];
+  CHECK(m.struct_size == sizeof(pfx_import_material));
+  CHECK(std::string(m.name) == "shiny");
+  CHECK(m.diffuse[1] == 0.5f);
+  CHECK(m.emissive[0] == 2.0f);
+  CHECK(std::string(m.diffuse_map) == (dir / "albedo.png").string());
+  CHECK(m.emissive_map == nullptr);
+  CHECK(result->warning_count == 0);
+  CHECK(result->parse_seconds >= 0);
+  CHECK(progress_monotonic);
+  CHECK(last_progress == 1.0f);
+  importer->release(result);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("obj plugin: bytes in memory, errors and release", "[objimport][plugin]") {
+  auto registry = load_obj_plugin();
+  const pfx_importer_desc* importer = registry->find_importer("obj")->desc;
+  const char text[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n";
+  pfx_import_request request{};
+  request.struct_size = sizeof request;
+  request.bytes = text;
+  request.byte_count = std::strlen(text);
+  request.name = "mem.obj";
+  pfx_import_result* result = nullptr;
+  CHECK(importer->import(&request, &result) == PFX_ERROR);
+  REQUIRE(result);
+  CHECK(result->status == PFX_ERROR);
+  CHECK(std::string(result->error) == "mem.obj:4: f: v index 7 is out of range (the file has 3 v)");
+  CHECK(result->vertex_count == 0);
+  CHECK(result->indices == nullptr);
+  importer->release(result);
+
+  pfx_import_request missing = request_for_path("/nonexistent/pfx/model.obj");
+  CHECK(importer->import(&missing, &result) == PFX_ERROR);
+  REQUIRE(result);
+  CHECK(std::string(result->error) == "/nonexistent/pfx/model.obj: no such file");
+  importer->release(result);
+
+  pfx_import_request both = request_for_path("x.obj");
+  both.bytes = text;
+  CHECK(importer->import(&both, &result) == PFX_INVALID_ARGUMENT);
+  importer->release(result);
+  CHECK(importer->import(nullptr, &result) == PFX_INVALID_ARGUMENT);
+  importer->release(result);
+  CHECK(importer->import(&request, nullptr) == PFX_INVALID_ARGUMENT);
+
+  // Release takes NULL and ignores pointers it did not hand out.
+  importer->release(nullptr);
+  pfx_import_result foreign{};
+  importer->release(&foreign);
+}
