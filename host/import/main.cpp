@@ -1,0 +1,91 @@
+// pfx-import: loads a model file through the importer plugins and says what it got.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <pfx/host/plugin_registry.hpp>
+
+#include "import_options.hpp"
+#include "import_report.hpp"
+#include "plugin_directory.hpp"
+
+namespace {
+
+int error_exit(int code, const std::string& message) {
+  std::fprintf(stderr, "pfx-import: %s\n", message.c_str());
+  return code;
+}
+
+std::string importer_list(const pfx::host::PluginRegistry& registry) {
+  std::string list;
+  for (const auto& info : registry.importers())
+    for (uint32_t i = 0; i < info.desc->extension_count; ++i)
+      list += (list.empty() ? "" : ", ") + std::string(".") + info.desc->extensions[i];
+  return list.empty() ? "none" : list;
+}
+
+// Rewrites one stderr line in place; whole percents only, so it prints at most 101 times.
+void show_progress(void* user, float fraction) {
+  int* last = static_cast<int*>(user);
+  const int percent = static_cast<int>(fraction * 100.0f);
+  if (percent == *last) return;
+  *last = percent;
+  std::fprintf(stderr, "\rpfx-import: %3d%%", percent);
+  if (percent >= 100) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  pfx::import::ImportOptions options;
+  std::string message;
+  if (!pfx::import::parse_import_options(std::vector<std::string>(argv + 1, argv + argc), &options, &message)) {
+    std::fprintf(stderr, "pfx-import: %s\n\n%s", message.c_str(), pfx::import::import_usage().c_str());
+    return 2;
+  }
+  if (options.help) {
+    std::fputs(pfx::import::import_usage().c_str(), stdout);
+    return 0;
+  }
+  std::error_code ec;
+  if (!std::filesystem::exists(options.file, ec)) return error_exit(3, options.file + ": no such file");
+
+  // Importers make no GL calls: the registry gets no GL loader.
+  pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
+                                     pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-import");
+  for (const auto& error : pfx::app::load_plugins(registry, options.plugin_dirs))
+    std::fprintf(stderr, "pfx-import: warning: plugin not loaded: %s\n", error.c_str());
+  const pfx::host::ImporterInfo* importer = registry.find_importer_for_path(options.file);
+  if (!importer)
+    return error_exit(4, options.file + ": no importer for this file's extension (importers loaded for: " +
+                             importer_list(registry) + ")");
+
+  pfx_import_request request{};
+  request.struct_size = sizeof request;
+  request.path = options.file.c_str();
+  request.threads = options.threads;
+  int last_percent = -1;
+  if (options.progress == "on" || (options.progress == "auto" && ::isatty(STDERR_FILENO))) {
+    request.progress = show_progress;
+    request.progress_user = &last_percent;
+  }
+  pfx_import_result* result = nullptr;
+  importer->desc->import(&request, &result);
+  if (!result) return error_exit(1, options.file + ": out of memory");
+  int code = 0;
+  if (result->status == PFX_OK) {
+    const std::string text = options.json ? pfx::import::summary_json(options.file, *result)
+                                          : pfx::import::summary_text(options.file, *result);
+    std::fputs(text.c_str(), stdout);
+  } else {
+    if (last_percent >= 0 && last_percent < 100) std::fputc('\n', stderr);
+    code = result->status == PFX_ERROR ? 3 : result->status == PFX_OUT_OF_MEMORY ? 1 : 4;
+    error_exit(code, result->error ? result->error : "import failed (status " + std::to_string(result->status) + ")");
+  }
+  importer->desc->release(result);
+  return code;
+}
