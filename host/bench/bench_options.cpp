@@ -30,6 +30,9 @@ std::string bench_usage() {
       "                    timestamps are taken when commands are queued; GL timestamps elsewhere)\n"
       "  --quick           one size (640x360), 5 frames, 2 warm-up: a smoke test under a minute\n"
       "\n"
+      "pfx-bench --import ... measures the OBJ importer against tinyobjloader and assimp instead\n"
+      "(no GL; see pfx-bench --import --help).\n"
+      "\n"
       "exit codes: 0 ok, 1 internal error, 2 usage, 4 plugin or effect error\n";
 }
 

@@ -11,6 +11,7 @@
 #include "bench_options.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
+#include "import_bench.hpp"
 #include "headless_context.hpp"
 #include "plugin_directory.hpp"
 #include "suite.hpp"
@@ -51,6 +52,8 @@ std::vector<SuiteRow> select_rows(const std::vector<SuiteRow>& suite, const pfx:
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The OBJ import benchmark is a mode of its own (no GL): import_bench.cpp.
+  if (argc > 1 && std::string(argv[1]) == "--import") return import_bench_main(std::vector<std::string>(argv + 2, argv + argc));
   BenchOptions options;
   std::string message;
   if (!parse_bench_options(std::vector<std::string>(argv + 1, argv + argc), &options, &message)) {

@@ -34,6 +34,7 @@ class ChunkParser {
     if (first_in_file && cursor_.end - cursor_.p >= 3 && static_cast<unsigned char>(cursor_.p[0]) == 0xEF &&
         static_cast<unsigned char>(cursor_.p[1]) == 0xBB && static_cast<unsigned char>(cursor_.p[2]) == 0xBF)
       cursor_.p += 3;
+    reserve_upper_bounds(static_cast<size_t>(cursor_.end - cursor_.p));
     while (!cursor_.at_end()) {
       line_ = cursor_.line_ends;
       if (!statement()) {
@@ -45,6 +46,17 @@ class ChunkParser {
   }
 
  private:
+  // The most elements `bytes` of text can hold (the shortest statements: "v 0 0 0\n", "vt 0\n",
+  // "vn 0 0 0\n", a corner "1 ", "f 1 2 3\n"), reserved up front: growing by copying cost more
+  // than the parse. Only the pages written become resident.
+  void reserve_upper_bounds(size_t bytes) {
+    out_->positions.reserve(3 * (bytes / 8 + 1));
+    out_->texcoords.reserve(2 * (bytes / 5 + 1));
+    out_->normals.reserve(3 * (bytes / 9 + 1));
+    out_->corners.reserve(3 * (bytes / 2 + 1));
+    out_->faces.reserve(bytes / 8 + 1);
+  }
+
   bool fail(std::string text) {
     out_->error = {line_, std::move(text)};
     return false;
@@ -106,10 +118,23 @@ class ChunkParser {
     for (;;) {
       cursor_.skip_blanks();
       if (cursor_.at_statement_end()) return true;
+      double value;
+      if (*count < capacity) {
+        // The common case in one pass: a number ending where its token ends.
+        const char* after = parse_number_prefix(cursor_.p, cursor_.end, &value);
+        if (after) {
+          const char* save = cursor_.p;
+          cursor_.p = after;
+          if (cursor_.at_token_end() && std::isfinite(static_cast<float>(value))) {
+            values[(*count)++] = value;
+            continue;
+          }
+          cursor_.p = save;
+        }
+      }
       std::string_view token = cursor_.token();
       if (*count == capacity) return fail(std::string(keyword) + ": too many numbers (at most " +
                                           std::to_string(capacity) + ")");
-      double value;
       if (!parse_double(token, &value)) {
         if (is_non_finite_word(token))
           return fail(std::string(keyword) + ": '" + printable(token) + "' is not a finite number");
@@ -163,23 +188,90 @@ class ChunkParser {
     out_->relative_fields[word] |= uint64_t{1} << (field % 64);
   }
 
-  // One index of a corner; `count` is how many elements of its kind the chunk has so far.
-  bool index(std::string_view text, std::string_view corner, const char* what, uint64_t count) {
-    int64_t value;
-    if (!parse_integer(text, &value)) {
-      if (text.size() > 1 && text.find_first_not_of("+-0123456789") == std::string_view::npos)
-        return fail("f: index '" + printable(text) + "' is too large");
-      return fail("f: malformed corner '" + printable(corner) + "' (expected v, v/vt, v//vn or v/vt/vn)");
+  // Reads [+-]digits at the cursor into *value; false when there are no digits. More than 18
+  // digits set *too_long (the value is then meaningless).
+  bool read_index(int64_t* value, bool* too_long) {
+    const char* p = cursor_.p;
+    const char* end = cursor_.end;
+    bool negative = false;
+    if (p < end && (*p == '+' || *p == '-')) negative = *p++ == '-';
+    const char* digits = p;
+    int64_t n = 0;
+    while (p < end && *p >= '0' && *p <= '9') {
+      if (p - digits < 18) n = n * 10 + (*p - '0');
+      ++p;
     }
-    if (value == 0) return fail("f: " + std::string(what) + " index 0 in '" + printable(corner) + "' (OBJ indices start at 1)");
-    if (value > kMaxWrittenIndex || value < -kMaxWrittenIndex)
-      return fail("f: index '" + printable(text) + "' is too large");
+    if (p == digits) return false;
+    *too_long = p - digits > 18;
+    *value = negative ? -n : n;
+    cursor_.p = p;
+    return true;
+  }
+
+  // The whole corner token starting at `start`, for messages.
+  std::string_view corner_text(const char* start) {
+    cursor_.p = start;
+    return cursor_.token();
+  }
+
+  bool malformed_corner(const char* start) {
+    return fail("f: malformed corner '" + printable(corner_text(start)) + "' (expected v, v/vt, v//vn or v/vt/vn)");
+  }
+
+  // Stores one index of a corner; `count` is how many elements of its kind the chunk has so far.
+  bool store_index(int64_t value, bool too_long, const char* field_start, const char* corner_start, const char* what,
+                   uint64_t count) {
+    if (too_long || value > kMaxWrittenIndex || value < -kMaxWrittenIndex) {
+      const std::string_view field(field_start, static_cast<size_t>(cursor_.p - field_start));
+      return fail("f: index '" + printable(field) + "' is too large");
+    }
+    if (value == 0)
+      return fail("f: " + std::string(what) + " index 0 in '" + printable(corner_text(corner_start)) +
+                  "' (OBJ indices start at 1)");
     if (value > 0) {
       out_->corners.push_back(static_cast<uint32_t>(value));
     } else {
       mark_relative(out_->corners.size());
       out_->corners.push_back(static_cast<uint32_t>(static_cast<int64_t>(count) + value + 1));
     }
+    return true;
+  }
+
+  // v, v/vt, v//vn or v/vt/vn, read in one pass.
+  bool corner(uint32_t texcoord_count, uint32_t normal_count) {
+    const char* start = cursor_.p;
+    int64_t value;
+    bool too_long;
+    const char* field = cursor_.p;
+    if (!read_index(&value, &too_long)) return malformed_corner(start);
+    if (!cursor_.at_token_end() && *cursor_.p != '/') return malformed_corner(start);
+    if (!store_index(value, too_long, field, start, "v", out_->position_count())) return false;
+    bool has_vt = false, has_vn = false;
+    if (!cursor_.at_token_end()) {  // at the first '/'
+      ++cursor_.p;
+      field = cursor_.p;
+      if (cursor_.p < cursor_.end && *cursor_.p == '/') {  // v//vn
+        ++cursor_.p;
+        field = cursor_.p;
+        if (!read_index(&value, &too_long) || !cursor_.at_token_end()) return malformed_corner(start);
+        out_->corners.push_back(kAbsent);
+        if (!store_index(value, too_long, field, start, "vn", normal_count)) return false;
+        return true;
+      }
+      if (!read_index(&value, &too_long)) return malformed_corner(start);
+      if (!cursor_.at_token_end() && *cursor_.p != '/') return malformed_corner(start);
+      if (!store_index(value, too_long, field, start, "vt", texcoord_count)) return false;
+      has_vt = true;
+      if (!cursor_.at_token_end()) {  // at the second '/'
+        ++cursor_.p;
+        field = cursor_.p;
+        if (!read_index(&value, &too_long) || !cursor_.at_token_end()) return malformed_corner(start);
+        if (!store_index(value, too_long, field, start, "vn", normal_count)) return false;
+        has_vn = true;
+      }
+    }
+    if (!has_vt) out_->corners.push_back(kAbsent);
+    if (!has_vn) out_->corners.push_back(kAbsent);
     return true;
   }
 
@@ -190,27 +282,7 @@ class ChunkParser {
     for (;;) {
       cursor_.skip_blanks();
       if (cursor_.at_statement_end()) break;
-      std::string_view corner = cursor_.token();
-      // Split at '/': v, v/vt, v//vn or v/vt/vn; anything else is malformed.
-      size_t first = corner.find('/');
-      std::string_view v = corner.substr(0, first), vt, vn;
-      bool malformed = v.empty();
-      if (first != std::string_view::npos) {
-        size_t second = corner.find('/', first + 1);
-        vt = corner.substr(first + 1, second == std::string_view::npos ? std::string_view::npos : second - first - 1);
-        if (second == std::string_view::npos) malformed |= vt.empty();
-        else {
-          vn = corner.substr(second + 1);
-          malformed |= vn.empty() || vn.find('/') != std::string_view::npos;
-        }
-      }
-      if (malformed)
-        return fail("f: malformed corner '" + printable(corner) + "' (expected v, v/vt, v//vn or v/vt/vn)");
-      if (!index(v, corner, "v", out_->position_count())) return false;
-      if (vt.empty()) out_->corners.push_back(kAbsent);
-      else if (!index(vt, corner, "vt", texcoord_count)) return false;
-      if (vn.empty()) out_->corners.push_back(kAbsent);
-      else if (!index(vn, corner, "vn", normal_count)) return false;
+      if (!corner(texcoord_count, normal_count)) return false;
       ++corners;
     }
     if (corners < 3) return fail("f: needs at least 3 corners (got " + std::to_string(corners) + ")");

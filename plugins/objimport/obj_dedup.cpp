@@ -1,5 +1,7 @@
 #include "obj_dedup.hpp"
 
+#include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "obj_parallel.hpp"
@@ -9,12 +11,57 @@ namespace pfx_obj {
 
 namespace {
 
-// Which shard a hash belongs to, from its top bits (the table uses the low ones).
-unsigned shard_of(uint64_t hash, unsigned shards) { return static_cast<unsigned>(((hash >> 40) * shards) >> 24); }
+// Variants of one position (different vt, vn or normal group) are chained from a table indexed
+// by the position itself, so a lookup reads one slot of a dense array and one key — in files that
+// list vertices in the order faces use them, both are already in cache. A position with more than
+// kMaxChain variants (a pathological file) sends the rest to a hash table, so no lookup walks far.
+constexpr uint32_t kMaxChain = 8;
 
-struct Shard {
-  std::vector<VertexKey> keys;          // in order of first use within the shard
-  std::vector<uint64_t> first_corners;  // the file ordinal of each key's first corner
+// The vertices of positions [first_position, first_position + count): one shard.
+class Shard {
+ public:
+  Shard(uint32_t first_position, uint32_t count) : first_(first_position), head_(count, kNoIndex) {}
+
+  bool owns(uint32_t v) const { return v - first_ < head_.size(); }
+
+  uint32_t find_or_insert(const VertexKey& key, uint64_t corner) {
+    const uint32_t slot = key.v - first_;
+    uint32_t last = kNoIndex, length = 0;
+    for (uint32_t id = head_[slot]; id != kNoIndex; id = next_[id]) {
+      if (keys_[id] == key) return id;
+      last = id;
+      ++length;
+    }
+    if (length < kMaxChain) {
+      const uint32_t id = add(key, corner);  // may move next_: link it afterwards
+      (last == kNoIndex ? head_[slot] : next_[last]) = id;
+      return id;
+    }
+    if (!overflow_) overflow_ = std::make_unique<VertexTable>(1024);
+    bool inserted;
+    const uint32_t id = overflow_->find_or_insert(key, hash_key(key), static_cast<uint32_t>(keys_.size()), &inserted);
+    if (inserted) add(key, corner);
+    return id;
+  }
+
+  const std::vector<VertexKey>& keys() const { return keys_; }
+  const std::vector<uint64_t>& first_corners() const { return first_corners_; }
+
+ private:
+  uint32_t add(const VertexKey& key, uint64_t corner) {
+    if (keys_.size() >= kNoIndex) throw std::length_error("more than 2^32 - 1 distinct vertices");
+    keys_.push_back(key);
+    next_.push_back(kNoIndex);
+    first_corners_.push_back(corner);
+    return static_cast<uint32_t>(keys_.size() - 1);
+  }
+
+  uint32_t first_;
+  std::vector<uint32_t> head_;          // per position: its first variant, or kNoIndex
+  std::vector<uint32_t> next_;          // per vertex: the next variant of its position
+  std::vector<VertexKey> keys_;         // in order of first use within the shard
+  std::vector<uint64_t> first_corners_; // the file ordinal of each key's first corner
+  std::unique_ptr<VertexTable> overflow_;
 };
 
 // Calls visit(chunk, corner, key) for every corner of every chunk, in file order.
@@ -36,9 +83,8 @@ void for_each_corner(const std::vector<DedupChunk>& chunks, Visit&& visit) {
 
 }  // namespace
 
-void deduplicate(const std::vector<DedupChunk>& chunks, unsigned threads, std::vector<VertexKey>* vertices,
-                 std::vector<std::vector<uint32_t>>* corner_vertex) {
-  const unsigned shards = threads < 1 ? 1 : (threads > 64 ? 64 : threads);
+void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count, unsigned threads,
+                 std::vector<VertexKey>* vertices, std::vector<std::vector<uint32_t>>* corner_vertex) {
   uint64_t total_corners = 0;
   corner_vertex->assign(chunks.size(), {});
   for (size_t c = 0; c < chunks.size(); ++c) {
@@ -46,82 +92,74 @@ void deduplicate(const std::vector<DedupChunk>& chunks, unsigned threads, std::v
     (*corner_vertex)[c].resize(chunks[c].corner_count);
   }
   if (total_corners > kNoIndex) throw std::length_error("more than 2^32 - 1 face corners");
+  const unsigned shards = std::max(1u, std::min(threads, std::max(1u, position_count / 4096)));
 
   if (shards == 1) {
     // The sequential case: vertex ids are final as they are handed out.
-    VertexTable table(total_corners / 3);
-    vertices->clear();
+    Shard shard(0, position_count);
     for_each_corner(chunks, [&](size_t c, uint64_t corner, const VertexKey& key) {
-      bool inserted;
-      uint32_t id = table.find_or_insert(key, hash_key(key), static_cast<uint32_t>(vertices->size()), &inserted);
-      if (inserted) vertices->push_back(key);
-      (*corner_vertex)[c][corner] = id;
+      (*corner_vertex)[c][corner] = shard.find_or_insert(key, chunks[c].first_corner + corner);
     });
+    *vertices = shard.keys();
     return;
   }
 
-  // First, which shard each corner belongs to (chunks in parallel, each writing its own range).
-  std::vector<std::vector<uint8_t>> corner_shard(chunks.size());
-  std::vector<std::vector<uint64_t>> shard_counts(chunks.size(), std::vector<uint64_t>(shards, 0));
-  run_parallel(threads, chunks.size(), [&](size_t c, unsigned) {
-    corner_shard[c].resize(chunks[c].corner_count);
-    for_each_corner({chunks[c]}, [&](size_t, uint64_t corner, const VertexKey& key) {
-      const unsigned s = shard_of(hash_key(key), shards);
-      corner_shard[c][corner] = static_cast<uint8_t>(s);
-      ++shard_counts[c][s];
-    });
-  });
-  // Then each shard numbers its keys, writing the ids of its corners to its own stream (threads
-  // writing interleaved corners of one array would fight over cache lines).
-  std::vector<Shard> shard_data(shards);
+  // Each shard owns a range of positions, numbers the vertices of its corners and writes their ids
+  // to its own stream (threads writing interleaved corners of one array would fight over cache
+  // lines), counting how many corners of each chunk it took.
+  std::vector<std::unique_ptr<Shard>> shard_data(shards);
   std::vector<std::vector<uint32_t>> streams(shards);
+  std::vector<std::vector<uint64_t>> taken(shards, std::vector<uint64_t>(chunks.size(), 0));
   run_on_each_worker(shards, [&](unsigned s) {
-    Shard& shard = shard_data[s];
-    uint64_t own = 0;
-    for (const auto& counts : shard_counts) own += counts[s];
-    streams[s].reserve(own);
-    VertexTable table(own / 3);
+    const uint32_t lo = static_cast<uint32_t>(uint64_t{position_count} * s / shards);
+    const uint32_t hi = static_cast<uint32_t>(uint64_t{position_count} * (s + 1) / shards);
+    shard_data[s] = std::make_unique<Shard>(lo, hi - lo);
+    Shard& shard = *shard_data[s];
+    streams[s].reserve(total_corners / shards + 1024);
     for_each_corner(chunks, [&](size_t c, uint64_t corner, const VertexKey& key) {
-      if (corner_shard[c][corner] != s) return;
-      bool inserted;
-      uint32_t id = table.find_or_insert(key, hash_key(key), static_cast<uint32_t>(shard.keys.size()), &inserted);
-      if (inserted) {
-        shard.keys.push_back(key);
-        shard.first_corners.push_back(chunks[c].first_corner + corner);
-      }
-      streams[s].push_back(id);
+      if (!shard.owns(key.v)) return;
+      streams[s].push_back(shard.find_or_insert(key, chunks[c].first_corner + corner));
+      ++taken[s][c];
     });
   });
 
   // Global ids in order of first use: merge the shards' lists, each already in that order.
   uint64_t total = 0;
-  for (const Shard& shard : shard_data) total += shard.keys.size();
+  for (const auto& shard : shard_data) total += shard->keys().size();
   vertices->resize(total);
   std::vector<std::vector<uint32_t>> global_id(shards);
   std::vector<size_t> head(shards, 0);
-  for (unsigned s = 0; s < shards; ++s) global_id[s].resize(shard_data[s].keys.size());
+  for (unsigned s = 0; s < shards; ++s) global_id[s].resize(shard_data[s]->keys().size());
   for (uint64_t g = 0; g < total; ++g) {
-    unsigned best = shards;
+    unsigned best = 0;
     uint64_t best_corner = ~uint64_t{0};
-    for (unsigned s = 0; s < shards; ++s)
-      if (head[s] < shard_data[s].keys.size() && shard_data[s].first_corners[head[s]] < best_corner) {
+    for (unsigned s = 0; s < shards; ++s) {
+      const auto& firsts = shard_data[s]->first_corners();
+      if (head[s] < firsts.size() && firsts[head[s]] < best_corner) {
         best = s;
-        best_corner = shard_data[s].first_corners[head[s]];
+        best_corner = firsts[head[s]];
       }
+    }
     global_id[best][head[best]] = static_cast<uint32_t>(g);
-    (*vertices)[g] = shard_data[best].keys[head[best]];
+    (*vertices)[g] = shard_data[best]->keys()[head[best]];
     ++head[best];
   }
-  // Where each chunk's corners start in each shard's stream.
+
+  // Renumber each chunk's corners, reading each shard's stream from where that chunk starts in it.
   std::vector<std::vector<uint64_t>> stream_start(chunks.size(), std::vector<uint64_t>(shards, 0));
   for (size_t c = 1; c < chunks.size(); ++c)
-    for (unsigned s = 0; s < shards; ++s) stream_start[c][s] = stream_start[c - 1][s] + shard_counts[c - 1][s];
+    for (unsigned s = 0; s < shards; ++s) stream_start[c][s] = stream_start[c - 1][s] + taken[s][c - 1];
+  std::vector<uint32_t> bounds(shards + 1);
+  for (unsigned s = 0; s <= shards; ++s) bounds[s] = static_cast<uint32_t>(uint64_t{position_count} * s / shards);
   run_parallel(threads, chunks.size(), [&](size_t c, unsigned) {
     std::vector<uint32_t>& ids = (*corner_vertex)[c];
-    const std::vector<uint8_t>& owner = corner_shard[c];
     std::vector<uint64_t> at = stream_start[c];
+    const uint32_t* fields = chunks[c].corners;
     for (size_t k = 0; k < ids.size(); ++k) {
-      const unsigned s = owner[k];
+      const uint32_t v = fields[3 * k];
+      unsigned s = static_cast<unsigned>(uint64_t{v} * shards / position_count);
+      while (v >= bounds[s + 1]) ++s;  // the integer division may land one shard low
+      while (v < bounds[s]) --s;
       ids[k] = global_id[s][streams[s][at[s]++]];
     }
   });

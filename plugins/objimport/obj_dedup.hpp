@@ -3,8 +3,8 @@
 // normal will be generated for (obj_import.cpp). Nothing is packed, so nothing collides: the
 // seed's 21-bit packing merged distinct corners past 2^21 elements.
 //
-// The work is split by hash into one shard per thread; every thread walks all corners in file
-// order and keeps those of its shard. Vertices are numbered in the order of their first corner in
+// The work is split into one shard per thread, each owning a range of positions; every thread
+// walks all corners in file order and keeps those of its shard. Vertices are numbered in the order of their first corner in
 // the file, whatever the thread count, so the output never depends on it.
 #pragma once
 
@@ -36,7 +36,8 @@ struct DedupChunk {
 
 // vertices: the distinct keys in order of first use. corner_vertex[c][k]: the vertex of corner k
 // of chunk c.
-void deduplicate(const std::vector<DedupChunk>& chunks, unsigned threads, std::vector<VertexKey>* vertices,
-                 std::vector<std::vector<uint32_t>>* corner_vertex);
+// position_count: how many positions the file has (every corner's v is below it).
+void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count, unsigned threads,
+                 std::vector<VertexKey>* vertices, std::vector<std::vector<uint32_t>>* corner_vertex);
 
 }  // namespace pfx_obj

@@ -351,7 +351,7 @@ class Importer {
       inputs[c].face_groups = faces_[c].face_groups.data();
       inputs[c].first_corner = plans_[c].corner_base;
     }
-    deduplicate(inputs, threads_, &keys_, &corner_vertex_);
+    deduplicate(inputs, totals_[0], threads_, &keys_, &corner_vertex_);
     for (ChunkFaces& f : faces_) f.face_groups = {};
   }
 

@@ -44,9 +44,7 @@ std::string Cursor::rest_of_line() {
   return text.substr(first, last - first);
 }
 
-bool parse_double(std::string_view token, double* out) {
-  const char* p = token.data();
-  const char* end = p + token.size();
+const char* parse_number_prefix(const char* p, const char* end, double* out) {
   bool negative = false;
   if (p < end && (*p == '+' || *p == '-')) negative = *p++ == '-';
   const char* number_start = p;
@@ -71,18 +69,17 @@ bool parse_double(std::string_view token, double* out) {
       else truncated = true;
     }
   }
-  if (!any_digit) return false;
+  if (!any_digit) return nullptr;
   if (p < end && (*p == 'e' || *p == 'E')) {
     ++p;
     bool exponent_negative = false;
     if (p < end && (*p == '+' || *p == '-')) exponent_negative = *p++ == '-';
-    if (p >= end || !is_digit(*p)) return false;
+    if (p >= end || !is_digit(*p)) return nullptr;
     int written = 0;
     for (; p < end && is_digit(*p); ++p)
       if (written < 100000) written = written * 10 + (*p - '0');
     exponent += exponent_negative ? -written : written;
   }
-  if (p != end) return false;
   double value;
   if (mantissa == 0) {
     value = 0.0;
@@ -92,11 +89,19 @@ bool parse_double(std::string_view token, double* out) {
   } else {
     // Rare: long mantissas or large exponents. from_chars is exact and locale-independent; it
     // takes no '+', which was stepped over above.
-    auto result = std::from_chars(number_start, end, value);
+    auto result = std::from_chars(number_start, p, value);
     if (result.ec == std::errc::result_out_of_range) value = (exponent > 0) ? HUGE_VAL : 0.0;
-    else if (result.ec != std::errc() || result.ptr != end) return false;
+    else if (result.ec != std::errc() || result.ptr != p) return nullptr;
   }
   *out = negative ? -value : value;
+  return p;
+}
+
+bool parse_double(std::string_view token, double* out) {
+  double value;
+  const char* end = token.data() + token.size();
+  if (parse_number_prefix(token.data(), end, &value) != end) return false;
+  *out = value;
   return true;
 }
 

@@ -62,6 +62,9 @@ struct Cursor {
 // Accepts ".5", "1.", "+1", "1e-5", "-0". Returns false for anything else (including "nan",
 // "inf", hex, a second '.', trailing letters), leaving *out alone. Rounds to double, then float.
 bool parse_float(std::string_view token, float* out);
+// Reads the longest number at p (before end) into *out and returns where it stopped, or nullptr
+// when no number starts there. The caller checks what follows.
+const char* parse_number_prefix(const char* p, const char* end, double* out);
 // As parse_float, but keeps the double.
 bool parse_double(std::string_view token, double* out);
 // True when the token spells nan or inf/infinity in any case, with an optional sign.

@@ -164,3 +164,29 @@ TEST_CASE("pfx-import: --progress on reports rising percentages up to 100 on std
   CHECK(last == 100);
   CHECK(pfx_import(scratch.write("s.obj", "v 0 0 0\n") + " --progress off").err.empty());
 }
+
+TEST_CASE("pfx-bench --import: a tiny run writes both reports with every loader", "[import][bench]") {
+  // A smoke test of the benchmark's plumbing (generation, forked loads, reports); the speeds it
+  // prints are not checked here.
+  Scratch scratch;
+  const std::string out = (scratch.dir / "bench").string();
+  const std::string command = std::string(PFX_BENCH) + " --import --sizes 0.05 --runs 1 --threads 1,2 --plugins " +
+                              PFX_PLUGIN_DIR + " --dir " + (scratch.dir / "files").string() + " --out " + out +
+                              " > " + (scratch.dir / "stdout.md").string() + " 2>/dev/null";
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::ifstream in(out + "/import.json");
+  REQUIRE(in);
+  nlohmann::json j = nlohmann::json::parse(in);
+  REQUIRE(j["rows"].size() == 4);  // pfx at 1 and 2 threads, tinyobjloader, assimp
+  uint64_t triangles = j["rows"][0]["triangles"];
+  CHECK(triangles > 0);
+  for (const auto& row : j["rows"]) {
+    INFO(row.dump());
+    CHECK(row["ok"] == true);
+    CHECK(row["triangles"] == triangles);  // every loader read the same mesh
+    CHECK(row["mb_per_s"].get<double>() > 0);
+  }
+  CHECK(fs::exists(out + "/import.md"));
+  CHECK(fs::file_size(scratch.dir / "stdout.md") > 0);
+  CHECK(fs::exists(scratch.dir / "files" / "grid-0.05mb.obj"));  // --dir keeps the generated file
+}

@@ -75,3 +75,21 @@ TEST_CASE("obj dedup: more than 65,535 vertices (the seed's 16-bit indices wrap)
   CHECK(above_16_bits > 0);
   CHECK(r.mesh.bounds_max[0] == static_cast<float>(count));
 }
+
+TEST_CASE("obj dedup: a position with hundreds of texture coordinates", "[objimport][dedup]") {
+  // Position 1 appears with 300 different vt (past the per-position chain, into the overflow
+  // table), repeated twice: 300 + 2 distinct vertices, each corner keeping its own vt.
+  std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (int k = 1; k <= 300; ++k) text += "vt " + std::to_string(k) + " 0\n";
+  for (int round = 0; round < 2; ++round)
+    for (int k = 1; k <= 300; ++k) text += "f 1/" + std::to_string(k) + " 2/1 3/1\n";
+  for (unsigned threads : {1u, 3u}) {
+    auto r = import_text(text, threads, 500);
+    REQUIRE(r.ok);
+    CHECK(r.mesh.vertex_count() == 302);
+    uint32_t wrong = 0;
+    for (size_t t = 0; t < r.mesh.indices.size() / 3; ++t)
+      wrong += r.mesh.texcoords[2 * size_t{r.mesh.indices[3 * t]}] != static_cast<float>(t % 300 + 1);
+    CHECK(wrong == 0);
+  }
+}

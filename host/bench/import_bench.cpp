@@ -1,0 +1,305 @@
+#include "import_bench.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.hpp"
+#include "cli_text.hpp"
+#include "import_files.hpp"
+#include "import_loaders.hpp"
+#include "import_measure.hpp"
+#include "plugin_directory.hpp"
+
+namespace fs = std::filesystem;
+
+namespace pfx::bench {
+
+namespace {
+
+struct ImportRow {
+  double size_mb = 0;      // requested
+  uint64_t bytes = 0;      // actual
+  std::string loader;
+  unsigned threads = 1;
+  int runs = 0;
+  double median_seconds = 0;
+  double median_cpu_seconds = 0;
+  uint64_t peak_bytes = 0;  // the largest over the runs
+  LoadCounts counts;
+  double mb_per_s() const { return median_seconds > 0 ? bytes / 1e6 / median_seconds : 0; }
+  double mb_per_cpu_s() const { return median_cpu_seconds > 0 ? bytes / 1e6 / median_cpu_seconds : 0; }
+};
+
+double load_average() {
+  double load[1] = {0};
+  return ::getloadavg(load, 1) == 1 ? load[0] : 0;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n == 0 ? 0 : (n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2);
+}
+
+const ImportRow* find_row(const std::vector<ImportRow>& rows, double size, const std::string& loader, unsigned threads) {
+  for (const auto& row : rows)
+    if (row.size_mb == size && row.loader == loader && row.threads == threads && row.counts.ok) return &row;
+  return nullptr;
+}
+
+std::string markdown(const std::vector<ImportRow>& rows, const ImportBenchOptions& options) {
+  std::string text = "## OBJ import (pfx-bench --import)\n\n";
+  char line[512];
+  std::snprintf(line, sizeof line, "Median of %d runs at 100 MB and below, 1 run above; each load in a fresh child process; "
+                "peak = resident memory the load added (mapped file pages included); CPU s = user + system time of "
+                "all the load's threads (unlike wall time, it does not count waiting for a core on a shared "
+                "machine). %u hardware threads; load average %.1f at the start.\n\n",
+                options.runs, std::max(1u, static_cast<unsigned>(::sysconf(_SC_NPROCESSORS_ONLN))), load_average());
+  text += line;
+  text += "| file MB | loader | threads | wall s | MB/s (wall) | CPU s | MB/CPU s | peak MB | vertices | triangles |\n";
+  text += "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto& row : rows) {
+    if (!row.counts.ok) {
+      std::snprintf(line, sizeof line, "| %.1f | %s | %u | failed: %s | | | | | | |\n", row.bytes / 1e6, row.loader.c_str(),
+                    row.threads, row.counts.error.substr(0, 200).c_str());
+    } else {
+      std::snprintf(line, sizeof line, "| %.1f | %s | %u | %.3f | %.1f | %.3f | %.1f | %.1f | %llu | %llu |\n",
+                    row.bytes / 1e6, row.loader.c_str(), row.threads, row.median_seconds, row.mb_per_s(),
+                    row.median_cpu_seconds, row.mb_per_cpu_s(), row.peak_bytes / 1e6,
+                    static_cast<unsigned long long>(row.counts.vertices),
+                    static_cast<unsigned long long>(row.counts.triangles));
+    }
+    text += line;
+  }
+  text += "\n| file MB | pfx 1 thread / tinyobjloader: wall (CPU) | pfx 1 thread / assimp: wall (CPU) | "
+          "pfx 2 threads / 1 thread: wall |\n";
+  text += "|---:|---:|---:|---:|\n";
+  for (double size : options.sizes_mb) {
+    const ImportRow* one = find_row(rows, size, "pfx", 1);
+    const ImportRow* two = find_row(rows, size, "pfx", 2);
+    const ImportRow* tiny = find_row(rows, size, "tinyobjloader", 1);
+    const ImportRow* assimp = find_row(rows, size, "assimp", 1);
+    auto ratio = [](const ImportRow* a, const ImportRow* b, bool with_cpu) -> std::string {
+      if (!a || !b || b->mb_per_s() <= 0 || b->mb_per_cpu_s() <= 0) return "—";
+      char value[64];
+      if (with_cpu)
+        std::snprintf(value, sizeof value, "%.2f (%.2f)", a->mb_per_s() / b->mb_per_s(), a->mb_per_cpu_s() / b->mb_per_cpu_s());
+      else
+        std::snprintf(value, sizeof value, "%.2f", a->mb_per_s() / b->mb_per_s());
+      return value;
+    };
+    std::snprintf(line, sizeof line, "| %.1f | %s | %s | %s |\n", one ? one->bytes / 1e6 : size,
+                  ratio(one, tiny, true).c_str(), ratio(one, assimp, true).c_str(), ratio(two, one, false).c_str());
+    text += line;
+  }
+  text += "\nVertices: pfx and assimp count distinct corners (deduplicated); tinyobjloader counts `v` "
+          "positions (it does not deduplicate).\n";
+  return text;
+}
+
+nlohmann::ordered_json json(const std::vector<ImportRow>& rows) {
+  nlohmann::ordered_json root;
+  root["rows"] = nlohmann::ordered_json::array();
+  for (const auto& row : rows) {
+    nlohmann::ordered_json r;
+    r["size_mb"] = row.size_mb;
+    r["bytes"] = row.bytes;
+    r["loader"] = row.loader;
+    r["threads"] = row.threads;
+    r["ok"] = row.counts.ok;
+    if (!row.counts.ok) r["error"] = row.counts.error;
+    r["runs"] = row.runs;
+    r["seconds"] = row.median_seconds;
+    r["mb_per_s"] = row.mb_per_s();
+    r["cpu_seconds"] = row.median_cpu_seconds;
+    r["mb_per_cpu_s"] = row.mb_per_cpu_s();
+    r["peak_bytes"] = row.peak_bytes;
+    r["vertices"] = row.counts.vertices;
+    r["triangles"] = row.counts.triangles;
+    root["rows"].push_back(r);
+  }
+  return root;
+}
+
+bool write_text(const std::string& path, const std::string& text, std::string* error) {
+  return pfx::app::write_atomically(path, [&](const std::string& temp, std::string* reason) {
+    std::ofstream out(temp, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) *reason = "write failed";
+    return static_cast<bool>(out);
+  }, error);
+}
+
+}  // namespace
+
+std::string import_bench_usage() {
+  return
+      "usage: pfx-bench --import [--sizes MB,...] [--threads N,...] [--loaders a,b,...] [--runs N]\n"
+      "                          [--dir DIR] [--keep] [--out DIR] [--plugins DIR]...\n"
+      "\n"
+      "Measures the OBJ importer plugin against tinyobjloader and assimp, in one run, on OBJ files\n"
+      "generated at each size (a height field with v, vt, vn and v/vt/vn triangles): MB/s (file bytes\n"
+      "over the median wall time of a load) and the peak memory a load adds, with pfx at each thread\n"
+      "count (the others are single-threaded). Each load runs in a forked child process after the\n"
+      "file was read once into the page cache. Writes DIR/import.json and DIR/import.md.\n"
+      "\n"
+      "  --sizes LIST      file sizes in MB (default 10,100,500)\n"
+      "  --threads LIST    pfx thread counts (default 1,2)\n"
+      "  --loaders LIST    pfx,tinyobjloader,assimp (default: all three)\n"
+      "  --runs N          loads per row at 100 MB and below (default 3; larger files: 1)\n"
+      "  --dir DIR         where to generate the files (default: a new folder under /tmp, removed\n"
+      "                    after the run unless --keep); existing complete files there are reused\n"
+      "  --out DIR         output folder (default out/bench)\n"
+      "  --plugins DIR     plugin folder (default: the one next to this program's folder)\n"
+      "\n"
+      "exit codes: 0 ok (failed loads are reported in the tables), 1 internal error, 2 usage\n";
+}
+
+bool parse_import_bench_options(const std::vector<std::string>& args, ImportBenchOptions* out, std::string* error) {
+  ImportBenchOptions options;
+  auto fail = [&](const std::string& message) {
+    *error = message;
+    return false;
+  };
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    std::string text;
+    auto value = [&]() {
+      if (i + 1 >= args.size()) return fail(arg + " needs a value");
+      text = args[++i];
+      return true;
+    };
+    if (arg == "-h" || arg == "--help") options.help = true;
+    else if (arg == "--keep") options.keep_files = true;
+    else if (arg == "--dir") { if (!value()) return false; options.work_dir = text; }
+    else if (arg == "--out") { if (!value()) return false; options.out_dir = text; }
+    else if (arg == "--plugins") { if (!value()) return false; options.plugin_dirs.push_back(text); }
+    else if (arg == "--sizes") {
+      if (!value()) return false;
+      options.sizes_mb.clear();
+      for (const auto& item : pfx::app::split_list(text)) {
+        char* end = nullptr;
+        double mb = std::strtod(item.c_str(), &end);
+        if (*end || !(mb >= 0.01 && mb <= 100000)) return fail("--sizes " + item + ": expected MB from 0.01 to 100000");
+        options.sizes_mb.push_back(mb);
+      }
+      if (options.sizes_mb.empty()) return fail("--sizes needs at least one size");
+    } else if (arg == "--threads") {
+      if (!value()) return false;
+      options.threads.clear();
+      for (const auto& item : pfx::app::split_list(text)) {
+        char* end = nullptr;
+        long n = std::strtol(item.c_str(), &end, 10);
+        if (*end || n < 1 || n > 1024) return fail("--threads " + item + ": expected 1 to 1024");
+        options.threads.push_back(static_cast<unsigned>(n));
+      }
+      if (options.threads.empty()) return fail("--threads needs at least one count");
+    } else if (arg == "--loaders") {
+      if (!value()) return false;
+      options.loaders = pfx::app::split_list(text);
+      for (const auto& name : options.loaders)
+        if (name != "pfx" && name != "tinyobjloader" && name != "assimp")
+          return fail("--loaders " + name + ": expected pfx, tinyobjloader or assimp");
+    } else if (arg == "--runs") {
+      if (!value()) return false;
+      char* end = nullptr;
+      long n = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end || n < 1 || n > 100) return fail("--runs " + text + ": expected 1 to 100");
+      options.runs = static_cast<int>(n);
+    } else {
+      return fail("unknown option '" + arg + "' (see pfx-bench --import --help)");
+    }
+  }
+  *out = options;
+  return true;
+}
+
+int import_bench_main(const std::vector<std::string>& args) {
+  ImportBenchOptions options;
+  std::string message;
+  if (!parse_import_bench_options(args, &options, &message)) {
+    std::fprintf(stderr, "pfx-bench: %s\n\n%s", message.c_str(), import_bench_usage().c_str());
+    return 2;
+  }
+  if (options.help) {
+    std::fputs(import_bench_usage().c_str(), stdout);
+    return 0;
+  }
+  pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
+                                     pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
+  for (const auto& error : pfx::app::load_plugins(registry, options.plugin_dirs))
+    std::fprintf(stderr, "pfx-bench: warning: plugin not loaded: %s\n", error.c_str());
+  const std::vector<std::string> built = available_loaders();
+
+  bool temporary_dir = options.work_dir.empty();
+  std::error_code ec;
+  if (temporary_dir) options.work_dir = (fs::temp_directory_path() / ("pfx-bench-import-" + std::to_string(::getpid()))).string();
+  fs::create_directories(options.work_dir, ec);
+  if (ec) {
+    std::fprintf(stderr, "pfx-bench: cannot create %s: %s\n", options.work_dir.c_str(), ec.message().c_str());
+    return 1;
+  }
+
+  std::vector<ImportRow> rows;
+  int code = 0;
+  for (double size : options.sizes_mb) {
+    GeneratedObj file;
+    std::fprintf(stderr, "pfx-bench: generating a %g MB OBJ file in %s\n", size, options.work_dir.c_str());
+    if (!generate_obj(options.work_dir, size, &file, &message) || !warm_file(file.path, &message)) {
+      std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
+      code = 1;
+      break;
+    }
+    const int runs = size <= 100 ? options.runs : 1;
+    for (const auto& loader : options.loaders) {
+      const bool available = std::find(built.begin(), built.end(), loader) != built.end();
+      const std::vector<unsigned> thread_counts =
+          loader_is_multithreaded(loader) ? options.threads : std::vector<unsigned>{1};
+      for (unsigned threads : thread_counts) {
+        ImportRow row;
+        row.size_mb = size;
+        row.bytes = file.bytes;
+        row.loader = loader;
+        row.threads = threads;
+        std::vector<double> seconds, cpu_seconds;
+        if (!available) row.counts.error = "not built into this pfx-bench (package missing at configure time)";
+        for (int r = 0; available && r < runs; ++r) {
+          std::fprintf(stderr, "pfx-bench: %s, %u thread(s), %.0f MB, run %d of %d\n", loader.c_str(), threads,
+                       file.bytes / 1e6, r + 1, runs);
+          LoadMeasure m = measure_in_child([&] { return load_with(loader, file.path, threads, registry); });
+          row.counts = m.counts;
+          if (!m.counts.ok) break;
+          seconds.push_back(m.seconds);
+          cpu_seconds.push_back(m.cpu_seconds);
+          row.peak_bytes = std::max(row.peak_bytes, m.peak_bytes);
+          ++row.runs;
+        }
+        row.median_seconds = median(seconds);
+        row.median_cpu_seconds = median(cpu_seconds);
+        rows.push_back(row);
+      }
+    }
+  }
+  if (temporary_dir && !options.keep_files) fs::remove_all(options.work_dir, ec);
+
+  fs::create_directories(options.out_dir, ec);
+  const std::string text = markdown(rows, options);
+  if (!write_text(options.out_dir + "/import.json", json(rows).dump(2) + "\n", &message) ||
+      !write_text(options.out_dir + "/import.md", text, &message)) {
+    std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
+    return 1;
+  }
+  std::fputs(text.c_str(), stdout);
+  std::fprintf(stderr, "pfx-bench: wrote %s/import.json, %s/import.md\n", options.out_dir.c_str(), options.out_dir.c_str());
+  return code;
+}
+
+}  // namespace pfx::bench

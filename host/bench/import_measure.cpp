@@ -1,0 +1,113 @@
+#include "import_measure.hpp"
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace pfx::bench {
+
+namespace {
+
+double cpu_seconds_so_far() {
+  struct rusage usage {};
+  ::getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) * 1e-6;
+}
+
+uint64_t status_kib(const char* field) {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  const size_t length = std::strlen(field);
+  while (std::getline(in, line))
+    if (line.compare(0, length, field) == 0) return std::stoull(line.substr(length + 1));
+  return 0;
+}
+
+void write_all(int fd, const std::string& text) {
+  size_t done = 0;
+  while (done < text.size()) {
+    ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n <= 0) return;
+    done += static_cast<size_t>(n);
+  }
+}
+
+}  // namespace
+
+LoadMeasure measure_in_child(const std::function<LoadCounts()>& load) {
+  LoadMeasure measure;
+  int fds[2];
+  if (::pipe(fds) != 0) {
+    measure.counts.error = std::string("pipe: ") + std::strerror(errno);
+    return measure;
+  }
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child < 0) {
+    measure.counts.error = std::string("fork: ") + std::strerror(errno);
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return measure;
+  }
+  if (child == 0) {
+    ::close(fds[0]);
+    {
+      std::ofstream clear("/proc/self/clear_refs");
+      clear << "5";  // resets VmHWM to the current resident size
+    }
+    const uint64_t before = status_kib("VmRSS:");
+    const double cpu_start = cpu_seconds_so_far();
+    const auto start = std::chrono::steady_clock::now();
+    LoadCounts counts = load();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu = cpu_seconds_so_far() - cpu_start;
+    const uint64_t peak = status_kib("VmHWM:");
+    std::ostringstream out;
+    out << (counts.ok ? 1 : 0) << ' ' << seconds << ' ' << cpu << ' ' << (peak > before ? (peak - before) * 1024 : 0) << ' '
+        << counts.vertices << ' ' << counts.triangles << '\n'
+        << counts.error;
+    write_all(fds[1], out.str());
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string text;
+  char buffer[4096];
+  ssize_t n;
+  while ((n = ::read(fds[0], buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<size_t>(n));
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  std::istringstream in(text);
+  int ok = 0;
+  if (!(in >> ok >> measure.seconds >> measure.cpu_seconds >> measure.peak_bytes >> measure.counts.vertices >> measure.counts.triangles)) {
+    measure.counts.error = WIFSIGNALED(status) ? "the loader died (signal " + std::to_string(WTERMSIG(status)) + ")"
+                                               : "the loader's process reported nothing";
+    return measure;
+  }
+  measure.counts.ok = ok == 1;
+  in.get();
+  std::getline(in, measure.counts.error, '\0');
+  return measure;
+}
+
+bool warm_file(const std::string& path, std::string* error) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    *error = path + ": " + std::strerror(errno);
+    return false;
+  }
+  static char buffer[1 << 20];
+  while (::read(fd, buffer, sizeof buffer) > 0) {
+  }
+  ::close(fd);
+  return true;
+}
+
+}  // namespace pfx::bench
