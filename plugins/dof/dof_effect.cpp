@@ -135,7 +135,14 @@ pfx_status create(const pfx_host* host, void** out) {
     return PFX_OUT_OF_MEMORY;
   }
   glCreateBuffers(1, &inst->rings);
-  glNamedBufferStorage(inst->rings, sizeof(float) * 4 * kMaxSamples, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  // [0, 256): the ring samples of the current count; [256, 512): the disc offsets, fixed.
+  std::vector<float> offsets;
+  for (const DiscOffset& o : disc_offsets())
+    offsets.insert(offsets.end(), {static_cast<float>(o.x), static_cast<float>(o.y), o.length, 0.0f});
+  glNamedBufferStorage(inst->rings, sizeof(float) * 4 * (kMaxSamples + kDiscOffsetCount), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferSubData(inst->rings, sizeof(float) * 4 * kMaxSamples,
+                       static_cast<GLsizeiptr>(offsets.size() * sizeof(float)), offsets.data());
   set_inputs(&inst->inputs);
   *out = inst;
   return PFX_OK;

@@ -37,4 +37,20 @@ std::vector<RingSample> ring_samples(int count) {
   return samples;
 }
 
+const std::vector<DiscOffset>& disc_offsets() {
+  static const std::vector<DiscOffset> offsets = [] {
+    std::vector<DiscOffset> all;
+    for (int y = -12; y <= 12; ++y)
+      for (int x = -12; x <= 12; ++x)
+        if (x || y) all.push_back({x, y, static_cast<float>(std::hypot(double(x), double(y)))});
+    std::stable_sort(all.begin(), all.end(), [](const DiscOffset& a, const DiscOffset& b) {
+      if (a.length != b.length) return a.length < b.length;
+      return std::atan2(double(a.y), double(a.x)) < std::atan2(double(b.y), double(b.x));
+    });
+    all.resize(kDiscOffsetCount);
+    return all;
+  }();
+  return offsets;
+}
+
 }  // namespace pfx_dof

@@ -16,4 +16,15 @@ struct RingSample {
 
 std::vector<RingSample> ring_samples(int count);
 
+// Every texel offset within kDiscOffsetCount of the centre (the centre itself left out), nearest
+// first (ties by angle, so the order is fixed): a gather whose disc holds no more texels than its
+// sample budget reads exactly these, each standing for its own pixel, and its kernel is then the
+// exact disc instead of rounded ring positions.
+constexpr int kDiscOffsetCount = 256;
+struct DiscOffset {
+  int x, y;
+  float length;
+};
+const std::vector<DiscOffset>& disc_offsets();
+
 }  // namespace pfx_dof

@@ -190,7 +190,8 @@ const char* const kGather = R"glsl(
 layout(binding = 0) uniform sampler2D u_work;
 layout(binding = 1) uniform sampler2D u_dilated;
 layout(binding = 2) uniform sampler2D u_color;
-layout(std430, binding = 0) readonly buffer Rings { vec4 u_rings[]; };
+// [0, 256): ring samples (x, y, area); [256, 512): disc offsets nearest first (x, y, length).
+layout(std430, binding = 0) readonly buffer Samples { vec4 u_samples[]; };
 layout(location = 4) uniform int u_sample_count;
 layout(location = 5) uniform float u_scale;
 layout(location = 6) uniform int u_tile;
@@ -208,19 +209,33 @@ void main() {
     o_color = u_full != 0 ? safe_color(texelFetch(u_color, p, 0)) : vec4(center.rgb, 1.0);
     return;
   }
-  float radius = ceil(0.5 * reach * u_scale);
+  // A sample that covers this pixel from in front is either near (its reach is the tile's dilated
+  // near CoC) or nearer to the focus than the pixel (so less blurred); a far sample counts only
+  // within the pixel's own radius. So the rings need reach no further than the larger of the two.
   float r_p = max(0.5 * abs(center.a) * u_scale, 0.5);
+  float radius = max(r_p, 0.5 * tile.r * u_scale);
   float far_weight = density(r_p);
   vec3 far_sum = center.rgb * far_weight;
   vec3 near_sum = vec3(0.0);
   float near_weight = 0.0;
+  // Every texel of the disc when they fit in the budget, else the rings scaled to the radius.
+  bool whole_disc = u_sample_count >= 256 || u_samples[256 + u_sample_count].z >= radius + 0.5;
   for (int i = 0; i < u_sample_count; ++i) {
-    vec4 s = u_rings[i];
-    ivec2 o = ivec2(floor(s.xy * radius + 0.5));
-    if (o == ivec2(0)) continue;
+    ivec2 o;
+    float area;
+    if (whole_disc) {
+      vec4 s = u_samples[256 + i];
+      if (s.z >= radius + 0.5) break;
+      o = ivec2(s.xy);
+      area = 1.0;
+    } else {
+      vec4 s = u_samples[i];
+      o = ivec2(floor(s.xy * radius + 0.5));
+      if (o == ivec2(0)) continue;
+      area = s.z * radius * radius;
+    }
     float d = length(vec2(o));
     vec4 q = texelFetch(u_work, clamp(p + o, ivec2(0), hi), 0);
-    float area = s.z * radius * radius;
     if (q.a < center.a) {
       float r_q = max(0.5 * abs(q.a) * u_scale, 0.5);
       float w = area * coverage(d, r_q) * density(r_q);

@@ -29,7 +29,8 @@ extern const char* const kTiles;
 // tiles -> dilated (r: largest near CoC within 5: int tiles each way, g: the tile's own |CoC|).
 extern const char* const kDilate;
 // work, dilated, color -> output (full) or blur (half; a = what the near field leaves visible).
-// Ring samples in the shader storage buffer at binding 0 (vec4: x, y, area, 0). 4: int sample
+// The samples in the shader storage buffer at binding 0 (vec4s: 256 ring samples x, y, area, then
+// dof_rings' 256 disc offsets x, y, length). 4: int sample
 // count, 5: float work pixels per frame pixel, 6: int work pixels per tile, 7: int full resolution.
 extern const char* const kGather;
 // color, depth, lens, work, blur, dilated -> output: the half-resolution gather over the sharp frame.

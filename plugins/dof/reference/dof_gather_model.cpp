@@ -67,23 +67,37 @@ double tile_reach(const Texture& dilated, int x, int y, int tile) {
   return std::max(t[0], t[1]);
 }
 
+double tile_near(const Texture& dilated, int x, int y, int tile) { return dilated.fetch(x / tile, y / tile)[0]; }
+
 // The gather of one work pixel: rgb and what the near field leaves visible.
-Texel gather(const GatherPlan& plan, const Texture& work, const std::vector<RingSample>& rings, double reach, int px,
-             int py) {
+Texel gather(const GatherPlan& plan, const Texture& work, const std::vector<RingSample>& rings, double near_reach,
+             int px, int py) {
   const double scale = plan.half ? 0.5 : 1.0;
-  const double radius = std::ceil(0.5 * reach * scale);
   const Texel& center = work.fetch(px, py);
   const double r_p = std::max(0.5 * std::fabs(center[3]) * scale, 0.5);
+  const double radius = std::max(r_p, 0.5 * near_reach * scale);
   double far_weight = density(r_p), near_weight = 0;
   double far_sum[3], near_sum[3] = {0, 0, 0};
   for (int k = 0; k < 3; ++k) far_sum[k] = center[k] * far_weight;
-  for (const RingSample& s : rings) {
-    const int ox = static_cast<int>(std::floor(double(s.x) * radius + 0.5));
-    const int oy = static_cast<int>(std::floor(double(s.y) * radius + 0.5));
-    if (ox == 0 && oy == 0) continue;
+  const std::vector<DiscOffset>& disc = disc_offsets();
+  const int count = static_cast<int>(rings.size());
+  const bool whole_disc = count >= kDiscOffsetCount || disc[count].length >= radius + 0.5;
+  for (int i = 0; i < count; ++i) {
+    int ox, oy;
+    double area;
+    if (whole_disc) {
+      if (disc[i].length >= radius + 0.5) break;
+      ox = disc[i].x;
+      oy = disc[i].y;
+      area = 1.0;
+    } else {
+      ox = static_cast<int>(std::floor(double(rings[i].x) * radius + 0.5));
+      oy = static_cast<int>(std::floor(double(rings[i].y) * radius + 0.5));
+      if (ox == 0 && oy == 0) continue;
+      area = double(rings[i].area) * radius * radius;
+    }
     const double d = std::hypot(double(ox), double(oy));
     const Texel& q = work.fetch(px + ox, py + oy);
-    const double area = double(s.area) * radius * radius;
     if (q[3] < center[3]) {
       const double r_q = std::max(0.5 * std::fabs(q[3]) * scale, 0.5);
       const double w = area * coverage(d, r_q) * density(r_q);
@@ -125,7 +139,7 @@ void evaluate_gather_model(const Settings& settings, const pfx_frame& frame, con
         const double reach = tile_reach(dilated, x, y, plan.tile);
         Texel out = sharp.fetch(x, y);
         if (reach >= 1.0) {
-          const Texel g = gather(plan, work, rings, reach, x, y);
+          const Texel g = gather(plan, work, rings, tile_near(dilated, x, y, plan.tile), x, y);
           for (int k = 0; k < 3; ++k) out[k] = g[k];
         }
         write(x, y, out);
@@ -137,7 +151,8 @@ void evaluate_gather_model(const Settings& settings, const pfx_frame& frame, con
     for (int x = 0; x < blur.width; ++x) {
       const double reach = tile_reach(dilated, x, y, plan.tile);
       const Texel& c = work.fetch(x, y);
-      blur.at(x, y) = reach < 1.0 ? Texel{c[0], c[1], c[2], 1.0} : gather(plan, work, rings, reach, x, y);
+      blur.at(x, y) = reach < 1.0 ? Texel{c[0], c[1], c[2], 1.0}
+                                  : gather(plan, work, rings, tile_near(dilated, x, y, plan.tile), x, y);
     }
   store_half(&blur);
   for (int y = 0; y < h; ++y)

@@ -40,12 +40,14 @@ const Box kBoxes[] = {
     {{1.6, -1.6, -16.0}, {4.0, 1.4, -14.0}, OBJECT_FAR_BOX},
 };
 
+// Bright enough to show bokeh, and a few pixels wide even at 192 px across, so the pinhole frame's
+// depth (taken at pixel centres) describes them.
 const Sphere kLights[] = {
-    {{0.55, 0.35, -2.2}, 0.012, {30, 24, 16}},    // near, in front of the focus
-    {{0.8, -0.6, -kSceneFocusDistance}, 0.02, {40, 40, 40}},  // in focus
-    {{-2.5, 1.2, -12.0}, 0.05, {20, 30, 60}},     // far
-    {{-1.2, 2.6, -39.9}, 0.15, {60, 40, 20}},     // on the wall
-    {{4.0, 3.0, -39.9}, 0.15, {50, 50, 50}},
+    {{0.55, 0.3, -2.2}, 0.04, {12, 10, 7}},                    // near, in front of the focus
+    {{0.85, -0.6, -kSceneFocusDistance}, 0.06, {16, 16, 16}},  // in focus
+    {{-2.5, 1.2, -12.0}, 0.15, {6, 9, 18}},                    // far
+    {{-1.2, 2.6, -39.6}, 0.4, {20, 14, 8}},                    // on the wall
+    {{4.0, 3.0, -39.6}, 0.4, {16, 16, 16}},
 };
 
 void shade(Hit* h) {
@@ -54,7 +56,7 @@ void shade(Hit* h) {
     case OBJECT_WALL: {
       // Smooth behind the subject, so what the subject hides is like what it does not; bold bars far
       // to the sides, where blur shows.
-      const double bar = (std::fabs(p.x) > 7.0 && std::fmod(std::fabs(p.x), 2.0) < 0.6) ? 0.35 : 0.0;
+      const double bar = (std::fabs(p.x) > 16.0 && std::fmod(std::fabs(p.x), 2.0) < 0.6) ? 0.35 : 0.0;
       h->rgb[0] = 0.10 + 0.04 * std::sin(0.2 * p.x) + bar;
       h->rgb[1] = 0.12 + 0.03 * std::cos(0.15 * p.y) + bar;
       h->rgb[2] = 0.18 + bar;
@@ -144,11 +146,17 @@ Hit trace(Vec o, Vec d) {
   return h;
 }
 
-// The pinhole ray through pixel (x, y) (rows bottom first), with dir.z = -1.
-Vec pixel_direction(const pfx_frame& frame, int x, int y) {
+// Both images integrate over each pixel's square through the same kGrid x kGrid points, so the two
+// agree wherever the lens does not matter (the plane in focus) and keep the energy of lights
+// smaller than a pixel.
+constexpr int kGrid = 4, kPixelSamples = kGrid * kGrid;
+
+// The pinhole ray through point `sample` of pixel (x, y) (rows bottom first), with dir.z = -1.
+Vec pixel_direction(const pfx_frame& frame, int x, int y, int sample) {
   const double ty = std::tan(0.5 * double(frame.camera.fovy));
   const double tx = ty * double(frame.camera.aspect);
-  return {(2.0 * (x + 0.5) / frame.width - 1.0) * tx, (2.0 * (y + 0.5) / frame.height - 1.0) * ty, -1.0};
+  const double sx = (sample % kGrid + 0.5) / kGrid, sy = (sample / kGrid + 0.5) / kGrid;
+  return {(2.0 * (x + sx) / frame.width - 1.0) * tx, (2.0 * (y + sy) / frame.height - 1.0) * ty, -1.0};
 }
 
 uint64_t mix64(uint64_t z) {  // splitmix64's finaliser
@@ -200,11 +208,20 @@ SceneFrame render_pinhole(const pfx_frame& frame) {
   out.object.assign(n, OBJECT_NONE);
   for_rows(out.height, [&](int y) {
     for (int x = 0; x < out.width; ++x) {
-      const Hit h = trace({0, 0, 0}, pixel_direction(frame, x, y));
+      // Colour: the mean over the pixel's square. Depth and object: the nearest of its points, so a
+      // pixel that a small bright object only partly covers still blurs as that object does.
       const size_t i = static_cast<size_t>(y) * out.width + x;
-      for (int k = 0; k < 3; ++k) out.rgba[i * 4 + k] = static_cast<float>(h.rgb[k]);
-      out.depth[i] = static_cast<float>(-h.point.z);
-      out.object[i] = h.object;
+      double sum[3] = {0, 0, 0}, nearest = HUGE_VAL;
+      for (int p = 0; p < kPixelSamples; ++p) {
+        const Hit sample = trace({0, 0, 0}, pixel_direction(frame, x, y, p));
+        for (int k = 0; k < 3; ++k) sum[k] += sample.rgb[k];
+        if (-sample.point.z < nearest) {
+          nearest = -sample.point.z;
+          out.object[i] = sample.object;
+        }
+      }
+      for (int k = 0; k < 3; ++k) out.rgba[i * 4 + k] = static_cast<float>(sum[k] / kPixelSamples);
+      out.depth[i] = static_cast<float>(nearest);
     }
   });
   return out;
@@ -214,11 +231,12 @@ std::vector<float> render_lens_truth(const pfx_frame& frame, double aperture_m, 
                                      int lens_samples, uint64_t seed) {
   const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
   std::vector<float> rgba(static_cast<size_t>(w) * h * 4, 1.0f);
-  const int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(double(lens_samples)))));
+  // A multiple of kGrid, so every point of the pixel's square gets the same number of lens samples.
+  int side = std::max(1, static_cast<int>(std::ceil(std::sqrt(double(lens_samples)))));
+  side = (side + kGrid - 1) / kGrid * kGrid;
   const double lens_radius = 0.5 * aperture_m;
   for_rows(h, [&](int y) {
     for (int x = 0; x < w; ++x) {
-      const Vec focus = pixel_direction(frame, x, y) * focus_distance_m;
       uint64_t state = mix64(seed ^ mix64((static_cast<uint64_t>(y) << 32) | static_cast<uint64_t>(x)));
       const double turn = 2 * M_PI * unit(state);
       const double c = std::cos(turn), s = std::sin(turn);
@@ -232,6 +250,10 @@ std::vector<float> render_lens_truth(const pfx_frame& frame, double aperture_m, 
           double lx, ly;
           concentric_disc(a, b, &lx, &ly);
           const Vec lens{lens_radius * (c * lx - s * ly), lens_radius * (s * lx + c * ly), 0.0};
+          // Each point of the pixel's square meets every fourth stratum of the lens each way, so
+          // lens samples from all over the aperture, and all points equally often.
+          const int point = (i % kGrid) + kGrid * (j % kGrid);
+          const Vec focus = pixel_direction(frame, x, y, point) * focus_distance_m;
           const Hit hit = trace(lens, focus - lens);
           for (int k = 0; k < 3; ++k) sum[k] += hit.rgb[k];
         }

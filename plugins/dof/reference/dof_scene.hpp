@@ -1,7 +1,8 @@
 // Ground truth for depth of field (issue 4, reference 1): a small synthetic 3D scene of planes,
 // boxes and bright spheres at known distances, rendered by casting rays in double precision.
 //
-// The pinhole frame (colour and linear depth) is what an engine would hand the effect. The truth is
+// The pinhole frame (colour and linear depth) is what an engine would hand the effect: colour
+// averaged over the pixel's square (4 x 4 points), depth and object of the nearest of them. The truth is
 // the same scene through a thin lens: every pixel averages rays from points spread over the lens
 // aperture to the point where the pixel's pinhole ray meets the plane in focus, which is what
 // rendering the scene once per lens point with the projection sheared to keep that plane fixed, and
@@ -44,8 +45,9 @@ struct SceneFrame {
 SceneFrame render_pinhole(const pfx_frame& frame);
 
 // The thin-lens truth: aperture diameter and focus distance in metres (dof_camera's Lens), lens
-// samples per pixel (stratified over the disc, turned per pixel so bokeh shows noise rather than
-// copies of one pattern), seed for that turn. Uses every hardware thread.
+// samples per pixel (rounded up to a square of a multiple of 4; stratified over the disc, turned
+// per pixel so bokeh shows noise rather than copies of one pattern, and paired with the pinhole's
+// 16 points in the pixel's square), seed for that turn. Uses every hardware thread.
 std::vector<float> render_lens_truth(const pfx_frame& frame, double aperture_m, double focus_distance_m,
                                      int lens_samples, uint64_t seed = 1);
 
