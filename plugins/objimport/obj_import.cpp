@@ -277,12 +277,14 @@ class Importer {
       for (uint32_t k = 0; k < face.corner_count; ++k) {
         for (int j = 0; j < 3; ++j, ++field) {
           uint32_t& value = chunk.corners[field];
-          if (j > 0 && value == kAbsent) {
+          // A relative index may be stored as 0 (it reaches back into an earlier chunk): only a
+          // field not marked relative can mean "absent".
+          const bool relative = field / 64 < chunk.relative_fields.size() &&
+                                (chunk.relative_fields[field / 64] >> (field % 64) & 1);
+          if (j > 0 && value == kAbsent && !relative) {
             value = kNoIndex;
             continue;
           }
-          const bool relative = field / 64 < chunk.relative_fields.size() &&
-                                (chunk.relative_fields[field / 64] >> (field % 64) & 1);
           int64_t one_based = relative ? int64_t{bases[j]} + static_cast<int32_t>(value) : int64_t{value};
           if (relative && one_based < 1) {
             result.failed = true;

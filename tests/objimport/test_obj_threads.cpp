@@ -105,3 +105,17 @@ TEST_CASE("obj threads: the first error in file order wins whatever the cut", "[
       CHECK(r.error == reference.error);
     }
 }
+
+TEST_CASE("obj threads: a relative index reaching exactly one chunk back (found by the fuzzer)", "[objimport][threads]") {
+  // With tiny chunks the face's chunk has no vn of its own, so "-1" is stored as position 0 of
+  // that chunk — which once read as "no normal" and gave the corner a generated one.
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 -1 0\nf 1//-1 2//-1 3//-1\n";
+  auto whole = import_text(text, 1, size_t{1} << 30);
+  REQUIRE(whole.ok);
+  CHECK(whole.mesh.normals == std::vector<float>{0, -1, 0, 0, -1, 0, 0, -1, 0});
+  for (size_t chunk : {size_t{1}, size_t{5}, size_t{11}}) {
+    auto cut = import_text(text, 2, chunk);
+    REQUIRE(cut.ok);
+    CHECK(cut.mesh.normals == whole.mesh.normals);
+  }
+}
