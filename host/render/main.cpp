@@ -14,6 +14,7 @@
 #include "cli_text.hpp"
 #include "demo_image.hpp"
 #include "demo_scene.hpp"
+#include "import_scene.hpp"
 #include "exr_io.hpp"
 #include "gbuffer.hpp"
 #include "headless_context.hpp"
@@ -158,8 +159,18 @@ int run(const RenderOptions& options) {
   Image input;
   pfx_frame frame{};
   host::FrameTextures textures;
-  if (options.demo) {
-    scene = make_demo_scene({options.extra_lights, options.seed});
+  if (options.demo || !options.scene.empty()) {
+    if (options.demo) {
+      scene = make_demo_scene({options.extra_lights, options.seed});
+    } else {
+      pfx::import::SceneImportOptions import_options;
+      import_options.seed = options.seed;
+      if (options.lights_given) import_options.lights = options.extra_lights;
+      std::vector<std::string> warnings;
+      if (!pfx::import::load_scene_from_model(registry, options.scene, import_options, &scene, &warnings, &message))
+        return error_exit(kBadInput, message);
+      for (const auto& warning : warnings) std::fprintf(stderr, "pfx-render: warning: %s\n", warning.c_str());
+    }
     apply_camera_keys(options, &scene.camera);
     if (!validate_scene(scene, &message)) return error_exit(kUsage, "--camera: " + message);
     scene_renderer = SceneRenderer::create(scene, &message);

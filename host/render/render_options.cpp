@@ -20,6 +20,7 @@ bool parse_count(const std::string& text, long long* out) {
 std::string render_usage() {
   return
       "usage: pfx-render [--plugins DIR]... (--demo [--lights N] [--seed S] | --demo-image\n"
+      "                  | --scene FILE.obj [--lights N] [--seed S]\n"
       "                  | --input IMG.exr [--depth DEPTH.exr]) [--size WxH]\n"
       "                  [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
       "                  [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
@@ -34,6 +35,10 @@ std::string render_usage() {
       "                       normal, albedo, emissive and the lights; --size WxH (default 1280x720)\n"
       "  --lights N           with --demo: N more lights at random inside the scene (default 0)\n"
       "  --seed S             with --demo: the seed of every random choice (default 1)\n"
+      "  --scene FILE.obj     a model imported through the importer plugins (pfx-import reads the\n"
+      "                       same), rendered like --demo: its materials (Kd, Ke, PNG map_Kd), the\n"
+      "                       demo's 400 lights spread through the model's box (--lights N: N instead),\n"
+      "                       a camera framing the model's bounds; --size WxH (default 1280x720)\n"
       "  --demo-image         the procedural HDR image (bright spots, fine detail, a depth ramp):\n"
       "                       colour and depth only, no lights\n"
       "  --input IMG.exr      an OpenEXR image: RGB(A) half or float; a Z channel is linear depth (m)\n"
@@ -90,6 +95,7 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     else if (arg == "--float") options.float_exr = true;
     else if (arg == "-v" || arg == "--verbose") options.verbose = true;
     else if (arg == "--input") { if (!value(&options.input)) return false; }
+    else if (arg == "--scene") { if (!value(&options.scene)) return false; }
     else if (arg == "--depth") { if (!value(&options.depth)) return false; }
     else if (arg == "--plugins") {
       if (!value(&text)) return false;
@@ -148,12 +154,13 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     *out = options;
     return true;
   }
-  if (int(options.demo) + int(options.demo_image) + int(!options.input.empty()) != 1)
-    return fail("give exactly one of --demo, --demo-image or --input IMG.exr");
+  if (int(options.demo) + int(options.demo_image) + int(!options.input.empty()) + int(!options.scene.empty()) != 1)
+    return fail("give exactly one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
   if (!options.depth.empty() && options.input.empty()) return fail("--depth goes with --input");
   if (options.size_given && !options.input.empty())
     return fail("--size applies to --demo and --demo-image (an input image has its own size)");
-  if ((options.lights_given || options.seed_given) && !options.demo) return fail("--lights and --seed go with --demo");
+  if ((options.lights_given || options.seed_given) && !options.demo && options.scene.empty())
+    return fail("--lights and --seed go with --demo or --scene");
   if (options.outputs.empty() && !options.json) return fail("nothing to do: give --out FILE and/or --json");
   *out = options;
   return true;

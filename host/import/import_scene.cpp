@@ -1,0 +1,135 @@
+#include "import_scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+#include "demo_scene.hpp"
+#include "png_io.hpp"
+
+namespace pfx::import {
+
+namespace {
+
+float srgb_to_linear(uint8_t code) {
+  const double c = code / 255.0;
+  return static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+}
+
+// map_Kd as a linear albedo texture, rows bottom first; -1 (and a warning) when it cannot be read.
+int load_texture(const std::string& path, pfx::app::Scene* scene, std::unordered_map<std::string, int>* loaded,
+                 std::vector<std::string>* warnings) {
+  if (auto it = loaded->find(path); it != loaded->end()) return it->second;
+  pfx::app::DisplayImage image;
+  std::string problem;
+  int index = -1;
+  if (pfx::app::read_png(path, &image, &problem)) {
+    pfx::app::AlbedoTexture texture;
+    texture.width = image.width;
+    texture.height = image.height;
+    texture.rgb.resize(size_t(image.width) * image.height * 3);
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x)
+        for (int c = 0; c < 3; ++c)
+          texture.rgb[(size_t(image.height - 1 - y) * image.width + x) * 3 + c] =
+              srgb_to_linear(image.pixels[(size_t(y) * image.width + x) * image.channels + c]);
+    scene->textures.push_back(std::move(texture));
+    index = static_cast<int>(scene->textures.size() - 1);
+  } else {
+    warnings->push_back(path + ": texture not used (" + problem + "; only PNG is read)");
+  }
+  (*loaded)[path] = index;
+  return index;
+}
+
+}  // namespace
+
+pfx::app::Camera frame_bounds(const float lo[3], const float hi[3], double fovy_radians) {
+  const glm::dvec3 low(lo[0], lo[1], lo[2]), high(hi[0], hi[1], hi[2]);
+  const glm::dvec3 center = (low + high) * 0.5;
+  const double radius = std::max(glm::length(high - low) * 0.5, 1e-3);
+  const double distance = radius / std::sin(fovy_radians * 0.5) * 1.05;
+  pfx::app::Camera camera;
+  camera.target = center;
+  camera.position = center + glm::normalize(glm::dvec3(0.45, 0.4, 1.0)) * distance;
+  camera.up = glm::dvec3(0, 1, 0);
+  camera.fovy_radians = fovy_radians;
+  camera.near_plane = std::max(distance - radius * 1.5, distance * 0.01);
+  camera.far_plane = distance + radius * 3.0;
+  return camera;
+}
+
+bool load_scene_from_model(const pfx::host::PluginRegistry& registry, const std::string& path,
+                           const SceneImportOptions& options, pfx::app::Scene* scene,
+                           std::vector<std::string>* warnings, std::string* error) {
+  const pfx::host::ImporterInfo* importer = registry.find_importer_for_path(path);
+  if (!importer) {
+    *error = path + ": no importer plugin takes this file's extension";
+    return false;
+  }
+  pfx_import_request request{};
+  request.struct_size = sizeof request;
+  request.path = path.c_str();
+  request.threads = options.threads;
+  pfx_import_result* result = nullptr;
+  importer->desc->import(&request, &result);
+  if (!result || result->status != PFX_OK) {
+    *error = result && result->error ? result->error : path + ": import failed";
+    importer->desc->release(result);
+    return false;
+  }
+  const pfx_import_result& r = *result;
+  for (uint32_t i = 0; i < r.warning_count; ++i) warnings->push_back(r.warnings[i]);
+
+  pfx::app::Scene out;
+  // Scene material i + 1 is the file's material i; 0 is the default for faces without one.
+  out.materials.push_back(pfx::app::Material{});
+  std::unordered_map<std::string, int> textures;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(r.materials);
+  for (uint32_t m = 0; m < r.material_count; ++m) {
+    const auto& material = *reinterpret_cast<const pfx_import_material*>(bytes + size_t{m} * r.materials[0].struct_size);
+    pfx::app::Material scene_material;
+    scene_material.albedo = glm::vec3(material.diffuse[0], material.diffuse[1], material.diffuse[2]);
+    scene_material.emissive = glm::vec3(material.emissive[0], material.emissive[1], material.emissive[2]);
+    if (material.diffuse_map && r.texcoords)
+      scene_material.albedo_texture = load_texture(material.diffuse_map, &out, &textures, warnings);
+    out.materials.push_back(scene_material);
+  }
+  // One mesh per sub-mesh, holding only the vertices it uses.
+  for (uint32_t s = 0; s < r.submesh_count; ++s) {
+    const pfx_import_submesh& sub = r.submeshes[s];
+    pfx::app::Mesh mesh;
+    mesh.material = sub.material == PFX_IMPORT_NONE ? 0 : static_cast<int>(sub.material) + 1;
+    std::unordered_map<uint32_t, uint32_t> local;
+    for (uint32_t k = 0; k < sub.index_count; ++k) {
+      const uint32_t v = r.indices[sub.first_index + k];
+      auto [it, fresh] = local.emplace(v, static_cast<uint32_t>(mesh.positions.size()));
+      if (fresh) {
+        mesh.positions.emplace_back(r.positions[3 * size_t{v}], r.positions[3 * size_t{v} + 1], r.positions[3 * size_t{v} + 2]);
+        glm::vec3 n(r.normals[3 * size_t{v}], r.normals[3 * size_t{v} + 1], r.normals[3 * size_t{v} + 2]);
+        const float length = glm::length(n);
+        mesh.normals.push_back(length > 0 && std::isfinite(length) ? n / length : glm::vec3(0, 0, 1));
+        mesh.uvs.emplace_back(r.texcoords ? glm::vec2(r.texcoords[2 * size_t{v}], r.texcoords[2 * size_t{v} + 1]) : glm::vec2(0));
+      }
+      mesh.indices.push_back(it->second);
+    }
+    out.meshes.push_back(std::move(mesh));
+  }
+  const float lo[3] = {r.bounds_min[0], r.bounds_min[1], r.bounds_min[2]};
+  const float hi[3] = {r.bounds_max[0], r.bounds_max[1], r.bounds_max[2]};
+  importer->desc->release(result);
+
+  pfx::app::update_bounds(&out);
+  // The demo's lights (its colours and intensities) spread through the model's box, grown by a
+  // tenth on every side so the outer faces are lit too.
+  const glm::vec3 low(lo[0], lo[1], lo[2]), high(hi[0], hi[1], hi[2]);
+  const glm::vec3 margin = (high - low) * 0.1f;
+  pfx::app::add_random_lights(&out, options.lights, low - margin, high + margin, options.seed);
+  out.camera = frame_bounds(lo, hi, options.fovy_degrees * M_PI / 180.0);
+  *scene = std::move(out);
+  return true;
+}
+
+}  // namespace pfx::import
