@@ -10,14 +10,17 @@ namespace pfx::bench {
 std::string bench_usage() {
   return
       "usage: pfx-bench [--plugins DIR]... [--out DIR] [--sizes WxH,...] [--frames N] [--warmup N]\n"
-      "                 [--effects a,b,...] [--suite FILE] [--timing auto|gpu|finish] [--quick]\n"
+      "                 [--effects a,b,...] [--suite FILE] [--set E.P=V]... [--timing auto|gpu|finish]\n"
+      "                 [--input FRAME.exr [--truth TRUTH.exr [--halo-mask MASK.exr]]]... [--camera ...]\n"
+      "                 [--halo-tolerance T] [--quick]\n"
       "\n"
       "Measures, in one process and one run, a plain full-screen copy pass at each size (the unit),\n"
       "then every effect at every setting of the suite: median time over --frames frames after\n"
       "--warmup frames, ratio to the copy pass, peak target bytes, time per pass, and the error\n"
       "against the effect's CPU references where its plugin ships them (pfx/reference.h).\n"
       "Writes DIR/bench.json, DIR/bench.md (tables) and DIR/error_vs_time.png (gnuplot; only when\n"
-      "some effect has an ideal reference). The input is the built-in demo image at each size.\n"
+      "some effect has an ideal reference or a truth is given). The input is the built-in demo image\n"
+      "at each size, or the --input frames.\n"
       "\n"
       "  --plugins DIR     plugin folder (repeatable; default: the one next to this program's folder)\n"
       "  --out DIR         output folder (default out/bench)\n"
@@ -26,6 +29,17 @@ std::string bench_usage() {
       "  --effects LIST    only these effects\n"
       "  --suite FILE      rows to run, one per line: EFFECT [param=value ...] ('#' comments);\n"
       "                    default: the built-in suite; loaded effects it does not name run at defaults\n"
+      "  --set E.P=V       set parameter P of effect E in every row, before the row's own settings\n"
+      "  --input FRAME.exr measure on this frame (repeatable; replaces --sizes): RGB(A), and its Z\n"
+      "                    channel as linear depth (m)\n"
+      "  --camera K=V,...  the camera the effects see: fovy (degrees, default 45), near (0.1), far\n"
+      "                    (1000 or inf), as pfx-render takes it\n"
+      "  --truth FILE.exr  per --input, in order: what every output should ideally be (e.g. a\n"
+      "                    lens-sampled render); adds 'error vs truth' (relative RMSE / max) per row,\n"
+      "                    which the plot then shows\n"
+      "  --halo-mask FILE  per --input, in order (needs --truth): an object (R > 0.5) whose halo is\n"
+      "                    measured: how many 1 px rings just outside it have a mean error against the\n"
+      "                    truth (largest of R, G, B) above --halo-tolerance (default 0.05)\n"
       "  --timing MODE     auto (default: glFinish + CPU clock on a software renderer, whose GL\n"
       "                    timestamps are taken when commands are queued; GL timestamps elsewhere)\n"
       "  --quick           one size (640x360), 5 frames, 2 warm-up: a smoke test under a minute\n"
@@ -33,7 +47,7 @@ std::string bench_usage() {
       "pfx-bench --import ... measures the OBJ importer against tinyobjloader and assimp instead\n"
       "(no GL; see pfx-bench --import --help).\n"
       "\n"
-      "exit codes: 0 ok, 1 internal error, 2 usage, 4 plugin or effect error\n";
+      "exit codes: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 plugin or effect error\n";
 }
 
 bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out, std::string* error) {
@@ -65,6 +79,19 @@ bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out
     else if (arg == "--out") { if (!value()) return false; options.out_dir = text; }
     else if (arg == "--suite") { if (!value()) return false; options.suite_file = text; }
     else if (arg == "--effects") { if (!value()) return false; options.effects = pfx::app::split_list(text); }
+    else if (arg == "--set") { if (!value()) return false; options.sets.push_back(text); }
+    else if (arg == "--input") { if (!value()) return false; options.inputs.push_back(text); }
+    else if (arg == "--truth") { if (!value()) return false; options.truths.push_back(text); }
+    else if (arg == "--halo-mask") { if (!value()) return false; options.halo_masks.push_back(text); }
+    else if (arg == "--camera") {
+      if (!value() || !pfx::app::parse_camera_options(text, &options.camera, error)) return false;
+    } else if (arg == "--halo-tolerance") {
+      if (!value()) return false;
+      char* end = nullptr;
+      options.halo_tolerance = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end || !(options.halo_tolerance >= 0))
+        return fail("--halo-tolerance " + text + ": expected a number >= 0");
+    }
     else if (arg == "--frames") { if (!count(&options.frames, 1)) return false; frames_given = true; }
     else if (arg == "--warmup") { if (!count(&options.warmup, 0)) return false; warmup_given = true; }
     else if (arg == "--timing") {
@@ -85,8 +112,14 @@ bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out
       return fail("unknown option '" + arg + "' (see --help)");
     }
   }
+  if (!options.inputs.empty() && sizes_given) return fail("--sizes and --input exclude each other (an input has its size)");
+  if (!options.truths.empty() && options.truths.size() != options.inputs.size())
+    return fail("give one --truth per --input (" + std::to_string(options.inputs.size()) + " inputs, " +
+                std::to_string(options.truths.size()) + " truths)");
+  if (!options.halo_masks.empty() && options.halo_masks.size() != options.truths.size())
+    return fail("give one --halo-mask per --truth");
   if (options.quick) {
-    if (!sizes_given) options.sizes = {{640, 360}};
+    if (!sizes_given && options.inputs.empty()) options.sizes = {{640, 360}};
     if (!frames_given) options.frames = 5;
     if (!warmup_given) options.warmup = 2;
   }

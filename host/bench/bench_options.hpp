@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "camera_options.hpp"
+
 namespace pfx::bench {
 
 struct BenchOptions {
@@ -17,6 +19,13 @@ struct BenchOptions {
   std::string suite_file;            // empty: the built-in suite
   bool quick = false;
   std::string timing = "auto";
+  // --input (repeatable): frames to measure on instead of the demo image at each size; an EXR's Z
+  // channel is linear depth. --truth and --halo-mask give, per input in the same order, the image
+  // every output should ideally be and the object (R > 0.5) whose halo is measured.
+  std::vector<std::string> inputs, truths, halo_masks;
+  double halo_tolerance = 0.05;
+  pfx::app::CameraOptions camera;    // --camera fovy=..,near=..,far=..
+  std::vector<std::string> sets;     // --set effect.param=value, applied to every row first
 };
 
 bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out, std::string* error);

@@ -52,7 +52,7 @@ bool write_bench_json(const BenchResults& results, const std::string& path, std:
   root["warmup"] = results.warmup;
   root["units"] = nlohmann::ordered_json::array();
   for (const auto& unit : results.units)
-    root["units"].push_back({{"width", unit.width}, {"height", unit.height}, {"copy_ms", unit.copy_ms}});
+    root["units"].push_back({{"width", unit.width}, {"height", unit.height}, {"source", unit.source}, {"copy_ms", unit.copy_ms}});
   root["rows"] = nlohmann::ordered_json::array();
   for (const auto& row : results.rows) {
     nlohmann::ordered_json r;
@@ -68,6 +68,8 @@ bool write_bench_json(const BenchResults& results, const std::string& path, std:
     for (const auto& pass : row.passes) r["passes"].push_back({{"pass", pass.pass}, {"median_ms", pass.median_ms}});
     r["error_model"] = metrics_json(row.error_model);
     r["error_ideal"] = metrics_json(row.error_ideal);
+    if (row.error_truth) r["error_truth"] = metrics_json(row.error_truth);
+    if (row.halo_px) r["halo_px"] = *row.halo_px;
     if (!row.note.empty()) r["note"] = row.note;
     root["rows"].push_back(r);
   }
@@ -80,16 +82,23 @@ std::string bench_markdown(const BenchResults& results) {
                    std::to_string(results.frames) + " frames after " + std::to_string(results.warmup) +
                    " warm-up frames. Ratios are to a plain full-screen copy pass at the same size in the same run.\n\n";
   for (const auto& unit : results.units) {
-    md += "## " + std::to_string(unit.width) + "x" + std::to_string(unit.height) + " — copy pass " +
-          fixed(unit.copy_ms, 3) + " ms\n\n";
-    md += "| effect | settings | passes | median ms | x copy | peak target bytes | error vs model (rel RMSE / max) | error vs ideal (rel RMSE / max) |\n";
-    md += "|---|---|---:|---:|---:|---:|---|---|\n";
+    md += "## " + std::to_string(unit.width) + "x" + std::to_string(unit.height) +
+          (unit.source.empty() ? std::string() : ", " + unit.source) + " — copy pass " + fixed(unit.copy_ms, 3) +
+          " ms\n\n";
+    bool truth = false, halo = false;
+    for (const auto& row : results.rows)
+      if (row.width == unit.width && row.height == unit.height) truth |= bool(row.error_truth), halo |= bool(row.halo_px);
+    md += "| effect | settings | passes | median ms | x copy | peak target bytes | error vs model (rel RMSE / max) | "
+          "error vs ideal (rel RMSE / max) |" +
+          std::string(truth ? " error vs truth (rel RMSE / max) |" : "") + (halo ? " halo px |" : "") + "\n";
+    md += "|---|---|---:|---:|---:|---:|---|---|" + std::string(truth ? "---|" : "") + (halo ? "---:|" : "") + "\n";
     for (const auto& row : results.rows) {
       if (row.width != unit.width || row.height != unit.height) continue;
       md += "| " + row.effect + " | " + row.settings + (row.note.empty() ? "" : " (" + row.note + ")") + " | " +
             std::to_string(row.pass_count) + " | " + fixed(row.median_ms, 3) + " | " + fixed(row.ratio_to_copy, 2) +
             " | " + std::to_string(row.peak_target_bytes) + " | " + error_cell(row.error_model) + " | " +
-            error_cell(row.error_ideal) + " |\n";
+            error_cell(row.error_ideal) + " |" + (truth ? " " + error_cell(row.error_truth) + " |" : "") +
+            (halo ? " " + (row.halo_px ? std::to_string(*row.halo_px) : std::string("—")) + " |" : "") + "\n";
     }
     md += "\n";
   }
@@ -105,18 +114,27 @@ bool write_bench_markdown(const BenchResults& results, const std::string& path, 
 }
 
 bool write_error_plot(const BenchResults& results, const std::string& path, std::string* error, std::string* skipped) {
-  // One curve per effect and size: (ratio to copy, relative RMSE against the ideal).
+  // One curve per effect, mode (a "mode=" setting) and size: (ratio to copy, relative RMSE against
+  // the ground truth where one was given, else against the ideal reference).
+  bool truth = false;
+  for (const auto& row : results.rows) truth |= bool(row.error_truth);
   std::map<std::string, std::vector<std::pair<double, double>>> curves;
-  for (const auto& row : results.rows)
-    if (row.error_ideal)
-      curves[row.effect + " " + std::to_string(row.width) + "x" + std::to_string(row.height)].push_back(
-          {row.ratio_to_copy, row.error_ideal->relative_rmse});
+  for (const auto& row : results.rows) {
+    const std::optional<ErrorMetrics>& error = truth ? row.error_truth : row.error_ideal;
+    if (!error) continue;
+    std::string mode;
+    const size_t at = row.settings.find("mode=");
+    if (at != std::string::npos) mode = " " + row.settings.substr(at + 5, row.settings.find(' ', at) - at - 5);
+    curves[row.effect + mode + " " + std::to_string(row.width) + "x" + std::to_string(row.height)].push_back(
+        {row.ratio_to_copy, error->relative_rmse});
+  }
   if (curves.empty()) {
     *skipped = "no effect has an ideal CPU reference yet: no error-against-time plot";
     return true;
   }
   std::string script = "set terminal pngcairo size 900,600\nset output '__OUT__'\n"
-                       "set xlabel 'time (x plain copy pass)'\nset ylabel 'relative RMSE vs ideal'\n"
+                       "set xlabel 'time (x plain copy pass)'\nset ylabel 'relative RMSE vs " +
+                       std::string(truth ? "ground truth" : "ideal") + "'\n"
                        "set logscale y\nset grid\nset key outside right\nset title '" + results.renderer + "'\nplot ";
   std::string data;
   bool first = true;

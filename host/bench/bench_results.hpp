@@ -24,11 +24,14 @@ struct BenchRow {
   int pass_count = 0;
   std::vector<PassMedian> passes;
   std::optional<ErrorMetrics> error_model, error_ideal;
+  std::optional<ErrorMetrics> error_truth;  // against --truth
+  std::optional<int> halo_px;               // with --halo-mask
   std::string note;  // e.g. "no-op with these settings"
 };
 
 struct SizeUnit {
   int width = 0, height = 0;
+  std::string source;  // "demo image" or the --input file
   double copy_ms = 0;  // median of the plain copy pass
 };
 

@@ -10,7 +10,7 @@
 
 #include "camera_options.hpp"
 #include "copy_pass.hpp"
-#include "demo_image.hpp"
+#include "halo_width.hpp"
 #include "image_texture.hpp"
 
 namespace pfx::bench {
@@ -57,28 +57,38 @@ std::vector<float> read_back(uint32_t texture, int w, int h) {
 }  // namespace
 
 BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegistry& registry,
-                       const std::string& renderer, const std::vector<SuiteRow>& rows) {
+                       const std::string& renderer, const std::vector<SuiteRow>& rows,
+                       const std::vector<BenchFrame>& frames) {
   BenchResults results;
   results.renderer = renderer;
   results.frames = options.frames;
   results.warmup = options.warmup;
 
-  for (const auto& [width, height] : options.sizes) {
-    pfx::app::Image demo = pfx::app::make_demo_image(width, height);
-    const uint32_t color = pfx::app::upload_color_texture(demo);
-    const uint32_t depth = pfx::app::upload_depth_texture(demo);
+  for (const BenchFrame& input : frames) {
+    const pfx::app::Image& image = input.image;
+    const int width = image.width, height = image.height;
+    const uint32_t color = pfx::app::upload_color_texture(image);
+    const uint32_t depth = pfx::app::upload_depth_texture(image);
     const uint32_t output = pfx::app::create_color_texture(width, height);
-    // Bottom-first copies of the input for the CPU references (pfx/reference.h).
-    const std::vector<float> color_gl = pfx::app::flip_rows(demo.rgba, width, height, 4);
-    const std::vector<float> depth_gl = pfx::app::flip_rows(demo.depth, width, height, 1);
+    // Bottom-first copies of the input for the CPU references (pfx/reference.h), and of the truth
+    // and halo mask for comparing with outputs read back from GL.
+    const std::vector<float> color_gl = pfx::app::flip_rows(image.rgba, width, height, 4);
+    const std::vector<float> depth_gl =
+        image.depth.empty() ? std::vector<float>() : pfx::app::flip_rows(image.depth, width, height, 1);
+    const std::vector<float> truth_gl =
+        input.truth.empty() ? std::vector<float>() : pfx::app::flip_rows(input.truth, width, height, 4);
+    std::vector<uint8_t> mask_gl(input.halo_mask.size());
+    for (int y = 0; y < height && !mask_gl.empty(); ++y)
+      std::copy_n(input.halo_mask.begin() + static_cast<long>(y) * width, width,
+                  mask_gl.begin() + static_cast<long>(height - 1 - y) * width);
 
     pfx_frame frame{};
     frame.struct_size = sizeof frame;
     frame.width = static_cast<uint32_t>(width);
     frame.height = static_cast<uint32_t>(height);
-    frame.inputs = PFX_INPUT_COLOR | PFX_INPUT_DEPTH;
-    frame.depth_encoding = PFX_DEPTH_LINEAR;
-    frame.camera = pfx::app::make_camera(pfx::app::CameraOptions{}, width, height);
+    frame.inputs = PFX_INPUT_COLOR | (image.has_depth() ? static_cast<uint32_t>(PFX_INPUT_DEPTH) : 0u);
+    frame.depth_encoding = image.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
+    frame.camera = pfx::app::make_camera(options.camera, width, height);
     frame.light_struct_size = sizeof(pfx_light);
     pfx::host::FrameTextures textures;
     textures.color = color;
@@ -97,7 +107,7 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
         double ms = time_copy(copy, color, output, width, height, timing);
         if (i >= options.warmup) times.push_back(ms);
       }
-      results.units.push_back({width, height, median(times)});
+      results.units.push_back({width, height, input.source, median(times)});
       std::fprintf(stderr, "pfx-bench: %dx%d copy pass %.3f ms\n", width, height, results.units.back().copy_ms);
     }
     const double copy_ms = results.units.back().copy_ms;
@@ -112,8 +122,10 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
       for (const auto& effect : registry.effects()) params.add_effect(effect.desc);
       std::string message;
       bool settings_ok = true;
-      for (const auto& setting : suite_row.settings)
-        if (!params.set_assignment(suite_row.effect + "." + setting, &message)) {
+      std::vector<std::string> assignments = options.sets;
+      for (const auto& setting : suite_row.settings) assignments.push_back(suite_row.effect + "." + setting);
+      for (const auto& assignment : assignments)
+        if (!params.set_assignment(assignment, &message)) {
           results.notes.push_back("row '" + suite_row.effect + " " + row.settings + "' skipped: " + message);
           settings_ok = false;
           break;
@@ -154,6 +166,12 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
 
       const pfx::host::EffectInfo* info = registry.find_effect(suite_row.effect);
       const pfx_reference_factory* references = info ? info->plugin->references : nullptr;
+      if (!truth_gl.empty()) {
+        const std::vector<float> out = read_back(output, width, height);
+        row.error_truth = compare_rgb(out, truth_gl);
+        if (!mask_gl.empty())
+          row.halo_px = measure_halo(out, truth_gl, mask_gl, width, height, options.halo_tolerance).width;
+      }
       if (references) {
         const std::vector<float> out = read_back(output, width, height);
         for (pfx_reference_kind kind : {PFX_REFERENCE_MODEL, PFX_REFERENCE_IDEAL}) {
@@ -166,7 +184,7 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
           request.frame = &frame;
           request.params = params.values(suite_row.effect);
           request.color = color_gl.data();
-          request.depth = depth_gl.data();
+          request.depth = depth_gl.empty() ? nullptr : depth_gl.data();
           request.output = expected.data();
           if (references->evaluate(&request) != PFX_OK) {
             results.notes.push_back("reference of '" + suite_row.effect + "' failed for " + row.settings);

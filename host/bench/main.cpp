@@ -74,6 +74,8 @@ int main(int argc, char** argv) {
   }
   std::vector<SuiteRow> suite;
   if (!parse_suite(suite_text, &suite, &message)) return error_exit(2, message);
+  std::vector<BenchFrame> frames;
+  if (!make_bench_frames(options, &frames, &message)) return error_exit(3, message);
 
   auto context = pfx::app::HeadlessContext::create(&message);
   if (!context) return error_exit(1, message);
@@ -87,7 +89,12 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> notes;
   std::vector<SuiteRow> rows = select_rows(suite, registry, options.effects, &notes);
-  BenchResults results = run_bench(options, registry, context->renderer(), rows);
+  BenchResults results = run_bench(options, registry, context->renderer(), rows, frames);
+  if (!options.sets.empty()) {
+    std::string all;
+    for (const auto& set : options.sets) all += (all.empty() ? "" : ", ") + set;
+    notes.push_back("set in every row: " + all);
+  }
   results.notes.insert(results.notes.begin(), notes.begin(), notes.end());
   if (rows.empty()) results.notes.push_back("no effect loaded: only the copy pass was measured");
 

@@ -12,6 +12,7 @@
 
 #include "bench_report.hpp"
 #include "error_metrics.hpp"
+#include "exr_io.hpp"
 #include "suite.hpp"
 
 namespace fs = std::filesystem;
@@ -63,4 +64,49 @@ TEST_CASE("relative RMSE and max error against a reference", "[bench]") {
   CHECK(metrics.max_abs == 1.0);
   output[0] = std::nanf("");
   CHECK(pfx::bench::compare_rgb(output, reference).nonfinite == 1);
+}
+
+TEST_CASE("bench on input frames with a ground truth and a halo mask", "[bench]") {
+  const fs::path dir = fs::temp_directory_path() / ("pfx-bench-input-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  pfx::app::Image frame, mask;
+  frame.width = mask.width = 24;
+  frame.height = mask.height = 16;
+  frame.rgba.assign(frame.pixel_count() * 4, 0.5f);
+  frame.depth.assign(frame.pixel_count(), 3.0f);
+  mask.rgba.assign(mask.pixel_count() * 4, 0.0f);
+  for (int y = 4; y < 12; ++y)
+    for (int x = 8; x < 16; ++x) mask.rgba[(y * 24 + x) * 4] = 1.0f;
+  std::string error;
+  REQUIRE(pfx::app::write_exr((dir / "frame.exr").string(), frame, pfx::app::ExrPixelType::Float, &error));
+  REQUIRE(pfx::app::write_exr((dir / "mask.exr").string(), mask, pfx::app::ExrPixelType::Float, &error));
+  const std::string base = std::string(PFX_BENCH) + " --frames 2 --warmup 0 --plugins " PFX_TEST_PLUGIN_DIR " --out " +
+                           (dir / "out").string() + " --input " + (dir / "frame.exr").string();
+  // The frame is its own truth: an effect that changes nothing has no error and no halo.
+  int status = std::system((base + " --truth " + (dir / "frame.exr").string() + " --halo-mask " +
+                            (dir / "mask.exr").string() + " --set gain.gain=1 > /dev/null 2>&1").c_str());
+  REQUIRE(WIFEXITED(status));
+  REQUIRE(WEXITSTATUS(status) == 0);
+  std::ifstream in(dir / "out" / "bench.json");
+  auto json = nlohmann::json::parse(in);
+  REQUIRE(json["units"].size() == 1);
+  CHECK(json["units"][0]["width"] == 24);
+  CHECK(json["units"][0]["source"] == (dir / "frame.exr").string());
+  bool saw_gain = false;
+  for (const auto& row : json["rows"]) {
+    REQUIRE(row.contains("error_truth"));
+    REQUIRE(row.contains("halo_px"));
+    if (row["effect"] == "gain") {
+      saw_gain = true;
+      CHECK(row["error_truth"]["relative_rmse"] == 0.0);
+      CHECK(row["halo_px"] == 0);
+    }
+  }
+  CHECK(saw_gain);
+  // A missing input is a bad input file (3); a truth per input is required (2).
+  status = std::system((std::string(PFX_BENCH) + " --input " + (dir / "nope.exr").string() + " > /dev/null 2>&1").c_str());
+  CHECK(WEXITSTATUS(status) == 3);
+  status = std::system((base + " --truth a.exr --truth b.exr > /dev/null 2>&1").c_str());
+  CHECK(WEXITSTATUS(status) == 2);
+  fs::remove_all(dir);
 }
