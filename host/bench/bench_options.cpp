@@ -12,15 +12,19 @@ std::string bench_usage() {
       "usage: pfx-bench [--plugins DIR]... [--out DIR] [--sizes WxH,...] [--frames N] [--warmup N]\n"
       "                 [--effects a,b,...] [--suite FILE] [--set E.P=V]... [--timing auto|gpu|finish]\n"
       "                 [--input FRAME.exr [--truth TRUTH.exr [--halo-mask MASK.exr]]]... [--camera ...]\n"
-      "                 [--halo-tolerance T] [--quick]\n"
+      "                 [--halo-tolerance T] [--quick] [--no-shift]\n"
       "\n"
       "Measures, in one process and one run, a plain full-screen copy pass at each size (the unit),\n"
       "then every effect at every setting of the suite: median time over --frames frames after\n"
-      "--warmup frames, ratio to the copy pass, peak target bytes, time per pass, and the error\n"
-      "against the effect's CPU references where its plugin ships them (pfx/reference.h).\n"
+      "--warmup frames, ratio to the copy pass, peak target bytes, time per pass, the error\n"
+      "against the effect's CPU references where its plugin ships them (pfx/reference.h), relative\n"
+      "to the whole frame and to the change the reference makes, and shift invariance: one bright\n"
+      "pixel on black moved over 16 positions, the spread of the light added (coefficient of\n"
+      "variation) and of the aligned responses (relative RMS).\n"
       "Writes DIR/bench.json, DIR/bench.md (tables) and DIR/error_vs_time.png (gnuplot; only when\n"
-      "some effect has an ideal reference or a truth is given). The input is the built-in demo image\n"
-      "at each size, or the --input frames.\n"
+      "some effect has an ideal reference or a truth is given: error against time, one curve per\n"
+      "effect, mode and size). The input is the built-in demo image at each size, or the --input\n"
+      "frames.\n"
       "\n"
       "  --plugins DIR     plugin folder (repeatable; default: the one next to this program's folder)\n"
       "  --out DIR         output folder (default out/bench)\n"
@@ -43,6 +47,7 @@ std::string bench_usage() {
       "  --timing MODE     auto (default: glFinish + CPU clock on a software renderer, whose GL\n"
       "                    timestamps are taken when commands are queued; GL timestamps elsewhere)\n"
       "  --quick           one size (640x360), 5 frames, 2 warm-up: a smoke test under a minute\n"
+      "  --no-shift        skip the shift-invariance probe (16 extra frames per row)\n"
       "\n"
       "pfx-bench --import ... measures the OBJ importer against tinyobjloader and assimp instead\n"
       "(no GL; see pfx-bench --import --help).\n"
@@ -75,6 +80,7 @@ bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out
     };
     if (arg == "-h" || arg == "--help") options.help = true;
     else if (arg == "--quick") options.quick = true;
+    else if (arg == "--no-shift") options.shift = false;
     else if (arg == "--plugins") { if (!value()) return false; options.plugin_dirs.push_back(text); }
     else if (arg == "--out") { if (!value()) return false; options.out_dir = text; }
     else if (arg == "--suite") { if (!value()) return false; options.suite_file = text; }

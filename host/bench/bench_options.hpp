@@ -18,6 +18,7 @@ struct BenchOptions {
   std::vector<std::string> effects;  // empty: every loaded effect
   std::string suite_file;            // empty: the built-in suite
   bool quick = false;
+  bool shift = true;                 // measure shift invariance per row (--no-shift: skip)
   std::string timing = "auto";
   // --input (repeatable): frames to measure on instead of the demo image at each size; an EXR's Z
   // channel is linear depth. --truth and --halo-mask give, per input in the same order, the image

@@ -1,5 +1,6 @@
 #include "bench_report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -26,7 +27,11 @@ bool write_text(const std::string& path, const std::string& text, std::string* e
 
 nlohmann::ordered_json metrics_json(const std::optional<ErrorMetrics>& m) {
   if (!m) return nullptr;
-  return {{"relative_rmse", m->relative_rmse}, {"max_abs", m->max_abs}, {"nonfinite", m->nonfinite}};
+  nlohmann::ordered_json j = {{"relative_rmse", m->relative_rmse}};
+  if (m->change_relative_rmse >= 0) j["change_relative_rmse"] = m->change_relative_rmse;
+  j["max_abs"] = m->max_abs;
+  j["nonfinite"] = m->nonfinite;
+  return j;
 }
 
 std::string fixed(double value, int digits) {
@@ -37,9 +42,24 @@ std::string fixed(double value, int digits) {
 
 std::string error_cell(const std::optional<ErrorMetrics>& m) {
   if (!m) return "—";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.3g / %.3g", m->relative_rmse, m->max_abs);
+  char buffer[96];
+  if (m->change_relative_rmse >= 0)
+    std::snprintf(buffer, sizeof buffer, "%.3g / %.3g / %.3g", m->relative_rmse, m->change_relative_rmse, m->max_abs);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.3g / — / %.3g", m->relative_rmse, m->max_abs);
   return buffer;
+}
+
+std::string shift_cell(const std::optional<ShiftFigures>& f) {
+  if (!f) return "—";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.2g / %.3g", f->energy_cv, f->shape_rms);
+  return buffer;
+}
+
+// The error a plot shows: relative to the change the reference makes, where there is one.
+double plotted_error(const ErrorMetrics& m) {
+  return m.change_relative_rmse > 0 ? m.change_relative_rmse : m.relative_rmse;
 }
 
 }  // namespace
@@ -70,6 +90,7 @@ bool write_bench_json(const BenchResults& results, const std::string& path, std:
     r["error_ideal"] = metrics_json(row.error_ideal);
     if (row.error_truth) r["error_truth"] = metrics_json(row.error_truth);
     if (row.halo_px) r["halo_px"] = *row.halo_px;
+    if (row.shift) r["shift"] = {{"energy_cv", row.shift->energy_cv}, {"shape_rms", row.shift->shape_rms}};
     if (!row.note.empty()) r["note"] = row.note;
     root["rows"].push_back(r);
   }
@@ -88,17 +109,19 @@ std::string bench_markdown(const BenchResults& results) {
     bool truth = false, halo = false;
     for (const auto& row : results.rows)
       if (row.width == unit.width && row.height == unit.height) truth |= bool(row.error_truth), halo |= bool(row.halo_px);
-    md += "| effect | settings | passes | median ms | x copy | peak target bytes | error vs model (rel RMSE / max) | "
-          "error vs ideal (rel RMSE / max) |" +
-          std::string(truth ? " error vs truth (rel RMSE / max) |" : "") + (halo ? " halo px |" : "") + "\n";
-    md += "|---|---|---:|---:|---:|---:|---|---|" + std::string(truth ? "---|" : "") + (halo ? "---:|" : "") + "\n";
+    md += "| effect | settings | passes | median ms | x copy | peak target bytes | error vs model (rel RMSE / of change / max) | "
+          "error vs ideal (rel RMSE / of change / max) |" +
+          std::string(truth ? " error vs truth (rel RMSE / of change / max) |" : "") + (halo ? " halo px |" : "") +
+          " shift (energy CV / shape RMS) |\n";
+    md += "|---|---|---:|---:|---:|---:|---|---|" + std::string(truth ? "---|" : "") + (halo ? "---:|" : "") + "---|\n";
     for (const auto& row : results.rows) {
       if (row.width != unit.width || row.height != unit.height) continue;
       md += "| " + row.effect + " | " + row.settings + (row.note.empty() ? "" : " (" + row.note + ")") + " | " +
             std::to_string(row.pass_count) + " | " + fixed(row.median_ms, 3) + " | " + fixed(row.ratio_to_copy, 2) +
             " | " + std::to_string(row.peak_target_bytes) + " | " + error_cell(row.error_model) + " | " +
             error_cell(row.error_ideal) + " |" + (truth ? " " + error_cell(row.error_truth) + " |" : "") +
-            (halo ? " " + (row.halo_px ? std::to_string(*row.halo_px) : std::string("—")) + " |" : "") + "\n";
+            (halo ? " " + (row.halo_px ? std::to_string(*row.halo_px) : std::string("—")) + " |" : "") + " " +
+            shift_cell(row.shift) + " |\n";
     }
     md += "\n";
   }
@@ -114,8 +137,9 @@ bool write_bench_markdown(const BenchResults& results, const std::string& path, 
 }
 
 bool write_error_plot(const BenchResults& results, const std::string& path, std::string* error, std::string* skipped) {
-  // One curve per effect, mode (a "mode=" setting) and size: (ratio to copy, relative RMSE against
-  // the ground truth where one was given, else against the ideal reference).
+  // One curve per effect, mode (a "mode=" setting) and size: (ratio to copy, error against the
+  // ground truth where one was given, else against the ideal reference; relative to the change
+  // the reference makes where that is known).
   bool truth = false;
   for (const auto& row : results.rows) truth |= bool(row.error_truth);
   std::map<std::string, std::vector<std::pair<double, double>>> curves;
@@ -126,16 +150,17 @@ bool write_error_plot(const BenchResults& results, const std::string& path, std:
     const size_t at = row.settings.find("mode=");
     if (at != std::string::npos) mode = " " + row.settings.substr(at + 5, row.settings.find(' ', at) - at - 5);
     curves[row.effect + mode + " " + std::to_string(row.width) + "x" + std::to_string(row.height)].push_back(
-        {row.ratio_to_copy, error->relative_rmse});
+        {row.ratio_to_copy, plotted_error(*error)});
   }
+  for (auto& [name, points] : curves) std::sort(points.begin(), points.end());
   if (curves.empty()) {
     *skipped = "no effect has an ideal CPU reference yet: no error-against-time plot";
     return true;
   }
   std::string script = "set terminal pngcairo size 900,600\nset output '__OUT__'\n"
-                       "set xlabel 'time (x plain copy pass)'\nset ylabel 'relative RMSE vs " +
-                       std::string(truth ? "ground truth" : "ideal") + "'\n"
-                       "set logscale y\nset grid\nset key outside right\nset title '" + results.renderer + "'\nplot ";
+                       "set xlabel 'time (x plain copy pass)'\nset ylabel 'RMSE vs " +
+                       std::string(truth ? "ground truth" : "ideal") + ": RMSE / RMS of the change (or of the reference)'\n"
+                       "set logscale xy\nset grid\nset key outside right\nset title '" + results.renderer + "'\nplot ";
   std::string data;
   bool first = true;
   for (const auto& [name, points] : curves) {

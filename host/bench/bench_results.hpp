@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "error_metrics.hpp"
+#include "shift_probe.hpp"
 
 namespace pfx::bench {
 
@@ -26,6 +27,7 @@ struct BenchRow {
   std::optional<ErrorMetrics> error_model, error_ideal;
   std::optional<ErrorMetrics> error_truth;  // against --truth
   std::optional<int> halo_px;               // with --halo-mask
+  std::optional<ShiftFigures> shift;        // absent with --no-shift or for a no-op row
   std::string note;  // e.g. "no-op with these settings"
 };
 

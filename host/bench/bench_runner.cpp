@@ -168,7 +168,7 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
       const pfx_reference_factory* references = info ? info->plugin->references : nullptr;
       if (!truth_gl.empty()) {
         const std::vector<float> out = read_back(output, width, height);
-        row.error_truth = compare_rgb(out, truth_gl);
+        row.error_truth = compare_rgb(out, truth_gl, &color_gl);
         if (!mask_gl.empty())
           row.halo_px = measure_halo(out, truth_gl, mask_gl, width, height, options.halo_tolerance).width;
       }
@@ -190,8 +190,15 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
             results.notes.push_back("reference of '" + suite_row.effect + "' failed for " + row.settings);
             continue;
           }
-          (kind == PFX_REFERENCE_MODEL ? row.error_model : row.error_ideal) = compare_rgb(out, expected);
+          (kind == PFX_REFERENCE_MODEL ? row.error_model : row.error_ideal) = compare_rgb(out, expected, &color_gl);
         }
+      }
+      if (options.shift && !report.passes.empty()) {
+        ShiftFigures figures;
+        if (measure_shift(chain, frame, depth, &figures, &message))
+          row.shift = figures;
+        else
+          results.notes.push_back("shift probe of '" + suite_row.effect + " " + row.settings + "' failed: " + message);
       }
       std::fprintf(stderr, "pfx-bench: %dx%d %-12s %-30s %8.3f ms  x%.2f copy\n", width, height, row.effect.c_str(),
                    row.settings.c_str(), row.median_ms, row.ratio_to_copy);

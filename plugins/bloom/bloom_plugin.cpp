@@ -11,6 +11,7 @@
 #include "glare_effect.hpp"
 #include "reference/bloom_model.hpp"
 #include "reference/glare_model.hpp"
+#include "reference/ideal.hpp"
 
 namespace pfx_bloom {
 namespace {
@@ -25,8 +26,10 @@ const pfx_effect_factory kEffectFactory = {sizeof(pfx_effect_factory), effect_co
 bool is_bloom(const char* effect_id) { return effect_id && std::strcmp(effect_id, "bloom") == 0; }
 bool is_glare(const char* effect_id) { return effect_id && std::strcmp(effect_id, "glare") == 0; }
 
+// bloom: the model of each mode and its ideal; glare: its model.
 int has_reference(const char* effect_id, pfx_reference_kind kind) {
-  return (is_bloom(effect_id) || is_glare(effect_id)) && kind == PFX_REFERENCE_MODEL;
+  return (is_bloom(effect_id) && (kind == PFX_REFERENCE_MODEL || kind == PFX_REFERENCE_IDEAL)) ||
+         (is_glare(effect_id) && kind == PFX_REFERENCE_MODEL);
 }
 
 pfx_status evaluate(const pfx_reference_request* request) {
@@ -39,6 +42,8 @@ pfx_status evaluate(const pfx_reference_request* request) {
   try {
     if (is_glare(request->effect_id))
       evaluate_glare_model(glare_settings_from(request->params), w, h, request->color, request->output);
+    else if (request->kind == PFX_REFERENCE_IDEAL)
+      evaluate_ideal(settings_from(request->params), w, h, request->color, request->output);
     else
       evaluate_model(settings_from(request->params), w, h, request->color, request->output);
   } catch (const std::bad_alloc&) {

@@ -39,18 +39,26 @@ layout(location = 4) uniform ivec2 u_direction;
 layout(location = 5) uniform int u_half_taps;
 layout(location = 6) uniform float u_weights[512];
 
-vec3 at(int k) {
-  if (textureSize(u_source, 0) == ivec2(u_out_size)) {
-    ivec2 p = ivec2(gl_FragCoord.xy) + k * u_direction;
-    if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, ivec2(u_out_size)))) return vec3(0.0);
-    return texelFetch(u_source, p, 0).rgb;
-  }
-  return texture(u_source, (gl_FragCoord.xy + float(k) * vec2(u_direction)) / u_out_size).rgb;
-}
-
 void main() {
-  vec3 sum = u_weights[0] * at(0);
-  for (int k = 1; k <= u_half_taps; ++k) sum += u_weights[k] * (at(k) + at(-k));
+  ivec2 size = ivec2(u_out_size);
+  vec3 sum;
+  if (textureSize(u_source, 0) == size) {
+    // Along the direction only one coordinate moves: test it against its own side.
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    int along = u_direction.x != 0 ? p.x : p.y, side = u_direction.x != 0 ? size.x : size.y;
+    sum = u_weights[0] * texelFetch(u_source, p, 0).rgb;
+    for (int k = 1; k <= u_half_taps; ++k) {
+      vec3 pair = vec3(0.0);
+      if (along + k < side) pair += texelFetch(u_source, p + k * u_direction, 0).rgb;
+      if (along - k >= 0) pair += texelFetch(u_source, p - k * u_direction, 0).rgb;
+      sum += u_weights[k] * pair;
+    }
+  } else {
+    vec2 uv = gl_FragCoord.xy / u_out_size, step = vec2(u_direction) / u_out_size;
+    sum = u_weights[0] * texture(u_source, uv).rgb;
+    for (int k = 1; k <= u_half_taps; ++k)
+      sum += u_weights[k] * (texture(u_source, uv + float(k) * step).rgb + texture(u_source, uv - float(k) * step).rgb);
+  }
   o_color = vec4(sum, 0.0);
 }
 )glsl";

@@ -39,6 +39,11 @@ TEST_CASE("quick bench measures the copy unit and every fixture effect", "[bench
   CHECK(rows["boxblur"]["pass_count"] == 3);
   CHECK(rows["boxblur"]["peak_target_bytes"] == 2 * 320 * 180 * 8);
   CHECK(rows["boxblur"]["ratio_to_copy"].get<double>() > 0);
+  // The shift probe ran for the effect that does something, and not for the no-op.
+  REQUIRE(rows["boxblur"].contains("shift"));
+  CHECK(rows["boxblur"]["shift"]["shape_rms"].get<double>() >= 0);
+  CHECK(rows["boxblur"]["shift"]["energy_cv"].get<double>() < 0.5);
+  CHECK_FALSE(rows["gain"].contains("shift"));
   CHECK(fs::exists(out / "bench.md"));
   fs::remove_all(out);
 }
@@ -62,6 +67,11 @@ TEST_CASE("relative RMSE and max error against a reference", "[bench]") {
   auto metrics = pfx::bench::compare_rgb(output, reference);
   CHECK(metrics.relative_rmse == Approx(1.0 / 3.0));
   CHECK(metrics.max_abs == 1.0);
+  // Relative to the change: the reference adds (0,0,1) and (0,0,0) to the input, so the error of 1
+  // is as large as the change.
+  const std::vector<float> input = {1, 2, 1, 1, 0, 0, 0, 1};
+  CHECK(pfx::bench::compare_rgb(output, reference, &input).change_relative_rmse == Approx(1.0));
+  CHECK(metrics.change_relative_rmse == -1.0);  // no input given
   output[0] = std::nanf("");
   CHECK(pfx::bench::compare_rgb(output, reference).nonfinite == 1);
 }
