@@ -104,8 +104,9 @@ void set_inputs(PassInputs* in) {
   in->composite[0] = color;
   in->composite[1] = depth;
   in->composite[2] = lens;
-  in->composite[3] = work;
-  in->composite[4] = {"blur", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  // Linear for the composite's bilinear taps (its texel fetches ignore the filter).
+  in->composite[3] = {"work", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};
+  in->composite[4] = {"blur", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};
   in->composite[5] = dilated;
 }
 

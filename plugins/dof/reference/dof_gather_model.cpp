@@ -168,12 +168,22 @@ void evaluate_gather_model(const Settings& settings, const pfx_frame& frame, con
       const double bx = std::floor(hx), by = std::floor(hy), fx = hx - bx, fy = hy - by;
       Texel b{0, 0, 0, 0};
       double half_color[3] = {0, 0, 0}, total = 0;
+      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+          const double a = work.fetch(static_cast<int>(bx) + i, static_cast<int>(by) + j)[3];
+          lo = std::min(lo, a);
+          hi = std::max(hi, a);
+        }
+      // One surface under the four texels: plain bilinear (the GPU's fast path).
+      const bool even = hi - lo <= 0.25 * (1.0 + 0.25 * std::fabs(c));
       for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
           const int qx = static_cast<int>(bx) + i, qy = static_cast<int>(by) + j;
           const Texel& wk = work.fetch(qx, qy);
           const double bilinear = (i == 1 ? fx : 1.0 - fx) * (j == 1 ? fy : 1.0 - fy);
-          const double weight = bilinear * std::max(1e-3, 1.0 - std::fabs(wk[3] - c) / (1.0 + 0.25 * std::fabs(c)));
+          const double weight =
+              even ? bilinear : bilinear * std::max(1e-3, 1.0 - std::fabs(wk[3] - c) / (1.0 + 0.25 * std::fabs(c)));
           const Texel& bl = blur.fetch(qx, qy);
           for (int k = 0; k < 4; ++k) b[k] += weight * bl[k];
           for (int k = 0; k < 3; ++k) half_color[k] += weight * wk[k];
