@@ -20,7 +20,8 @@ struct BenchRow {
   std::string effect, settings;
   int width = 0, height = 0;
   double median_ms = 0;
-  double ratio_to_copy = 0;
+  double copy_ms = 0;        // median of the copy pass timed before each of this row's frames
+  double ratio_to_copy = 0;  // median_ms / copy_ms
   uint64_t peak_target_bytes = 0;
   int pass_count = 0;
   std::vector<PassMedian> passes;
