@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "obj_buffer.hpp"
+
 namespace pfx_obj {
 
 // An index field a corner lacks (no vt, no vn) before resolution, and after it.
@@ -50,19 +52,19 @@ struct ChunkData {
   uint64_t line_ends = 0;  // physical line ends in the chunk: the next chunk's first line follows
 
   // Vertex data in file order within the chunk.
-  std::vector<float> positions;  // x y z per v
-  std::vector<float> colors;     // r g b per v, or empty while no v of the chunk has a colour
-  std::vector<float> texcoords;  // u v per vt
-  std::vector<float> normals;    // x y z per vn
+  BigVector<float> positions;  // x y z per v
+  BigVector<float> colors;     // r g b per v, or empty while no v of the chunk has a colour
+  BigVector<float> texcoords;  // u v per vt
+  BigVector<float> normals;    // x y z per vn
   uint32_t position_count() const { return static_cast<uint32_t>(positions.size() / 3); }
 
   // Face corners, three fields each (v, vt, vn): a positive index as written, kAbsent for a
   // missing vt or vn, or for a relative (negative) index the 1-based position it denotes counted
   // from the chunk's first element — which may be zero or negative (stored two's complement),
   // when it reaches back into earlier chunks. relative_fields marks those, one bit per field.
-  std::vector<uint32_t> corners;
+  BigVector<uint32_t> corners;
   std::vector<uint64_t> relative_fields;
-  std::vector<Face> faces;
+  BigVector<Face> faces;
   std::vector<StateChange> changes;
   std::vector<std::string> material_names;  // usemtl names, in order of first use in the chunk
   std::vector<uint64_t> material_name_lines;  // the chunk-local line of each name's first usemtl

@@ -44,8 +44,8 @@ class Shard {
     return id;
   }
 
-  const std::vector<VertexKey>& keys() const { return keys_; }
-  const std::vector<uint64_t>& first_corners() const { return first_corners_; }
+  const BigVector<VertexKey>& keys() const { return keys_; }
+  const BigVector<uint64_t>& first_corners() const { return first_corners_; }
 
  private:
   uint32_t add(const VertexKey& key, uint64_t corner) {
@@ -57,10 +57,10 @@ class Shard {
   }
 
   uint32_t first_;
-  std::vector<uint32_t> head_;          // per position: its first variant, or kNoIndex
-  std::vector<uint32_t> next_;          // per vertex: the next variant of its position
-  std::vector<VertexKey> keys_;         // in order of first use within the shard
-  std::vector<uint64_t> first_corners_; // the file ordinal of each key's first corner
+  BigVector<uint32_t> head_;          // per position: its first variant, or kNoIndex
+  BigVector<uint32_t> next_;          // per vertex: the next variant of its position
+  BigVector<VertexKey> keys_;         // in order of first use within the shard
+  BigVector<uint64_t> first_corners_; // the file ordinal of each key's first corner
   std::unique_ptr<VertexTable> overflow_;
 };
 
@@ -84,7 +84,7 @@ void for_each_corner(const std::vector<DedupChunk>& chunks, Visit&& visit) {
 }  // namespace
 
 void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count, unsigned threads,
-                 std::vector<VertexKey>* vertices, std::vector<std::vector<uint32_t>>* corner_vertex) {
+                 BigVector<VertexKey>* vertices, std::vector<BigVector<uint32_t>>* corner_vertex) {
   uint64_t total_corners = 0;
   corner_vertex->assign(chunks.size(), {});
   for (size_t c = 0; c < chunks.size(); ++c) {
@@ -108,7 +108,7 @@ void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count,
   // to its own stream (threads writing interleaved corners of one array would fight over cache
   // lines), counting how many corners of each chunk it took.
   std::vector<std::unique_ptr<Shard>> shard_data(shards);
-  std::vector<std::vector<uint32_t>> streams(shards);
+  std::vector<BigVector<uint32_t>> streams(shards);
   std::vector<std::vector<uint64_t>> taken(shards, std::vector<uint64_t>(chunks.size(), 0));
   run_on_each_worker(shards, [&](unsigned s) {
     const uint32_t lo = static_cast<uint32_t>(uint64_t{position_count} * s / shards);
@@ -152,7 +152,7 @@ void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count,
   std::vector<uint32_t> bounds(shards + 1);
   for (unsigned s = 0; s <= shards; ++s) bounds[s] = static_cast<uint32_t>(uint64_t{position_count} * s / shards);
   run_parallel(threads, chunks.size(), [&](size_t c, unsigned) {
-    std::vector<uint32_t>& ids = (*corner_vertex)[c];
+    BigVector<uint32_t>& ids = (*corner_vertex)[c];
     std::vector<uint64_t> at = stream_start[c];
     const uint32_t* fields = chunks[c].corners;
     for (size_t k = 0; k < ids.size(); ++k) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "obj_buffer.hpp"
 #include "obj_chunk.hpp"
 
 namespace pfx_obj {
@@ -38,6 +39,6 @@ struct DedupChunk {
 // of chunk c.
 // position_count: how many positions the file has (every corner's v is below it).
 void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count, unsigned threads,
-                 std::vector<VertexKey>* vertices, std::vector<std::vector<uint32_t>>* corner_vertex);
+                 BigVector<VertexKey>* vertices, std::vector<BigVector<uint32_t>>* corner_vertex);
 
 }  // namespace pfx_obj

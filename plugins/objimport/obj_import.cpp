@@ -59,8 +59,8 @@ struct ChunkPlan {
 
 // What the resolve stage makes of one chunk.
 struct ChunkFaces {
-  std::vector<uint32_t> face_groups;
-  std::vector<uint32_t> face_slots;     // material slot of each face
+  BigVector<uint32_t> face_groups;
+  BigVector<uint32_t> face_slots;     // material slot of each face
   std::vector<uint64_t> triangle_counts;  // per material slot
   std::vector<uint64_t> first_use;        // per material slot: the file ordinal of its first face
   bool failed = false;
@@ -329,7 +329,7 @@ class Importer {
     run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned) {
       ChunkData& chunk = chunks_[c];
       const ChunkPlan& plan = plans_[c];
-      auto copy = [](std::vector<float>& from, std::vector<float>& to, size_t at) {
+      auto copy = [](BigVector<float>& from, BigVector<float>& to, size_t at) {
         if (!from.empty()) std::memcpy(&to[at], from.data(), from.size() * sizeof(float));
         from = {};
       };
@@ -374,9 +374,9 @@ class Importer {
   std::vector<Located> warnings_;
   uint64_t extra_warnings_ = 0;  // warnings the chunks counted but did not keep
   std::map<std::string, IgnoredKeyword> ignored_;
-  std::vector<float> all_positions_, all_texcoords_, all_normals_, all_colors_;
-  std::vector<VertexKey> keys_;
-  std::vector<std::vector<uint32_t>> corner_vertex_;
+  BigVector<float> all_positions_, all_texcoords_, all_normals_, all_colors_;
+  BigVector<VertexKey> keys_;
+  std::vector<BigVector<uint32_t>> corner_vertex_;
 };
 
 void Importer::build_triangles() {

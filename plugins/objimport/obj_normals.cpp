@@ -7,7 +7,7 @@
 
 namespace pfx_obj {
 
-void generate_normals(const std::vector<VertexKey>& keys, const std::vector<float>& positions,
+void generate_normals(const BigVector<VertexKey>& keys, const std::vector<float>& positions,
                       const std::vector<uint32_t>& indices, unsigned threads, std::vector<float>* normals) {
   const size_t count = keys.size();
   std::vector<uint8_t> generated(count);
