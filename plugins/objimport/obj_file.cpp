@@ -59,7 +59,8 @@ bool FileBytes::open(const std::string& path, std::string* error) {
   if (!open_for_reading(path, &file, &info, error)) return false;
   if (S_ISREG(info.st_mode) && info.st_size > 0) {
     size_ = static_cast<size_t>(info.st_size);
-    void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, file.fd, 0);
+    // MAP_POPULATE maps every page now, in one pass, instead of one fault per 4 KB while parsing.
+    void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.fd, 0);
     if (mapping != MAP_FAILED) {
       // The parser reads front to back, each chunk by one thread.
       ::madvise(mapping, size_, MADV_SEQUENTIAL);
