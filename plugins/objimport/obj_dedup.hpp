@@ -3,9 +3,10 @@
 // normal will be generated for (obj_import.cpp). Nothing is packed, so nothing collides: the
 // seed's 21-bit packing merged distinct corners past 2^21 elements.
 //
-// The work is split into one shard per thread, each owning a range of positions; every thread
-// walks all corners in file order and keeps those of its shard. Vertices are numbered in the order of their first corner in
-// the file, whatever the thread count, so the output never depends on it.
+// With several threads, chunks are deduplicated on their own in parallel, their distinct keys are
+// then merged in file order, and their corners renumbered in parallel. Vertices are numbered in the
+// order of their first corner in the file, whatever the thread count, so the output never depends
+// on it.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +33,6 @@ struct DedupChunk {
   const Face* faces = nullptr;
   uint64_t face_count = 0;
   const uint32_t* face_groups = nullptr;
-  uint64_t first_corner = 0;  // ordinal of the chunk's first corner in the file
 };
 
 // vertices: the distinct keys in order of first use. corner_vertex[c][k]: the vertex of corner k

@@ -351,7 +351,6 @@ class Importer {
       inputs[c].faces = chunks_[c].faces.data();
       inputs[c].face_count = chunks_[c].faces.size();
       inputs[c].face_groups = faces_[c].face_groups.data();
-      inputs[c].first_corner = plans_[c].corner_base;
     }
     deduplicate(inputs, totals_[0], threads_, &keys_, &corner_vertex_);
     for (ChunkFaces& f : faces_) f.face_groups = {};
