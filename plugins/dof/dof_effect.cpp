@@ -93,8 +93,9 @@ void set_inputs(PassInputs* in) {
   in->seed[1] = depth;
   in->seed[2] = {"half", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};  // the seed's bilinear taps
   in->seed[3] = lens;
-  in->prepare[0] = color;
-  in->prepare[1] = depth;
+  // Linear: at half resolution one bilinear tap averages a 2x2 block (texel fetches ignore it).
+  in->prepare[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};
+  in->prepare[1] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};
   in->prepare[2] = lens;
   in->tiles[0] = work;
   in->dilate[0] = {"tiles", PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};

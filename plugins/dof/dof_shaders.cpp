@@ -134,16 +134,21 @@ void main() {
     o_color = vec4(safe_color(texelFetch(u_color, p, 0)).rgb, coc_of(lens, view_depth(texelFetch(u_depth, p, 0).r)));
     return;
   }
-  // The block's mean colour; its nearest CoC, so a foreground edge keeps its reach.
-  ivec2 hi = textureSize(u_color, 0) - 1;
-  vec3 sum = vec3(0.0);
-  float nearest = u_max_coc;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      ivec2 q = min(2 * p + ivec2(i, j), hi);
-      sum += safe_color(texelFetch(u_color, q, 0)).rgb;
-      nearest = min(nearest, coc_of(lens, view_depth(texelFetch(u_depth, q, 0).r)));
-    }
+  // The block's mean colour; its nearest CoC, so a foreground edge keeps its reach. One bilinear
+  // tap at the block's corner weighs its four texels 1/4 each (clamped at odd edges as a fetch
+  // is), and one gather reads its four depths; only a block holding NaN or Inf is read texel by
+  // texel, to make each safe first.
+  ivec2 size = textureSize(u_color, 0), hi = size - 1;
+  vec2 uv = vec2(2 * p + 1) / vec2(size);
+  vec3 sum = 4.0 * texture(u_color, uv).rgb;
+  if (any(greaterThanEqual(floatBitsToUint(sum) & uvec3(0x7fffffffu), uvec3(0x7f800000u)))) {
+    sum = vec3(0.0);
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) sum += safe_color(texelFetch(u_color, min(2 * p + ivec2(i, j), hi), 0)).rgb;
+  }
+  vec4 depths = textureGather(u_depth, uv, 0);
+  float nearest = min(min(coc_of(lens, view_depth(depths.x)), coc_of(lens, view_depth(depths.y))),
+                      min(coc_of(lens, view_depth(depths.z)), coc_of(lens, view_depth(depths.w))));
   o_color = vec4(sum * 0.25, nearest);
 }
 )glsl";
@@ -274,20 +279,26 @@ void main() {
     o_color = sharp;
     return;
   }
-  float coc = coc_of(texelFetch(u_lens, ivec2(0), 0).xy, view_depth(texelFetch(u_depth, p, 0).r));
-  float t = clamp(abs(coc) - 1.0, 0.0, 1.0);
-  // Where the four texels hold one smooth surface (their CoCs within a quarter of the weighting's
-  // scale), CoC weights would change little: plain bilinear taps do with 2 fetches, not 8.
-  vec2 uv = (vec2(p) * 0.5 + 0.25) / vec2(textureSize(u_work, 0));
-  vec4 cocs = textureGather(u_work, uv, 3);
-  float spread = max(max(cocs.x, cocs.y), max(cocs.z, cocs.w)) - min(min(cocs.x, cocs.y), min(cocs.z, cocs.w));
-  if (spread <= 0.25 * (1.0 + 0.25 * abs(coc))) {
-    vec4 blur = texture(u_blur, uv);
-    o_color = vec4(blur.rgb + blur.a * (1.0 - t) * (sharp.rgb - texture(u_work, uv).rgb), sharp.a);
-    return;
-  }
+  // Where the four half texels hold one smooth surface (their CoCs within a quarter of the
+  // weighting's scale), CoC weights would change little: plain bilinear taps do, and the pixel's
+  // CoC is theirs interpolated, so neither the depth nor the lens is read. Fully blurred pixels
+  // need only the blur: 4 fetches instead of 12.
   vec2 h = vec2(p) * 0.5 - 0.25;
   vec2 base = floor(h), f = h - base;
+  vec2 uv = (vec2(p) * 0.5 + 0.25) / vec2(textureSize(u_work, 0));
+  vec4 cocs = textureGather(u_work, uv, 3);  // (x0, y1), (x1, y1), (x1, y0), (x0, y0)
+  float coc = mix(mix(cocs.w, cocs.z, f.x), mix(cocs.x, cocs.y, f.x), f.y);
+  float spread = max(max(cocs.x, cocs.y), max(cocs.z, cocs.w)) - min(min(cocs.x, cocs.y), min(cocs.z, cocs.w));
+  if (spread <= 0.25 * (1.0 + 0.25 * abs(coc))) {
+    float t = clamp(abs(coc) - 1.0, 0.0, 1.0);
+    vec4 blur = texture(u_blur, uv);
+    vec3 rgb = blur.rgb;
+    if (t < 1.0) rgb += blur.a * (1.0 - t) * (sharp.rgb - texture(u_work, uv).rgb);
+    o_color = vec4(rgb, sharp.a);
+    return;
+  }
+  coc = coc_of(texelFetch(u_lens, ivec2(0), 0).xy, view_depth(texelFetch(u_depth, p, 0).r));
+  float t = clamp(abs(coc) - 1.0, 0.0, 1.0);
   ivec2 b = ivec2(base), hi = textureSize(u_work, 0) - 1;
   vec4 blur = vec4(0.0);
   vec3 half_color = vec3(0.0);

@@ -162,29 +162,32 @@ void evaluate_gather_model(const Settings& settings, const pfx_frame& frame, con
         write(x, y, sharp_texel);
         continue;
       }
-      const double c = coc[static_cast<size_t>(y) * w + x];
-      const double t = std::clamp(std::fabs(c) - 1.0, 0.0, 1.0);
       const double hx = x * 0.5 - 0.25, hy = y * 0.5 - 0.25;
       const double bx = std::floor(hx), by = std::floor(hy), fx = hx - bx, fy = hy - by;
-      Texel b{0, 0, 0, 0};
-      double half_color[3] = {0, 0, 0}, total = 0;
-      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      const int ix = static_cast<int>(bx), iy = static_cast<int>(by);
+      auto bilinear = [&](int i, int j) { return (i == 1 ? fx : 1.0 - fx) * (j == 1 ? fy : 1.0 - fy); };
+      double lo = HUGE_VAL, hi = -HUGE_VAL, interpolated = 0;
       for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
-          const double a = work.fetch(static_cast<int>(bx) + i, static_cast<int>(by) + j)[3];
+          const double a = work.fetch(ix + i, iy + j)[3];
           lo = std::min(lo, a);
           hi = std::max(hi, a);
+          interpolated += bilinear(i, j) * a;
         }
-      // One surface under the four texels: plain bilinear (the GPU's fast path).
-      const bool even = hi - lo <= 0.25 * (1.0 + 0.25 * std::fabs(c));
+      // One smooth surface under the four texels: plain bilinear, and the interpolated CoC (the
+      // GPU's fast path); else CoC-weighted taps and the pixel's own CoC.
+      const bool even = hi - lo <= 0.25 * (1.0 + 0.25 * std::fabs(interpolated));
+      const double c = even ? interpolated : coc[static_cast<size_t>(y) * w + x];
+      const double t = std::clamp(std::fabs(c) - 1.0, 0.0, 1.0);
+      Texel b{0, 0, 0, 0};
+      double half_color[3] = {0, 0, 0}, total = 0;
       for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
-          const int qx = static_cast<int>(bx) + i, qy = static_cast<int>(by) + j;
-          const Texel& wk = work.fetch(qx, qy);
-          const double bilinear = (i == 1 ? fx : 1.0 - fx) * (j == 1 ? fy : 1.0 - fy);
+          const Texel& wk = work.fetch(ix + i, iy + j);
           const double weight =
-              even ? bilinear : bilinear * std::max(1e-3, 1.0 - std::fabs(wk[3] - c) / (1.0 + 0.25 * std::fabs(c)));
-          const Texel& bl = blur.fetch(qx, qy);
+              even ? bilinear(i, j)
+                   : bilinear(i, j) * std::max(1e-3, 1.0 - std::fabs(wk[3] - c) / (1.0 + 0.25 * std::fabs(c)));
+          const Texel& bl = blur.fetch(ix + i, iy + j);
           for (int k = 0; k < 4; ++k) b[k] += weight * bl[k];
           for (int k = 0; k < 3; ++k) half_color[k] += weight * wk[k];
           total += weight;
