@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "obj_text.hpp"
 
@@ -299,13 +300,13 @@ class ChunkParser {
     cursor_.skip_blanks();
     std::string name = cursor_.rest_of_line();
     if (name.empty()) return fail("usemtl: needs a material name");
-    uint32_t index = 0;
-    while (index < out_->material_names.size() && out_->material_names[index] != name) ++index;
-    if (index == out_->material_names.size()) {
+    // A map, not a scan: some exporters write a usemtl before every face, over many materials.
+    auto [it, fresh] = material_index_.emplace(name, static_cast<uint32_t>(out_->material_names.size()));
+    if (fresh) {
       out_->material_names.push_back(name);
       out_->material_name_lines.push_back(line_);
     }
-    record_change(StateChange::kMaterial, index);
+    record_change(StateChange::kMaterial, it->second);
     return true;
   }
 
@@ -345,6 +346,7 @@ class ChunkParser {
   ChunkData* out_;
   uint64_t line_ = 0;
   uint32_t* corner_at_ = nullptr;  // where the next corner field goes in out_->corners
+  std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index
 };
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include <new>
 #include <stdexcept>
 #include <thread>
+#include <unordered_map>
 
 #include "obj_chunk.hpp"
 #include "obj_dedup.hpp"
@@ -234,8 +235,11 @@ class Importer {
   // The material a usemtl names; an unknown name gets a default material of that name.
   uint32_t material_slot(const std::string& name, uint64_t line) {
     auto& materials = out_->materials;
-    for (size_t i = 0; i < materials.size(); ++i)
-      if (materials[i].name == name) return static_cast<uint32_t>(i);
+    if (material_index_.size() < materials.size())  // the libraries' materials, indexed once
+      for (size_t i = material_index_.size(); i < materials.size(); ++i)
+        material_index_.emplace(materials[i].name, static_cast<uint32_t>(i));
+    if (auto it = material_index_.find(name); it != material_index_.end()) return it->second;
+    material_index_.emplace(name, static_cast<uint32_t>(materials.size()));
     materials.push_back(Material{});
     materials.back().name = name;
     warn(line, "usemtl " + name + ": no material of that name in the material libraries (defaults used)");
@@ -373,6 +377,7 @@ class Importer {
   std::vector<Located> warnings_;
   uint64_t extra_warnings_ = 0;  // warnings the chunks counted but did not keep
   std::map<std::string, IgnoredKeyword> ignored_;
+  std::unordered_map<std::string, uint32_t> material_index_;  // material name -> index in out_->materials
   BigVector<float> all_positions_, all_texcoords_, all_normals_, all_colors_;
   BigVector<VertexKey> keys_;
   std::vector<BigVector<uint32_t>> corner_vertex_;

@@ -120,3 +120,21 @@ TEST_CASE("obj materials: bad lines in a library are warnings naming the .mtl li
   CHECK(r.mesh.materials.size() == 1);
   CHECK(r.mesh.materials[0].diffuse[0] == 0.8f);
 }
+
+TEST_CASE("obj materials: a usemtl before every face, over 2000 materials", "[objimport][materials]") {
+  // Some exporters write usemtl per face; each material's faces still form one sub-mesh, in
+  // order of first use, and every unknown name is warned about once.
+  std::string text = kTriangle;
+  for (int f = 0; f < 20000; ++f) text += "usemtl m" + std::to_string((f * 7) % 2000) + "\nf 1 2 3\n";
+  for (unsigned threads : {1u, 2u}) {
+    auto r = import_text(text, threads, 4096);
+    REQUIRE(r.ok);
+    REQUIRE(r.mesh.submeshes.size() == 2000);
+    CHECK(r.mesh.materials.size() == 2000);
+    for (size_t s = 0; s < r.mesh.submeshes.size(); ++s) {
+      CHECK(r.mesh.submeshes[s].index_count == 30);  // 10 faces each
+      CHECK(r.mesh.materials[r.mesh.submeshes[s].material].name == "m" + std::to_string((s * 7) % 2000));
+    }
+    CHECK(r.mesh.warning_total == 2000);
+  }
+}
