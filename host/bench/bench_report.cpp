@@ -139,7 +139,8 @@ bool write_bench_markdown(const BenchResults& results, const std::string& path, 
 }
 
 bool write_error_plot(const BenchResults& results, const std::string& path, std::string* error, std::string* skipped) {
-  // One curve per effect, mode (a "mode=" setting) and size: (ratio to copy, error against the
+  // One curve per effect, size and all settings but the last (the suite varies the last along a
+  // curve: "mode=gather resolution=half samples=16, 32, ..."): (ratio to copy, error against the
   // ground truth where one was given, else against the ideal reference; relative to the change
   // the reference makes where that is known).
   bool truth = false;
@@ -148,10 +149,9 @@ bool write_error_plot(const BenchResults& results, const std::string& path, std:
   for (const auto& row : results.rows) {
     const std::optional<ErrorMetrics>& error = truth ? row.error_truth : row.error_ideal;
     if (!error) continue;
-    std::string mode;
-    const size_t at = row.settings.find("mode=");
-    if (at != std::string::npos) mode = " " + row.settings.substr(at + 5, row.settings.find(' ', at) - at - 5);
-    curves[row.effect + mode + " " + std::to_string(row.width) + "x" + std::to_string(row.height)].push_back(
+    const size_t last = row.settings.rfind(' ');
+    const std::string fixed_settings = last == std::string::npos ? "" : " " + row.settings.substr(0, last);
+    curves[row.effect + fixed_settings + " " + std::to_string(row.width) + "x" + std::to_string(row.height)].push_back(
         {row.ratio_to_copy, plotted_error(*error)});
   }
   for (auto& [name, points] : curves) std::sort(points.begin(), points.end());

@@ -150,17 +150,6 @@ pfx_status create(const pfx_host* host, void** out) {
   return PFX_OK;
 }
 
-pfx_target_desc fixed_target(const char* name, pfx_format format, int width, int height) {
-  pfx_target_desc t{};
-  t.struct_size = sizeof t;
-  t.name = name;
-  t.format = format;
-  t.size_mode = PFX_SIZE_FIXED;
-  t.width = static_cast<uint32_t>(width);
-  t.height = static_cast<uint32_t>(height);
-  return t;
-}
-
 pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   Instance* inst = static_cast<Instance*>(self);
   if (!inst || !frame || !params || !out || frame->struct_size < sizeof(pfx_frame) ||
@@ -180,24 +169,24 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   auto pass = [&](const char* name, const char* output, const pfx_pass_input* inputs, uint32_t count, Program tag) {
     inst->passes[n++] = pfx::desc::fullscreen_pass(name, output, inputs, count, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, tag);
   };
-  inst->targets[t++] = fixed_target("lens", PFX_FORMAT_RG32F, 1, 1);
+  inst->targets[t++] = pfx::desc::fixed_target("lens", PFX_FORMAT_RG32F, 1, 1);
   pass("lens", "lens", in.lens, 1, PROGRAM_LENS);
   if (s.mode == MODE_SEED) {
-    inst->targets[t++] = fixed_target("half", PFX_FORMAT_RGBA16F, half_size(static_cast<int>(frame->width)),
+    inst->targets[t++] = pfx::desc::fixed_target("half", PFX_FORMAT_RGBA16F, half_size(static_cast<int>(frame->width)),
                                       half_size(static_cast<int>(frame->height)));
     pass("half", "half", in.seed_half, 1, PROGRAM_SEED_HALF);
     pass("seed", PFX_OUTPUT_NAME, in.seed, 4, PROGRAM_SEED);
     std::snprintf(inst->report, sizeof inst->report, "\"mode\": \"seed\", \"taps\": 16");
   } else {
     const GatherPlan plan = plan_gather(frame->width, frame->height, s);
-    inst->targets[t++] = fixed_target("work", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
-    inst->targets[t++] = fixed_target("tiles", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
-    inst->targets[t++] = fixed_target("dilated", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
+    inst->targets[t++] = pfx::desc::fixed_target("work", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
+    inst->targets[t++] = pfx::desc::fixed_target("tiles", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
+    inst->targets[t++] = pfx::desc::fixed_target("dilated", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
     pass("prepare", "work", in.prepare, 3, PROGRAM_PREPARE);
     pass("tiles", "tiles", in.tiles, 1, PROGRAM_TILES);
     pass("dilate", "dilated", in.dilate, 1, PROGRAM_DILATE);
     if (plan.half) {
-      inst->targets[t++] = fixed_target("blur", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
+      inst->targets[t++] = pfx::desc::fixed_target("blur", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
       pass("gather", "blur", in.gather, 3, PROGRAM_GATHER);
       pass("composite", PFX_OUTPUT_NAME, in.composite, 6, PROGRAM_COMPOSITE);
     } else {

@@ -145,6 +145,17 @@ Rendered Rig::render(const Frame& frame, DepthTexture depth_texture) {
   return r;
 }
 
+Rig& shared_rig(const std::string& mode) {
+  static Rig* rig = nullptr;
+  if (!rig) rig = new Rig;
+  for (const char* assignment : {"dof.focus_distance=5", "dof.f_number=0.1", "dof.max_coc=32", "dof.autofocus=off",
+                                 "dof.focus_point=0.5,0.5", "dof.sensor_width=36", "dof.samples=32",
+                                 "dof.resolution=half"})
+    rig->set(assignment);
+  rig->set("dof.mode=" + mode);
+  return *rig;
+}
+
 std::vector<float> reference(const Rig& rig, const Frame& frame, pfx_reference_kind kind) {
   const pfx_frame f = frame.frame();
   std::vector<float> out(frame.rgba.size());

@@ -65,6 +65,11 @@ class Rig {
   const pfx_reference_factory* references_ = nullptr;
 };
 
+// One rig for the test process (its programs are compiled once), reset to the tests' common
+// settings: focus 5 m, f/0.1 (small frames need a wide aperture to blur visibly), max CoC 32 px,
+// autofocus off at the centre, 32 samples at half resolution, 36 mm sensor; then `mode`.
+Rig& shared_rig(const std::string& mode);
+
 // The reference of `kind` for a frame and the rig's current settings; REQUIREs that it succeeds.
 std::vector<float> reference(const Rig& rig, const Frame& frame, pfx_reference_kind kind);
 

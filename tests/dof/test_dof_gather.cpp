@@ -16,16 +16,10 @@ using namespace dof_test;
 namespace {
 
 Rig& gather_rig(const char* resolution, int samples = 32) {
-  static Rig* rig = nullptr;
-  if (!rig) rig = new Rig;  // one chain for the process: programs are compiled once
-  rig->set("dof.mode=gather");
-  rig->set("dof.focus_distance=5");
-  rig->set("dof.f_number=0.1");  // small frames need a wide aperture to blur visibly
-  rig->set("dof.max_coc=32");
-  rig->set("dof.autofocus=off");
-  rig->set(std::string("dof.resolution=") + resolution);
-  rig->set("dof.samples=" + std::to_string(samples));
-  return *rig;
+  Rig& rig = shared_rig("gather");
+  rig.set(std::string("dof.resolution=") + resolution);
+  rig.set("dof.samples=" + std::to_string(samples));
+  return rig;
 }
 
 struct Comparison {

@@ -16,15 +16,10 @@ namespace {
 const char* const kModes[] = {"seed", "gather/half", "gather/full"};
 
 Rig& rig_for(const std::string& mode) {
-  static Rig* rig = nullptr;
-  if (!rig) rig = new Rig;
-  for (const char* assignment : {"dof.focus_distance=5", "dof.f_number=0.1", "dof.max_coc=32", "dof.autofocus=off",
-                                 "dof.sensor_width=36", "dof.samples=32", "dof.resolution=half"})
-    rig->set(assignment);
   const size_t slash = mode.find('/');
-  rig->set("dof.mode=" + mode.substr(0, slash));
-  if (slash != std::string::npos) rig->set("dof.resolution=" + mode.substr(slash + 1));
-  return *rig;
+  Rig& rig = shared_rig(mode.substr(0, slash));
+  if (slash != std::string::npos) rig.set("dof.resolution=" + mode.substr(slash + 1));
+  return rig;
 }
 
 // Finite everywhere, and equal to the model where the model's output is finite and moderate.

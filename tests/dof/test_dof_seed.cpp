@@ -53,17 +53,7 @@ void require_matches_model(const Rendered& r, double max_coc = 32) {
   REQUIRE(worst <= 1.0);
 }
 
-Rig& seed_rig() {
-  static Rig* rig = nullptr;
-  if (!rig) rig = new Rig;  // one chain for the process: programs are compiled once
-  rig->set("dof.mode=seed");
-  rig->set("dof.focus_distance=5");
-  rig->set("dof.f_number=0.1");  // small frames need a wide aperture to blur visibly
-  rig->set("dof.max_coc=32");
-  rig->set("dof.autofocus=off");
-  rig->set("dof.focus_point=0.5,0.5");
-  return *rig;
-}
+Rig& seed_rig() { return shared_rig("seed"); }
 
 }  // namespace
 

@@ -34,6 +34,18 @@ inline pfx_param_desc with_items(pfx_param_desc d, const pfx_enum_item* items, u
   return d;
 }
 
+// A target of a fixed size (the effect computes it in declare from the frame's size).
+inline pfx_target_desc fixed_target(const char* name, pfx_format format, int width, int height) {
+  pfx_target_desc t{};
+  t.struct_size = sizeof t;
+  t.name = name;
+  t.format = format;
+  t.size_mode = PFX_SIZE_FIXED;
+  t.width = static_cast<uint32_t>(width);
+  t.height = static_cast<uint32_t>(height);
+  return t;
+}
+
 inline pfx_pass_desc fullscreen_pass(const char* name, const char* output, const pfx_pass_input* inputs,
                                      uint32_t input_count, pfx_blend blend, pfx_load load, uint32_t user_tag) {
   pfx_pass_desc pass{};
