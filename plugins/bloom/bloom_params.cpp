@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bloom_levels.hpp"
+#include "bright_pass_params.hpp"
 
 #include <pfx/cpp/descriptors.hpp>
 
@@ -15,16 +16,12 @@ const pfx_enum_item kModeItems[MODE_COUNT] = {
     {"gaussian", "Separable Gaussian at a chosen downscale (seed 002)"},
     {"mgf", "Kawase multi-Gaussian: Gaussians on 1/4, 1/8 ... buffers, summed (seed 004)"}};
 
-const pfx_enum_item kMeasureItems[] = {
-    {"max_rgb", "Largest of R, G, B (the seed's)"},
-    {"luminance", "Rec. 709 luminance"}};
 
 }  // namespace
 
 const char* mode_name(int mode) { return mode >= 0 && mode < MODE_COUNT ? kModeItems[mode].id : "?"; }
 
-// Hard ranges are finite so "inf" from a user clamps to something the shaders can use. Threshold
-// and knee stop at the half-float maximum: no stored colour is brighter than that.
+// Hard ranges are finite so "inf" from a user clamps to something the shaders can use.
 const pfx_param_desc kParams[PARAM_COUNT] = {
     pfx::desc::with_items(pfx::desc::param("mode", "Mode",
                     "Which bloom algorithm runs. chain: the seed's pyramid; chain13: the same with the "
@@ -32,17 +29,11 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                     "Gaussian at a downscale; mgf: Kawase's sum of Gaussians on 1/4, 1/8 ... buffers.",
                     "", "Bloom", PFX_PARAM_ENUM, 0, MODE_COUNT - 1, 0, MODE_COUNT - 1, 1, {{MODE_CHAIN}}),
                kModeItems, MODE_COUNT),
-    pfx::desc::param("threshold", "Threshold",
-         "Brightness above which light blooms. Scene-linear: 1 is the brightness of diffuse white.",
-         "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 8, 0.05, {{1.0}}),
-    pfx::desc::param("knee", "Knee",
-         "Width of the soft transition around the threshold: brightness from threshold - knee to "
-         "threshold + knee blooms gradually (quadratic). 0 is the seeds' hard threshold; the knee is "
-         "never wider than the threshold.",
-         "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 2, 0.05, {{0.0}}),
+    threshold_param(),
+    knee_param(),
     pfx::desc::param("strength", "Strength",
          "How much light the bloom adds: 1 spreads exactly the light above the threshold. 0 adds "
-         "nothing (no pass runs, unless the gaussian mode's tone scale is below 1).",
+         "nothing (no pass runs, unless the gaussian mode's tone scale is not 1).",
          "", "Bloom", PFX_PARAM_FLOAT, 0, 100, 0, 4, 0.05, {{1.0}}),
     pfx::desc::param("levels", "Levels",
          "Pyramid levels (chain, chain13) or Gaussian buffers (mgf); more spread the light further. "
@@ -56,16 +47,10 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
          "With levels 0, no level is added that would carry less than this fraction of the bloom's "
          "light. Chain levels each carry 1/levels; mgf buffers follow the mgf ratio. 0 turns this off.",
          "", "Bloom", PFX_PARAM_FLOAT, 0, 1, 0, 0.2, 0.005, {{0.0}}),
-    pfx::desc::with_items(pfx::desc::param("measure", "Brightness measure",
-                    "How a pixel's brightness is measured against the threshold: the largest of R, G, B "
-                    "(the seed's; saturated blue blooms like white) or Rec. 709 luminance. The gaussian "
-                    "mode thresholds each channel on its own (seed 002) and ignores this.",
-                    "", "Bright pass", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{MEASURE_MAX_RGB}}),
-               kMeasureItems, 2),
-    pfx::desc::param("firefly_clamp", "Firefly clamp",
-         "Every colour channel is clamped to this before the bright pass, so single very bright (or "
-         "infinite) pixels cannot dominate the bloom. Not-a-number pixels count as black.",
-         "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 1, kHalfMax, 1, {{65472.0}}),
+    measure_param("How a pixel's brightness is measured against the threshold: the largest of R, G, B (the "
+                  "seed's; saturated blue blooms like white) or Rec. 709 luminance. The gaussian mode thresholds "
+                  "each channel on its own (seed 002) and ignores this."),
+    firefly_clamp_param(),
     pfx::desc::param("tint", "Tint", "Colour the added light is multiplied by.", "", "Bloom", PFX_PARAM_COLOR, 0, 16, 0, 1,
          0.01, {{1.0, 1.0, 1.0}}),
     pfx::desc::param("sigma", "Sigma",

@@ -4,35 +4,25 @@
 
 #include <pfx/cpp/descriptors.hpp>
 
+#include "bright_pass_params.hpp"
+
 namespace pfx_bloom {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
 const pfx_enum_item kStreakItems[] = {{"4", "4 streaks (a cross)"}, {"6", "6 streaks"}, {"8", "8 streaks"}};
-const pfx_enum_item kMeasureItems[] = {{"max_rgb", "Largest of R, G, B (the bloom seed's)"},
-                                       {"luminance", "Rec. 709 luminance"}};
 const pfx_enum_item kResolutionItems[] = {
     {"full", "Full resolution (the seed's)"}, {"half", "Half resolution"}, {"quarter", "Quarter resolution"}};
 
 }  // namespace
 
 const pfx_param_desc kGlareParams[GLARE_PARAM_COUNT] = {
-    pfx::desc::param("threshold", "Threshold",
-         "Brightness above which light makes streaks. Scene-linear: 1 is the brightness of diffuse white.",
-         "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 8, 0.05, {{1.0}}),
-    pfx::desc::param("knee", "Knee",
-         "Width of the soft transition around the threshold (quadratic); 0 is a hard threshold. Never "
-         "wider than the threshold.",
-         "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 2, 0.05, {{0.0}}),
-    pfx::desc::with_items(pfx::desc::param("measure", "Brightness measure",
-                    "How a pixel's brightness is measured against the threshold: the largest of R, G, B or "
-                    "Rec. 709 luminance.",
-                    "", "Bright pass", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{MEASURE_MAX_RGB}}),
-               kMeasureItems, 2),
-    pfx::desc::param("firefly_clamp", "Firefly clamp",
-         "Every colour channel is clamped to this before the bright pass. Not-a-number pixels count as black.",
-         "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 1, kHalfMax, 1, {{65472.0}}),
+    threshold_param(),
+    knee_param(),
+    measure_param("How a pixel's brightness is measured against the threshold: the largest of R, G, B or "
+                  "Rec. 709 luminance."),
+    firefly_clamp_param(),
     pfx::desc::param("strength", "Strength",
          "How much light the streaks add: 1 spreads exactly the light above the threshold over all "
          "streaks together. 0 turns the effect off (no pass runs).",

@@ -1,0 +1,44 @@
+#include "bright_pass_params.hpp"
+
+#include <pfx/cpp/descriptors.hpp>
+
+#include "bloom_params.hpp"
+
+namespace pfx_bloom {
+namespace {
+
+const pfx_enum_item kMeasureItems[] = {{"max_rgb", "Largest of R, G, B (the seed's)"},
+                                       {"luminance", "Rec. 709 luminance"}};
+
+}  // namespace
+
+// Hard ranges are finite so "inf" from a user clamps to something the shaders can use. Threshold
+// and knee stop at the half-float maximum: no stored colour is brighter than that.
+pfx_param_desc threshold_param() {
+  return pfx::desc::param("threshold", "Threshold",
+                          "Brightness above which light spreads. Scene-linear: 1 is the brightness of diffuse white.",
+                          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 8, 0.05, {{1.0}});
+}
+
+pfx_param_desc knee_param() {
+  return pfx::desc::param("knee", "Knee",
+                          "Width of the soft transition around the threshold: brightness from threshold - knee to "
+                          "threshold + knee spreads gradually (quadratic). 0 is the seeds' hard threshold; the knee "
+                          "is never wider than the threshold.",
+                          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 2, 0.05, {{0.0}});
+}
+
+pfx_param_desc measure_param(const char* tooltip) {
+  return pfx::desc::with_items(pfx::desc::param("measure", "Brightness measure", tooltip, "", "Bright pass",
+                                                PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{MEASURE_MAX_RGB}}),
+                               kMeasureItems, 2);
+}
+
+pfx_param_desc firefly_clamp_param() {
+  return pfx::desc::param("firefly_clamp", "Firefly clamp",
+                          "Every colour channel is clamped to this before the bright pass, so single very bright (or "
+                          "infinite) pixels cannot dominate. Not-a-number pixels count as black.",
+                          "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 1, kHalfMax, 1, {{65472.0}});
+}
+
+}  // namespace pfx_bloom

@@ -1,0 +1,16 @@
+// The bright pass's parameter descriptors, shared by the "bloom" and "glare" effects so both
+// describe the same threshold, knee, measure and firefly clamp the same way. Functions rather than
+// objects: the effects' tables are built at load time in other files, in no guaranteed order.
+#pragma once
+
+#include <pfx/params.h>
+
+namespace pfx_bloom {
+
+pfx_param_desc threshold_param();
+pfx_param_desc knee_param();
+// tooltip: the effect's own (which modes use the measure differs).
+pfx_param_desc measure_param(const char* tooltip);
+pfx_param_desc firefly_clamp_param();
+
+}  // namespace pfx_bloom
