@@ -29,33 +29,19 @@ void destroy(void* self) {
   delete inst;
 }
 
-bool build_programs(const pfx_host* host, Instance* inst) {
-  try {
-    const struct {
-      const char* name;
-      std::string (*source)();
-    } programs[PROGRAM_COUNT] = {
-        {"bright", shaders::bright},       {"down", shaders::down},
-        {"up", shaders::up},               {"composite", shaders::composite},
-        {"bright13", shaders::bright13},   {"down13", shaders::down13},
-        {"box_bright", shaders::box_bright}, {"blur", shaders::blur},
-        {"gaussian_composite", shaders::gaussian_composite}, {"mgf_composite", shaders::mgf_composite}};
-    for (int i = 0; i < PROGRAM_COUNT; ++i) {
-      inst->programs[i] = build_program(host, programs[i].name, programs[i].source());
-      if (!inst->programs[i]) return false;
-    }
-    return true;
-  } catch (...) {  // std::bad_alloc assembling a source; nothing may cross the ABI
-    return false;
-  }
-}
+const ProgramSpec kPrograms[PROGRAM_COUNT] = {
+    {"bright", shaders::bright},         {"down", shaders::down},
+    {"up", shaders::up},                 {"composite", shaders::composite},
+    {"bright13", shaders::bright13},     {"down13", shaders::down13},
+    {"box_bright", shaders::box_bright}, {"blur", shaders::blur},
+    {"gaussian_composite", shaders::gaussian_composite}, {"mgf_composite", shaders::mgf_composite}};
 
 pfx_status create(const pfx_host* host, void** out) {
   if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
-  if (!build_programs(host, inst)) {
+  if (!build_programs(host, kPrograms, PROGRAM_COUNT, inst->programs)) {
     destroy(inst);
     return PFX_GL_ERROR;
   }

@@ -30,6 +30,18 @@ GLuint build_program(const pfx_host* host, const char* name, const std::string& 
   }
 }
 
+bool build_programs(const pfx_host* host, const ProgramSpec* specs, int count, GLuint* out) {
+  for (int i = 0; i < count; ++i) {
+    try {
+      out[i] = build_program(host, specs[i].name, specs[i].source());
+    } catch (...) {  // std::bad_alloc assembling a source; nothing may cross the ABI
+      out[i] = 0;
+    }
+    if (!out[i]) return false;
+  }
+  return true;
+}
+
 void set_bright_uniforms(GLuint program, const Settings& s, int measure_override) {
   glProgramUniform2f(program, 1, static_cast<float>(s.threshold), static_cast<float>(s.knee));
   glProgramUniform1i(program, 2, measure_override >= 0 ? measure_override : s.measure);

@@ -19,6 +19,16 @@ bool load_gl(const pfx_host* host);
 // logging "bloom: shader 'NAME': <compiler message>". Never throws.
 GLuint build_program(const pfx_host* host, const char* name, const std::string& fragment_source);
 
+// A program to build: its name for messages and the function assembling its fragment shader.
+struct ProgramSpec {
+  const char* name;
+  std::string (*source)();
+};
+
+// Builds count programs into out[0 .. count-1]; false (after logging) when any fails, with the
+// ones built so far left in out for the caller to delete. Never throws.
+bool build_programs(const pfx_host* host, const ProgramSpec* specs, int count, GLuint* out);
+
 // The bright programs' shared uniforms (locations 1-3, shaders_common.cpp); measure_override
 // >= 0 replaces the settings' measure (2: every channel on its own, as seed 002).
 void set_bright_uniforms(GLuint program, const Settings& s, int measure_override = -1);

@@ -32,6 +32,9 @@ constexpr uint32_t glare_tag(GlarePassKind kind, int streak, int pass) {
 const IndexedNames kStreakPassNames("streak");  // "streak<j*3+i>"
 const char* const kTempNames[2] = {"streak_tmp0", "streak_tmp1"};
 
+const ProgramSpec kPrograms[GLARE_PROGRAM_COUNT] = {
+    {"glare_bright", shaders::box_bright}, {"streak", shaders::streak}, {"glare_composite", shaders::glare_composite}};
+
 struct Instance {
   GLuint programs[GLARE_PROGRAM_COUNT] = {};
   DeclarationBuilder declaration;
@@ -51,16 +54,7 @@ pfx_status create(const pfx_host* host, void** out) {
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
-  bool ok = true;
-  try {
-    inst->programs[GLARE_PROGRAM_BRIGHT] = build_program(host, "glare_bright", shaders::box_bright());
-    inst->programs[GLARE_PROGRAM_STREAK] = build_program(host, "streak", shaders::streak());
-    inst->programs[GLARE_PROGRAM_COMPOSITE] = build_program(host, "glare_composite", shaders::glare_composite());
-  } catch (...) {  // std::bad_alloc assembling a source
-    ok = false;
-  }
-  for (GLuint program : inst->programs) ok = ok && program != 0;
-  if (!ok) {
+  if (!build_programs(host, kPrograms, GLARE_PROGRAM_COUNT, inst->programs)) {
     destroy(inst);
     return PFX_GL_ERROR;
   }
