@@ -20,6 +20,12 @@ std::vector<std::string> split_list(const std::string& text, char separator) {
   return items;
 }
 
+bool parse_count(const std::string& text, long long* out) {
+  if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos) return false;
+  *out = std::stoll(text);
+  return true;
+}
+
 bool parse_frame_size(const std::string& option, const std::string& text, int* width, int* height, std::string* error) {
   int w = 0, h = 0;
   char tail = 0;

@@ -29,7 +29,9 @@ nlohmann::ordered_json number(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
 }
 
-std::string default_text(const pfx_param_desc& p) {
+}  // namespace
+
+std::string default_value_text(const pfx_param_desc& p) {
   if (p.type == PFX_PARAM_ENUM) {
     auto index = static_cast<uint32_t>(p.default_value.v[0]);
     return index < p.item_count ? p.items[index].id : "?";
@@ -44,8 +46,6 @@ std::string default_text(const pfx_param_desc& p) {
   return text;
 }
 
-}  // namespace
-
 std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors) {
   std::string out;
   char line[512];
@@ -56,7 +56,7 @@ std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const
       for (uint32_t i = 0; i < effect->param_count; ++i) {
         const pfx_param_desc& p = effect->params[i];
         std::snprintf(line, sizeof line, "    %s.%-18s %-6s default %-10s range [%g, %g] %s\n", effect->id, p.id,
-                      type_name(p.type), default_text(p).c_str(), p.hard_min, p.hard_max, p.unit ? p.unit : "");
+                      type_name(p.type), default_value_text(p).c_str(), p.hard_min, p.hard_max, p.unit ? p.unit : "");
         out += line;
         if (p.type == PFX_PARAM_ENUM) {
           out += "      one of:";
@@ -106,7 +106,7 @@ std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const
         q["out_of_range"] = (d.flags & PFX_PARAM_REJECT_OUT_OF_RANGE) ? "reject" : "clamp";
         q["logarithmic"] = (d.flags & PFX_PARAM_LOGARITHMIC) != 0;
         if (d.type == PFX_PARAM_ENUM) {
-          q["default"] = default_text(d);
+          q["default"] = default_value_text(d);
           q["items"] = nlohmann::ordered_json::array();
           for (uint32_t k = 0; k < d.item_count; ++k)
             q["items"].push_back({{"id", d.items[k].id}, {"label", d.items[k].label ? d.items[k].label : d.items[k].id}});

@@ -9,6 +9,8 @@
 
 namespace pfx::app {
 
+// A parameter's default as text: the item id of an enum, true/false, "%g" numbers joined by ','.
+std::string default_value_text(const pfx_param_desc& param);
 std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors);
 std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors);
 

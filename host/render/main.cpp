@@ -11,7 +11,9 @@
 
 #include <pfx/host/chain.hpp>
 
+#include "camera_settings.hpp"
 #include "cli_text.hpp"
+#include "default_chain.hpp"
 #include "demo_image.hpp"
 #include "demo_scene.hpp"
 #include "import_scene.hpp"
@@ -20,9 +22,11 @@
 #include "headless_context.hpp"
 #include "image_stats.hpp"
 #include "image_texture.hpp"
+#include "input_image.hpp"
 #include "plugin_directory.hpp"
 #include "plugin_listing.hpp"
 #include "png_io.hpp"
+#include "preset.hpp"
 #include "render_options.hpp"
 #include "tonemap.hpp"
 
@@ -38,49 +42,12 @@ int error_exit(int code, const std::string& message) {
   return code;
 }
 
-// Lighting makes the colour, depth of field works on scene-referred colour, bloom and glare
-// spread what is left; anything else runs after them in load order.
-std::vector<std::string> default_chain(const host::PluginRegistry& registry) {
-  const std::vector<std::string> preferred = {"tiledlights", "dof", "bloom", "glare"};
-  std::vector<std::string> chain;
-  for (const auto& id : preferred)
-    if (registry.find_effect(id)) chain.push_back(id);
-  for (const auto& effect : registry.effects())
-    if (std::find(chain.begin(), chain.end(), effect.desc->id) == chain.end()) chain.push_back(effect.desc->id);
-  return chain;
-}
-
 bool load_input(const RenderOptions& options, Image* image, std::string* error) {
   if (options.demo_image) {
     *image = make_demo_image(options.width, options.height);
     return true;
   }
-  if (!read_exr(options.input, image, error)) return false;
-  if (!options.depth.empty()) {
-    Image depth;
-    if (!read_exr(options.depth, &depth, error)) return false;
-    if (depth.width != image->width || depth.height != image->height) {
-      *error = options.depth + ": depth is " + std::to_string(depth.width) + "x" + std::to_string(depth.height) +
-               " but the image is " + std::to_string(image->width) + "x" + std::to_string(image->height);
-      return false;
-    }
-    if (depth.has_depth()) {
-      image->depth = depth.depth;
-    } else {
-      image->depth.resize(image->pixel_count());
-      for (size_t i = 0; i < image->depth.size(); ++i) image->depth[i] = depth.rgba[i * 4];
-    }
-  }
-  return true;
-}
-
-// --camera keys replace the scene camera's lens settings; its place and aim stay.
-void apply_camera_keys(const RenderOptions& options, Camera* camera) {
-  for (const auto& key : options.camera_keys) {
-    if (key == "fovy") camera->fovy_radians = options.camera.fovy_degrees * M_PI / 180.0;
-    if (key == "near") camera->near_plane = options.camera.near_plane;
-    if (key == "far") camera->far_plane = options.camera.far_plane;
-  }
+  return read_input_image(options.input, options.depth, image, error);
 }
 
 bool write_outputs(const RenderOptions& options, const Image& result, std::string* error) {
@@ -137,8 +104,21 @@ int run(const RenderOptions& options) {
   }
   for (const auto& error : load_errors) std::fprintf(stderr, "pfx-render: warning: plugin not loaded: %s\n", error.c_str());
 
+  // A preset gives the chain, the values, the camera and the display settings; the command line
+  // overrides each of them.
+  Preset preset;
+  if (!options.preset.empty() && !read_preset(options.preset, &preset, &message)) return error_exit(kBadInput, message);
+  RenderOptions effective = options;
+  if (preset.exposure_ev && !options.exposure_given) effective.tone.exposure_ev = *preset.exposure_ev;
+  if (preset.tone && !options.tone_given) effective.tone.curve = *preset.tone;
+  effective.camera = CameraOptions{};
+  apply_preset_camera(preset.camera, &effective.camera);
+  apply_camera_keys(options.camera, options.camera_keys, &effective.camera);
+
   host::ParamStore params;
   for (const auto& effect : registry.effects()) params.add_effect(effect.desc);
+  if (!preset.parameters_json.empty() && !params.from_json(preset.parameters_json, &message))
+    return error_exit(kBadInput, options.preset + ": parameters: " + message);
   for (const auto& assignment : options.sets) {
     std::string note;
     if (!params.set_assignment(assignment, &message, &note)) return error_exit(kUsage, "--set " + message);
@@ -150,8 +130,15 @@ int run(const RenderOptions& options) {
                    : options.timing == "finish" ? host::Timing::FINISH_AND_CLOCK
                    : options.timing == "gpu"    ? host::Timing::GPU_QUERIES
                                                 : host::Timing::AUTO);
-  for (const auto& id : options.chain_given ? options.chain : default_chain(registry))
-    if (!chain.add(id, &message)) return error_exit(kEffectError, message);
+  std::vector<PresetEffect> effects;
+  if (options.chain_given || !preset.chain)
+    for (const auto& id : options.chain_given ? options.chain : default_chain(registry)) effects.push_back({id, true});
+  else
+    effects = *preset.chain;
+  for (const auto& effect : effects) {
+    if (!chain.add(effect.id, &message)) return error_exit(kEffectError, message);
+    chain.set_enabled(chain.size() - 1, effect.enabled);
+  }
 
   // The frame: the demo scene's G-buffer, or an image's colour (and depth).
   Scene scene;
@@ -171,7 +158,8 @@ int run(const RenderOptions& options) {
         return error_exit(kBadInput, message);
       for (const auto& warning : warnings) std::fprintf(stderr, "pfx-render: warning: %s\n", warning.c_str());
     }
-    apply_camera_keys(options, &scene.camera);
+    apply_preset_camera(preset.camera, &scene.camera);
+    apply_camera_keys(options.camera, options.camera_keys, &scene.camera);
     if (!validate_scene(scene, &message)) return error_exit(kUsage, "--camera: " + message);
     scene_renderer = SceneRenderer::create(scene, &message);
     if (!scene_renderer) return error_exit(kInternal, message);
@@ -186,7 +174,7 @@ int run(const RenderOptions& options) {
     frame.inputs = PFX_INPUT_COLOR;
     if (input.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
     frame.depth_encoding = input.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
-    frame.camera = make_camera(options.camera, input.width, input.height);
+    frame.camera = make_camera(effective.camera, input.width, input.height);
     frame.light_struct_size = sizeof(pfx_light);
     textures.color = upload_color_texture(input);
     textures.depth = upload_depth_texture(input);
@@ -204,7 +192,7 @@ int run(const RenderOptions& options) {
   delete_texture(output);
   if (!rendered) return error_exit(kEffectError, message);
 
-  if (!write_outputs(options, result, &message)) return error_exit(kInternal, message);
+  if (!write_outputs(effective, result, &message)) return error_exit(kInternal, message);
   const host::FrameReport& report = chain.report();
   if (options.json) {
     std::puts(report_json(context->renderer(), frame, report, compute_image_stats(result), options.outputs).dump(2).c_str());

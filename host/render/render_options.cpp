@@ -6,16 +6,6 @@
 #include <cstdlib>
 
 namespace pfx::app {
-namespace {
-
-// A whole number >= 0 in decimal, nothing else.
-bool parse_count(const std::string& text, long long* out) {
-  if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos) return false;
-  *out = std::stoll(text);
-  return true;
-}
-
-}  // namespace
 
 std::string render_usage() {
   return
@@ -23,7 +13,7 @@ std::string render_usage() {
       "                  | --scene FILE.obj [--lights N] [--seed S]\n"
       "                  | --input IMG.exr [--depth DEPTH.exr]) [--size WxH]\n"
       "                  [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
-      "                  [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
+      "                  [--preset FILE] [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
       "       pfx-render --list [--json] [--plugins DIR]...\n"
       "\n"
       "Runs a chain of pfx effects over one frame, headless (EGL, no window), and writes the result.\n"
@@ -54,6 +44,9 @@ std::string render_usage() {
       "  --chain a,b,...      the effects to run, in order (default: every loaded effect, lighting\n"
       "                       first, then depth of field, then bloom and glare, then the rest)\n"
       "  --set E.P=V          set parameter P of effect E (repeatable); see --list for every parameter\n"
+      "  --preset FILE        a preset saved by pfx-view (docs/viewer.md): the chain with each effect\n"
+      "                       on or off, parameter values, the camera and the display settings;\n"
+      "                       --chain, --set, --camera, --exposure and --tone given as well override it\n"
       "  --list               list plugins, effects and parameters (with --json: all metadata)\n"
       "\n"
       "output\n"
@@ -96,6 +89,7 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     else if (arg == "-v" || arg == "--verbose") options.verbose = true;
     else if (arg == "--input") { if (!value(&options.input)) return false; }
     else if (arg == "--scene") { if (!value(&options.scene)) return false; }
+    else if (arg == "--preset") { if (!value(&options.preset)) return false; }
     else if (arg == "--depth") { if (!value(&options.depth)) return false; }
     else if (arg == "--plugins") {
       if (!value(&text)) return false;
@@ -137,11 +131,13 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
       if (!value(&text)) return false;
       char* end = nullptr;
       options.tone.exposure_ev = std::strtod(text.c_str(), &end);
+      options.exposure_given = true;
       if (text.empty() || *end || !(options.tone.exposure_ev == options.tone.exposure_ev))
         return fail("--exposure " + text + ": not a number");
     } else if (arg == "--tone") {
       if (!value(&text)) return false;
       if (!parse_tone_curve(text, &options.tone.curve, error)) return false;
+      options.tone_given = true;
     } else if (arg == "--timing") {
       if (!value(&options.timing)) return false;
       if (options.timing != "auto" && options.timing != "gpu" && options.timing != "finish" && options.timing != "off")

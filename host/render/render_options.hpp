@@ -32,6 +32,8 @@ struct RenderOptions {
   std::vector<std::string> outputs;      // --out FILE.exr|FILE.png, repeatable
   bool float_exr = false;
   ToneMapSettings tone;
+  bool exposure_given = false, tone_given = false;
+  std::string preset;                    // --preset FILE (pfx-view saves them)
   std::string timing = "auto";           // auto | gpu | finish | off
   bool verbose = false;
 };

@@ -1,0 +1,125 @@
+#include "frame_source.hpp"
+
+#include <cmath>
+
+#include "camera_settings.hpp"
+#include "demo_image.hpp"
+#include "demo_scene.hpp"
+#include "image_texture.hpp"
+#include "input_image.hpp"
+
+namespace pfx::app {
+namespace {
+
+bool same_camera(const Camera& a, const Camera& b) {
+  return a.position == b.position && a.target == b.target && a.up == b.up && a.fovy_radians == b.fovy_radians &&
+         a.near_plane == b.near_plane && a.far_plane == b.far_plane;
+}
+
+CameraOptions lens_of(const Camera& camera) {
+  CameraOptions lens;
+  lens.fovy_degrees = camera.fovy_radians * 180.0 / M_PI;
+  lens.near_plane = camera.near_plane;
+  lens.far_plane = camera.far_plane;
+  return lens;
+}
+
+}  // namespace
+
+std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, std::string* error, bool* bad_input) {
+  std::unique_ptr<FrameSource> self(new FrameSource);
+  self->kind_ = options.input;
+  *bad_input = false;
+  if (options.input == ViewInput::DemoScene) {
+    self->scene_ = make_demo_scene({options.extra_lights, options.seed});
+    self->renderer_ = SceneRenderer::create(self->scene_, error);
+    if (!self->renderer_) return nullptr;
+    self->camera_ = self->scene_.camera;
+    self->description_ = "demo scene (" + std::to_string(self->scene_.lights.size()) + " lights)";
+  } else {
+    // An image's camera sits at the origin looking down -Z (as in pfx-render).
+    self->camera_.position = glm::dvec3(0.0);
+    self->camera_.target = glm::dvec3(0.0, 0.0, -1.0);
+    apply_camera_keys(CameraOptions{}, {"fovy", "near", "far"}, &self->camera_);
+    if (options.input == ViewInput::Image) {
+      Image image;
+      if (!read_input_image(options.input_path, options.depth_path, &image, error)) {
+        *bad_input = true;
+        return nullptr;
+      }
+      self->upload_image(image);
+      self->description_ = options.input_path + " " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                           (image.has_depth() ? " with depth" : "");
+    } else {
+      self->description_ = "demo image";
+    }
+  }
+  self->initial_camera_ = self->camera_;
+  return self;
+}
+
+FrameSource::~FrameSource() { release_image(); }
+
+void FrameSource::upload_image(const Image& image) {
+  release_image();
+  color_ = upload_color_texture(image);
+  depth_ = upload_depth_texture(image);
+  has_depth_ = image.has_depth();
+  width_ = image.width;
+  height_ = image.height;
+}
+
+void FrameSource::release_image() {
+  delete_texture(color_);
+  delete_texture(depth_);
+  color_ = depth_ = 0;
+}
+
+void FrameSource::prepare(int width, int height, bool force) {
+  width = std::max(width, 1);
+  height = std::max(height, 1);
+  switch (kind_) {
+    case ViewInput::Image:
+      return;
+    case ViewInput::DemoImage:
+      if (width != width_ || height != height_) upload_image(make_demo_image(width, height));
+      return;
+    case ViewInput::DemoScene:
+      if (force || !rendered_once_ || width != width_ || height != height_ || !same_camera(camera_, rendered_camera_)) {
+        renderer_->render(camera_, width, height);
+        rendered_camera_ = camera_;
+        rendered_once_ = true;
+        width_ = width;
+        height_ = height;
+      }
+      return;
+  }
+}
+
+pfx_frame FrameSource::frame(double time_seconds, uint64_t frame_index) const {
+  pfx_frame frame{};
+  if (renderer_) {
+    frame = make_scene_frame(scene_, camera_, width_, height_);
+  } else {
+    frame.struct_size = sizeof frame;
+    frame.width = static_cast<uint32_t>(width_);
+    frame.height = static_cast<uint32_t>(height_);
+    frame.inputs = PFX_INPUT_COLOR | (has_depth_ ? uint32_t(PFX_INPUT_DEPTH) : 0u);
+    frame.depth_encoding = has_depth_ ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
+    frame.camera = make_camera(lens_of(camera_), width_, height_);
+    frame.light_struct_size = sizeof(pfx_light);
+  }
+  frame.time_seconds = time_seconds;
+  frame.frame_index = frame_index;
+  return frame;
+}
+
+pfx::host::FrameTextures FrameSource::textures() const {
+  if (renderer_) return renderer_->textures();
+  pfx::host::FrameTextures textures;
+  textures.color = color_;
+  textures.depth = depth_;
+  return textures;
+}
+
+}  // namespace pfx::app

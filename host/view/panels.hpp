@@ -1,0 +1,30 @@
+// The viewer's panels, drawn with Dear ImGui each frame. None of them knows any plugin: the
+// parameter panel is made from the descriptors, the timing panel from the chain's report.
+#pragma once
+
+#include <string>
+
+#include "viewer_session.hpp"
+
+namespace pfx::app {
+
+// What the panels and the main loop share besides the session.
+struct UiState {
+  bool continuous = false;   // render every frame (for live timings), not only on change
+  double frame_ms = 0;       // the whole loop, UI included, smoothed
+  std::string param_problem;  // the last refused parameter change
+  bool frame_camera = false, reset_camera = false, screenshot = false;  // requests from buttons
+};
+
+// Effects in order: on/off, up/down, remove, add.
+void draw_chain_panel(ViewerSession& session);
+// One collapsing header per effect in the chain, its parameters inside.
+void draw_parameters_panel(ViewerSession& session, UiState& ui);
+// Per-pass times, frame time, peak target memory, skipped effects, the effects' own figures.
+void draw_timing_panel(ViewerSession& session, UiState& ui);
+// Input, display, camera, presets, screenshots, hot reload, messages and the controls.
+void draw_view_panel(ViewerSession& session, UiState& ui);
+// A red line at the top while frames fail.
+void draw_error_overlay(const ViewerSession& session);
+
+}  // namespace pfx::app

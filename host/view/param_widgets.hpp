@@ -1,0 +1,20 @@
+// Dear ImGui widgets for an effect's parameters, made from the descriptors alone (no code here
+// knows any plugin): sliders over the display range with the unit, drag fields for vectors, combos
+// for enums, colour pickers, check boxes; tooltips; the descriptors' groups as tree nodes; a reset
+// button where a value differs from its default. Every change goes through the ParamStore, which
+// validates and clamps it.
+#pragma once
+
+#include <string>
+
+#include <pfx/host/param_store.hpp>
+
+namespace pfx::app {
+
+// Returns true when a value changed. A refused change leaves *problem set (else it is cleared).
+bool draw_effect_parameters(const pfx_effect_desc& effect, pfx::host::ParamStore& params, std::string* problem);
+
+// The ImGui format for a number with its unit: "%.3f px" (a '%' in the unit doubled).
+std::string number_format(const pfx_param_desc& param, bool integer);
+
+}  // namespace pfx::app

@@ -1,0 +1,162 @@
+#include "view_options.hpp"
+
+#include <cstdlib>
+
+#include "cli_text.hpp"
+
+namespace pfx::app {
+
+std::string view_usage() {
+  return
+      "usage: pfx-view [--plugins DIR]... [--demo [--lights N] [--seed S] | --demo-image\n"
+      "                | --input IMG.exr [--depth DEPTH.exr]] [--size WxH] [--window WxH]\n"
+      "                [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...] [--preset FILE]\n"
+      "                [--set effect.param=value]... [--exposure EV] [--tone NAME] [--save-preset FILE]\n"
+      "                [--frames N [--screenshot FILE.png] [--window-shot FILE.png]]\n"
+      "\n"
+      "Shows a scene or an image through a chain of pfx effects in a window (GL 4.5 core, GLFW), with\n"
+      "panels made from the plugins' parameter descriptions, per-pass timings and hot reload of\n"
+      "rebuilt plugins. docs/viewer.md has the controls.\n"
+      "\n"
+      "input\n"
+      "  --demo               the built-in 3D scene (the default): floor, boxes, spheres, emissive\n"
+      "                       objects and 400 point lights; effects get the whole G-buffer and the lights\n"
+      "  --lights N           with --demo: N more lights at random inside the scene (default 0)\n"
+      "  --seed S             with --demo: the seed of every random choice (default 1)\n"
+      "  --demo-image         the procedural HDR image of pfx-render --demo-image (colour and depth)\n"
+      "  --input IMG.exr      an OpenEXR image; a Z channel is linear depth (m)\n"
+      "  --depth DEPTH.exr    linear depth from another EXR (its Z channel, else its R channel)\n"
+      "  --size WxH           the frame size; default: the window's size (an image keeps its own)\n"
+      "  --window WxH         the window's first size (default: --size, else 1280x720)\n"
+      "  --camera K=V,...     lens: fovy (degrees, 45), near (m, 0.1), far (m, 1000, or inf)\n"
+      "\n"
+      "effects\n"
+      "  --plugins DIR        load plugins from DIR (repeatable); default: the plugins folder next to\n"
+      "                       this program's folder; PFX_PLUGIN_PATH (':'-separated) adds more\n"
+      "  --chain a,b,...      the effects, in order (default: every loaded effect, as pfx-render)\n"
+      "  --set E.P=V          set parameter P of effect E (repeatable)\n"
+      "  --preset FILE        start from a preset (chain, values, camera, display); \"Save preset\"\n"
+      "                       writes back to it. --chain, --set, --camera, --exposure, --tone override it\n"
+      "  --save-preset FILE   write the look as a preset when the viewer exits (and make FILE where\n"
+      "                       \"save preset\" writes)\n"
+      "  --no-watch           do not reload plugins whose files change\n"
+      "\n"
+      "display\n"
+      "  --exposure EV        exposure before the tone curve (default 0)\n"
+      "  --tone NAME          tone curve: linear (default), reinhard, aces\n"
+      "\n"
+      "scripted use (tests, documentation)\n"
+      "  --frames N           render N frames, write the files below, exit\n"
+      "  --screenshot FILE.png  the last frame as pfx-render would write it: FILE.png (tone-mapped)\n"
+      "                       and FILE.exr (half, scene-linear) beside it\n"
+      "  --window-shot FILE.png the whole window, panels included, as shown\n"
+      "  --shots DIR          where F12 (or SIGUSR1) writes pfx-view-NNNN.exr/.png/.json (default .)\n"
+      "  -v, --verbose        also print debug messages\n"
+      "\n"
+      "signals: SIGUSR1 takes a screenshot as F12 does; SIGINT and SIGTERM close the window cleanly.\n"
+      "exit codes: 0 ok, 1 internal error (no window or no OpenGL 4.5 context), 2 usage, 3 bad input\n"
+      "            file, 4 plugin or effect error (at start, or any frame of a scripted run)\n";
+}
+
+bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, std::string* error) {
+  ViewOptions options;
+  auto fail = [&](const std::string& message) {
+    *error = message;
+    return false;
+  };
+  int inputs_given = 0;
+  bool lights_given = false, seed_given = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&](std::string* into) {
+      if (i + 1 >= args.size()) return fail(arg + " needs a value");
+      *into = args[++i];
+      return true;
+    };
+    std::string text;
+    long long number = 0;
+    if (arg == "-h" || arg == "--help") options.help = true;
+    else if (arg == "-v" || arg == "--verbose") options.verbose = true;
+    else if (arg == "--no-watch") options.watch = false;
+    else if (arg == "--demo") options.input = ViewInput::DemoScene, ++inputs_given;
+    else if (arg == "--demo-image") options.input = ViewInput::DemoImage, ++inputs_given;
+    else if (arg == "--input") {
+      if (!value(&options.input_path)) return false;
+      options.input = ViewInput::Image;
+      ++inputs_given;
+    } else if (arg == "--depth") { if (!value(&options.depth_path)) return false; }
+    else if (arg == "--preset") { if (!value(&options.preset)) return false; }
+    else if (arg == "--save-preset") { if (!value(&options.save_preset)) return false; }
+    else if (arg == "--screenshot") {
+      if (!value(&options.screenshot)) return false;
+      if (!ends_with(options.screenshot, ".png")) return fail("--screenshot " + options.screenshot + ": the file name must end in .png");
+    } else if (arg == "--window-shot") {
+      if (!value(&options.window_shot)) return false;
+      if (!ends_with(options.window_shot, ".png")) return fail("--window-shot " + options.window_shot + ": the file name must end in .png");
+    } else if (arg == "--shots") { if (!value(&options.shots_dir)) return false; }
+    else if (arg == "--plugins") {
+      if (!value(&text)) return false;
+      options.plugin_dirs.push_back(text);
+    } else if (arg == "--set") {
+      if (!value(&text)) return false;
+      options.sets.push_back(text);
+    } else if (arg == "--chain") {
+      if (!value(&text)) return false;
+      options.chain_given = true;
+      options.chain = split_list(text);
+    } else if (arg == "--size") {
+      if (!value(&text) || !parse_frame_size("--size", text, &options.width, &options.height, error)) return false;
+      options.size_given = true;
+    } else if (arg == "--window") {
+      if (!value(&text) || !parse_frame_size("--window", text, &options.window_width, &options.window_height, error))
+        return false;
+      options.window_given = true;
+    } else if (arg == "--camera") {
+      if (!value(&text) || !parse_camera_options(text, &options.camera, error)) return false;
+      for (const auto& item : split_list(text)) options.camera_keys.push_back(item.substr(0, item.find('=')));
+    } else if (arg == "--lights") {
+      if (!value(&text)) return false;
+      if (!parse_count(text, &number) || number > 10000000)
+        return fail("--lights " + text + ": expected a whole number from 0 to 10000000");
+      options.extra_lights = static_cast<int>(number);
+      lights_given = true;
+    } else if (arg == "--seed") {
+      if (!value(&text)) return false;
+      if (!parse_count(text, &number)) return fail("--seed " + text + ": expected a whole number >= 0");
+      options.seed = static_cast<uint64_t>(number);
+      seed_given = true;
+    } else if (arg == "--frames") {
+      if (!value(&text)) return false;
+      if (!parse_count(text, &options.frames) || options.frames < 1 || options.frames > 1000000)
+        return fail("--frames " + text + ": expected a whole number from 1 to 1000000");
+    } else if (arg == "--exposure") {
+      if (!value(&text)) return false;
+      char* end = nullptr;
+      options.tone.exposure_ev = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end || !(options.tone.exposure_ev == options.tone.exposure_ev))
+        return fail("--exposure " + text + ": not a number");
+      options.exposure_given = true;
+    } else if (arg == "--tone") {
+      if (!value(&text) || !parse_tone_curve(text, &options.tone.curve, error)) return false;
+      options.tone_given = true;
+    } else {
+      return fail("unknown option '" + arg + "' (see --help)");
+    }
+  }
+  if (options.help) {
+    *out = options;
+    return true;
+  }
+  if (inputs_given > 1) return fail("give at most one of --demo, --demo-image or --input IMG.exr");
+  if (!options.depth_path.empty() && options.input != ViewInput::Image) return fail("--depth goes with --input");
+  if (options.size_given && options.input == ViewInput::Image)
+    return fail("--size applies to --demo and --demo-image (an input image has its own size)");
+  if ((lights_given || seed_given) && options.input != ViewInput::DemoScene) return fail("--lights and --seed go with --demo");
+  if (options.size_given && !options.window_given) options.window_width = options.width, options.window_height = options.height;
+  if ((!options.screenshot.empty() || !options.window_shot.empty()) && options.frames == 0)
+    return fail("--screenshot and --window-shot go with --frames N");
+  *out = options;
+  return true;
+}
+
+}  // namespace pfx::app

@@ -1,0 +1,48 @@
+// pfx-view's command line, parsed into plain data so it can be tested on its own.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "camera_options.hpp"
+#include "tonemap.hpp"
+
+namespace pfx::app {
+
+enum class ViewInput { DemoScene, DemoImage, Image };
+
+struct ViewOptions {
+  bool help = false;
+  ViewInput input = ViewInput::DemoScene;  // --demo (the default), --demo-image, --input
+  std::string input_path, depth_path;       // --input IMG.exr [--depth DEPTH.exr]
+  int extra_lights = 0;                     // --lights N, --demo only
+  uint64_t seed = 1;                        // --seed S, --demo only
+  // The frame size (--size). Without it the frame follows the window's size (an image keeps its own).
+  bool size_given = false;
+  int width = 0, height = 0;
+  bool window_given = false;
+  int window_width = 1280, window_height = 720;  // --window WxH (default: --size, else 1280x720)
+  CameraOptions camera;
+  std::vector<std::string> camera_keys;  // the keys --camera gave
+  std::vector<std::string> plugin_dirs;
+  bool chain_given = false;
+  std::vector<std::string> chain;
+  std::vector<std::string> sets;
+  std::string preset;       // --preset FILE: applied at start; also where "save preset" writes by default
+  std::string save_preset;  // --save-preset FILE: written when the viewer exits
+  ToneMapSettings tone;
+  bool exposure_given = false, tone_given = false;
+  long long frames = 0;        // --frames N: render N frames, write the screenshots, exit; 0: interactive
+  std::string screenshot;      // --screenshot FILE.png: the frame (and FILE.exr beside it)
+  std::string window_shot;     // --window-shot FILE.png: the whole window, panels included
+  std::string shots_dir = ".";  // --shots DIR: where F12 writes
+  bool watch = true;            // --no-watch turns hot reload off
+  bool verbose = false;
+};
+
+// Parses argv (without argv[0]). False with *error for a usage error (exit code 2).
+bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, std::string* error);
+std::string view_usage();
+
+}  // namespace pfx::app

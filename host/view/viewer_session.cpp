@@ -1,0 +1,265 @@
+#include "viewer_session.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <functional>
+
+#include <pfx/host/hot_reload.hpp>
+
+#include "camera_settings.hpp"
+#include "default_chain.hpp"
+#include "frame_files.hpp"
+#include "image_texture.hpp"
+#include "plugin_directory.hpp"
+
+namespace pfx::app {
+namespace {
+
+constexpr size_t kMaxMessages = 100;
+constexpr double kPollInterval = 0.1;  // seconds between plugin file checks
+
+// Order-dependent mixing of the numbers that make up the state stamp.
+void mix(uint64_t* h, uint64_t value) { *h = (*h ^ value) * 1099511628211ull; }
+void mix(uint64_t* h, double value) { mix(h, std::hash<double>{}(value)); }
+
+}  // namespace
+
+std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options, const std::string& renderer,
+                                                     pfx::host::GlProcLoader gl_loader, std::string* error,
+                                                     int* exit_code) {
+  auto fail = [&](int code, const std::string& message) -> std::unique_ptr<ViewerSession> {
+    *exit_code = code;
+    *error = message;
+    return nullptr;
+  };
+  std::unique_ptr<ViewerSession> self(new ViewerSession);
+  ViewerSession* session = self.get();
+  self->renderer_ = renderer;
+  // Plugin messages go to stderr as usual; warnings and errors are also shown in the window.
+  auto to_stderr = pfx::host::stderr_log_sink(options.verbose ? PFX_LOG_DEBUG : PFX_LOG_INFO);
+  auto sink = [session, to_stderr](pfx_log_level level, const std::string& source, const std::string& message) {
+    to_stderr(level, source, message);
+    if (level >= PFX_LOG_WARNING) session->remember({level >= PFX_LOG_ERROR, "[" + source + "] " + message});
+  };
+  self->registry_ = std::make_unique<pfx::host::PluginRegistry>(std::move(gl_loader), sink, "pfx-view " PFX_VERSION);
+  for (const auto& message : load_plugins(*self->registry_, options.plugin_dirs))
+    self->error("plugin not loaded: " + message);
+  for (const auto& effect : self->registry_->effects()) self->params_.add_effect(effect.desc);
+
+  Preset preset;
+  std::string message;
+  if (!options.preset.empty() && !read_preset(options.preset, &preset, &message)) return fail(3, message);
+  if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
+    return fail(3, options.preset + ": parameters: " + message);
+  for (const auto& assignment : options.sets) {
+    std::string note;
+    if (!self->params_.set_assignment(assignment, &message, &note)) return fail(2, "--set " + message);
+    if (!note.empty()) self->info("--set " + assignment + ": " + note);
+  }
+
+  self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
+  std::vector<PresetEffect> effects;
+  if (options.chain_given || !preset.chain)
+    for (const auto& id : options.chain_given ? options.chain : default_chain(*self->registry_)) effects.push_back({id, true});
+  else
+    effects = *preset.chain;
+  if (!self->build_chain(effects, &message)) return fail(4, message);
+
+  bool bad_input = false;
+  self->source_ = FrameSource::create(options, &message, &bad_input);
+  if (!self->source_) return fail(bad_input ? 3 : 1, message);
+  Camera& camera = self->source_->camera();
+  const Camera place = camera;
+  apply_preset_camera(preset.camera, &camera);
+  apply_camera_keys(options.camera, options.camera_keys, &camera);
+  if (!self->source_->has_scene()) camera.position = place.position, camera.target = place.target, camera.up = place.up;
+  if (!(camera.far_plane > camera.near_plane)) return fail(2, "camera: far must be greater than near");
+
+  self->tone_ = options.tone;
+  if (preset.exposure_ev && !options.exposure_given) self->tone_.exposure_ev = *preset.exposure_ev;
+  if (preset.tone && !options.tone_given) self->tone_.curve = *preset.tone;
+
+  self->preset_path_ = !options.save_preset.empty() ? options.save_preset
+                       : !options.preset.empty()     ? options.preset
+                                                     : "pfx-preset.json";
+  self->shots_dir_ = options.shots_dir;
+  self->set_watching(options.watch);
+  return self;
+}
+
+ViewerSession::~ViewerSession() {
+  // GL objects before the chain and the registry (the context is still current).
+  delete_texture(output_);
+  delete_texture(spare_);
+  source_.reset();
+  chain_.reset();
+}
+
+bool ViewerSession::build_chain(const std::vector<PresetEffect>& effects, std::string* error) {
+  while (chain_->size() > 0) chain_->remove(chain_->size() - 1);
+  for (const auto& effect : effects) {
+    if (!chain_->add(effect.id, error)) return false;
+    chain_->set_enabled(chain_->size() - 1, effect.enabled);
+  }
+  return true;
+}
+
+uint64_t ViewerSession::state_stamp(int width, int height) const {
+  uint64_t h = 1469598103934665603ull;
+  mix(&h, uint64_t(width));
+  mix(&h, uint64_t(height));
+  mix(&h, reload_count_);
+  mix(&h, uint64_t(chain_->size()));
+  for (size_t i = 0; i < chain_->size(); ++i) {
+    const std::string id = chain_->effect_id(i);
+    mix(&h, std::hash<std::string>{}(id));
+    mix(&h, uint64_t(chain_->enabled(i)));
+    mix(&h, params_.revision(id));
+  }
+  const Camera& c = source_->camera();
+  for (double v : {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y,
+                   c.up.z, c.fovy_radians, c.near_plane, c.far_plane})
+    mix(&h, v);
+  return h;
+}
+
+bool ViewerSession::render(int width, int height, double time_seconds, bool force_scene) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  source_->prepare(width, height, force_scene);
+  const int w = source_->width(), h = source_->height();
+  if (w != output_width_ || h != output_height_) {
+    delete_texture(output_);
+    delete_texture(spare_);
+    output_ = create_color_texture(w, h);
+    spare_ = create_color_texture(w, h);
+    output_width_ = w;
+    output_height_ = h;
+  }
+  // Into the spare texture, swapped in on success: a failing frame leaves the last good one shown.
+  std::string message;
+  bool ok = chain_->render(source_->frame(time_seconds, frame_index_++), source_->textures(), spare_, &message);
+  last_render_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  if (!ok) {
+    if (message != render_error_) error("frame failed: " + message);
+    render_error_ = message;
+    return false;
+  }
+  std::swap(output_, spare_);
+  render_error_.clear();
+  return true;
+}
+
+void ViewerSession::set_watching(bool on) {
+  watching_ = on;
+  if (!on) return;
+  // Start from the files as they are now: a change made while not watching is not a rebuild.
+  for (const auto& plugin : registry_->plugins()) watcher_.watch(plugin->id, plugin->path);
+}
+
+void ViewerSession::poll_plugins(double now_seconds) {
+  if (!watching_ || now_seconds - last_poll_ < kPollInterval) return;
+  last_poll_ = now_seconds;
+  for (const auto& id : watcher_.poll(now_seconds)) {
+    pfx::host::ReloadResult result;
+    std::string message;
+    const std::string path = registry_->find_plugin(id)->path;
+    if (!pfx::host::reload_plugin(*registry_, params_, *chain_, id, &result, &message)) {
+      error("reload failed: " + message + "; the previous version keeps running");
+      continue;
+    }
+    ++reload_count_;
+    std::string text = "reloaded " + id + " " + result.old_version + " -> " + result.new_version + " from " + path +
+                       " (parameter values kept)";
+    for (const auto& dropped : result.effects_dropped) text += "; effect '" + dropped + "' is gone and left the chain";
+    info(text);
+  }
+}
+
+Preset ViewerSession::current_preset() const {
+  Preset preset;
+  preset.chain.emplace();
+  for (size_t i = 0; i < chain_->size(); ++i) preset.chain->push_back({chain_->effect_id(i), chain_->enabled(i)});
+  preset.parameters_json = params_.to_json();
+  const Camera& camera = source_->camera();
+  preset.camera = preset_camera_of(camera);
+  if (!source_->has_scene()) preset.camera.position.reset(), preset.camera.target.reset(), preset.camera.up.reset();
+  preset.exposure_ev = tone_.exposure_ev;
+  preset.tone = tone_.curve;
+  return preset;
+}
+
+bool ViewerSession::apply_preset(const Preset& preset, std::string* error) {
+  if (preset.chain)
+    for (const auto& effect : *preset.chain)
+      if (!registry_->find_effect(effect.id)) {
+        *error = "chain: effect '" + effect.id + "' is not loaded";
+        return false;
+      }
+  pfx::host::ParamStore values = params_;
+  if (!preset.parameters_json.empty() && !values.from_json(preset.parameters_json, error)) {
+    *error = "parameters: " + *error;
+    return false;
+  }
+  Camera camera = source_->camera();
+  apply_preset_camera(preset.camera, &camera);
+  if (!source_->has_scene()) camera.position = source_->camera().position, camera.target = source_->camera().target, camera.up = source_->camera().up;
+  if (!(camera.far_plane > camera.near_plane)) {
+    *error = "camera: far must be greater than near";
+    return false;
+  }
+  params_ = values;
+  if (preset.chain && !build_chain(*preset.chain, error)) return false;
+  source_->camera() = camera;
+  if (preset.exposure_ev) tone_.exposure_ev = *preset.exposure_ev;
+  if (preset.tone) tone_.curve = *preset.tone;
+  return true;
+}
+
+void ViewerSession::save_preset() {
+  std::string message;
+  if (write_preset(preset_path_, current_preset(), &message)) info("saved preset " + preset_path_);
+  else error(message);
+}
+
+void ViewerSession::load_preset() {
+  Preset preset;
+  std::string message;
+  if (!read_preset(preset_path_, &preset, &message)) return error(message);
+  if (!apply_preset(preset, &message)) return error(preset_path_ + ": " + message);
+  info("loaded preset " + preset_path_);
+}
+
+bool ViewerSession::write_frame(const std::string& png_path, std::string* error) {
+  if (!output_) {
+    *error = "no frame has been rendered yet";
+    return false;
+  }
+  return write_frame_pair(download_color_texture(output_, output_width_, output_height_), png_path, tone_, error);
+}
+
+void ViewerSession::take_screenshot() {
+  const std::string base = next_screenshot_base(shots_dir_);
+  std::string message;
+  if (!write_frame(base + ".png", &message) || !write_preset(base + ".json", current_preset(), &message))
+    return error("screenshot failed: " + message);
+  info("screenshot " + base + ".png, .exr and .json (the preset)");
+}
+
+void ViewerSession::info(const std::string& text) {
+  std::printf("pfx-view: %s\n", text.c_str());
+  std::fflush(stdout);
+  remember({false, text});
+}
+
+void ViewerSession::error(const std::string& text) {
+  std::fprintf(stderr, "pfx-view: error: %s\n", text.c_str());
+  remember({true, text});
+}
+
+void ViewerSession::remember(Message message) {
+  messages_.push_back(std::move(message));
+  if (messages_.size() > kMaxMessages) messages_.pop_front();
+}
+
+}  // namespace pfx::app

@@ -1,0 +1,103 @@
+// Everything the viewer shows and changes, without the window: plugins, parameters, the chain,
+// the frame source and camera, display settings, hot reload, presets, screenshots and the
+// messages shown to the user. The panels and the main loop work through it. GL thread only.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+
+#include <pfx/host/chain.hpp>
+#include <pfx/host/plugin_watcher.hpp>
+
+#include "frame_source.hpp"
+#include "preset.hpp"
+#include "tonemap.hpp"
+#include "view_options.hpp"
+
+namespace pfx::app {
+
+struct Message {
+  bool error = false;
+  std::string text;
+};
+
+class ViewerSession {
+ public:
+  // Loads the plugins, builds the input, the chain (preset, then --chain / --set / --camera on
+  // top) and the output. Null with *error and *exit_code (2 usage, 3 bad input file, 4 plugin or
+  // effect error, 1 GL) on failure.
+  static std::unique_ptr<ViewerSession> create(const ViewOptions& options, const std::string& renderer,
+                                               pfx::host::GlProcLoader gl_loader, std::string* error,
+                                               int* exit_code);
+  ~ViewerSession();
+  ViewerSession(const ViewerSession&) = delete;
+  ViewerSession& operator=(const ViewerSession&) = delete;
+
+  pfx::host::PluginRegistry& registry() { return *registry_; }
+  pfx::host::ParamStore& params() { return params_; }
+  pfx::host::Chain& chain() { return *chain_; }
+  FrameSource& source() { return *source_; }
+  ToneMapSettings& tone() { return tone_; }
+  const std::string& renderer() const { return renderer_; }
+
+  // A number that changes whenever what the chain would output changes (chain order and flags,
+  // parameter values, camera, frame size): the main loop renders again only when it moves.
+  uint64_t state_stamp(int width, int height) const;
+  // Renders the inputs and runs the chain. On failure the error is kept (render_error()) and
+  // shown, and the last good output stays on screen.
+  bool render(int width, int height, double time_seconds, bool force_scene);
+  uint32_t output_texture() const { return output_; }
+  int output_width() const { return output_width_; }
+  int output_height() const { return output_height_; }
+  const std::string& render_error() const { return render_error_; }
+  double last_render_ms() const { return last_render_ms_; }
+
+  // Hot reload: polls the plugin files and reloads those rebuilt (keeping parameter values).
+  bool watching() const { return watching_; }
+  void set_watching(bool on);
+  void poll_plugins(double now_seconds);
+  uint64_t reload_count() const { return reload_count_; }
+
+  // Presets: the current look, and applying one (the chain, values, camera, display).
+  Preset current_preset() const;
+  bool apply_preset(const Preset& preset, std::string* error);
+  std::string& preset_path() { return preset_path_; }
+  void save_preset();  // to preset_path(), reported as a message
+  void load_preset();
+
+  // Screenshots: the current output as pfx-render writes it.
+  bool write_frame(const std::string& png_path, std::string* error);
+  // F12: DIR/pfx-view-NNNN.png, .exr and the preset as .json; reported as a message.
+  void take_screenshot();
+
+  void info(const std::string& text);
+  void error(const std::string& text);
+  const std::deque<Message>& messages() const { return messages_; }
+
+ private:
+  ViewerSession() = default;
+  bool build_chain(const std::vector<PresetEffect>& effects, std::string* error);
+  void remember(Message message);
+
+  std::string renderer_;
+  std::unique_ptr<pfx::host::PluginRegistry> registry_;
+  pfx::host::ParamStore params_;
+  std::unique_ptr<pfx::host::Chain> chain_;
+  std::unique_ptr<FrameSource> source_;
+  ToneMapSettings tone_;
+  pfx::host::PluginWatcher watcher_;
+  bool watching_ = false;
+  double last_poll_ = -1;
+  uint64_t reload_count_ = 0;
+  uint32_t output_ = 0, spare_ = 0;
+  uint64_t frame_index_ = 0;
+  int output_width_ = 0, output_height_ = 0;
+  std::string render_error_;
+  double last_render_ms_ = 0;
+  std::string preset_path_, shots_dir_;
+  std::deque<Message> messages_;
+};
+
+}  // namespace pfx::app

@@ -1,0 +1,56 @@
+// pfx-view's command line: defaults, and every usage error with its message.
+#include <catch2/catch.hpp>
+
+#include "view_options.hpp"
+
+using namespace pfx::app;
+
+namespace {
+
+std::string usage_error(const std::vector<std::string>& args) {
+  ViewOptions options;
+  std::string error;
+  CHECK_FALSE(parse_view_options(args, &options, &error));
+  return error;
+}
+
+}  // namespace
+
+TEST_CASE("pfx-view defaults to the demo scene, a window-sized frame and watching plugins", "[view][options]") {
+  ViewOptions options;
+  std::string error;
+  REQUIRE(parse_view_options({}, &options, &error));
+  CHECK(options.input == ViewInput::DemoScene);
+  CHECK_FALSE(options.size_given);
+  CHECK(options.window_width == 1280);
+  CHECK(options.window_height == 720);
+  CHECK(options.watch);
+  CHECK(options.frames == 0);
+
+  REQUIRE(parse_view_options({"--demo-image", "--size", "320x200", "--frames", "3", "--screenshot", "a.png"}, &options, &error));
+  CHECK(options.input == ViewInput::DemoImage);
+  CHECK(options.window_width == 320);  // the window follows --size unless --window is given
+  CHECK(options.window_height == 200);
+  REQUIRE(parse_view_options({"--size", "320x200", "--window", "800x600", "--camera", "fovy=30,far=inf"}, &options, &error));
+  CHECK(options.window_width == 800);
+  CHECK(options.camera.fovy_degrees == 30);
+  CHECK(options.camera_keys == std::vector<std::string>{"fovy", "far"});
+}
+
+TEST_CASE("pfx-view usage errors name the option", "[view][options][errors]") {
+  CHECK(usage_error({"--bogus"}) == "unknown option '--bogus' (see --help)");
+  CHECK(usage_error({"--demo", "--demo-image"}) == "give at most one of --demo, --demo-image or --input IMG.exr");
+  CHECK(usage_error({"--depth", "d.exr"}) == "--depth goes with --input");
+  CHECK(usage_error({"--input", "a.exr", "--size", "10x10"}) ==
+        "--size applies to --demo and --demo-image (an input image has its own size)");
+  CHECK(usage_error({"--demo-image", "--lights", "5"}) == "--lights and --seed go with --demo");
+  CHECK(usage_error({"--screenshot", "a.png"}) == "--screenshot and --window-shot go with --frames N");
+  CHECK(usage_error({"--frames", "1", "--screenshot", "a.jpg"}) == "--screenshot a.jpg: the file name must end in .png");
+  CHECK(usage_error({"--frames", "0"}) == "--frames 0: expected a whole number from 1 to 1000000");
+  CHECK(usage_error({"--frames", "-3"}) == "--frames -3: expected a whole number from 1 to 1000000");
+  CHECK(usage_error({"--size", "0x10"}) == "--size 0x10: expected WxH with 1 <= W, H <= 16384");
+  CHECK(usage_error({"--exposure", "nan"}) == "--exposure nan: not a number");
+  CHECK(usage_error({"--tone", "filmic"}) == "unknown tone curve 'filmic' (choose one of: linear, reinhard, aces)");
+  CHECK(usage_error({"--camera", "near=0"}) == "--camera: near must be a positive finite distance");
+  CHECK(usage_error({"--preset"}) == "--preset needs a value");
+}

@@ -1,0 +1,113 @@
+// Hot reload in the running viewer: the reloadable fixture plugin is replaced by its next builds
+// (as a linker replaces its output) while pfx-view shows an image through it; SIGUSR1 screenshots
+// show which version runs and with which values.
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "exr_io.hpp"
+#include "view_process.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Rebuilds are noticed after the file settles (0.2 s) at the next check (every 0.1 s); a loaded
+// machine gets some slack on top.
+constexpr double kReloadSeconds = 2.0;
+
+struct ReloadRig {
+  fs::path dir = fs::temp_directory_path() / ("pfx-view-reload-" + std::to_string(::getpid()));
+  fs::path plugin = dir / "plugins" / "reloadable.so";
+  int shots = 0;
+  ReloadRig() {
+    fs::remove_all(dir);
+    fs::create_directories(dir / "plugins");
+    fs::create_directories(dir / "shots");
+    install("v1");
+    // A flat grey 0.5 frame: the fixture's formulas give exact half-float values on it.
+    pfx::app::Image image;
+    image.width = image.height = 16;
+    image.rgba.assign(image.pixel_count() * 4, 0.5f);
+    for (size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 1.0f;
+    std::string error;
+    REQUIRE(pfx::app::write_exr((dir / "grey.exr").string(), image, pfx::app::ExrPixelType::Half, &error));
+  }
+  ~ReloadRig() { fs::remove_all(dir); }
+  void install(const std::string& build) {
+    const fs::path temp = dir / "plugins" / "reloadable.so.new";
+    fs::copy_file(std::string(PFX_TEST_RELOADABLE_DIR) + "/reloadable_" + build + ".so", temp,
+                  fs::copy_options::overwrite_existing);
+    fs::rename(temp, plugin);
+  }
+  // Asks the viewer for a screenshot and returns the red value of its EXR.
+  float screenshot(pfx::test::ViewerProcess& viewer) {
+    viewer.send(SIGUSR1);
+    const std::string line = viewer.wait_for_line("pfx-view: screenshot", 20);
+    INFO(viewer.output());
+    REQUIRE(!line.empty());
+    char name[32];
+    std::snprintf(name, sizeof name, "pfx-view-%04d", ++shots);
+    const fs::path base = dir / "shots" / name;
+    CHECK(fs::exists(base.string() + ".png"));
+    CHECK(fs::exists(base.string() + ".json"));
+    pfx::app::Image image;
+    std::string error;
+    REQUIRE(pfx::app::read_exr(base.string() + ".exr", &image, &error));
+    return image.rgba[0];
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a plugin rebuilt under the running viewer is reloaded with its values kept, a broken rebuild is "
+          "reported and the old version keeps running",
+          "[view][window][reload]") {
+  ReloadRig rig;
+  pfx::test::ViewerProcess viewer({PFX_VIEW, "--plugins", (rig.dir / "plugins").string(), "--input",
+                                   (rig.dir / "grey.exr").string(), "--chain", "tint", "--set", "tint.strength=0.25",
+                                   "--shots", (rig.dir / "shots").string(), "--window", "200x160"});
+  INFO(viewer.output());
+  REQUIRE(!viewer.wait_for_line("pfx-view: ready", 30).empty());
+  CHECK(rig.screenshot(viewer) == Approx(0.5 * 0.25));  // v1: colour x strength
+  {
+    std::ifstream in(rig.dir / "shots" / "pfx-view-0001.json");
+    CHECK(nlohmann::json::parse(in)["parameters"]["tint"]["strength"] == 0.25);
+  }
+
+  using Clock = std::chrono::steady_clock;
+  rig.install("v2");
+  const Clock::time_point replaced = Clock::now();
+  const std::string reloaded = viewer.wait_for_line("pfx-view: reloaded", 20);
+  const double seconds = std::chrono::duration<double>(Clock::now() - replaced).count();
+  CHECK(reloaded.find("org.pfx.test.reloadable 1.0.0 -> 2.0.0") != std::string::npos);
+  CHECK(reloaded.find("parameter values kept") != std::string::npos);
+  INFO("reloaded " << seconds << " s after the file was replaced");
+  CHECK(seconds <= kReloadSeconds);
+  CHECK(rig.screenshot(viewer) == Approx(0.5 * 0.25 + 0.25));  // v2: + offset (new, default 0.25)
+
+  rig.install("broken_shader");
+  std::string failed = viewer.wait_for_line("pfx-view: error: reload failed", 20);
+  CHECK(failed.find("effect 'tint' of the new version could not be created") != std::string::npos);
+  CHECK(failed.find("the previous version keeps running") != std::string::npos);
+  CHECK(rig.screenshot(viewer) == Approx(0.375));  // still v2
+
+  rig.install("broken_abi");
+  failed = viewer.wait_for_line("pfx-view: error: reload failed", 20);
+  CHECK(failed.find("ABI major version mismatch") != std::string::npos);
+  CHECK(rig.screenshot(viewer) == Approx(0.375));
+
+  rig.install("v1");
+  CHECK(viewer.wait_for_line("pfx-view: reloaded", 20).find("2.0.0 -> 1.0.0") != std::string::npos);
+  CHECK(rig.screenshot(viewer) == Approx(0.125));  // the strength survived every reload
+
+  viewer.send(SIGTERM);
+  CHECK(viewer.wait_exit(20) == 0);
+}

@@ -1,0 +1,168 @@
+// pfx-view in a window, under Xvfb (ctest runs this program through xvfb-run): the scripted
+// screenshot against pfx-render for the same preset, presets saved by the viewer reproduced by
+// pfx-render, an image input, the error exits, and hot reload of a fixture plugin while the
+// viewer runs. Frames are small (320x180) so each run takes about a second on llvmpipe.
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "view_process.hpp"
+
+namespace fs = std::filesystem;
+using pfx::test::compare_png;
+using pfx::test::run_program;
+
+namespace {
+
+// The same 8-bit result, give or take one code value for a GL that rounds differently in a window
+// than headless; on average well under a tenth of a code value. (On llvmpipe both are bit-identical.)
+constexpr int kPngMaxDifference = 1;
+constexpr double kPngMeanDifference = 0.1;
+// Half-float storage: 2^-10 relative.
+constexpr double kExrRelativeDifference = 1.0 / 1024;
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("pfx-view-test-" + std::to_string(::getpid()));
+  Scratch() {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() { fs::remove_all(dir); }
+  std::string operator/(const std::string& name) const { return (dir / name).string(); }
+  void write(const std::string& name, const std::string& text) const { std::ofstream(dir / name) << text; }
+};
+
+std::vector<std::string> with_plugins(const std::string& program, std::vector<std::string> args) {
+  std::vector<std::string> argv = {program, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--plugins", PFX_TEST_PLUGIN_DIR};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return argv;
+}
+
+std::vector<std::string> viewer(std::vector<std::string> args) { return with_plugins(PFX_VIEW, std::move(args)); }
+std::vector<std::string> renderer(std::vector<std::string> args) { return with_plugins(PFX_RENDER, std::move(args)); }
+
+void require_ok(const pfx::test::RunResult& result) {
+  INFO(result.output);
+  REQUIRE(result.exit_code == 0);
+}
+
+// A look that differs from the defaults in every part: chain order and flags, values, the camera
+// and the display.
+const char* const kLook = R"({
+  "pfx_preset": 1,
+  "chain": [{"effect": "gain", "enabled": true}, {"effect": "bloom", "enabled": true},
+            {"effect": "boxblur", "enabled": false}],
+  "parameters": {"gain": {"gain": 1.6}, "bloom": {"threshold": 0.6, "strength": 2.5, "tint": [1, 0.8, 0.6]},
+                 "boxblur": {"radius": 3}},
+  "camera": {"position": [9, 6, 14], "target": [0, 0.5, 0], "up": [0, 1, 0], "fovy_degrees": 55,
+             "near": 0.2, "far": 300},
+  "display": {"exposure_ev": 0.5, "tone": "aces"}
+})";
+
+}  // namespace
+
+TEST_CASE("pfx-view help lists every option and the exit codes", "[view][window]") {
+  auto r = run_program({PFX_VIEW, "--help"});
+  require_ok(r);
+  for (const char* text : {"--plugins", "--demo", "--demo-image", "--input", "--depth", "--size", "--window", "--camera",
+                           "--chain", "--set", "--preset", "--save-preset", "--no-watch", "--exposure", "--tone",
+                           "--frames", "--screenshot", "--window-shot", "--shots", "SIGUSR1", "exit codes: 0 ok"})
+    CHECK(r.output.find(text) != std::string::npos);
+}
+
+TEST_CASE("pfx-view without a display exits 1 and says how to run it headless", "[view][window][errors]") {
+  auto r = run_program({"/usr/bin/env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", PFX_VIEW, "--frames", "1"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("xvfb-run") != std::string::npos);
+}
+
+TEST_CASE("pfx-view usage, input and effect errors exit 2, 3 and 4 with a message", "[view][window][errors]") {
+  Scratch scratch;
+  auto r = run_program(viewer({"--frames", "1", "--set", "gain.gain=nan"}));
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("gain.gain") != std::string::npos);
+  r = run_program(viewer({"--frames", "1", "--preset", scratch / "none.json"}));
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find(scratch / "none.json" + ": cannot open the preset") != std::string::npos);
+  scratch.write("other.json", R"({"pfx_preset": 1, "parameters": {"nosuch": {"x": 1}}})");
+  r = run_program(viewer({"--frames", "1", "--preset", scratch / "other.json"}));
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("unknown effect 'nosuch'") != std::string::npos);
+  r = run_program(viewer({"--frames", "1", "--input", scratch / "none.exr"}));
+  CHECK(r.exit_code == 3);
+  r = run_program(viewer({"--frames", "1", "--chain", "gain,nosuch"}));
+  CHECK(r.exit_code == 4);
+  CHECK(r.output.find("unknown effect 'nosuch'") != std::string::npos);
+}
+
+TEST_CASE("20 frames of the demo in the viewer match pfx-render for the same preset", "[view][window]") {
+  Scratch scratch;
+  scratch.write("look.json", kLook);
+  require_ok(run_program(viewer({"--demo", "--size", "320x180", "--preset", scratch / "look.json", "--frames", "20",
+                                 "--screenshot", scratch / "view.png"})));
+  require_ok(run_program(renderer({"--demo", "--size", "320x180", "--preset", scratch / "look.json", "--out",
+                                   scratch / "render.png", "--out", scratch / "render.exr"})));
+  auto d = compare_png(scratch / "view.png", scratch / "render.png");
+  CHECK(d.width == 320);
+  CHECK(d.height == 180);
+  CHECK(d.max <= kPngMaxDifference);
+  CHECK(d.mean <= kPngMeanDifference);
+  CHECK(pfx::test::exr_relative_difference(scratch / "view.exr", scratch / "render.exr") <= kExrRelativeDifference);
+
+  // The preset matters to both: without it the picture is far from this one.
+  require_ok(run_program(renderer({"--demo", "--size", "320x180", "--chain", "bloom", "--out", scratch / "plain.png"})));
+  CHECK(compare_png(scratch / "plain.png", scratch / "render.png").mean > 5.0);
+}
+
+TEST_CASE("a preset saved by the viewer holds what it showed and pfx-render reproduces it", "[view][window][preset]") {
+  Scratch scratch;
+  scratch.write("look.json", kLook);
+  // The command line changes the preset's look; the saved preset must carry the changes.
+  require_ok(run_program(viewer({"--demo", "--size", "320x180", "--preset", scratch / "look.json", "--set",
+                                 "gain.gain=0.7", "--camera", "fovy=40", "--tone", "reinhard", "--frames", "2",
+                                 "--screenshot", scratch / "view.png", "--save-preset", scratch / "saved.json"})));
+  std::ifstream in(scratch / "saved.json");
+  const auto saved = nlohmann::json::parse(in);
+  CHECK(saved["pfx_preset"] == 1);
+  CHECK(saved["chain"] == nlohmann::json::parse(R"([{"effect": "gain", "enabled": true}, {"effect": "bloom", "enabled": true},
+                                                    {"effect": "boxblur", "enabled": false}])"));
+  CHECK(saved["parameters"]["gain"]["gain"] == 0.7);
+  CHECK(saved["parameters"]["bloom"]["strength"] == 2.5);
+  CHECK(saved["parameters"]["boxblur"]["radius"] == 3);
+  CHECK(saved["camera"]["position"] == nlohmann::json::parse("[9, 6, 14]"));
+  CHECK(saved["camera"]["fovy_degrees"].get<double>() == Approx(40).epsilon(1e-12));
+  CHECK(saved["camera"]["far"] == 300);
+  CHECK(saved["display"]["tone"] == "reinhard");
+  CHECK(saved["display"]["exposure_ev"] == 0.5);
+
+  require_ok(run_program(renderer({"--demo", "--size", "320x180", "--preset", scratch / "saved.json", "--out",
+                                   scratch / "saved.png"})));
+  auto d = compare_png(scratch / "view.png", scratch / "saved.png");
+  CHECK(d.max <= kPngMaxDifference);
+  CHECK(d.mean <= kPngMeanDifference);
+  // And it is the same look as the original preset with the same changes, given to pfx-render.
+  require_ok(run_program(renderer({"--demo", "--size", "320x180", "--preset", scratch / "look.json", "--set",
+                                   "gain.gain=0.7", "--camera", "fovy=40", "--tone", "reinhard", "--out",
+                                   scratch / "changed.png"})));
+  CHECK(compare_png(scratch / "saved.png", scratch / "changed.png").max == 0);
+}
+
+TEST_CASE("an EXR image with depth through the viewer matches pfx-render", "[view][window]") {
+  Scratch scratch;
+  require_ok(run_program(renderer({"--demo-image", "--size", "96x64", "--chain", "", "--out", scratch / "in.exr"})));
+  require_ok(run_program(viewer({"--input", scratch / "in.exr", "--chain", "gain,boxblur", "--set", "gain.gain=3",
+                                 "--set", "boxblur.radius=2", "--frames", "3", "--screenshot", scratch / "view.png"})));
+  require_ok(run_program(renderer({"--input", scratch / "in.exr", "--chain", "gain,boxblur", "--set", "gain.gain=3",
+                                   "--set", "boxblur.radius=2", "--out", scratch / "render.png", "--out",
+                                   scratch / "render.exr"})));
+  auto d = compare_png(scratch / "view.png", scratch / "render.png");
+  CHECK(d.width == 96);
+  CHECK(d.max <= kPngMaxDifference);
+  CHECK(pfx::test::exr_relative_difference(scratch / "view.exr", scratch / "render.exr") <= kExrRelativeDifference);
+}
