@@ -199,17 +199,7 @@ std::string preset_to_json(const Preset& preset) {
 }
 
 bool write_preset(const std::string& path, const Preset& preset, std::string* error) {
-  const std::string text = preset_to_json(preset);
-  return write_atomically(
-      path,
-      [&](const std::string& temp_path, std::string* reason) {
-        std::ofstream out(temp_path, std::ios::binary);
-        out << text;
-        out.flush();
-        if (!out) *reason = "write failed";
-        return static_cast<bool>(out);
-      },
-      error);
+  return write_text_atomically(path, preset_to_json(preset), error);
 }
 
 }  // namespace pfx::app

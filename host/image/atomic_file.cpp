@@ -1,5 +1,7 @@
 #include "atomic_file.hpp"
 
+#include <fstream>
+
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -90,6 +92,19 @@ bool write_atomically(const std::string& path, const WriteFileFn& write, std::st
     return fail(reason.empty() ? "unknown error" : reason);
   }
   return true;
+}
+
+bool write_text_atomically(const std::string& path, const std::string& text, std::string* error) {
+  return write_atomically(
+      path,
+      [&](const std::string& temp_path, std::string* reason) {
+        std::ofstream out(temp_path, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) *reason = "write failed";
+        return static_cast<bool>(out);
+      },
+      error);
 }
 
 }  // namespace pfx::app

@@ -18,4 +18,7 @@ using WriteFileFn = std::function<bool(const std::string& temp_path, std::string
 // *error says "cannot write PATH: REASON".
 bool write_atomically(const std::string& path, const WriteFileFn& write, std::string* error);
 
+// write_atomically for a file whose whole content is `text`.
+bool write_text_atomically(const std::string& path, const std::string& text, std::string* error);
+
 }  // namespace pfx::app

@@ -6,6 +6,7 @@
 #include "demo_image.hpp"
 #include "demo_scene.hpp"
 #include "image_texture.hpp"
+#include "import_scene.hpp"
 #include "input_image.hpp"
 
 namespace pfx::app {
@@ -26,16 +27,31 @@ CameraOptions lens_of(const Camera& camera) {
 
 }  // namespace
 
-std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, std::string* error, bool* bad_input) {
+std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, const pfx::host::PluginRegistry& registry,
+                                                 std::string* error, bool* bad_input) {
   std::unique_ptr<FrameSource> self(new FrameSource);
   self->kind_ = options.input;
   *bad_input = false;
-  if (options.input == ViewInput::DemoScene) {
-    self->scene_ = make_demo_scene({options.extra_lights, options.seed});
+  if (options.input == ViewInput::DemoScene || options.input == ViewInput::ModelScene) {
+    if (options.input == ViewInput::DemoScene) {
+      self->scene_ = make_demo_scene({options.extra_lights, options.seed});
+      self->description_ = "demo scene";
+    } else {
+      // As pfx-render --scene does it, so a preset gives the same picture in both.
+      pfx::import::SceneImportOptions import_options;
+      import_options.seed = options.seed;
+      if (options.lights_given) import_options.lights = options.extra_lights;
+      if (!pfx::import::load_scene_from_model(registry, options.scene_path, import_options, &self->scene_,
+                                              &self->warnings_, error)) {
+        *bad_input = true;
+        return nullptr;
+      }
+      self->description_ = options.scene_path;
+    }
+    self->description_ += " (" + std::to_string(self->scene_.lights.size()) + " lights)";
     self->renderer_ = SceneRenderer::create(self->scene_, error);
     if (!self->renderer_) return nullptr;
     self->camera_ = self->scene_.camera;
-    self->description_ = "demo scene (" + std::to_string(self->scene_.lights.size()) + " lights)";
   } else {
     // An image's camera sits at the origin looking down -Z (as in pfx-render).
     self->camera_.position = glm::dvec3(0.0);
@@ -85,6 +101,7 @@ void FrameSource::prepare(int width, int height, bool force) {
       if (width != width_ || height != height_) upload_image(make_demo_image(width, height));
       return;
     case ViewInput::DemoScene:
+    case ViewInput::ModelScene:
       if (force || !rendered_once_ || width != width_ || height != height_ || !same_camera(camera_, rendered_camera_)) {
         renderer_->render(camera_, width, height);
         rendered_camera_ = camera_;

@@ -1,6 +1,6 @@
-// What the viewer shows, as the chain's frame inputs: the demo scene's G-buffer (rendered again
-// when the camera or the size changes), the procedural demo image (made again when the size
-// changes) or an EXR image (its own size, always).
+// What the viewer shows, as the chain's frame inputs: the G-buffer of the demo scene or of a model
+// imported through the importer plugins (rendered again when the camera or the size changes), the
+// procedural demo image (made again when the size changes) or an EXR image (its own size, always).
 #pragma once
 
 #include <memory>
@@ -19,7 +19,10 @@ class FrameSource {
  public:
   // Builds the scene or reads the image (GL context current). Null with *error; *bad_input tells
   // a bad input file (exit code 3) from a GL failure (1).
-  static std::unique_ptr<FrameSource> create(const ViewOptions& options, std::string* error, bool* bad_input);
+  static std::unique_ptr<FrameSource> create(const ViewOptions& options, const pfx::host::PluginRegistry& registry,
+                                             std::string* error, bool* bad_input);
+  // Warnings of the import (unread textures, skipped lines), for the messages.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   ~FrameSource();
   FrameSource(const FrameSource&) = delete;
   FrameSource& operator=(const FrameSource&) = delete;
@@ -58,6 +61,7 @@ class FrameSource {
   uint32_t color_ = 0, depth_ = 0;
   int width_ = 0, height_ = 0;
   std::string description_;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace pfx::app

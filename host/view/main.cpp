@@ -81,7 +81,7 @@ int run(const ViewOptions& options) {
   double last = start;
   uint64_t shown_stamp = 0;
   bool have_frame = false;
-  long long frames_done = 0;
+  long long frames_done = 0, frames_shown = 0;
   using Clock = std::chrono::steady_clock;
 
   while (!window->should_close()) {
@@ -131,7 +131,9 @@ int run(const ViewOptions& options) {
     }
     window->swap();
     const double work_ms = std::chrono::duration<double, std::milli>(Clock::now() - work_start).count();
-    ui.frame_ms = ui.frame_ms == 0 ? work_ms : 0.9 * ui.frame_ms + 0.1 * work_ms;
+    // The first frames compile every shader: leave them out of the average.
+    ++frames_shown;
+    ui.frame_ms = frames_shown <= 2 ? work_ms : 0.9 * ui.frame_ms + 0.1 * work_ms;
   }
   if (!options.save_preset.empty() && !write_preset(options.save_preset, session->current_preset(), &message))
     return error_exit(kInternal, message);

@@ -9,7 +9,8 @@ namespace pfx::app {
 std::string view_usage() {
   return
       "usage: pfx-view [--plugins DIR]... [--demo [--lights N] [--seed S] | --demo-image\n"
-      "                | --input IMG.exr [--depth DEPTH.exr]] [--size WxH] [--window WxH]\n"
+      "                | --scene FILE.obj [--lights N] [--seed S] | --input IMG.exr [--depth DEPTH.exr]]\n"
+      "                [--size WxH] [--window WxH]\n"
       "                [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...] [--preset FILE]\n"
       "                [--set effect.param=value]... [--exposure EV] [--tone NAME] [--save-preset FILE]\n"
       "                [--frames N [--screenshot FILE.png] [--window-shot FILE.png]]\n"
@@ -22,7 +23,9 @@ std::string view_usage() {
       "  --demo               the built-in 3D scene (the default): floor, boxes, spheres, emissive\n"
       "                       objects and 400 point lights; effects get the whole G-buffer and the lights\n"
       "  --lights N           with --demo: N more lights at random inside the scene (default 0)\n"
-      "  --seed S             with --demo: the seed of every random choice (default 1)\n"
+      "  --seed S             with --demo or --scene: the seed of every random choice (default 1)\n"
+      "  --scene FILE.obj     a model imported through the importer plugins, lit by the demo's 400\n"
+      "                       lights spread through its box (--lights N: N instead), as pfx-render --scene\n"
       "  --demo-image         the procedural HDR image of pfx-render --demo-image (colour and depth)\n"
       "  --input IMG.exr      an OpenEXR image; a Z channel is linear depth (m)\n"
       "  --depth DEPTH.exr    linear depth from another EXR (its Z channel, else its R channel)\n"
@@ -65,7 +68,7 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
     return false;
   };
   int inputs_given = 0;
-  bool lights_given = false, seed_given = false;
+  bool seed_given = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     auto value = [&](std::string* into) {
@@ -83,6 +86,10 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
     else if (arg == "--input") {
       if (!value(&options.input_path)) return false;
       options.input = ViewInput::Image;
+      ++inputs_given;
+    } else if (arg == "--scene") {
+      if (!value(&options.scene_path)) return false;
+      options.input = ViewInput::ModelScene;
       ++inputs_given;
     } else if (arg == "--depth") { if (!value(&options.depth_path)) return false; }
     else if (arg == "--preset") { if (!value(&options.preset)) return false; }
@@ -119,7 +126,7 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
       if (!parse_count(text, &number) || number > 10000000)
         return fail("--lights " + text + ": expected a whole number from 0 to 10000000");
       options.extra_lights = static_cast<int>(number);
-      lights_given = true;
+      options.lights_given = true;
     } else if (arg == "--seed") {
       if (!value(&text)) return false;
       if (!parse_count(text, &number)) return fail("--seed " + text + ": expected a whole number >= 0");
@@ -147,11 +154,13 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
     *out = options;
     return true;
   }
-  if (inputs_given > 1) return fail("give at most one of --demo, --demo-image or --input IMG.exr");
+  if (inputs_given > 1) return fail("give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
   if (!options.depth_path.empty() && options.input != ViewInput::Image) return fail("--depth goes with --input");
   if (options.size_given && options.input == ViewInput::Image)
     return fail("--size applies to --demo and --demo-image (an input image has its own size)");
-  if ((lights_given || seed_given) && options.input != ViewInput::DemoScene) return fail("--lights and --seed go with --demo");
+  if ((options.lights_given || seed_given) && options.input != ViewInput::DemoScene &&
+      options.input != ViewInput::ModelScene)
+    return fail("--lights and --seed go with --demo or --scene");
   if (options.size_given && !options.window_given) options.window_width = options.width, options.window_height = options.height;
   if ((!options.screenshot.empty() || !options.window_shot.empty()) && options.frames == 0)
     return fail("--screenshot and --window-shot go with --frames N");

@@ -10,14 +10,17 @@
 
 namespace pfx::app {
 
-enum class ViewInput { DemoScene, DemoImage, Image };
+enum class ViewInput { DemoScene, ModelScene, DemoImage, Image };
 
 struct ViewOptions {
   bool help = false;
-  ViewInput input = ViewInput::DemoScene;  // --demo (the default), --demo-image, --input
+  ViewInput input = ViewInput::DemoScene;  // --demo (the default), --scene, --demo-image, --input
   std::string input_path, depth_path;       // --input IMG.exr [--depth DEPTH.exr]
-  int extra_lights = 0;                     // --lights N, --demo only
-  uint64_t seed = 1;                        // --seed S, --demo only
+  std::string scene_path;                   // --scene FILE.obj
+  // --lights N: with --demo N more lights, with --scene N lights instead of the demo's 400.
+  bool lights_given = false;
+  int extra_lights = 0;
+  uint64_t seed = 1;                        // --seed S, --demo and --scene
   // The frame size (--size). Without it the frame follows the window's size (an image keeps its own).
   bool size_given = false;
   int width = 0, height = 0;

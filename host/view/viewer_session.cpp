@@ -43,7 +43,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   };
   self->registry_ = std::make_unique<pfx::host::PluginRegistry>(std::move(gl_loader), sink, "pfx-view " PFX_VERSION);
   for (const auto& message : load_plugins(*self->registry_, options.plugin_dirs))
-    self->error("plugin not loaded: " + message);
+    self->warning("plugin not loaded: " + message);
   for (const auto& effect : self->registry_->effects()) self->params_.add_effect(effect.desc);
 
   Preset preset;
@@ -66,8 +66,9 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   if (!self->build_chain(effects, &message)) return fail(4, message);
 
   bool bad_input = false;
-  self->source_ = FrameSource::create(options, &message, &bad_input);
+  self->source_ = FrameSource::create(options, *self->registry_, &message, &bad_input);
   if (!self->source_) return fail(bad_input ? 3 : 1, message);
+  for (const auto& warning : self->source_->warnings()) self->warning(warning);
   Camera& camera = self->source_->camera();
   const Camera place = camera;
   apply_preset_camera(preset.camera, &camera);
@@ -250,6 +251,11 @@ void ViewerSession::info(const std::string& text) {
   std::printf("pfx-view: %s\n", text.c_str());
   std::fflush(stdout);
   remember({false, text});
+}
+
+void ViewerSession::warning(const std::string& text) {
+  std::fprintf(stderr, "pfx-view: warning: %s\n", text.c_str());
+  remember({true, text});
 }
 
 void ViewerSession::error(const std::string& text) {

@@ -72,8 +72,9 @@ class ViewerSession {
   // F12: DIR/pfx-view-NNNN.png, .exr and the preset as .json; reported as a message.
   void take_screenshot();
 
-  void info(const std::string& text);
-  void error(const std::string& text);
+  void info(const std::string& text);     // stdout "pfx-view: ..."
+  void warning(const std::string& text);  // stderr "pfx-view: warning: ...", shown in red
+  void error(const std::string& text);    // stderr "pfx-view: error: ...", shown in red
   const std::deque<Message>& messages() const { return messages_; }
 
  private:

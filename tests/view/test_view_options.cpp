@@ -39,11 +39,14 @@ TEST_CASE("pfx-view defaults to the demo scene, a window-sized frame and watchin
 
 TEST_CASE("pfx-view usage errors name the option", "[view][options][errors]") {
   CHECK(usage_error({"--bogus"}) == "unknown option '--bogus' (see --help)");
-  CHECK(usage_error({"--demo", "--demo-image"}) == "give at most one of --demo, --demo-image or --input IMG.exr");
+  CHECK(usage_error({"--demo", "--demo-image"}) ==
+        "give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
+  CHECK(usage_error({"--scene", "a.obj", "--input", "b.exr"}) ==
+        "give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
   CHECK(usage_error({"--depth", "d.exr"}) == "--depth goes with --input");
   CHECK(usage_error({"--input", "a.exr", "--size", "10x10"}) ==
         "--size applies to --demo and --demo-image (an input image has its own size)");
-  CHECK(usage_error({"--demo-image", "--lights", "5"}) == "--lights and --seed go with --demo");
+  CHECK(usage_error({"--demo-image", "--lights", "5"}) == "--lights and --seed go with --demo or --scene");
   CHECK(usage_error({"--screenshot", "a.png"}) == "--screenshot and --window-shot go with --frames N");
   CHECK(usage_error({"--frames", "1", "--screenshot", "a.jpg"}) == "--screenshot a.jpg: the file name must end in .png");
   CHECK(usage_error({"--frames", "0"}) == "--frames 0: expected a whole number from 1 to 1000000");

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "png_io.hpp"
 #include "view_process.hpp"
 
 namespace fs = std::filesystem;
@@ -70,7 +71,7 @@ const char* const kLook = R"({
 TEST_CASE("pfx-view help lists every option and the exit codes", "[view][window]") {
   auto r = run_program({PFX_VIEW, "--help"});
   require_ok(r);
-  for (const char* text : {"--plugins", "--demo", "--demo-image", "--input", "--depth", "--size", "--window", "--camera",
+  for (const char* text : {"--plugins", "--demo", "--demo-image", "--scene", "--input", "--depth", "--size", "--window", "--camera",
                            "--chain", "--set", "--preset", "--save-preset", "--no-watch", "--exposure", "--tone",
                            "--frames", "--screenshot", "--window-shot", "--shots", "SIGUSR1", "exit codes: 0 ok"})
     CHECK(r.output.find(text) != std::string::npos);
@@ -165,4 +166,34 @@ TEST_CASE("an EXR image with depth through the viewer matches pfx-render", "[vie
   CHECK(d.width == 96);
   CHECK(d.max <= kPngMaxDifference);
   CHECK(pfx::test::exr_relative_difference(scratch / "view.exr", scratch / "render.exr") <= kExrRelativeDifference);
+}
+
+TEST_CASE("an OBJ scene through the viewer matches pfx-render --scene", "[view][window]") {
+  Scratch scratch;
+  // A box on a floor, the box glowing so the bloom has something to spread.
+  scratch.write("glow.mtl", "newmtl floor\nKd 0.6 0.6 0.6\nnewmtl glow\nKd 0.2 0.2 0.2\nKe 8 4 1\n");
+  scratch.write("box.obj",
+                "mtllib glow.mtl\n"
+                "v -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\n"
+                "v -1 0 -1\nv 1 0 -1\nv 1 2 -1\nv -1 2 -1\nv -1 0 1\nv 1 0 1\nv 1 2 1\nv -1 2 1\n"
+                "usemtl floor\nf 1 4 3 2\n"
+                "usemtl glow\nf 5 8 7 6\nf 9 10 11 12\nf 5 9 12 8\nf 6 7 11 10\nf 8 12 11 7\n");
+  require_ok(run_program(viewer({"--scene", scratch / "box.obj", "--lights", "20", "--size", "160x120", "--chain",
+                                 "bloom", "--frames", "2", "--screenshot", scratch / "view.png"})));
+  require_ok(run_program(renderer({"--scene", scratch / "box.obj", "--lights", "20", "--size", "160x120", "--chain",
+                                   "bloom", "--out", scratch / "render.png", "--out", scratch / "render.exr"})));
+  auto d = compare_png(scratch / "view.png", scratch / "render.png");
+  CHECK(d.max <= kPngMaxDifference);
+  CHECK(d.mean <= kPngMeanDifference);
+  CHECK(pfx::test::exr_relative_difference(scratch / "view.exr", scratch / "render.exr") <= kExrRelativeDifference);
+  // Not an empty picture: the glowing box (emission 8, 4, 1) saturates red somewhere.
+  pfx::app::DisplayImage shown;
+  std::string error;
+  REQUIRE(pfx::app::read_png(scratch / "view.png", &shown, &error));
+  int brightest_red = 0;
+  for (size_t i = 0; i < shown.pixels.size(); i += size_t(shown.channels)) brightest_red = std::max(brightest_red, int(shown.pixels[i]));
+  CHECK(brightest_red == 255);
+  auto r = run_program(viewer({"--scene", scratch / "none.obj", "--frames", "1"}));
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("none.obj") != std::string::npos);
 }
