@@ -67,8 +67,11 @@ DisplayPass::DisplayPass() {
   program_ = pfx::gl::build_fullscreen_program(kDisplayShader, &error);
   glCreateVertexArrays(1, &vertex_array_);
   glCreateSamplers(1, &sampler_);
-  glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // Nearest, not linear: a bilinear tap weighs neighbours by zero, and 0 x inf = NaN, so an
+  // infinite or NaN pixel would spread over its neighbours on screen. Each screen pixel shows one
+  // frame pixel as it is.
+  glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }

@@ -1,6 +1,7 @@
 // Draws the chain's HDR output into the window: exposure, tone curve and sRGB encoding in a
 // shader that follows host/image/tonemap.hpp's rules (NaN pixels magenta, +inf white, negative
-// black), scaled to fit the window with the frame's aspect kept.
+// black), scaled to fit the window with the frame's aspect kept (nearest pixel: inf and NaN must
+// not spread to neighbours through filter weights of zero).
 #pragma once
 
 #include <cstdint>

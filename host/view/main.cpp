@@ -41,6 +41,7 @@ void handle_keys(ViewerWindow& window, UiState& ui) {
   if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) ui.screenshot = true;
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) ui.frame_camera = true;
   if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) ui.reset_camera = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) ui.show_panels = !ui.show_panels;
   if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) window.request_close();
 }
 
@@ -73,6 +74,7 @@ int run(const ViewOptions& options) {
   if (!display.ok()) return error_exit(kInternal, "the display shader failed to build");
 
   UiState ui;
+  ui.show_panels = !options.hide_panels;
   CameraInputSettings camera_settings;
   if (const Scene* scene = session->source().scene())
     camera_settings.fly_metres_per_second = std::max(0.5, 0.15 * double(glm::length(scene->bounds_max - scene->bounds_min)));
@@ -82,11 +84,12 @@ int run(const ViewOptions& options) {
   uint64_t shown_stamp = 0;
   bool have_frame = false;
   long long frames_done = 0, frames_shown = 0;
+  bool input_active = false;  // a button or a fly key held: keep frames coming without waiting
   using Clock = std::chrono::steady_clock;
 
   while (!window->should_close()) {
     // Idle, the loop sleeps until input comes (or 0.1 s passes, to check the plugin files).
-    window->poll_events(scripted || ui.continuous ? 0.0 : 0.1);
+    window->poll_events(scripted || ui.continuous || input_active ? 0.0 : 0.1);
     if (quit_signalled()) break;
     const Clock::time_point work_start = Clock::now();
     const double now = glfwGetTime(), dt = now - last;
@@ -100,11 +103,16 @@ int run(const ViewOptions& options) {
 
     window->begin_ui_frame();
     handle_keys(*window, ui);
+    input_active = ImGui::IsAnyMouseDown();
+    for (int key : {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E})
+      input_active |= ImGui::IsKeyDown(key);
     update_camera(*session, ui, camera_settings, width, height, dt);
-    draw_chain_panel(*session);
-    draw_parameters_panel(*session, ui);
-    draw_timing_panel(*session, ui);
-    draw_view_panel(*session, ui);
+    if (ui.show_panels) {
+      draw_chain_panel(*session);
+      draw_parameters_panel(*session, ui);
+      draw_timing_panel(*session, ui);
+      draw_view_panel(*session, ui);
+    }
     draw_error_overlay(*session);
 
     const uint64_t stamp = session->state_stamp(width, height);

@@ -10,6 +10,7 @@ namespace pfx::app {
 
 // What the panels and the main loop share besides the session.
 struct UiState {
+  bool show_panels = true;   // Tab hides them to see the whole picture
   bool continuous = false;   // render every frame (for live timings), not only on change
   double frame_ms = 0;       // the whole loop, UI included, smoothed
   std::string param_problem;  // the last refused parameter change

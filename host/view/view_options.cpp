@@ -13,6 +13,7 @@ std::string view_usage() {
       "                [--size WxH] [--window WxH]\n"
       "                [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...] [--preset FILE]\n"
       "                [--set effect.param=value]... [--exposure EV] [--tone NAME] [--save-preset FILE]\n"
+      "                [--hide-panels] [--no-watch] [--shots DIR]\n"
       "                [--frames N [--screenshot FILE.png] [--window-shot FILE.png]]\n"
       "\n"
       "Shows a scene or an image through a chain of pfx effects in a window (GL 4.5 core, GLFW), with\n"
@@ -45,6 +46,7 @@ std::string view_usage() {
       "  --no-watch           do not reload plugins whose files change\n"
       "\n"
       "display\n"
+      "  --hide-panels        start with the panels hidden (Tab shows and hides them)\n"
       "  --exposure EV        exposure before the tone curve (default 0)\n"
       "  --tone NAME          tone curve: linear (default), reinhard, aces\n"
       "\n"
@@ -81,6 +83,7 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
     if (arg == "-h" || arg == "--help") options.help = true;
     else if (arg == "-v" || arg == "--verbose") options.verbose = true;
     else if (arg == "--no-watch") options.watch = false;
+    else if (arg == "--hide-panels") options.hide_panels = true;
     else if (arg == "--demo") options.input = ViewInput::DemoScene, ++inputs_given;
     else if (arg == "--demo-image") options.input = ViewInput::DemoImage, ++inputs_given;
     else if (arg == "--input") {

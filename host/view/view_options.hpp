@@ -41,6 +41,7 @@ struct ViewOptions {
   std::string window_shot;     // --window-shot FILE.png: the whole window, panels included
   std::string shots_dir = ".";  // --shots DIR: where F12 writes
   bool watch = true;            // --no-watch turns hot reload off
+  bool hide_panels = false;     // --hide-panels: start with the panels hidden (Tab shows them)
   bool verbose = false;
 };
 

@@ -94,7 +94,7 @@ void draw_view_panel(ViewerSession& session, UiState& ui) {
     ImGui::TextUnformatted(
         "left drag: orbit    right or middle drag, shift + left: pan\n"
         "wheel: zoom    W A S D: fly, Q E: down, up (shift: faster)\n"
-        "F: frame the scene    Home: the scene's own camera\n"
+        "F: frame the scene    Home: the scene's own camera    Tab: hide or show the panels\n"
         "F12: screenshot (EXR, PNG and preset)    Esc: quit");
   }
   draw_messages(session);

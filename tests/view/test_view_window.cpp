@@ -7,11 +7,13 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
+#include "exr_io.hpp"
 #include "png_io.hpp"
 #include "view_process.hpp"
 
@@ -72,7 +74,7 @@ TEST_CASE("pfx-view help lists every option and the exit codes", "[view][window]
   auto r = run_program({PFX_VIEW, "--help"});
   require_ok(r);
   for (const char* text : {"--plugins", "--demo", "--demo-image", "--scene", "--input", "--depth", "--size", "--window", "--camera",
-                           "--chain", "--set", "--preset", "--save-preset", "--no-watch", "--exposure", "--tone",
+                           "--chain", "--set", "--preset", "--save-preset", "--no-watch", "--hide-panels", "--exposure", "--tone",
                            "--frames", "--screenshot", "--window-shot", "--shots", "SIGUSR1", "exit codes: 0 ok"})
     CHECK(r.output.find(text) != std::string::npos);
 }
@@ -196,4 +198,35 @@ TEST_CASE("an OBJ scene through the viewer matches pfx-render --scene", "[view][
   auto r = run_program(viewer({"--scene", scratch / "none.obj", "--frames", "1"}));
   CHECK(r.exit_code == 3);
   CHECK(r.output.find("none.obj") != std::string::npos);
+}
+
+TEST_CASE("the window shows what the screenshot holds: the display shader tone-maps as pfx-render does", "[view][window]") {
+  Scratch scratch;
+  // Every kind of value the display must handle: ordinary, tiny, above 1, above the half maximum,
+  // infinite, negative and NaN, over a gradient.
+  pfx::app::Image image;
+  image.width = 64;
+  image.height = 32;
+  image.rgba.resize(image.pixel_count() * 4);
+  const float specials[] = {0.5f, 1e-3f, 3.0f, 70000.0f, INFINITY, -1.0f, -INFINITY, NAN};
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      float* p = &image.rgba[(size_t(y) * image.width + x) * 4];
+      p[0] = float(x) / 16.0f;
+      p[1] = float(y) / 8.0f;
+      p[2] = specials[(x / 8) % 8];
+      p[3] = 1.0f;
+      if (y < 4) p[0] = p[1] = p[2] = specials[(x / 8) % 8];
+    }
+  std::string error;
+  REQUIRE(pfx::app::write_exr(scratch / "hard.exr", image, pfx::app::ExrPixelType::Float, &error));
+  for (const char* tone : {"linear", "reinhard", "aces"}) {
+    INFO(tone);
+    require_ok(run_program(viewer({"--input", scratch / "hard.exr", "--window", "64x32", "--chain", "", "--hide-panels",
+                                   "--tone", tone, "--exposure", "0.7", "--frames", "2", "--screenshot",
+                                   scratch / "frame.png", "--window-shot", scratch / "window.png"})));
+    auto d = compare_png(scratch / "window.png", scratch / "frame.png");
+    CHECK(d.max <= kPngMaxDifference);
+    CHECK(d.mean <= kPngMeanDifference);
+  }
 }
