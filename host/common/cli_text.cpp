@@ -1,6 +1,7 @@
 #include "cli_text.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace pfx::app {
 
@@ -24,6 +25,43 @@ bool parse_count(const std::string& text, long long* out) {
   if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos) return false;
   *out = std::stoll(text);
   return true;
+}
+
+bool parse_light_count(const std::string& text, int* out, std::string* error) {
+  long long count = 0;
+  if (!parse_count(text, &count) || count > 10000000) {
+    *error = "--lights " + text + ": expected a whole number from 0 to 10000000";
+    return false;
+  }
+  *out = static_cast<int>(count);
+  return true;
+}
+
+bool parse_seed(const std::string& text, uint64_t* out, std::string* error) {
+  long long seed = 0;
+  if (!parse_count(text, &seed)) {
+    *error = "--seed " + text + ": expected a whole number >= 0";
+    return false;
+  }
+  *out = static_cast<uint64_t>(seed);
+  return true;
+}
+
+bool parse_exposure(const std::string& text, double* out, std::string* error) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end || value != value) {
+    *error = "--exposure " + text + ": not a number";
+    return false;
+  }
+  *out = value;
+  return true;
+}
+
+std::vector<std::string> option_keys(const std::string& text) {
+  std::vector<std::string> keys;
+  for (const auto& item : split_list(text)) keys.push_back(item.substr(0, item.find('=')));
+  return keys;
 }
 
 bool parse_frame_size(const std::string& option, const std::string& text, int* width, int* height, std::string* error) {

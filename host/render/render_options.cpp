@@ -113,27 +113,16 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     } else if (arg == "--camera") {
       if (!value(&text)) return false;
       if (!parse_camera_options(text, &options.camera, error)) return false;
-      for (const auto& item : split_list(text)) options.camera_keys.push_back(item.substr(0, item.find('=')));
+      for (const auto& key : option_keys(text)) options.camera_keys.push_back(key);
     } else if (arg == "--lights") {
-      if (!value(&text)) return false;
-      long long count = 0;
-      if (!parse_count(text, &count) || count > 10000000)
-        return fail("--lights " + text + ": expected a whole number from 0 to 10000000");
-      options.extra_lights = static_cast<int>(count);
+      if (!value(&text) || !parse_light_count(text, &options.extra_lights, error)) return false;
       options.lights_given = true;
     } else if (arg == "--seed") {
-      if (!value(&text)) return false;
-      long long seed = 0;
-      if (!parse_count(text, &seed)) return fail("--seed " + text + ": expected a whole number >= 0");
-      options.seed = static_cast<uint64_t>(seed);
+      if (!value(&text) || !parse_seed(text, &options.seed, error)) return false;
       options.seed_given = true;
     } else if (arg == "--exposure") {
-      if (!value(&text)) return false;
-      char* end = nullptr;
-      options.tone.exposure_ev = std::strtod(text.c_str(), &end);
+      if (!value(&text) || !parse_exposure(text, &options.tone.exposure_ev, error)) return false;
       options.exposure_given = true;
-      if (text.empty() || *end || !(options.tone.exposure_ev == options.tone.exposure_ev))
-        return fail("--exposure " + text + ": not a number");
     } else if (arg == "--tone") {
       if (!value(&text)) return false;
       if (!parse_tone_curve(text, &options.tone.curve, error)) return false;

@@ -79,7 +79,6 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
       return true;
     };
     std::string text;
-    long long number = 0;
     if (arg == "-h" || arg == "--help") options.help = true;
     else if (arg == "-v" || arg == "--verbose") options.verbose = true;
     else if (arg == "--no-watch") options.watch = false;
@@ -123,28 +122,19 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
       options.window_given = true;
     } else if (arg == "--camera") {
       if (!value(&text) || !parse_camera_options(text, &options.camera, error)) return false;
-      for (const auto& item : split_list(text)) options.camera_keys.push_back(item.substr(0, item.find('=')));
+      for (const auto& key : option_keys(text)) options.camera_keys.push_back(key);
     } else if (arg == "--lights") {
-      if (!value(&text)) return false;
-      if (!parse_count(text, &number) || number > 10000000)
-        return fail("--lights " + text + ": expected a whole number from 0 to 10000000");
-      options.extra_lights = static_cast<int>(number);
+      if (!value(&text) || !parse_light_count(text, &options.extra_lights, error)) return false;
       options.lights_given = true;
     } else if (arg == "--seed") {
-      if (!value(&text)) return false;
-      if (!parse_count(text, &number)) return fail("--seed " + text + ": expected a whole number >= 0");
-      options.seed = static_cast<uint64_t>(number);
+      if (!value(&text) || !parse_seed(text, &options.seed, error)) return false;
       seed_given = true;
     } else if (arg == "--frames") {
       if (!value(&text)) return false;
       if (!parse_count(text, &options.frames) || options.frames < 1 || options.frames > 1000000)
         return fail("--frames " + text + ": expected a whole number from 1 to 1000000");
     } else if (arg == "--exposure") {
-      if (!value(&text)) return false;
-      char* end = nullptr;
-      options.tone.exposure_ev = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end || !(options.tone.exposure_ev == options.tone.exposure_ev))
-        return fail("--exposure " + text + ": not a number");
+      if (!value(&text) || !parse_exposure(text, &options.tone.exposure_ev, error)) return false;
       options.exposure_given = true;
     } else if (arg == "--tone") {
       if (!value(&text) || !parse_tone_curve(text, &options.tone.curve, error)) return false;
