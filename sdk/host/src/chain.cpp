@@ -325,8 +325,10 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     context.input_count = static_cast<uint32_t>(bound.size());
     glBindVertexArray(pool.empty_vertex_array());
 
+    if (pass_hook_) pass_hook_(effect_id, pass.name, false);
     Clock::time_point start = Clock::now();
     pfx_status status = instance.info.desc->run_pass(instance.handle, &context);
+    if (pass_hook_) pass_hook_(effect_id, pass.name, true);
     if (timing_ == Timing::GPU_QUERIES) glQueryCounter(pool.query(p + 1), GL_TIMESTAMP);
     if (timing_ == Timing::FINISH_AND_CLOCK) {
       glFinish();

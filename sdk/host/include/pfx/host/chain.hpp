@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pfx/pfx.h>
@@ -80,6 +82,13 @@ class PFX_HOST_API Chain {
   void set_timing(Timing timing);
   Timing timing() const { return timing_; }
 
+  // Called around every plugin pass: with after == false once the host has set the pass's GL
+  // state (docs/sdk.md §1.5), just before run_pass; with after == true as soon as run_pass
+  // returns, before the host touches GL again. For tools that watch what plugins do (pfx-validate
+  // compares GL state across the call); costs nothing when unset.
+  using PassHook = std::function<void(const std::string& effect, const std::string& pass, bool after)>;
+  void set_pass_hook(PassHook hook) { pass_hook_ = std::move(hook); }
+
   // Runs the enabled effects over the frame: reads textures (as frame.inputs says), writes
   // output_texture. Effects that declare no passes are skipped at no cost; with none left the
   // colour is copied. False with *error naming the effect, pass or input on failure.
@@ -105,6 +114,7 @@ class PFX_HOST_API Chain {
   bool gl_loaded_ = false;
   Timing timing_ = Timing::AUTO;
   FrameReport report_;
+  PassHook pass_hook_;
 };
 
 }  // namespace pfx::host

@@ -1,0 +1,100 @@
+#include "render_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "random_params.hpp"
+#include "render_rig.hpp"
+#include "synthetic_inputs.hpp"
+
+namespace pfx::validate {
+namespace {
+
+bool open_with_effect(RenderRig& rig, const std::string& path, const std::string& effect_id) {
+  return rig.open(path) && rig.add_effect(effect_id);
+}
+
+// "bloom.threshold=1.5 bloom.mode=chain": the set as pfx-render --set arguments.
+std::string describe_values(RenderRig& rig, const std::string& effect_id) {
+  std::string text;
+  const pfx_effect_desc* desc = rig.effect();
+  for (uint32_t i = 0; i < desc->param_count; ++i) {
+    const std::string key = effect_id + "." + desc->params[i].id;
+    text += (text.empty() ? "" : " ") + key + "=" + rig.params().get_text(key);
+  }
+  return text.empty() ? "(no parameters)" : text;
+}
+
+}  // namespace
+
+void check_create_destroy(const std::string& path, const std::string& effect_id, CheckReporter& report) {
+  RenderRig rig(report);
+  if (!open_with_effect(rig, path, effect_id)) return;
+  rig.remove_effect();
+  if (!rig.add_effect(effect_id)) return;
+  rig.render(gradient_image(16, 9), "gradient 16x9 after a destroy and a second create");
+  rig.remove_effect();
+}
+
+void check_defaults(const std::string& path, const std::string& effect_id, CheckReporter& report) {
+  RenderRig rig(report);
+  if (!open_with_effect(rig, path, effect_id)) return;
+  for (const SyntheticInput& input : default_inputs()) rig.render(input.image, input.name + " (defaults)");
+}
+
+void check_random(const std::string& path, const std::string& effect_id, uint64_t seed, int runs,
+                  CheckReporter& report) {
+  RenderRig rig(report);
+  if (!open_with_effect(rig, path, effect_id)) return;
+  const pfx_effect_desc* desc = rig.effect();
+  SplitMix64 rng(seed);
+  const pfx::app::Image gradient = gradient_image(48, 32);
+  const pfx::app::Image hostile = hostile_image(37, 23);
+  for (int run = 0; run < runs; ++run) {
+    const std::vector<pfx_value> values = random_parameter_set(*desc, rng);
+    const std::string set = "random set " + std::to_string(run + 1) + " of seed " + std::to_string(seed);
+    bool applied = true;
+    for (uint32_t i = 0; i < desc->param_count; ++i) {
+      std::string error;
+      if (!rig.params().set_value(effect_id, desc->params[i].id, values[i], &error)) {
+        report.problem(set + ": the host refused a value inside the hard range: " + error);
+        applied = false;
+      }
+    }
+    if (!applied) continue;
+    const std::string values_text = describe_values(rig, effect_id);
+    report.fact("set", std::to_string(run + 1) + ": " + values_text);
+    rig.render(gradient, set + " on gradient 48x32 [" + values_text + "]");
+    rig.render(hostile, set + " on NaN/Inf/70000 37x23 [" + values_text + "]");
+  }
+}
+
+void check_resize(const std::string& path, const std::string& effect_id, CheckReporter& report) {
+  RenderRig rig(report);
+  if (!open_with_effect(rig, path, effect_id)) return;
+  const pfx::app::Image first_input = gradient_image(64, 48);
+  pfx::app::Image first, last;
+  if (!rig.render(first_input, "64x48 (first)", &first)) return;
+  for (const auto& [w, h] : {std::pair{1917, 1079}, std::pair{1, 1}, std::pair{33, 17}})
+    rig.render(gradient_image(w, h), std::to_string(w) + "x" + std::to_string(h) + " after a resize");
+  if (!rig.render(first_input, "64x48 again after the resizes", &last)) return;
+  // The same frame with the same settings: anything but rounding means state survived the
+  // resizes (a stale target, a size cached in create). Half-float storage: 2^-10 relative.
+  double worst = 0;
+  size_t worst_at = 0;
+  for (size_t i = 0; i < first.rgba.size(); ++i) {
+    const double a = first.rgba[i], b = last.rgba[i];
+    if (std::isnan(a) && std::isnan(b)) continue;
+    const double diff = std::fabs(a - b) / std::max(1.0, std::fabs(a));
+    if (!(diff <= worst)) {
+      worst = std::isnan(diff) ? INFINITY : diff;
+      worst_at = i;
+    }
+  }
+  if (worst > 2e-3)
+    report.problem("64x48 rendered again after the resizes differs from the first 64x48 frame by " +
+                   std::to_string(worst) + " (relative) at x=" + std::to_string(worst_at / 4 % 64) +
+                   ", y=" + std::to_string(worst_at / 4 / 64) + " channel " + std::to_string(worst_at % 4));
+}
+
+}  // namespace pfx::validate

@@ -1,0 +1,58 @@
+// One effect of one plugin, loaded through libpfxhost into a headless GL 4.5 context, rendered
+// over synthetic frames with every frame input present. Each render is checked the way a host
+// relies on: the chain succeeds (no GL error, no failed pass), every pass leaves the protected GL
+// state as it found it, and the output is finite wherever the input colour was.
+#pragma once
+
+#include <memory>
+#include <set>
+#include <string>
+
+#include <pfx/host/chain.hpp>
+
+#include "child_process.hpp"
+#include "gl_state.hpp"
+#include "headless_context.hpp"
+#include "image.hpp"
+
+namespace pfx::validate {
+
+class RenderRig {
+ public:
+  explicit RenderRig(CheckReporter& report) : report_(report) {}
+  ~RenderRig();
+  RenderRig(const RenderRig&) = delete;
+  RenderRig& operator=(const RenderRig&) = delete;
+
+  // Makes the context and loads the plugin (alone). False after reporting the problem.
+  bool open(const std::string& plugin_path);
+  // Appends an instance of the effect (its create runs now). Checks create for GL errors and
+  // GL state changes. False after reporting.
+  bool add_effect(const std::string& effect_id);
+  // Destroys the instance, checking destroy the same way.
+  void remove_effect();
+
+  // Renders `input` and checks the result; problems are reported with `label` in front. The
+  // output is returned in *output when given. False when the render failed or a check did.
+  bool render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output = nullptr);
+
+  pfx::host::ParamStore& params() { return params_; }
+  const pfx_effect_desc* effect() const { return effect_; }
+
+ private:
+  // Reports a problem once per check, however many renders hit it.
+  void problem_once(const std::string& text);
+  void check_gl_calls(const std::string& what, const GlStateSnapshot& before);
+
+  CheckReporter& report_;
+  std::unique_ptr<pfx::app::HeadlessContext> context_;
+  std::unique_ptr<pfx::host::PluginRegistry> registry_;
+  pfx::host::ParamStore params_;
+  std::unique_ptr<pfx::host::Chain> chain_;
+  const pfx_effect_desc* effect_ = nullptr;
+  std::vector<std::string> plugin_log_;
+  GlStateSnapshot before_pass_;
+  std::set<std::string> reported_;
+};
+
+}  // namespace pfx::validate

@@ -1,0 +1,175 @@
+// pfx-validate as a user runs it: every fixture that breaks a rule fails the check for that rule,
+// with the message that says what went wrong, and the working example passes everything.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+};
+
+// Runs pfx-validate; a death by signal is 128 + signal, which no test accepts.
+Result pfx_validate(const std::string& args) {
+  Result result;
+  FILE* pipe = popen((std::string(PFX_VALIDATE) + " " + args + " 2>/dev/null").c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[4096];
+  size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return result;
+}
+
+std::string misbehaving(const std::string& name) { return std::string(PFX_TEST_MISBEHAVING_PLUGIN_DIR) + "/" + name + ".so"; }
+std::string broken(const std::string& name) { return std::string(PFX_TEST_BROKEN_PLUGIN_DIR) + "/" + name + ".so"; }
+
+// The JSON report of one plugin file, validated with few random sets to keep the test quick.
+nlohmann::json validate_json(const std::string& file, const std::string& extra = "", int expected_exit = 1) {
+  const Result r = pfx_validate(file + " --json --runs 2 " + extra);
+  REQUIRE(r.exit_code == expected_exit);
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  REQUIRE(json["plugins"].size() == 1);
+  return json["plugins"][0];
+}
+
+const nlohmann::json& check(const nlohmann::json& plugin, const std::string& name, const std::string& effect = "") {
+  for (const auto& c : plugin["checks"])
+    if (c["check"] == name && (effect.empty() ? c["effect"].is_null() : c["effect"] == effect)) return c;
+  FAIL("no check " << name << " for '" << effect << "'");
+  throw;  // not reached
+}
+
+bool any_problem_contains(const nlohmann::json& check, const std::string& text) {
+  for (const auto& problem : check["problems"])
+    if (problem.get<std::string>().find(text) != std::string::npos) return true;
+  INFO(check.dump(2));
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("help lists every check and the exit codes", "[validate]") {
+  const Result r = pfx_validate("--help");
+  CHECK(r.exit_code == 0);
+  for (const char* text : {"load", "entry", "init/deinit", "factories", "unique ids", "descriptors", "create/destroy",
+                           "defaults", "random params", "resize", "--json", "--seed", "--runs", "--timeout",
+                           "exit codes: 0 every check passed, 1 a check failed, 2 usage"})
+    CHECK(r.out.find(text) != std::string::npos);
+}
+
+TEST_CASE("usage errors exit 2", "[validate]") {
+  CHECK(pfx_validate("").exit_code == 2);
+  CHECK(pfx_validate("--runs -3 " PFX_TEST_MINIMAL_PLUGIN).exit_code == 2);
+  CHECK(pfx_validate("/no/such/plugin.so").exit_code == 2);
+}
+
+TEST_CASE("the minimal example plugin passes every check, as a table and as JSON", "[validate]") {
+  const Result text = pfx_validate(PFX_TEST_MINIMAL_PLUGIN " --runs 3");
+  INFO(text.out);
+  CHECK(text.exit_code == 0);
+  CHECK(text.out.find("check           plugin   gain     boxblur") != std::string::npos);
+  CHECK(text.out.find("defaults        -        pass     pass") != std::string::npos);
+  CHECK(text.out.find("0 of 15 checks failed (seed 1, 3 random parameter sets per effect)") != std::string::npos);
+
+  const nlohmann::json plugin = validate_json(PFX_TEST_MINIMAL_PLUGIN, "", 0);
+  CHECK(plugin["id"] == "org.pfx.test.minimal");
+  CHECK(plugin["effects"] == nlohmann::json::array({"gain", "boxblur"}));
+  CHECK(plugin["passed"] == true);
+  CHECK(plugin["checks"].size() == 15);
+  for (const auto& c : plugin["checks"]) CHECK(c["status"] == "pass");
+}
+
+TEST_CASE("broken_crash_in_describe: the factories check crashes, named with the call", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_crash_in_describe"));
+  const auto& factories = check(plugin, "factories");
+  CHECK(factories["status"] == "CRASH");
+  // A plain build dies by SIGSEGV; under AddressSanitizer the sanitizer reports it and exits.
+  CHECK((any_problem_contains(factories, "crashed with signal 11 (Segmentation fault) during: get_effect(0)") ||
+         any_problem_contains(factories, "before finishing during: get_effect(0)")));
+  CHECK(check(plugin, "load")["status"] == "pass");
+  CHECK(plugin["effects"].empty());
+}
+
+TEST_CASE("broken_leaks_gl_state: every render check names the pass and the state it left changed", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_leaks_gl_state"));
+  for (const char* name : {"create/destroy", "defaults", "random params", "resize"}) {
+    const auto& c = check(plugin, name, "broken_leaks_gl_state");
+    CHECK(c["status"] == "FAIL");
+    CHECK(any_problem_contains(c, "GL state not restored by broken_leaks_gl_state pass 'copy': GL_SCISSOR_TEST enabled (was disabled)"));
+  }
+  CHECK(check(plugin, "descriptors", "broken_leaks_gl_state")["status"] == "pass");
+}
+
+TEST_CASE("broken_writes_nan: the output is not finite where the input was", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_writes_nan"));
+  const auto& defaults = check(plugin, "defaults", "broken_writes_nan");
+  CHECK(defaults["status"] == "FAIL");
+  // The shader writes NaN into every odd column: half of a 64x48 frame.
+  CHECK(any_problem_contains(defaults, "gradient 64x48 (defaults): 1536 pixel(s) not finite where the input was (first at x=1, y=0"));
+  CHECK(check(plugin, "random params", "broken_writes_nan")["status"] == "FAIL");
+}
+
+TEST_CASE("broken_default_out_of_range: the descriptors check names the parameter and both numbers", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_default_out_of_range"));
+  const auto& descriptors = check(plugin, "descriptors", "broken_default_out_of_range");
+  CHECK(descriptors["status"] == "FAIL");
+  CHECK(descriptors["problems"] == nlohmann::json::array({"parameter 'gain': default 8 is above hard_max 4"}));
+  // The host runtime refuses such a plugin, so nothing can render it either.
+  CHECK(any_problem_contains(check(plugin, "defaults", "broken_default_out_of_range"), "the host runtime refuses the plugin"));
+}
+
+TEST_CASE("broken_prints_to_stdout: printing in init fails the checks that call init", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_prints_to_stdout"));
+  CHECK(any_problem_contains(check(plugin, "init/deinit"), "wrote 48 bytes to stdout (a plugin must never print): 'hello from init\\n"));
+  CHECK(check(plugin, "load")["status"] == "pass");
+}
+
+TEST_CASE("broken_hangs_in_declare: a check that runs too long is killed and reported", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_hangs_in_declare"), "--timeout 1.5");
+  const auto& defaults = check(plugin, "defaults", "broken_hangs_in_declare");
+  CHECK(defaults["status"] == "TIMEOUT");
+  CHECK(any_problem_contains(defaults, "did not finish in time and was killed during: rendering gradient 64x48 (defaults)"));
+  CHECK(check(plugin, "descriptors", "broken_hangs_in_declare")["status"] == "pass");
+}
+
+TEST_CASE("loader fixtures fail the plugin checks with the loader's reasons", "[validate][fixtures]") {
+  nlohmann::json plugin = validate_json(broken("broken_no_entry"));
+  CHECK(check(plugin, "load")["problems"] == nlohmann::json::array({"no entry symbol pfx_get_entry (not a pfx plugin)"}));
+  CHECK(check(plugin, "factories")["status"] == "skip");
+  plugin = validate_json(broken("broken_abi_major"));
+  CHECK(check(plugin, "entry")["problems"] == nlohmann::json::array({"ABI major 99, this host implements 1"}));
+  plugin = validate_json(broken("broken_init_fails"));
+  CHECK(any_problem_contains(check(plugin, "init/deinit"),
+                             "init (first call) returned status -1: the plugin logged: broken_init_fails: init fails on purpose"));
+}
+
+TEST_CASE("ids must be unique across the plugins validated together", "[validate][fixtures]") {
+  const Result r = pfx_validate(std::string(PFX_TEST_MINIMAL_PLUGIN) + " " + broken("broken_duplicate_effect_id") +
+                                " --json --runs 0");
+  CHECK(r.exit_code == 1);
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  REQUIRE(json["plugins"].size() == 2);
+  CHECK(check(json["plugins"][0], "unique ids")["status"] == "pass");
+  CHECK(check(json["plugins"][1], "unique ids")["problems"] ==
+        nlohmann::json::array({std::string("effect id 'gain' is also an effect of ") + PFX_TEST_MINIMAL_PLUGIN}));
+}
+
+TEST_CASE("a seed names the same random parameter sets every run, another seed other sets", "[validate]") {
+  auto sets = [](const std::string& seed) {
+    const nlohmann::json plugin = validate_json(PFX_TEST_MINIMAL_PLUGIN, "--seed " + seed, 0);
+    return check(plugin, "random params", "boxblur")["random_sets"];
+  };
+  const nlohmann::json first = sets("12345");
+  CHECK(first.size() == 2);
+  CHECK(first.dump() == sets("12345").dump());
+  CHECK(first.dump() != sets("12346").dump());
+}
