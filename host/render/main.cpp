@@ -47,7 +47,9 @@ bool load_input(const RenderOptions& options, Image* image, std::string* error) 
     *image = make_demo_image(options.width, options.height);
     return true;
   }
-  return read_input_image(options.input, options.depth, image, error);
+  ExrLimits limits;
+  limits.max_pixels = options.max_input_pixels;
+  return read_input_image(options.input, options.depth, image, error, limits);
 }
 
 bool write_outputs(const RenderOptions& options, const Image& result, std::string* error) {

@@ -33,6 +33,8 @@ std::string render_usage() {
       "                       colour and depth only, no lights\n"
       "  --input IMG.exr      an OpenEXR image: RGB(A) half or float; a Z channel is linear depth (m)\n"
       "  --depth DEPTH.exr    linear depth from another EXR (its Z channel, else its R channel)\n"
+      "  --max-input-pixels N refuse an input EXR whose header declares more than N pixels, before\n"
+      "                       reading or allocating anything (default 67108864 = 8192 x 8192)\n"
       "  --camera K=V,...     the camera the effects see: fovy (degrees, default 45), near (m, 0.1),\n"
       "                       far (m, 1000, or inf); for an image the camera sits at the origin\n"
       "                       looking down -Z; for --demo the keys given replace the scene camera's\n"
@@ -127,6 +129,12 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
       if (!value(&text)) return false;
       if (!parse_tone_curve(text, &options.tone.curve, error)) return false;
       options.tone_given = true;
+    } else if (arg == "--max-input-pixels") {
+      if (!value(&text)) return false;
+      char* end = nullptr;
+      options.max_input_pixels = std::strtoll(text.c_str(), &end, 10);
+      if (text.empty() || *end || options.max_input_pixels < 1 || options.max_input_pixels > (1LL << 40))
+        return fail("--max-input-pixels " + text + ": expected a whole number from 1 to 2^40");
     } else if (arg == "--timing") {
       if (!value(&options.timing)) return false;
       if (options.timing != "auto" && options.timing != "gpu" && options.timing != "finish" && options.timing != "off")

@@ -34,6 +34,7 @@ struct RenderOptions {
   ToneMapSettings tone;
   bool exposure_given = false, tone_given = false;
   std::string preset;                    // --preset FILE (pfx-view saves them)
+  long long max_input_pixels = 1LL << 26;  // --max-input-pixels: larger EXR inputs are refused unread
   std::string timing = "auto";           // auto | gpu | finish | off
   bool verbose = false;
 };
