@@ -13,7 +13,7 @@ extern "C" {
 #endif
 
 #define PFX_ABI_MAJOR 1u
-#define PFX_ABI_MINOR 0u
+#define PFX_ABI_MINOR 1u
 
 /* The one symbol a plugin library exports: const pfx_entry* pfx_get_entry(void). */
 #define PFX_ENTRY_SYMBOL "pfx_get_entry"

@@ -33,6 +33,11 @@ typedef struct pfx_reference_request {
   const float* color;        /* width*height*4 */
   const float* depth;        /* width*height, as frame->depth_encoding says; NULL without depth */
   float* output;             /* width*height*4, written by the reference */
+  /* ABI 1.1: the G-buffer inputs, width*height*4 each (RGB used), NULL where the frame has none.
+   * A reference reads them only when struct_size covers them. */
+  const float* normal;
+  const float* albedo;
+  const float* emissive;
 } pfx_reference_request;
 
 typedef struct pfx_reference_factory {

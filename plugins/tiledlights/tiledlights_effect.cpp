@@ -1,0 +1,409 @@
+// The "tiledlights" effect on the GPU. Passes by mode:
+//
+//   brute      shade (uploads every light that reaches anything; every light at every pixel)
+//   cpu8x4     cull  (CPU: lights in view, seed 003's sub-frustum grid, lists into the upload ring)
+//              shade (each pixel reads its tile's list)
+//   tiled      cull  (CPU: lights in view; GPU compute: per-tile lists with the tile's depth bounds)
+//              shade
+//   clustered  cull  (CPU: lights in view; GPU compute: per-cluster lists, tiles x depth slices)
+//              shade
+//
+// Every list is in increasing light order and holds every light whose (slightly widened) sphere
+// reaches its tile or cluster, and the window is exactly 0 past a light's range, so every mode
+// sums the same non-zero terms in the same order as brute force.
+#include "tiledlights_effect.hpp"
+
+#include <pfx/cpp/descriptors.hpp>
+#include <pfx/cpp/gl_program.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <new>
+#include <string>
+
+#include "cpu_culling.hpp"
+#include "light_set.hpp"
+#include "tiledlights_params.hpp"
+#include "tiledlights_shaders.hpp"
+#include "upload_ring.hpp"
+#include "view_frustum.hpp"
+
+namespace pfx_tiledlights {
+namespace {
+
+namespace sh = shaders;
+
+enum PassTag : uint32_t { TAG_PREPARE = 1u, TAG_CULL = 2u, TAG_SHADE = 4u };
+
+struct Instance {
+  const pfx_host* host = nullptr;
+  GLuint shade = 0, tiled = 0, clustered = 0;
+  UploadRing ring;
+  // GPU-built lists (heads, then indices), one buffer per ring slot: llvmpipe runs a compute
+  // dispatch at once but defers the draws before it, so the next frame's culling would overwrite
+  // lists a queued draw has yet to read; the ring's fence keeps the slot's buffer until then.
+  GLuint lists[UploadRing::kSlots] = {};
+  size_t lists_bytes[UploadRing::kSlots] = {};
+  GLuint stats = 0;  // the culling pass's counters
+  GLint ssbo_alignment = 256;
+  GLint64 max_block_bytes = 1 << 24;
+  // Mesa's llvmpipe ends a shader invocation's loops after 65535 turns in all. The shaders sum 16
+  // lights a turn, so a pixel can take about a million lights there (clustered culling, which
+  // also walks each chunk's candidates per slice, about 400,000); past that the frame is refused
+  // instead of silently missing lights.
+  uint64_t loop_guard_lights = 0;  // 0: no such guard
+
+  pfx_pass_desc passes[2] = {};
+  pfx_pass_input shade_inputs[5] = {};
+  pfx_pass_input cull_inputs[1] = {};
+
+  // This frame, from the first pass to the shading pass.
+  Settings settings;
+  LightSet set;
+  std::vector<uint32_t> visible;  // indices into set.lights that were uploaded
+  GridLists grid;
+  int list_mode = sh::LIST_ALL;
+  int tiles_x = 0, tiles_y = 0, tile_size = 1;
+  uint32_t capacity = 0xffffffffu;
+  size_t lights_offset = 0, lights_bytes = 0, heads_offset = 0, heads_bytes = 0, indices_offset = 0,
+         indices_bytes = 0;
+  ListStats list_stats;
+  bool gpu_stats = false;
+  char report[640] = "";
+};
+
+void log_error(const Instance* inst, const std::string& message) {
+  inst->host->log(inst->host->host_data, PFX_LOG_ERROR, ("tiledlights: " + message).c_str());
+}
+
+size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1) / alignment * alignment; }
+
+void destroy(void* self) {
+  Instance* inst = static_cast<Instance*>(self);
+  if (!inst) return;
+  glDeleteProgram(inst->shade);
+  glDeleteProgram(inst->tiled);
+  glDeleteProgram(inst->clustered);
+  glDeleteBuffers(UploadRing::kSlots, inst->lists);
+  glDeleteBuffers(1, &inst->stats);
+  delete inst;
+}
+
+pfx_status create(const pfx_host* host, void** out) {
+  if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
+  if (!pfx::gl::load_gl(host)) {
+    host->log(host->host_data, PFX_LOG_ERROR, "tiledlights: the host's context lacks OpenGL 4.5 core");
+    return PFX_GL_ERROR;
+  }
+  Instance* inst = new (std::nothrow) Instance;
+  if (!inst) return PFX_OUT_OF_MEMORY;
+  inst->host = host;
+  try {
+    struct Program {
+      GLuint* target;
+      const char* name;
+      std::string source;
+      bool compute;
+    } programs[3] = {{&inst->shade, "shade", sh::shade_fragment(), false},
+                     {&inst->tiled, "tiled", sh::tiled_compute(), true},
+                     {&inst->clustered, "clustered", sh::clustered_compute(), true}};
+    for (Program& p : programs) {
+      std::string error;
+      *p.target = p.compute ? pfx::gl::build_compute_program(p.source.c_str(), &error)
+                            : pfx::gl::build_fullscreen_program(p.source.c_str(), &error);
+      if (!*p.target) {
+        log_error(inst, std::string("shader '") + p.name + "': " + error);
+        destroy(inst);
+        return PFX_GL_ERROR;
+      }
+    }
+  } catch (...) {  // std::bad_alloc from a string; nothing may cross the ABI
+    destroy(inst);
+    return PFX_OUT_OF_MEMORY;
+  }
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &inst->ssbo_alignment);
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer && std::strstr(renderer, "llvmpipe")) inst->loop_guard_lights = 900000;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &inst->max_block_bytes);
+  glCreateBuffers(1, &inst->stats);
+  glNamedBufferStorage(inst->stats, 16, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  inst->shade_inputs[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  inst->shade_inputs[1] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  inst->shade_inputs[2] = {PFX_INPUT_NAME_NORMAL, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  inst->shade_inputs[3] = {PFX_INPUT_NAME_ALBEDO, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  inst->shade_inputs[4] = {PFX_INPUT_NAME_EMISSIVE, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  inst->cull_inputs[0] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  *out = inst;
+  return PFX_OK;
+}
+
+// What declare and the first pass both check: lights and camera. Logs and returns false.
+bool check_frame(Instance* inst, const pfx_frame& frame, const Settings& settings, Perspective* perspective) {
+  std::string error;
+  try {
+    if (!prepare_lights(frame, settings, &inst->set, &error) || !perspective_of(frame.camera, perspective, &error)) {
+      log_error(inst, error);
+      return false;
+    }
+  } catch (const std::bad_alloc&) {
+    log_error(inst, "out of memory preparing " + std::to_string(frame.light_count) + " lights");
+    return false;
+  }
+  return true;
+}
+
+pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
+  Instance* inst = static_cast<Instance*>(self);
+  if (!inst || !frame || !params || !out || frame->struct_size < sizeof(pfx_frame) ||
+      out->struct_size < sizeof(pfx_declaration))
+    return PFX_INVALID_ARGUMENT;
+  const Settings settings = settings_from(params);
+  Perspective perspective;
+  if (!check_frame(inst, *frame, settings, &perspective)) return PFX_INVALID_ARGUMENT;
+  out->inputs = PFX_INPUT_LIGHTS;
+  // No light reaches anything and the base is the incoming colour: the output is the input.
+  if (inst->set.lights.empty() && settings.base == BASE_COLOR) return PFX_OK;
+  const uint32_t shade_inputs = settings.base == BASE_EMISSIVE ? 5 : 4;
+  uint32_t n = 0;
+  if (settings.mode != MODE_BRUTE) {
+    const bool gpu = settings.mode == MODE_TILED || settings.mode == MODE_CLUSTERED;
+    pfx_pass_desc cull{};
+    cull.struct_size = sizeof cull;
+    cull.name = "cull";
+    cull.kind = PFX_PASS_CUSTOM;
+    cull.output = nullptr;
+    cull.inputs = gpu ? inst->cull_inputs : nullptr;
+    cull.input_count = gpu ? 1 : 0;
+    cull.user_tag = TAG_PREPARE | TAG_CULL;
+    inst->passes[n++] = cull;
+  }
+  inst->passes[n++] = pfx::desc::fullscreen_pass(
+      "shade", PFX_OUTPUT_NAME, inst->shade_inputs, shade_inputs, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
+      settings.mode == MODE_BRUTE ? (TAG_PREPARE | TAG_SHADE) : TAG_SHADE);
+  out->passes = inst->passes;
+  out->pass_count = n;
+  return PFX_OK;
+}
+
+void set_frame_uniforms(GLuint program, const pfx_frame& frame, const Perspective& perspective, uint32_t light_count,
+                        const Instance& inst) {
+  glProgramUniform1ui(program, sh::U_LIGHT_COUNT, light_count);
+  glProgramUniform1i(program, sh::U_DEPTH_ENCODING, static_cast<GLint>(frame.depth_encoding));
+  glProgramUniform2f(program, sh::U_NEAR_FAR, frame.camera.near_plane, frame.camera.far_plane);
+  glProgramUniform4f(program, sh::U_PERSPECTIVE, static_cast<float>(perspective.scale_x),
+                     static_cast<float>(perspective.scale_y), static_cast<float>(perspective.offset_x),
+                     static_cast<float>(perspective.offset_y));
+  glProgramUniform2i(program, sh::U_FRAME_SIZE, static_cast<GLint>(frame.width), static_cast<GLint>(frame.height));
+  glProgramUniform2i(program, sh::U_TILE_SIZE, inst.tile_size, inst.tile_size);
+  glProgramUniform2i(program, sh::U_TILES, inst.tiles_x, inst.tiles_y);
+  glProgramUniform1ui(program, sh::U_CAPACITY, inst.capacity);
+  // Exponential slices from the near plane to the far plane (1000 x near for an infinite one).
+  const double near_depth = frame.camera.near_plane;
+  const double far_depth = std::isfinite(frame.camera.far_plane) ? double(frame.camera.far_plane) : 1000.0 * near_depth;
+  glProgramUniform1i(program, sh::U_SLICES, inst.settings.slices);
+  glProgramUniform2f(program, sh::U_SLICE_RANGE, static_cast<float>(near_depth),
+                     static_cast<float>(std::log(far_depth / near_depth)));
+}
+
+// The first pass of a frame: prepare the lights, cull what the mode culls on the CPU, upload.
+pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
+  const pfx_frame& frame = *context->frame;
+  const Settings s = settings_from(context->params);
+  inst->settings = s;
+  Perspective perspective;
+  if (!check_frame(inst, frame, s, &perspective)) return PFX_INVALID_ARGUMENT;
+  const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
+  try {
+    if (s.mode == MODE_BRUTE) {
+      inst->visible.resize(inst->set.lights.size());
+      for (uint32_t i = 0; i < inst->visible.size(); ++i) inst->visible[i] = i;
+    } else {
+      inst->visible = lights_in_view(inst->set, perspective, w, h, frame.camera.near_plane, frame.camera.far_plane);
+    }
+    inst->list_mode = sh::LIST_ALL;
+    inst->capacity = 0xffffffffu;
+    inst->list_stats = ListStats{};
+    inst->gpu_stats = false;
+    inst->heads_bytes = inst->indices_bytes = 0;
+    if (s.mode == MODE_CPU8X4) {
+      inst->list_mode = sh::LIST_TILES_BY_GRID;
+      inst->tiles_x = s.cpu_tiles_x;
+      inst->tiles_y = s.cpu_tiles_y;
+      if (!cull_grid(inst->set, inst->visible, perspective, w, h, s.cpu_tiles_x, s.cpu_tiles_y, &inst->grid)) {
+        log_error(inst, "the light lists would hold more than 2^32 indices");
+        return PFX_OUT_OF_MEMORY;
+      }
+      inst->list_stats = inst->grid.stats;
+      inst->heads_bytes = inst->grid.heads.size() * 4;
+      inst->indices_bytes = std::max<size_t>(4, inst->grid.indices.size() * 4);
+    }
+  } catch (const std::bad_alloc&) {
+    log_error(inst, "out of memory culling " + std::to_string(inst->set.lights.size()) + " lights");
+    return PFX_OUT_OF_MEMORY;
+  }
+
+  const uint64_t guard = s.mode == MODE_CLUSTERED ? inst->loop_guard_lights * 4 / 9 : inst->loop_guard_lights;
+  if (guard && inst->visible.size() > guard) {
+    log_error(inst, std::to_string(inst->visible.size()) + " lights in view: more than llvmpipe's loop guard lets a " +
+                        kModeNames[s.mode] + " frame sum (" + std::to_string(guard) + ")");
+    return PFX_UNSUPPORTED;
+  }
+  const size_t alignment = static_cast<size_t>(std::max(inst->ssbo_alignment, 4));
+  inst->lights_offset = 0;
+  inst->lights_bytes = std::max<size_t>(1, inst->visible.size()) * sizeof(GpuLight);
+  if (static_cast<GLint64>(inst->lights_bytes) > inst->max_block_bytes) {
+    log_error(inst, std::to_string(inst->visible.size()) + " lights need " + std::to_string(inst->lights_bytes) +
+                        " bytes, past this GL's shader storage block limit of " +
+                        std::to_string(inst->max_block_bytes) + " bytes");
+    return PFX_OUT_OF_MEMORY;
+  }
+  inst->heads_offset = align_up(inst->lights_bytes, alignment);
+  inst->indices_offset = align_up(inst->heads_offset + inst->heads_bytes, alignment);
+  unsigned char* mapping = inst->ring.begin(inst->indices_offset + inst->indices_bytes);
+  if (!mapping) {
+    log_error(inst, "could not map the upload buffer");
+    return PFX_GL_ERROR;
+  }
+  auto* lights = reinterpret_cast<GpuLight*>(mapping + inst->lights_offset);
+  for (size_t k = 0; k < inst->visible.size(); ++k) lights[k] = inst->set.lights[inst->visible[k]];
+  if (inst->heads_bytes) std::memcpy(mapping + inst->heads_offset, inst->grid.heads.data(), inst->heads_bytes);
+  if (!inst->grid.indices.empty() && s.mode == MODE_CPU8X4)
+    std::memcpy(mapping + inst->indices_offset, inst->grid.indices.data(), inst->grid.indices.size() * 4);
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_LIGHTS, inst->ring.buffer(),
+                    static_cast<GLintptr>(inst->lights_offset), static_cast<GLsizeiptr>(inst->lights_bytes));
+
+  if (s.mode == MODE_TILED || s.mode == MODE_CLUSTERED) {
+    const bool clustered = s.mode == MODE_CLUSTERED;
+    inst->tile_size = clustered ? s.cluster_tile_size : s.tile_size;
+    inst->tiles_x = (w + inst->tile_size - 1) / inst->tile_size;
+    inst->tiles_y = (h + inst->tile_size - 1) / inst->tile_size;
+    inst->list_mode = clustered ? sh::LIST_CLUSTERS : sh::LIST_TILES_BY_SIZE;
+    const uint64_t lists = uint64_t(inst->tiles_x) * inst->tiles_y * (clustered ? s.slices : 1);
+    // A list that does not fit is never cut short: the shading pass then uses every light.
+    const uint64_t fits = uint64_t(inst->max_block_bytes) / (4 * lists);
+    inst->capacity = static_cast<uint32_t>(std::max<uint64_t>(1, std::min<uint64_t>(s.list_capacity, fits)));
+    inst->heads_bytes = lists * 8;
+    inst->indices_bytes = lists * inst->capacity * 4;
+    const size_t indices_offset = align_up(inst->heads_bytes, alignment);
+    const size_t needed = indices_offset + inst->indices_bytes;
+    const int slot = inst->ring.slot();
+    if (needed > inst->lists_bytes[slot]) {
+      glDeleteBuffers(1, &inst->lists[slot]);
+      glCreateBuffers(1, &inst->lists[slot]);
+      glNamedBufferStorage(inst->lists[slot], static_cast<GLsizeiptr>(needed), nullptr, 0);
+      inst->lists_bytes[slot] = needed;
+    }
+    const GLuint lists_buffer = inst->lists[slot];
+    inst->indices_offset = indices_offset;
+    const GLuint zero = 0;
+    glClearNamedBufferData(inst->stats, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_HEADS, lists_buffer, 0,
+                      static_cast<GLsizeiptr>(inst->heads_bytes));
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_INDICES, lists_buffer,
+                      static_cast<GLintptr>(inst->indices_offset), static_cast<GLsizeiptr>(inst->indices_bytes));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, sh::SSBO_STATS, inst->stats);
+    const GLuint program = clustered ? inst->clustered : inst->tiled;
+    set_frame_uniforms(program, frame, perspective, static_cast<uint32_t>(inst->visible.size()), *inst);
+    glUseProgram(program);
+    glDispatchCompute(static_cast<GLuint>(inst->tiles_x), static_cast<GLuint>(inst->tiles_y), 1);
+    glUseProgram(0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    inst->list_stats.lists = lists;
+    inst->gpu_stats = true;
+  }
+  return PFX_OK;
+}
+
+pfx_status shade(Instance* inst, const pfx_pass_context* context) {
+  const pfx_frame& frame = *context->frame;
+  Perspective perspective;
+  std::string error;
+  if (!perspective_of(frame.camera, &perspective, &error)) return PFX_INVALID_ARGUMENT;
+  double view[16];
+  view_matrix(frame.camera, view);
+  double inverse[16];
+  if (!invert_matrix(view, inverse)) {
+    log_error(inst, "the camera's view matrix is not invertible");
+    return PFX_INVALID_ARGUMENT;
+  }
+  float inverse_f[16];
+  for (int i = 0; i < 16; ++i) inverse_f[i] = static_cast<float>(inverse[i]);
+
+  const GLuint program = inst->shade;
+  set_frame_uniforms(program, frame, perspective, static_cast<uint32_t>(inst->visible.size()), *inst);
+  glProgramUniform1i(program, sh::U_LIST_MODE, inst->list_mode);
+  glProgramUniformMatrix4fv(program, sh::U_INVERSE_VIEW, 1, GL_FALSE, inverse_f);
+  glProgramUniform1i(program, sh::U_BASE, inst->settings.base);
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_LIGHTS, inst->ring.buffer(),
+                    static_cast<GLintptr>(inst->lights_offset), static_cast<GLsizeiptr>(inst->lights_bytes));
+  if (inst->list_mode == sh::LIST_TILES_BY_GRID) {
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_HEADS, inst->ring.buffer(),
+                      static_cast<GLintptr>(inst->heads_offset), static_cast<GLsizeiptr>(inst->heads_bytes));
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_INDICES, inst->ring.buffer(),
+                      static_cast<GLintptr>(inst->indices_offset), static_cast<GLsizeiptr>(inst->indices_bytes));
+  }
+  glUseProgram(program);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glUseProgram(0);
+  inst->ring.end();
+  return PFX_OK;
+}
+
+pfx_status run_pass(void* self, const pfx_pass_context* context) {
+  Instance* inst = static_cast<Instance*>(self);
+  if (!inst || !context || context->struct_size < sizeof(pfx_pass_context) || !context->frame ||
+      !context->params)
+    return PFX_INVALID_ARGUMENT;
+  if (context->user_tag & TAG_PREPARE) {
+    const pfx_status status = prepare(inst, context);
+    if (status != PFX_OK) return status;
+  }
+  if (context->user_tag & TAG_SHADE) return shade(inst, context);
+  return PFX_OK;
+}
+
+const char* report_json(void* self) {
+  Instance* inst = static_cast<Instance*>(self);
+  ListStats& stats = inst->list_stats;
+  if (inst->gpu_stats) {
+    // Waits for the culling pass: the counters are only known once it ran.
+    GLuint counters[4] = {};
+    glGetNamedBufferSubData(inst->stats, 0, sizeof counters, counters);
+    stats.overflowed = counters[0];
+    stats.entries = counters[1];
+    stats.max_length = counters[2];
+    inst->gpu_stats = false;
+  }
+  uint64_t ssbo_bytes = inst->ring.bytes() + 16;
+  for (size_t bytes : inst->lists_bytes) ssbo_bytes += bytes;
+  std::snprintf(inst->report, sizeof inst->report,
+                "\"mode\": \"%s\", \"lights\": %u, \"lights_reaching\": %zu, \"lights_uploaded\": %zu, "
+                "\"lists\": %llu, \"list_mean\": %.3f, \"list_max\": %u, \"list_capacity\": %u, "
+                "\"overflowed_lists\": %u, \"ssbo_bytes\": %llu, \"ring_waits\": %llu",
+                kModeNames[std::min(std::max(inst->settings.mode, 0), MODE_COUNT - 1)], inst->set.frame_lights,
+                inst->set.lights.size(), inst->visible.size(), static_cast<unsigned long long>(stats.lists),
+                stats.mean_length(), stats.max_length, inst->capacity == 0xffffffffu ? 0u : inst->capacity,
+                stats.overflowed, static_cast<unsigned long long>(ssbo_bytes),
+                static_cast<unsigned long long>(inst->ring.waits()));
+  return inst->report;
+}
+
+}  // namespace
+
+const pfx_effect_desc kTiledLightsEffect = {
+    sizeof(pfx_effect_desc),
+    "tiledlights",
+    "Tiled lights",
+    "Lights the G-buffer with many point lights (seed 003's falloff) and adds them to the colour; culled by "
+    "brute force, seed 003's CPU sub-frustums, GPU tiles or GPU clusters, all giving the same image.",
+    kParams,
+    PARAM_COUNT,
+    create,
+    destroy,
+    declare,
+    run_pass,
+    report_json};
+
+}  // namespace pfx_tiledlights
