@@ -52,7 +52,8 @@ TEST_CASE("each loader failure has its own clear message naming the file", "[loa
   CHECK(load_error(*registry, broken("broken_no_entry")) ==
         broken("broken_no_entry") + ": no entry symbol pfx_get_entry (not a pfx plugin)");
   CHECK(load_error(*registry, broken("broken_abi_major")) ==
-        broken("broken_abi_major") + ": ABI major version mismatch: plugin built for ABI 99.0, host implements ABI 1.0");
+        broken("broken_abi_major") + ": ABI major version mismatch: plugin built for ABI 99." +
+                         std::to_string(PFX_ABI_MINOR) + ", host implements ABI 1." + std::to_string(PFX_ABI_MINOR));
   CHECK(load_error(*registry, broken("broken_init_fails")) == broken("broken_init_fails") + ": init failed (status -1)");
   CHECK(load_error(*registry, broken("broken_duplicate_plugin_id")) ==
         broken("broken_duplicate_plugin_id") + ": duplicate plugin id 'org.pfx.test.minimal' (already loaded from " +
