@@ -52,6 +52,8 @@ std::string bench_usage() {
       "\n"
       "pfx-bench --import ... measures the OBJ importer against tinyobjloader and assimp instead\n"
       "(no GL; see pfx-bench --import --help).\n"
+      "pfx-bench --lights ... measures the tiledlights effect against its light count on a scene of\n"
+      "its own (see pfx-bench --lights --help).\n"
       "\n"
       "exit codes: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 plugin or effect error\n";
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#include "gnuplot_png.hpp"
 
 namespace pfx::bench {
 namespace {
@@ -172,22 +173,7 @@ bool write_error_plot(const BenchResults& results, const std::string& path, std:
     data += "e\n";
   }
   script += "\n" + data;
-  return pfx::app::write_atomically(
-      path,
-      [&](const std::string& temp, std::string* reason) {
-        std::string text = script;
-        text.replace(text.find("__OUT__"), 7, temp);
-        FILE* gnuplot = popen("gnuplot", "w");
-        if (!gnuplot) {
-          *reason = "cannot run gnuplot (install gnuplot-nox)";
-          return false;
-        }
-        std::fwrite(text.data(), 1, text.size(), gnuplot);
-        int status = pclose(gnuplot);
-        if (status != 0) *reason = "gnuplot failed (status " + std::to_string(status) + ")";
-        return status == 0;
-      },
-      error);
+  return write_gnuplot_png(path, script, error);
 }
 
 }  // namespace pfx::bench

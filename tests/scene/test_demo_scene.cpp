@@ -1,10 +1,13 @@
-// The built-in demo scene: seed 003's 400-light grid, the extra seeded lights, reproducibility.
+// The built-in demo scene: seed 003's 400-light grid, the extra seeded lights, reproducibility;
+// and pfx-bench's light-field scene (its lights' density).
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <set>
 
 #include "demo_scene.hpp"
+#include "light_field_scene.hpp"
 
 using namespace pfx::app;
 
@@ -85,4 +88,27 @@ TEST_CASE("the seed (--seed) makes the scene reproducible and different seeds di
   CHECK(scene.lights[0].color[0] == 1.0f);
   CHECK(scene.lights[0].color[1] == 0.0f);
   CHECK(scene.lights[0].color[2] == 0.0f);
+}
+
+TEST_CASE("the light-field scene keeps one light per 4 square metres as the count grows", "[scene]") {
+  for (int count : {1000, 10000, 100000}) {
+    INFO(count << " lights");
+    const pfx::app::Scene scene = pfx::app::make_light_field_scene(count, 7);
+    REQUIRE(scene.lights.size() == static_cast<size_t>(count));
+    std::string error;
+    CHECK(pfx::app::validate_scene(scene, &error));
+    // Every light above the floor's square, whose area is count / density.
+    const double side = scene.bounds_max.x - scene.bounds_min.x;
+    CHECK(side == Approx(std::sqrt(count / pfx::app::kLightFieldDensity)).epsilon(1e-6));
+    CHECK(scene.bounds_max.z - scene.bounds_min.z == Approx(side).epsilon(1e-6));
+    for (const pfx_light& light : scene.lights) {
+      REQUIRE(std::abs(light.position[0]) <= side / 2);
+      REQUIRE(std::abs(light.position[2]) <= side / 2);
+      REQUIRE(light.position[1] >= 0.5f);
+      REQUIRE(light.position[1] <= 2.0f);
+    }
+  }
+  // Fewer lights than fill the view: the floor stays 44 m wide.
+  const pfx::app::Scene few = pfx::app::make_light_field_scene(100, 7);
+  CHECK(few.bounds_max.x - few.bounds_min.x == Approx(44).epsilon(1e-6));
 }

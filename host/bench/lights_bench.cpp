@@ -1,0 +1,439 @@
+#include "lights_bench.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+#include <glad/gl.h>
+#include <nlohmann/json.hpp>
+
+#include <pfx/host/chain.hpp>
+
+#include "bench_timing.hpp"
+#include "cli_text.hpp"
+#include "gbuffer.hpp"
+#include "headless_context.hpp"
+#include "image_texture.hpp"
+#include "light_field_scene.hpp"
+#include "lights_bench_report.hpp"
+#include "plugin_directory.hpp"
+
+namespace pfx::bench {
+namespace {
+
+struct LightsOptions {
+  bool help = false;
+  std::vector<std::pair<int, int>> sizes = {{1280, 720}, {1920, 1080}};
+  std::vector<int> counts = {100, 1000, 10000, 100000};
+  std::vector<std::string> modes = {"brute", "cpu8x4", "tiled", "clustered"};
+  int frames = 3, warmup = 1;
+  double brute_limit_s = 60;
+  std::pair<int, int> error_size = {640, 360};
+  int error_lights = 1000;
+  std::string error_mode = "tiled";
+  std::vector<double> cutoffs = {0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002};
+  uint64_t seed = 1;
+  std::string out_dir = "out/bench";
+  std::vector<std::string> plugin_dirs;
+};
+
+std::string usage() {
+  return "usage: pfx-bench --lights [--sizes WxH,...] [--counts N,...] [--modes m,...] [--frames N]\n"
+         "                          [--warmup N] [--brute-limit S] [--error-size WxH] [--error-lights N]\n"
+         "                          [--error-mode M] [--cutoffs c,...] [--seed S] [--out DIR]\n"
+         "                          [--plugins DIR]... [--quick]\n"
+         "\n"
+         "Measures the tiledlights effect against its light count on the light-field scene: the demo's\n"
+         "objects on a floor that grows with the count so the lights' density stays one per 4 m^2, seen\n"
+         "from 20 m (from 1,000 lights on, the floor fills the view, which takes in about 560 lights:\n"
+         "more lights are more lights outside it). For every size, count and mode: median cull and shade\n"
+         "time, total, ratio to a plain copy pass, speed-up over brute force, lights in view, list\n"
+         "length (mean, max), overflowed lists, shader storage bytes. Brute force runs only where one\n"
+         "frame is predicted (from the smaller count, linearly) to finish within --brute-limit seconds,\n"
+         "timing as many frames as fit (at least one, warm-up dropped first); elsewhere its time is that\n"
+         "prediction, marked estimated. Then, at --error-size with --error-lights lights and\n"
+         "--error-mode, time and error against the un-windowed sum (the plugin's ideal reference) for\n"
+         "every cutoff and for seed 003's range rule.\n"
+         "\n"
+         "  --sizes      default 1280x720,1920x1080\n"
+         "  --counts     default 100,1000,10000,100000\n"
+         "  --modes      default brute,cpu8x4,tiled,clustered\n"
+         "  --frames     timed frames per cell (default 3); --warmup untimed first (default 1)\n"
+         "  --brute-limit  seconds (default 60)\n"
+         "  --error-size default 640x360; --error-lights default 1000; --error-mode default tiled\n"
+         "  --cutoffs    default 0.5,0.2,0.1,0.05,0.02,0.01,0.005,0.002\n"
+         "  --out DIR    writes lights.json, lights.md, lights_time.png, lights_error.png (default out/bench)\n"
+         "  --quick      a smoke run: 64x36, 100 and 1000 lights, 1 frame, no warm-up, two cutoffs\n"
+         "\n"
+         "exit codes: 0 ok, 1 internal error (no GL 4.5, an output not written), 2 usage,\n"
+         "            4 the tiledlights plugin is not loaded\n";
+}
+
+bool parse_number(const std::string& text, double* out) {
+  char* end = nullptr;
+  *out = std::strtod(text.c_str(), &end);
+  return !text.empty() && *end == '\0' && std::isfinite(*out);
+}
+
+bool is_mode(const std::string& name) {
+  return name == "brute" || name == "cpu8x4" || name == "tiled" || name == "clustered";
+}
+
+bool parse_options(const std::vector<std::string>& args, LightsOptions* out, std::string* error) {
+  LightsOptions o;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    std::string text;
+    auto value = [&]() {
+      if (i + 1 >= args.size()) {
+        *error = arg + " needs a value";
+        return false;
+      }
+      text = args[++i];
+      return true;
+    };
+    auto whole = [&](double v, double lo, double hi) { return v == std::floor(v) && v >= lo && v <= hi; };
+    double number = 0;
+    if (arg == "-h" || arg == "--help") o.help = true;
+    else if (arg == "--quick") {
+      o.sizes = {{64, 36}};
+      o.counts = {100, 1000};
+      o.frames = 1;
+      o.warmup = 0;
+      o.error_size = {64, 36};
+      o.error_lights = 400;
+      o.cutoffs = {0.1, 0.05};
+    } else if (arg == "--sizes") {
+      if (!value()) return false;
+      o.sizes.clear();
+      for (const auto& item : pfx::app::split_list(text)) {
+        int w = 0, h = 0;
+        if (!pfx::app::parse_frame_size("--sizes", item, &w, &h, error)) return false;
+        o.sizes.push_back({w, h});
+      }
+    } else if (arg == "--counts" || arg == "--cutoffs") {
+      if (!value()) return false;
+      std::vector<double> numbers;
+      for (const auto& item : pfx::app::split_list(text)) {
+        if (!parse_number(item, &number) || (arg == "--counts" ? !whole(number, 0, 1e7) : !(number > 0)))
+          return *error = arg + " " + text + ": '" + item + "' is not " +
+                          (arg == "--counts" ? "a light count from 0 to 10000000" : "a positive cutoff"),
+                 false;
+        numbers.push_back(number);
+      }
+      if (arg == "--counts") {
+        o.counts.clear();
+        for (double n : numbers) o.counts.push_back(static_cast<int>(n));
+      } else {
+        o.cutoffs = numbers;
+      }
+    } else if (arg == "--modes") {
+      if (!value()) return false;
+      o.modes = pfx::app::split_list(text);
+      for (const auto& m : o.modes)
+        if (!is_mode(m))
+          return *error = "--modes: unknown mode '" + m + "' (brute, cpu8x4, tiled, clustered)", false;
+    } else if (arg == "--error-mode") {
+      if (!value()) return false;
+      o.error_mode = text;
+      if (!is_mode(text)) return *error = "--error-mode: unknown mode '" + text + "' (brute, cpu8x4, tiled, clustered)", false;
+    } else if (arg == "--frames" || arg == "--warmup" || arg == "--error-lights" || arg == "--brute-limit" ||
+               arg == "--seed") {
+      if (!value()) return false;
+      const bool ok = parse_number(text, &number) &&
+                      (arg == "--brute-limit" ? number >= 0 : whole(number, arg == "--frames" ? 1 : 0, 1e7));
+      if (!ok) return *error = arg + " " + text + ": not a valid number", false;
+      if (arg == "--frames") o.frames = int(number);
+      if (arg == "--warmup") o.warmup = int(number);
+      if (arg == "--error-lights") o.error_lights = int(number);
+      if (arg == "--brute-limit") o.brute_limit_s = number;
+      if (arg == "--seed") o.seed = uint64_t(number);
+    } else if (arg == "--error-size") {
+      if (!value() || !pfx::app::parse_frame_size("--error-size", text, &o.error_size.first, &o.error_size.second, error))
+        return false;
+    } else if (arg == "--out") {
+      if (!value()) return false;
+      o.out_dir = text;
+    } else if (arg == "--plugins") {
+      if (!value()) return false;
+      o.plugin_dirs.push_back(text);
+    } else {
+      *error = "unknown option '" + arg + "' (see pfx-bench --lights --help)";
+      return false;
+    }
+  }
+  *out = o;
+  return true;
+}
+
+// The copy pass at a size, timed as the chain times its passes (Timing::AUTO): a median of frames.
+double copy_ms(int width, int height, int frames) {
+  CopyPass copy;
+  const uint32_t a = pfx::app::create_color_texture(width, height), b = pfx::app::create_color_texture(width, height);
+  time_copy(copy, a, b, width, height, pfx::host::Timing::AUTO);  // warm-up: the first use compiles
+  std::vector<double> times;
+  for (int i = 0; i < frames; ++i) times.push_back(time_copy(copy, a, b, width, height, pfx::host::Timing::AUTO));
+  pfx::app::delete_texture(a);
+  pfx::app::delete_texture(b);
+  return median(times);
+}
+
+// One chain of tiledlights over a scene's G-buffer at one size.
+class Stage {
+ public:
+  Stage(const pfx::host::PluginRegistry& registry, const pfx::app::Scene& scene, int width, int height)
+      : scene_(scene), width_(width), height_(height) {
+    std::string error;
+    renderer_ = pfx::app::SceneRenderer::create(scene_, &error);
+    if (!renderer_) throw std::runtime_error(error);
+    renderer_->render(scene_.camera, width, height);
+    frame_ = pfx::app::make_scene_frame(scene_, scene_.camera, width, height);
+    params_.add_effect(registry.find_effect("tiledlights")->desc);
+    chain_ = std::make_unique<pfx::host::Chain>(registry, params_);
+    chain_->set_timing(pfx::host::Timing::AUTO);
+    if (!chain_->add("tiledlights", &error)) throw std::runtime_error(error);
+    output_ = pfx::app::create_color_texture(width, height);
+  }
+  ~Stage() { pfx::app::delete_texture(output_); }
+
+  void set(const std::string& assignment) {
+    std::string error;
+    if (!params_.set_assignment("tiledlights." + assignment, &error)) throw std::runtime_error(error);
+  }
+
+  // Medians over frames after warm-up; the effect's report of the last frame.
+  struct Measured {
+    double cull_ms = 0, shade_ms = 0, total_ms = 0;
+    nlohmann::json report;
+  };
+  Measured measure(int frames, int warmup) {
+    std::vector<double> cull, shade, total;
+    std::string error;
+    Measured m;
+    for (int i = 0; i < warmup + frames; ++i) {
+      frame_.frame_index = uint64_t(i);
+      if (!chain_->render(frame_, renderer_->textures(), output_, &error)) throw std::runtime_error(error);
+      if (i < warmup) continue;
+      double c = 0, s = 0;
+      for (const auto& pass : chain_->report().passes) (pass.pass == "cull" ? c : s) += pass.ms;
+      cull.push_back(c);
+      shade.push_back(s);
+      total.push_back(chain_->report().total_ms);
+    }
+    m.cull_ms = median(cull);
+    m.shade_ms = median(shade);
+    m.total_ms = median(total);
+    for (const auto& [effect, members] : chain_->report().effect_reports)
+      if (effect == "tiledlights") m.report = nlohmann::json::parse("{" + members + "}", nullptr, false);
+    return m;
+  }
+
+  std::vector<float> output_bottom_first() const {
+    return pfx::app::flip_rows(pfx::app::download_color_texture(output_, width_, height_).rgba, width_, height_, 4);
+  }
+  const pfx_frame& frame() const { return frame_; }
+  const pfx::host::ParamStore& params() const { return params_; }
+  pfx::app::SceneRenderer& renderer() { return *renderer_; }
+  std::string timing() const { return chain_->report().timing; }
+
+ private:
+  const pfx::app::Scene& scene_;
+  int width_, height_;
+  std::unique_ptr<pfx::app::SceneRenderer> renderer_;
+  pfx_frame frame_{};
+  pfx::host::ParamStore params_;
+  std::unique_ptr<pfx::host::Chain> chain_;
+  uint32_t output_ = 0;
+};
+
+std::vector<float> read_texture(uint32_t texture, int width, int height, GLenum format) {
+  std::vector<float> data(static_cast<size_t>(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(texture, 0, format, GL_FLOAT, static_cast<GLsizei>(data.size() * sizeof(float)), data.data());
+  return data;
+}
+
+void fill_cell(LightsCell* cell, const Stage::Measured& m) {
+  cell->ran = true;
+  cell->cull_ms = m.cull_ms;
+  cell->shade_ms = m.shade_ms;
+  cell->total_ms = m.total_ms;
+  const auto& r = m.report;
+  if (!r.is_object()) return;
+  cell->lights_in_view = r.value("lights_uploaded", uint64_t(0));
+  cell->lists = r.value("lists", uint64_t(0));
+  cell->list_mean = r.value("list_mean", 0.0);
+  cell->list_max = r.value("list_max", uint64_t(0));
+  cell->overflowed = r.value("overflowed_lists", uint64_t(0));
+  cell->ssbo_bytes = r.value("ssbo_bytes", uint64_t(0));
+}
+
+void run_sweep(const LightsOptions& o, const pfx::host::PluginRegistry& registry, LightsResults* results) {
+  for (const auto& [w, h] : o.sizes) {
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    const double unit = copy_ms(w, h, std::max(o.frames, 3));
+    results->copy_ms.push_back({size, unit});
+    std::fprintf(stderr, "pfx-bench --lights: %s copy pass %.3f ms\n", size.c_str(), unit);
+    double brute_ms_per_light = -1;  // from the last brute cell that ran at this size
+    for (int count : o.counts) {
+      const pfx::app::Scene scene = pfx::app::make_light_field_scene(count, o.seed);
+      Stage stage(registry, scene, w, h);
+      double brute_total = 0;
+      bool brute_estimated = false;
+      for (const auto& mode : o.modes) {
+        LightsCell cell;
+        cell.width = w;
+        cell.height = h;
+        cell.lights = count;
+        cell.mode = mode;
+        stage.set("mode=" + mode);
+        // Brute force is linear in the lights that reach anything: its time per frame is predicted
+        // from the last count that ran. Past the limit for one frame it is not run; otherwise it
+        // times as many of the frames (warm-up first to go) as fit in the limit.
+        const double predicted_ms = mode == "brute" && brute_ms_per_light > 0 ? brute_ms_per_light * count : 0;
+        int frames = o.frames, warmup = o.warmup;
+        if (predicted_ms > o.brute_limit_s * 1000) {
+          cell.total_ms = cell.shade_ms = predicted_ms;
+          brute_estimated = true;
+        } else {
+          if (predicted_ms * (frames + warmup) > o.brute_limit_s * 1000) {
+            warmup = 0;
+            frames = std::clamp(int(o.brute_limit_s * 1000 / predicted_ms), 1, o.frames);
+          }
+          cell.frames = frames;
+          cell.warmup = warmup;
+          fill_cell(&cell, stage.measure(frames, warmup));
+          results->timing = stage.timing();
+          if (mode == "brute" && count > 0) brute_ms_per_light = cell.total_ms / count;
+        }
+        if (mode == "brute") brute_total = cell.total_ms;
+        cell.ratio_to_copy = unit > 0 ? cell.total_ms / unit : 0;
+        std::fprintf(stderr, "pfx-bench --lights: %s %6d lights %-9s %s cull %9.3f shade %9.3f total %9.3f ms\n",
+                     size.c_str(), count, mode.c_str(), cell.ran ? "" : "(estimated)", cell.cull_ms, cell.shade_ms,
+                     cell.total_ms);
+        results->cells.push_back(cell);
+      }
+      for (auto& cell : results->cells)
+        if (cell.width == w && cell.height == h && cell.lights == count && brute_total > 0 && cell.total_ms > 0) {
+          cell.speedup = brute_total / cell.total_ms;
+          cell.speedup_estimated = brute_estimated;
+        }
+    }
+  }
+}
+
+void run_cutoffs(const LightsOptions& o, const pfx::host::PluginRegistry& registry, LightsResults* results) {
+  const auto [w, h] = o.error_size;
+  results->error_width = w;
+  results->error_height = h;
+  results->error_lights = o.error_lights;
+  results->error_mode = o.error_mode;
+  const double unit = copy_ms(w, h, 3);
+  const pfx::app::Scene scene = pfx::app::make_light_field_scene(o.error_lights, o.seed);
+  Stage stage(registry, scene, w, h);
+  stage.set("mode=" + o.error_mode);
+  const auto textures = stage.renderer().textures();
+  // The G-buffer as the reference takes it: RGBA floats, rows bottom first (GL's order).
+  auto read = [&](uint32_t texture) { return read_texture(texture, w, h, GL_RGBA); };
+  const std::vector<float> color = read(textures.color), normal = read(textures.normal), albedo = read(textures.albedo),
+                           emissive = read(textures.emissive);
+  std::vector<float> depth4 = read(textures.depth), depth(static_cast<size_t>(w) * h);
+  for (size_t i = 0; i < depth.size(); ++i) depth[i] = depth4[i * 4];
+  const pfx::host::EffectInfo* info = registry.find_effect("tiledlights");
+  const pfx_reference_factory* references = info->plugin->references;
+  std::vector<float> ideal(color.size());
+  std::vector<std::pair<std::string, double>> points;
+  for (double c : o.cutoffs) points.push_back({"cutoff", c});
+  points.push_back({"seed", 0});
+  bool ideal_done = false;
+  for (const auto& [rule, cutoff] : points) {
+    stage.set("range_rule=" + rule);
+    if (rule == "cutoff") stage.set("cutoff=" + std::to_string(cutoff));
+    const Stage::Measured m = stage.measure(o.frames, o.warmup);
+    if (!ideal_done && references) {
+      // The un-windowed sum does not depend on the cutoff: one evaluation serves every point.
+      pfx_reference_request request{};
+      request.struct_size = sizeof request;
+      request.effect_id = "tiledlights";
+      request.kind = PFX_REFERENCE_IDEAL;
+      request.frame = &stage.frame();
+      request.params = stage.params().values("tiledlights");
+      request.color = color.data();
+      request.depth = depth.data();
+      request.normal = normal.data();
+      request.albedo = albedo.data();
+      request.emissive = emissive.data();
+      request.output = ideal.data();
+      if (references->evaluate(&request) != PFX_OK) throw std::runtime_error("the ideal reference failed");
+      ideal_done = true;
+    }
+    CutoffPoint point;
+    point.rule = rule;
+    point.cutoff = cutoff;
+    point.total_ms = m.total_ms;
+    point.ratio_to_copy = unit > 0 ? m.total_ms / unit : 0;
+    point.list_mean = m.report.is_object() ? m.report.value("list_mean", 0.0) : 0.0;
+    if (ideal_done) point.error = compare_rgb(stage.output_bottom_first(), ideal, &color);
+    std::fprintf(stderr, "pfx-bench --lights: error %s %g: %.3f ms, RMSE/change %.4g\n", rule.c_str(), cutoff,
+                 point.total_ms, point.error.change_relative_rmse);
+    results->cutoffs.push_back(point);
+  }
+  if (!ideal_done) results->notes.push_back("the plugin has no ideal reference: no error column");
+}
+
+}  // namespace
+
+int lights_bench_main(const std::vector<std::string>& args) {
+  LightsOptions options;
+  std::string message;
+  if (!parse_options(args, &options, &message)) {
+    std::fprintf(stderr, "pfx-bench --lights: %s\n\n%s", message.c_str(), usage().c_str());
+    return 2;
+  }
+  if (options.help) {
+    std::fputs(usage().c_str(), stdout);
+    return 0;
+  }
+  auto context = pfx::app::HeadlessContext::create(&message);
+  if (!context) {
+    std::fprintf(stderr, "pfx-bench --lights: %s\n", message.c_str());
+    return 1;
+  }
+  pfx::host::PluginRegistry registry(
+      [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); },
+      pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
+  pfx::app::load_plugins(registry, options.plugin_dirs);
+  if (!registry.find_effect("tiledlights")) {
+    std::fprintf(stderr, "pfx-bench --lights: the tiledlights effect is not loaded\n");
+    return 4;
+  }
+  LightsResults results;
+  results.renderer = context->renderer();
+  results.frames = options.frames;
+  results.warmup = options.warmup;
+  results.brute_limit_s = options.brute_limit_s;
+  try {
+    run_sweep(options, registry, &results);
+    run_cutoffs(options, registry, &results);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pfx-bench --lights: %s\n", e.what());
+    return 1;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir, ec);
+  if (ec) {
+    std::fprintf(stderr, "pfx-bench --lights: cannot create %s: %s\n", options.out_dir.c_str(), ec.message().c_str());
+    return 1;
+  }
+  if (!write_lights_reports(results, options.out_dir, &message)) {
+    std::fprintf(stderr, "pfx-bench --lights: %s\n", message.c_str());
+    return 1;
+  }
+  std::fputs(lights_markdown(results).c_str(), stdout);
+  return 0;
+}
+
+}  // namespace pfx::bench
