@@ -164,7 +164,7 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   if (!check_frame(inst, *frame, settings, &perspective)) return PFX_INVALID_ARGUMENT;
   out->inputs = PFX_INPUT_LIGHTS;
   // No light reaches anything and the base is the incoming colour: the output is the input.
-  if (inst->set.lights.empty() && settings.base == BASE_COLOR) return PFX_OK;
+  if (inst->set.lights.empty() && settings.base == BASE_COLOR && settings.show == SHOW_LIGHT) return PFX_OK;
   const uint32_t shade_inputs = settings.base == BASE_EMISSIVE ? 5 : 4;
   uint32_t n = 0;
   if (settings.mode != MODE_BRUTE) {
@@ -336,6 +336,7 @@ pfx_status shade(Instance* inst, const pfx_pass_context* context) {
   glProgramUniform1i(program, sh::U_LIST_MODE, inst->list_mode);
   glProgramUniformMatrix4fv(program, sh::U_INVERSE_VIEW, 1, GL_FALSE, inverse_f);
   glProgramUniform1i(program, sh::U_BASE, inst->settings.base);
+  glProgramUniform1i(program, sh::U_SHOW, inst->settings.show);
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_LIGHTS, inst->ring.buffer(),
                     static_cast<GLintptr>(inst->lights_offset), static_cast<GLsizeiptr>(inst->lights_bytes));
   if (inst->list_mode == sh::LIST_TILES_BY_GRID) {

@@ -20,6 +20,9 @@ const pfx_enum_item kRangeItems[] = {{"cutoff", "Where the light falls below the
 const pfx_enum_item kBaseItems[] = {{"color", "Add to the incoming colour"},
                                     {"emissive", "Add to the emissive input"}};
 
+const pfx_enum_item kShowItems[] = {{"light", "The lit image"},
+                                    {"list_heat", "Heat colour of the lights each pixel sums"}};
+
 }  // namespace
 
 const char* const kModeNames[MODE_COUNT] = {"brute", "cpu8x4", "tiled", "clustered"};
@@ -64,6 +67,12 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
           "tiled, clustered: light indices one list holds. A tile or cluster with more lights is shaded "
           "with every light instead (the same image, slower) and counted as overflowed in the report.",
           "", "Culling", PFX_PARAM_INT, 1, 1 << 20, 16, 4096, 1, {{512}}),
+    with_items(param("show", "Show",
+                     "light: the lit image. list_heat: instead of the light, a heat colour of how many lights "
+                     "each pixel with geometry sums (its tile's or cluster's list; every light for brute "
+                     "force), on a log scale: black 0, blue 4, green 31, yellow 180, red 1023 or more.",
+                     "", "Debug", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{SHOW_LIGHT}}),
+               kShowItems, 2),
 };
 
 Settings settings_from(const pfx_value* values) {
@@ -78,6 +87,7 @@ Settings settings_from(const pfx_value* values) {
   s.cluster_tile_size = static_cast<int>(values[PARAM_CLUSTER_TILE_SIZE].v[0]);
   s.slices = static_cast<int>(values[PARAM_SLICES].v[0]);
   s.list_capacity = static_cast<int>(values[PARAM_LIST_CAPACITY].v[0]);
+  s.show = static_cast<int>(values[PARAM_SHOW].v[0]);
   return s;
 }
 

@@ -20,6 +20,7 @@ enum Param : uint32_t {
   PARAM_CLUSTER_TILE_SIZE,
   PARAM_SLICES,
   PARAM_LIST_CAPACITY,
+  PARAM_SHOW,
   PARAM_COUNT
 };
 
@@ -28,6 +29,9 @@ enum RangeRule : int { RANGE_CUTOFF = 0, RANGE_SEED = 1 };
 // What the lights are added to: the incoming colour (the host's emissive + ambient, or an earlier
 // lighting pass) or the emissive input alone.
 enum Base : int { BASE_COLOR = 0, BASE_EMISSIVE = 1 };
+// What the output shows: the lit image, or a heat colour of how many lights each pixel sums (its
+// list's length; every light for brute force or an overflowed list): where the cost goes.
+enum Show : int { SHOW_LIGHT = 0, SHOW_LIST_HEAT = 1 };
 
 extern const pfx_param_desc kParams[PARAM_COUNT];
 extern const char* const kModeNames[MODE_COUNT];
@@ -43,6 +47,7 @@ struct Settings {
   int cluster_tile_size = 64;  // clustered: pixels per side of a cluster's screen tile
   int slices = 16;             // clustered: exponential depth slices
   int list_capacity = 512;     // tiled and clustered: indices a GPU-built list holds
+  int show = SHOW_LIGHT;
 };
 
 Settings settings_from(const pfx_value* values);

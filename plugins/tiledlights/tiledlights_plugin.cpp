@@ -36,6 +36,8 @@ pfx_status evaluate(const pfx_reference_request* request) {
     return PFX_INVALID_ARGUMENT;
   if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
   const Settings settings = settings_from(request->params);
+  // The heat view shows how the GPU's lists came out, which only the GPU knows.
+  if (settings.show != SHOW_LIGHT) return PFX_UNSUPPORTED;
   if (request->struct_size < kRequestWithGBuffer || !request->depth || !request->normal || !request->albedo ||
       (settings.base == BASE_EMISSIVE && !request->emissive))
     return PFX_MISSING_INPUT;

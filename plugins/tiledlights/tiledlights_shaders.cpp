@@ -69,7 +69,17 @@ layout(location = 7) uniform ivec2 tiles;
 layout(location = 8) uniform uint capacity;
 layout(location = 11) uniform mat4 inverse_view;
 layout(location = 12) uniform int base_mode;
+layout(location = 13) uniform int show;
 out vec4 result;
+
+// show = list_heat: log2(1 + count) / 10 through black, blue, green, yellow, red (1023 and more).
+vec3 list_heat(uint count) {
+  const vec3 stops[5] = vec3[5](vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 1.0, 0.0), vec3(1.0, 1.0, 0.0),
+                                vec3(1.0, 0.0, 0.0));
+  float t = clamp(log2(1.0 + float(count)) / 10.0, 0.0, 1.0) * 4.0;
+  int i = min(int(t), 3);
+  return mix(stops[i], stops[i + 1], t - float(i));
+}
 
 // Seed 003's point light: 1 / (1 + d^2), faded to exactly 0 over the last quarter of the range.
 vec3 light_term(Light light, vec3 p, vec3 n) {
@@ -109,6 +119,10 @@ void main() {
       count = head.y;
       listed = true;
     }
+  }
+  if (show == 1) {
+    result = vec4(list_heat(count), color.a);
+    return;
   }
   // Sixteen terms a turn, written out: Mesa's llvmpipe ends a shader invocation's loops after
   // 65535 turns in all (its guard against endless shaders), which would otherwise silently drop

@@ -29,6 +29,7 @@ enum Uniform : int {
   U_SLICE_RANGE = 10,        // vec2: near depth of slicing, log(far / near)
   U_INVERSE_VIEW = 11,       // mat4
   U_BASE = 12,               // int: 0 colour, 1 emissive
+  U_SHOW = 13,               // int: 0 light, 1 list heat
 };
 
 enum ListMode : int { LIST_ALL = 0, LIST_TILES_BY_SIZE = 1, LIST_TILES_BY_GRID = 2, LIST_CLUSTERS = 3 };
