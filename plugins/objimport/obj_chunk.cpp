@@ -7,6 +7,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "obj_plain_lines.hpp"
 #include "obj_text.hpp"
 
 namespace pfx_obj {
@@ -30,7 +31,11 @@ bool is_unsupported_obj_keyword(std::string_view k) {
 
 class ChunkParser {
  public:
-  ChunkParser(std::string_view text, ChunkData* out) : cursor_{text.data(), text.data() + text.size()}, out_(out) {}
+  ChunkParser(std::string_view text, ChunkData* out, bool plain_lines)
+      : cursor_{text.data(), text.data() + text.size()}, out_(out) {
+    // Plain lines are read by the fast readers up to kPlainLineMargin bytes before the end.
+    if (plain_lines && text.size() > static_cast<size_t>(kPlainLineMargin)) plain_limit_ = cursor_.end - kPlainLineMargin;
+  }
 
   void run(bool first_in_file) {
     if (first_in_file && cursor_.end - cursor_.p >= 3 && static_cast<unsigned char>(cursor_.p[0]) == 0xEF &&
@@ -75,6 +80,7 @@ class ChunkParser {
 
   // One logical line. Returns false on an error (already recorded).
   bool statement() {
+    if (cursor_.p < plain_limit_ && plain_statement()) return true;
     cursor_.skip_blanks();
     if (cursor_.at_statement_end()) {
       cursor_.skip_statement();
@@ -95,6 +101,39 @@ class ChunkParser {
     else ok = other(keyword);
     if (!ok) return false;
     cursor_.skip_statement();
+    return true;
+  }
+
+  // The common forms (obj_plain_lines.hpp); false when the line is left to the general grammar,
+  // with nothing recorded.
+  bool plain_statement() {
+    const char* p = cursor_.p;
+    const char* next = nullptr;
+    if (p[0] == 'f' && plain::blank(p[1])) {
+      uint32_t corners;
+      if (!(next = read_plain_face(p + 2, plain_limit_, corner_at_, &corners))) return false;
+      corner_at_ += 3 * corners;
+      out_->faces.push_back({corners, static_cast<uint32_t>(line_)});
+    } else if (p[0] == 'v') {
+      double values[7];
+      int count;
+      if (plain::blank(p[1])) {
+        if (!(next = read_plain_numbers(p + 2, plain_limit_, values, 7, &count)) || !vertex_count_ok(count)) return false;
+        store_vertex(values, count);
+      } else if (p[1] == 't' && plain::blank(p[2])) {
+        if (!(next = read_plain_numbers(p + 3, plain_limit_, values, 3, &count)) || count == 0) return false;
+        store_texcoord(values, count);
+      } else if (p[1] == 'n' && plain::blank(p[2])) {
+        if (!(next = read_plain_numbers(p + 3, plain_limit_, values, 3, &count)) || count != 3) return false;
+        store_normal(values);
+      } else {
+        return false;
+      }
+    } else {
+      return false;
+    }
+    cursor_.p = next;
+    ++cursor_.line_ends;
     return true;
   }
 
@@ -152,12 +191,19 @@ class ChunkParser {
     }
   }
 
+  static bool vertex_count_ok(int count) { return count == 3 || count == 4 || count == 6; }
+
   bool vertex() {
     double values[7];
     int count;
     if (!numbers("v", values, 7, &count)) return false;
-    if (count != 3 && count != 4 && count != 6)
+    if (!vertex_count_ok(count))
       return fail("v: expected x y z, x y z w or x y z r g b (got " + std::to_string(count) + " numbers)");
+    store_vertex(values, count);
+    return true;
+  }
+
+  void store_vertex(const double* values, int count) {
     for (int i = 0; i < 3; ++i) out_->positions.push_back(static_cast<float>(values[i]));
     if (count == 6) {
       // The first coloured v of the chunk: earlier ones are white.
@@ -166,7 +212,6 @@ class ChunkParser {
     } else if (!out_->colors.empty()) {
       out_->colors.insert(out_->colors.end(), 3, 1.0f);
     }
-    return true;
   }
 
   bool texcoord() {
@@ -174,9 +219,13 @@ class ChunkParser {
     int count;
     if (!numbers("vt", values, 3, &count)) return false;
     if (count == 0) return fail("vt: expected u [v [w]] (got no number)");
+    store_texcoord(values, count);
+    return true;
+  }
+
+  void store_texcoord(const double* values, int count) {
     out_->texcoords.push_back(static_cast<float>(values[0]));
     out_->texcoords.push_back(count > 1 ? static_cast<float>(values[1]) : 0.0f);
-    return true;
   }
 
   bool normal() {
@@ -184,8 +233,12 @@ class ChunkParser {
     int count;
     if (!numbers("vn", values, 3, &count)) return false;
     if (count != 3) return fail("vn: expected x y z (got " + std::to_string(count) + " numbers)");
-    for (int i = 0; i < 3; ++i) out_->normals.push_back(static_cast<float>(values[i]));
+    store_normal(values);
     return true;
+  }
+
+  void store_normal(const double* values) {
+    for (int i = 0; i < 3; ++i) out_->normals.push_back(static_cast<float>(values[i]));
   }
 
   void mark_relative(size_t field) {
@@ -346,13 +399,14 @@ class ChunkParser {
   ChunkData* out_;
   uint64_t line_ = 0;
   uint32_t* corner_at_ = nullptr;  // where the next corner field goes in out_->corners
+  const char* plain_limit_ = nullptr;  // plain lines start before this (null: the general grammar only)
   std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index
 };
 
 }  // namespace
 
-void parse_chunk(std::string_view text, bool first_in_file, ChunkData* out) {
-  ChunkParser(text, out).run(first_in_file);
+void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out) {
+  ChunkParser(text, out, plain_lines).run(first_in_file);
 }
 
 }  // namespace pfx_obj

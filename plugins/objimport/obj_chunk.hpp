@@ -85,7 +85,9 @@ struct ChunkData {
   LocalMessage error;  // the first error; parsing stops there
 };
 
-// Parses the chunk's text. `first_in_file` lets a UTF-8 byte-order mark be skipped.
-void parse_chunk(std::string_view text, bool first_in_file, ChunkData* out);
+// Parses the chunk's text. `first_in_file` lets a UTF-8 byte-order mark be skipped. `plain_lines`:
+// read the common line forms with the fast readers (obj_plain_lines.hpp); false only in tests that
+// check both ways give the same result.
+void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out);
 
 }  // namespace pfx_obj

@@ -20,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <new>
 #include <stdexcept>
@@ -70,6 +71,12 @@ struct ChunkFaces {
   uint64_t warning_total = 0;
 };
 
+double process_cpu_seconds() {
+  timespec now{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
 std::string at(const std::string& name, uint64_t line, const std::string& text) {
   return name + ":" + std::to_string(line) + ": " + text;
 }
@@ -104,21 +111,32 @@ class Importer {
     out_ = out;
     *out = ObjMesh{};
     report(0.0f);
-    parse(text);
-    if (!plan(error)) return false;
-    resolve_all();
+    stage("parse", true, [&] { parse(text); });
+    bool ok = true;
+    stage("plan", false, [&] { ok = plan(error); });
+    if (!ok) return false;
+    stage("resolve", true, [&] { resolve_all(); });
     if (!first_resolve_error(error)) return false;
-    gather();
+    stage("gather", true, [&] { gather(); });
     report(0.7f);
-    deduplicate_corners();
+    stage("dedup", true, [&] { deduplicate_corners(); });
     report(0.85f);
-    build_triangles();
-    finish();
+    stage("triangles", true, [&] { build_triangles(); });
+    stage("finish", true, [&] { finish(); });
     report(1.0f);
     return true;
   }
 
  private:
+  template <typename Work>
+  void stage(const char* name, bool parallel, Work&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_seconds();
+    work();
+    out_->stages.push_back({name, parallel, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                            process_cpu_seconds() - cpu_start});
+  }
+
   void report(float fraction) {
     if (options_.progress) options_.progress(fraction);
   }
@@ -133,7 +151,7 @@ class Importer {
     run_parallel(
         threads_, texts_.size(),
         [&](size_t c, unsigned) {
-          parse_chunk(texts_[c], c == 0, &chunks_[c]);
+          parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunks_[c]);
           bytes_done += texts_[c].size();
         },
         [&] { report(static_cast<float>(0.6 * bytes_done.load() / total)); });

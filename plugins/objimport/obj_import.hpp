@@ -31,6 +31,15 @@ struct ObjMesh {
   std::vector<std::string> warnings;  // the first kMaxWarnings, in file order
   uint64_t warning_total = 0;
   uint32_t vertex_count() const { return static_cast<uint32_t>(positions.size() / 3); }
+
+  // Wall and CPU time (all threads of the process) of each pipeline stage (obj_import.cpp), for
+  // the benchmark's breakdown: which part runs on all threads and which on one.
+  struct Stage {
+    const char* name;
+    bool parallel;
+    double seconds, cpu_seconds;
+  };
+  std::vector<Stage> stages;
 };
 
 constexpr size_t kMaxWarnings = 100;
@@ -39,6 +48,7 @@ struct ImportOptions {
   unsigned threads = 0;                  // 0: std::thread::hardware_concurrency()
   std::function<void(float)> progress;   // 0..1, on the calling thread
   size_t chunk_bytes = 0;                // 0: chosen from the size and thread count (tests set it)
+  bool plain_lines = true;               // the fast readers for common lines; tests compare with false
 };
 
 // name: the file name in messages. directory: where mtllib files are looked for; empty means

@@ -58,6 +58,11 @@ struct Cursor {
   std::string rest_of_line();
 };
 
+// 10^0 .. 10^22 are exact in a double: a mantissa below 2^53 times or divided by one of them is
+// rounded once, correctly (Clinger's fast path).
+inline constexpr double kExactPowersOf10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                              1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
 // Parses a decimal number: [+-] digits [. digits] [(e|E) [+-] digits], or [+-] . digits ...
 // Accepts ".5", "1.", "+1", "1e-5", "-0". Returns false for anything else (including "nan",
 // "inf", hex, a second '.', trailing letters), leaving *out alone. Rounds to double, then float.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,9 +19,9 @@ struct Imported {
 };
 
 // Imports `text` as the file "test.obj" (no material libraries read) or, with `directory`, as a
-// file in that folder.
+// file in that folder. plain_lines = false: the general grammar reads every line (no fast readers).
 Imported import_text(const std::string& text, unsigned threads = 1, size_t chunk_bytes = 0,
-                     const std::string& directory = "");
+                     const std::string& directory = "", bool plain_lines = true);
 
 struct SoupCorner {
   std::array<float, 3> position{};
@@ -32,6 +33,13 @@ struct SoupCorner {
 };
 // Three corners per triangle, in index order.
 std::vector<SoupCorner> soup(const pfx_obj::ObjMesh& mesh);
+
+// A generated file using every statement: relative indices, material and smoothing changes,
+// colours, polygons, line continuations, CRLF, and many plain lines (obj_plain_lines.hpp).
+std::string varied_file(uint32_t faces, uint32_t seed);
+
+// Checks (Catch CHECKs) that two imports gave the same mesh, bit for bit.
+void check_same(const pfx_obj::ObjMesh& a, const pfx_obj::ObjMesh& b);
 
 // The error of a failed import (the test fails if it succeeded).
 std::string error_of(const std::string& text);

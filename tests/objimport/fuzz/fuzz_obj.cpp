@@ -1,6 +1,7 @@
 // libFuzzer target for the OBJ and MTL parsers. Every input must import or fail with a message
 // naming the file, without a crash or an out-of-bounds read (the target is built with
-// AddressSanitizer), and the parallel parse must give exactly what the sequential one gives.
+// AddressSanitizer), the parallel parse must give exactly what the sequential one gives, and the
+// fast readers of plain lines exactly what the general grammar gives.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -43,6 +44,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   parallel.chunk_bytes = 1 + size % 61;
   const bool ok_many = pfx_obj::import_obj_text(text, "fuzz.obj", "", parallel, &many, &error_many);
   if (ok_one != ok_many || error_one != error_many || (ok_one && !same(one, many))) __builtin_trap();
+
+  pfx_obj::ImportOptions general = sequential;
+  general.plain_lines = false;
+  pfx_obj::ObjMesh general_mesh;
+  std::string error_general;
+  const bool ok_general = pfx_obj::import_obj_text(text, "fuzz.obj", "", general, &general_mesh, &error_general);
+  if (ok_one != ok_general || error_one != error_general || (ok_one && !same(one, general_mesh))) __builtin_trap();
 
   if (ok_one) {
     for (uint32_t index : one.indices)
