@@ -1,5 +1,6 @@
 #include "bench_options.hpp"
 
+#include "arg_reader.hpp"
 #include "cli_text.hpp"
 
 #include <cstdio>
@@ -58,75 +59,67 @@ std::string bench_usage() {
       "exit codes: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 plugin or effect error\n";
 }
 
-bool parse_bench_options(const std::vector<std::string>& args, BenchOptions* out, std::string* error) {
+bool parse_bench_options(const std::vector<std::string>& list, BenchOptions* out, std::string* error) {
   BenchOptions options;
-  auto fail = [&](const std::string& message) {
-    *error = message;
-    return false;
-  };
   bool sizes_given = false, frames_given = false, warmup_given = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
+  pfx::app::ArgReader args(list, error);
+  while (args.next()) {
+    const std::string& arg = args.arg();
     std::string text;
-    auto value = [&]() {
-      if (i + 1 >= args.size()) return fail(arg + " needs a value");
-      text = args[++i];
-      return true;
-    };
     auto count = [&](int* into, int lo) {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       long n = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end || n < lo || n > 100000) return fail(arg + " " + text + ": expected a whole number >= " + std::to_string(lo));
+      if (text.empty() || *end || n < lo || n > 100000) return args.fail(arg + " " + text + ": expected a whole number >= " + std::to_string(lo));
       *into = static_cast<int>(n);
       return true;
     };
     if (arg == "-h" || arg == "--help") options.help = true;
     else if (arg == "--quick") options.quick = true;
     else if (arg == "--no-shift") options.shift = false;
-    else if (arg == "--plugins") { if (!value()) return false; options.plugin_dirs.push_back(text); }
-    else if (arg == "--out") { if (!value()) return false; options.out_dir = text; }
-    else if (arg == "--suite") { if (!value()) return false; options.suite_file = text; }
-    else if (arg == "--effects") { if (!value()) return false; options.effects = pfx::app::split_list(text); }
-    else if (arg == "--set") { if (!value()) return false; options.sets.push_back(text); }
-    else if (arg == "--input") { if (!value()) return false; options.inputs.push_back(text); }
-    else if (arg == "--truth") { if (!value()) return false; options.truths.push_back(text); }
-    else if (arg == "--halo-mask") { if (!value()) return false; options.halo_masks.push_back(text); }
+    else if (arg == "--plugins") { if (!args.value(&options.plugin_dirs)) return false; }
+    else if (arg == "--out") { if (!args.value(&text)) return false; options.out_dir = text; }
+    else if (arg == "--suite") { if (!args.value(&text)) return false; options.suite_file = text; }
+    else if (arg == "--effects") { if (!args.value(&text)) return false; options.effects = pfx::app::split_list(text); }
+    else if (arg == "--set") { if (!args.value(&options.sets)) return false; }
+    else if (arg == "--input") { if (!args.value(&options.inputs)) return false; }
+    else if (arg == "--truth") { if (!args.value(&options.truths)) return false; }
+    else if (arg == "--halo-mask") { if (!args.value(&options.halo_masks)) return false; }
     else if (arg == "--camera") {
-      if (!value() || !pfx::app::parse_camera_options(text, &options.camera, error)) return false;
+      if (!args.value(&text) || !pfx::app::parse_camera_options(text, &options.camera, error)) return false;
     } else if (arg == "--halo-tolerance") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       options.halo_tolerance = std::strtod(text.c_str(), &end);
       if (text.empty() || *end || !(options.halo_tolerance >= 0))
-        return fail("--halo-tolerance " + text + ": expected a number >= 0");
+        return args.fail("--halo-tolerance " + text + ": expected a number >= 0");
     }
     else if (arg == "--frames") { if (!count(&options.frames, 1)) return false; frames_given = true; }
     else if (arg == "--warmup") { if (!count(&options.warmup, 0)) return false; warmup_given = true; }
     else if (arg == "--timing") {
-      if (!value()) return false;
-      if (text != "auto" && text != "gpu" && text != "finish") return fail("--timing " + text + ": expected auto, gpu or finish");
+      if (!args.value(&text)) return false;
+      if (text != "auto" && text != "gpu" && text != "finish") return args.fail("--timing " + text + ": expected auto, gpu or finish");
       options.timing = text;
     } else if (arg == "--sizes") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       options.sizes.clear();
       for (const auto& item : pfx::app::split_list(text)) {
         int w = 0, h = 0;
         if (!pfx::app::parse_frame_size("--sizes", item, &w, &h, error)) return false;
         options.sizes.push_back({w, h});
       }
-      if (options.sizes.empty()) return fail("--sizes needs at least one size");
+      if (options.sizes.empty()) return args.fail("--sizes needs at least one size");
       sizes_given = true;
     } else {
-      return fail("unknown option '" + arg + "' (see --help)");
+      return args.unknown();
     }
   }
-  if (!options.inputs.empty() && sizes_given) return fail("--sizes and --input exclude each other (an input has its size)");
+  if (!options.inputs.empty() && sizes_given) return args.fail("--sizes and --input exclude each other (an input has its size)");
   if (!options.truths.empty() && options.truths.size() != options.inputs.size())
-    return fail("give one --truth per --input (" + std::to_string(options.inputs.size()) + " inputs, " +
+    return args.fail("give one --truth per --input (" + std::to_string(options.inputs.size()) + " inputs, " +
                 std::to_string(options.truths.size()) + " truths)");
   if (!options.halo_masks.empty() && options.halo_masks.size() != options.truths.size())
-    return fail("give one --halo-mask per --truth");
+    return args.fail("give one --halo-mask per --truth");
   if (options.quick) {
     if (!sizes_given && options.inputs.empty()) options.sizes = {{640, 360}};
     if (!frames_given) options.frames = 5;

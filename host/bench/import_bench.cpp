@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#include "arg_reader.hpp"
 #include "cli_text.hpp"
 #include "import_files.hpp"
 #include "import_loaders.hpp"
@@ -163,59 +164,51 @@ std::string import_bench_usage() {
       "exit codes: 0 ok (failed loads are reported in the tables), 1 internal error, 2 usage\n";
 }
 
-bool parse_import_bench_options(const std::vector<std::string>& args, ImportBenchOptions* out, std::string* error) {
+bool parse_import_bench_options(const std::vector<std::string>& list, ImportBenchOptions* out, std::string* error) {
   ImportBenchOptions options;
-  auto fail = [&](const std::string& message) {
-    *error = message;
-    return false;
-  };
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
+  pfx::app::ArgReader args(list, error);
+  while (args.next()) {
+    const std::string& arg = args.arg();
     std::string text;
-    auto value = [&]() {
-      if (i + 1 >= args.size()) return fail(arg + " needs a value");
-      text = args[++i];
-      return true;
-    };
     if (arg == "-h" || arg == "--help") options.help = true;
     else if (arg == "--keep") options.keep_files = true;
-    else if (arg == "--dir") { if (!value()) return false; options.work_dir = text; }
-    else if (arg == "--out") { if (!value()) return false; options.out_dir = text; }
-    else if (arg == "--plugins") { if (!value()) return false; options.plugin_dirs.push_back(text); }
+    else if (arg == "--dir") { if (!args.value(&text)) return false; options.work_dir = text; }
+    else if (arg == "--out") { if (!args.value(&text)) return false; options.out_dir = text; }
+    else if (arg == "--plugins") { if (!args.value(&options.plugin_dirs)) return false; }
     else if (arg == "--sizes") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       options.sizes_mb.clear();
       for (const auto& item : pfx::app::split_list(text)) {
         char* end = nullptr;
         double mb = std::strtod(item.c_str(), &end);
-        if (*end || !(mb >= 0.01 && mb <= 100000)) return fail("--sizes " + item + ": expected MB from 0.01 to 100000");
+        if (*end || !(mb >= 0.01 && mb <= 100000)) return args.fail("--sizes " + item + ": expected MB from 0.01 to 100000");
         options.sizes_mb.push_back(mb);
       }
-      if (options.sizes_mb.empty()) return fail("--sizes needs at least one size");
+      if (options.sizes_mb.empty()) return args.fail("--sizes needs at least one size");
     } else if (arg == "--threads") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       options.threads.clear();
       for (const auto& item : pfx::app::split_list(text)) {
         char* end = nullptr;
         long n = std::strtol(item.c_str(), &end, 10);
-        if (*end || n < 1 || n > 1024) return fail("--threads " + item + ": expected 1 to 1024");
+        if (*end || n < 1 || n > 1024) return args.fail("--threads " + item + ": expected 1 to 1024");
         options.threads.push_back(static_cast<unsigned>(n));
       }
-      if (options.threads.empty()) return fail("--threads needs at least one count");
+      if (options.threads.empty()) return args.fail("--threads needs at least one count");
     } else if (arg == "--loaders") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       options.loaders = pfx::app::split_list(text);
       for (const auto& name : options.loaders)
         if (name != "pfx" && name != "tinyobjloader" && name != "assimp")
-          return fail("--loaders " + name + ": expected pfx, tinyobjloader or assimp");
+          return args.fail("--loaders " + name + ": expected pfx, tinyobjloader or assimp");
     } else if (arg == "--runs") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       long n = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end || n < 1 || n > 100) return fail("--runs " + text + ": expected 1 to 100");
+      if (text.empty() || *end || n < 1 || n > 100) return args.fail("--runs " + text + ": expected 1 to 100");
       options.runs = static_cast<int>(n);
     } else {
-      return fail("unknown option '" + arg + "' (see pfx-bench --import --help)");
+      return args.fail("unknown option '" + arg + "' (see pfx-bench --import --help)");
     }
   }
   *out = options;

@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 
+#include "arg_reader.hpp"
+
 namespace pfx::import {
 
 std::string import_usage() {
@@ -27,46 +29,37 @@ std::string import_usage() {
       "4 plugin error (no importer for the file's extension, or the importer failed)\n";
 }
 
-bool parse_import_options(const std::vector<std::string>& args, ImportOptions* out, std::string* error) {
+bool parse_import_options(const std::vector<std::string>& list, ImportOptions* out, std::string* error) {
   ImportOptions options;
-  auto fail = [&](const std::string& message) {
-    *error = message;
-    return false;
-  };
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&](std::string* into) {
-      if (i + 1 >= args.size()) return fail(arg + " needs a value");
-      *into = args[++i];
-      return true;
-    };
+  pfx::app::ArgReader args(list, error);
+  while (args.next()) {
+    const std::string& arg = args.arg();
     std::string text;
     if (arg == "-h" || arg == "--help") {
       options.help = true;
     } else if (arg == "--json") {
       options.json = true;
     } else if (arg == "--threads") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       long n = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end || n < 0 || n > 1024) return fail("--threads " + text + ": expected a whole number 0 to 1024");
+      if (text.empty() || *end || n < 0 || n > 1024) return args.fail("--threads " + text + ": expected a whole number 0 to 1024");
       options.threads = static_cast<unsigned>(n);
     } else if (arg == "--progress") {
-      if (!value(&text)) return false;
-      if (text != "auto" && text != "on" && text != "off") return fail("--progress " + text + ": expected auto, on or off");
+      if (!args.value(&text)) return false;
+      if (text != "auto" && text != "on" && text != "off") return args.fail("--progress " + text + ": expected auto, on or off");
       options.progress = text;
     } else if (arg == "--plugins") {
-      if (!value(&text)) return false;
-      options.plugin_dirs.push_back(text);
+      if (!args.value(&options.plugin_dirs)) return false;
     } else if (!arg.empty() && arg[0] == '-' && arg != "-") {
-      return fail("unknown option '" + arg + "' (see --help)");
+      return args.unknown();
     } else if (options.file.empty()) {
       options.file = arg;
     } else {
-      return fail("one file at a time ('" + options.file + "' and '" + arg + "')");
+      return args.fail("one file at a time ('" + options.file + "' and '" + arg + "')");
     }
   }
-  if (!options.help && options.file.empty()) return fail("no file given");
+  if (!options.help && options.file.empty()) return args.fail("no file given");
   *out = options;
   return true;
 }

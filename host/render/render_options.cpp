@@ -1,5 +1,6 @@
 #include "render_options.hpp"
 
+#include "arg_reader.hpp"
 #include "cli_text.hpp"
 
 #include <cstdio>
@@ -68,19 +69,11 @@ std::string render_usage() {
       "            4 plugin or effect error\n";
 }
 
-bool parse_render_options(const std::vector<std::string>& args, RenderOptions* out, std::string* error) {
+bool parse_render_options(const std::vector<std::string>& list, RenderOptions* out, std::string* error) {
   RenderOptions options;
-  auto fail = [&](const std::string& message) {
-    *error = message;
-    return false;
-  };
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&](std::string* into) {
-      if (i + 1 >= args.size()) return fail(arg + " needs a value");
-      *into = args[++i];
-      return true;
-    };
+  pfx::app::ArgReader args(list, error);
+  while (args.next()) {
+    const std::string& arg = args.arg();
     std::string text;
     if (arg == "-h" || arg == "--help") options.help = true;
     else if (arg == "--list") options.list = true;
@@ -89,58 +82,56 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     else if (arg == "--demo-image") options.demo_image = true;
     else if (arg == "--float") options.float_exr = true;
     else if (arg == "-v" || arg == "--verbose") options.verbose = true;
-    else if (arg == "--input") { if (!value(&options.input)) return false; }
-    else if (arg == "--scene") { if (!value(&options.scene)) return false; }
-    else if (arg == "--preset") { if (!value(&options.preset)) return false; }
-    else if (arg == "--depth") { if (!value(&options.depth)) return false; }
+    else if (arg == "--input") { if (!args.value(&options.input)) return false; }
+    else if (arg == "--scene") { if (!args.value(&options.scene)) return false; }
+    else if (arg == "--preset") { if (!args.value(&options.preset)) return false; }
+    else if (arg == "--depth") { if (!args.value(&options.depth)) return false; }
     else if (arg == "--plugins") {
-      if (!value(&text)) return false;
-      options.plugin_dirs.push_back(text);
+      if (!args.value(&options.plugin_dirs)) return false;
     } else if (arg == "--set") {
-      if (!value(&text)) return false;
-      options.sets.push_back(text);
+      if (!args.value(&options.sets)) return false;
     } else if (arg == "--out") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       if (!ends_with(text, ".exr") && !ends_with(text, ".png"))
-        return fail("--out " + text + ": the file name must end in .exr or .png");
+        return args.fail("--out " + text + ": the file name must end in .exr or .png");
       options.outputs.push_back(text);
     } else if (arg == "--chain") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       options.chain_given = true;
       options.chain = split_list(text);
     } else if (arg == "--size") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       if (!parse_frame_size("--size", text, &options.width, &options.height, error)) return false;
       options.size_given = true;
     } else if (arg == "--camera") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       if (!parse_camera_options(text, &options.camera, error)) return false;
       for (const auto& key : option_keys(text)) options.camera_keys.push_back(key);
     } else if (arg == "--lights") {
-      if (!value(&text) || !parse_light_count(text, &options.extra_lights, error)) return false;
+      if (!args.value(&text) || !parse_light_count(text, &options.extra_lights, error)) return false;
       options.lights_given = true;
     } else if (arg == "--seed") {
-      if (!value(&text) || !parse_seed(text, &options.seed, error)) return false;
+      if (!args.value(&text) || !parse_seed(text, &options.seed, error)) return false;
       options.seed_given = true;
     } else if (arg == "--exposure") {
-      if (!value(&text) || !parse_exposure(text, &options.tone.exposure_ev, error)) return false;
+      if (!args.value(&text) || !parse_exposure(text, &options.tone.exposure_ev, error)) return false;
       options.exposure_given = true;
     } else if (arg == "--tone") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       if (!parse_tone_curve(text, &options.tone.curve, error)) return false;
       options.tone_given = true;
     } else if (arg == "--max-input-pixels") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       options.max_input_pixels = std::strtoll(text.c_str(), &end, 10);
       if (text.empty() || *end || options.max_input_pixels < 1 || options.max_input_pixels > (1LL << 40))
-        return fail("--max-input-pixels " + text + ": expected a whole number from 1 to 2^40");
+        return args.fail("--max-input-pixels " + text + ": expected a whole number from 1 to 2^40");
     } else if (arg == "--timing") {
-      if (!value(&options.timing)) return false;
+      if (!args.value(&options.timing)) return false;
       if (options.timing != "auto" && options.timing != "gpu" && options.timing != "finish" && options.timing != "off")
-        return fail("--timing " + options.timing + ": expected auto, gpu, finish or off");
+        return args.fail("--timing " + options.timing + ": expected auto, gpu, finish or off");
     } else {
-      return fail("unknown option '" + arg + "' (see --help)");
+      return args.unknown();
     }
   }
   if (options.help || options.list) {
@@ -148,13 +139,13 @@ bool parse_render_options(const std::vector<std::string>& args, RenderOptions* o
     return true;
   }
   if (int(options.demo) + int(options.demo_image) + int(!options.input.empty()) + int(!options.scene.empty()) != 1)
-    return fail("give exactly one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
-  if (!options.depth.empty() && options.input.empty()) return fail("--depth goes with --input");
+    return args.fail("give exactly one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
+  if (!options.depth.empty() && options.input.empty()) return args.fail("--depth goes with --input");
   if (options.size_given && !options.input.empty())
-    return fail("--size applies to --demo and --demo-image (an input image has its own size)");
+    return args.fail("--size applies to --demo and --demo-image (an input image has its own size)");
   if ((options.lights_given || options.seed_given) && !options.demo && options.scene.empty())
-    return fail("--lights and --seed go with --demo or --scene");
-  if (options.outputs.empty() && !options.json) return fail("nothing to do: give --out FILE and/or --json");
+    return args.fail("--lights and --seed go with --demo or --scene");
+  if (options.outputs.empty() && !options.json) return args.fail("nothing to do: give --out FILE and/or --json");
   *out = options;
   return true;
 }

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "arg_reader.hpp"
+
 namespace fs = std::filesystem;
 
 namespace pfx::validate {
@@ -48,51 +50,43 @@ std::string validate_usage() {
       "exit codes: 0 every check passed, 1 a check failed, 2 usage error (or no plugin found)\n";
 }
 
-bool parse_validate_options(const std::vector<std::string>& args, ValidateOptions* out, std::string* error) {
+bool parse_validate_options(const std::vector<std::string>& list, ValidateOptions* out, std::string* error) {
   ValidateOptions options;
-  auto fail = [&](const std::string& message) {
-    *error = message;
-    return false;
-  };
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&](std::string* into) {
-      if (i + 1 >= args.size()) return fail(arg + " needs a value");
-      *into = args[++i];
-      return true;
-    };
+  pfx::app::ArgReader args(list, error);
+  while (args.next()) {
+    const std::string& arg = args.arg();
     std::string text;
     if (arg == "-h" || arg == "--help") {
       options.help = true;
     } else if (arg == "--json") {
       options.json = true;
     } else if (arg == "--seed") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       errno = 0;
       options.seed = std::strtoull(text.c_str(), &end, 10);
       if (text.empty() || *end || errno == ERANGE || text[0] == '-')
-        return fail("--seed " + text + ": expected a whole number from 0 to 2^64-1");
+        return args.fail("--seed " + text + ": expected a whole number from 0 to 2^64-1");
     } else if (arg == "--runs") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       const long runs = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end || runs < 0 || runs > 10000) return fail("--runs " + text + ": expected 0 to 10000");
+      if (text.empty() || *end || runs < 0 || runs > 10000) return args.fail("--runs " + text + ": expected 0 to 10000");
       options.runs = static_cast<int>(runs);
     } else if (arg == "--timeout") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       char* end = nullptr;
       const double seconds = std::strtod(text.c_str(), &end);
       if (text.empty() || *end || !(seconds > 0) || seconds > 86400)
-        return fail("--timeout " + text + ": expected seconds, more than 0 and at most 86400");
+        return args.fail("--timeout " + text + ": expected seconds, more than 0 and at most 86400");
       options.timeout_s = seconds;
     } else if (!arg.empty() && arg[0] == '-') {
-      return fail("unknown option '" + arg + "' (see --help)");
+      return args.unknown();
     } else {
       options.paths.push_back(arg);
     }
   }
-  if (!options.help && options.paths.empty()) return fail("no plugin given");
+  if (!options.help && options.paths.empty()) return args.fail("no plugin given");
   *out = options;
   return true;
 }

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include "arg_reader.hpp"
 #include "cli_text.hpp"
 
 namespace pfx::app {
@@ -63,21 +64,13 @@ std::string view_usage() {
       "            file, 4 plugin or effect error (at start, or any frame of a scripted run)\n";
 }
 
-bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, std::string* error) {
+bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, std::string* error) {
   ViewOptions options;
-  auto fail = [&](const std::string& message) {
-    *error = message;
-    return false;
-  };
   int inputs_given = 0;
   bool seed_given = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&](std::string* into) {
-      if (i + 1 >= args.size()) return fail(arg + " needs a value");
-      *into = args[++i];
-      return true;
-    };
+  pfx::app::ArgReader args(list, error);
+  while (args.next()) {
+    const std::string& arg = args.arg();
     std::string text;
     if (arg == "-h" || arg == "--help") options.help = true;
     else if (arg == "-v" || arg == "--verbose") options.verbose = true;
@@ -86,77 +79,75 @@ bool parse_view_options(const std::vector<std::string>& args, ViewOptions* out, 
     else if (arg == "--demo") options.input = ViewInput::DemoScene, ++inputs_given;
     else if (arg == "--demo-image") options.input = ViewInput::DemoImage, ++inputs_given;
     else if (arg == "--input") {
-      if (!value(&options.input_path)) return false;
+      if (!args.value(&options.input_path)) return false;
       options.input = ViewInput::Image;
       ++inputs_given;
     } else if (arg == "--scene") {
-      if (!value(&options.scene_path)) return false;
+      if (!args.value(&options.scene_path)) return false;
       options.input = ViewInput::ModelScene;
       ++inputs_given;
-    } else if (arg == "--depth") { if (!value(&options.depth_path)) return false; }
-    else if (arg == "--preset") { if (!value(&options.preset)) return false; }
-    else if (arg == "--save-preset") { if (!value(&options.save_preset)) return false; }
+    } else if (arg == "--depth") { if (!args.value(&options.depth_path)) return false; }
+    else if (arg == "--preset") { if (!args.value(&options.preset)) return false; }
+    else if (arg == "--save-preset") { if (!args.value(&options.save_preset)) return false; }
     else if (arg == "--screenshot") {
-      if (!value(&options.screenshot)) return false;
-      if (!ends_with(options.screenshot, ".png")) return fail("--screenshot " + options.screenshot + ": the file name must end in .png");
+      if (!args.value(&options.screenshot)) return false;
+      if (!ends_with(options.screenshot, ".png")) return args.fail("--screenshot " + options.screenshot + ": the file name must end in .png");
     } else if (arg == "--window-shot") {
-      if (!value(&options.window_shot)) return false;
-      if (!ends_with(options.window_shot, ".png")) return fail("--window-shot " + options.window_shot + ": the file name must end in .png");
-    } else if (arg == "--shots") { if (!value(&options.shots_dir)) return false; }
+      if (!args.value(&options.window_shot)) return false;
+      if (!ends_with(options.window_shot, ".png")) return args.fail("--window-shot " + options.window_shot + ": the file name must end in .png");
+    } else if (arg == "--shots") { if (!args.value(&options.shots_dir)) return false; }
     else if (arg == "--plugins") {
-      if (!value(&text)) return false;
-      options.plugin_dirs.push_back(text);
+      if (!args.value(&options.plugin_dirs)) return false;
     } else if (arg == "--set") {
-      if (!value(&text)) return false;
-      options.sets.push_back(text);
+      if (!args.value(&options.sets)) return false;
     } else if (arg == "--chain") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       options.chain_given = true;
       options.chain = split_list(text);
     } else if (arg == "--size") {
-      if (!value(&text) || !parse_frame_size("--size", text, &options.width, &options.height, error)) return false;
+      if (!args.value(&text) || !parse_frame_size("--size", text, &options.width, &options.height, error)) return false;
       options.size_given = true;
     } else if (arg == "--window") {
-      if (!value(&text) || !parse_frame_size("--window", text, &options.window_width, &options.window_height, error))
+      if (!args.value(&text) || !parse_frame_size("--window", text, &options.window_width, &options.window_height, error))
         return false;
       options.window_given = true;
     } else if (arg == "--camera") {
-      if (!value(&text) || !parse_camera_options(text, &options.camera, error)) return false;
+      if (!args.value(&text) || !parse_camera_options(text, &options.camera, error)) return false;
       for (const auto& key : option_keys(text)) options.camera_keys.push_back(key);
     } else if (arg == "--lights") {
-      if (!value(&text) || !parse_light_count(text, &options.extra_lights, error)) return false;
+      if (!args.value(&text) || !parse_light_count(text, &options.extra_lights, error)) return false;
       options.lights_given = true;
     } else if (arg == "--seed") {
-      if (!value(&text) || !parse_seed(text, &options.seed, error)) return false;
+      if (!args.value(&text) || !parse_seed(text, &options.seed, error)) return false;
       seed_given = true;
     } else if (arg == "--frames") {
-      if (!value(&text)) return false;
+      if (!args.value(&text)) return false;
       if (!parse_count(text, &options.frames) || options.frames < 1 || options.frames > 1000000)
-        return fail("--frames " + text + ": expected a whole number from 1 to 1000000");
+        return args.fail("--frames " + text + ": expected a whole number from 1 to 1000000");
     } else if (arg == "--exposure") {
-      if (!value(&text) || !parse_exposure(text, &options.tone.exposure_ev, error)) return false;
+      if (!args.value(&text) || !parse_exposure(text, &options.tone.exposure_ev, error)) return false;
       options.exposure_given = true;
     } else if (arg == "--tone") {
-      if (!value(&text) || !parse_tone_curve(text, &options.tone.curve, error)) return false;
+      if (!args.value(&text) || !parse_tone_curve(text, &options.tone.curve, error)) return false;
       options.tone_given = true;
     } else {
-      return fail("unknown option '" + arg + "' (see --help)");
+      return args.unknown();
     }
   }
   if (options.help) {
     *out = options;
     return true;
   }
-  if (inputs_given > 1) return fail("give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
-  if (!options.depth_path.empty() && options.input != ViewInput::Image) return fail("--depth goes with --input");
+  if (inputs_given > 1) return args.fail("give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
+  if (!options.depth_path.empty() && options.input != ViewInput::Image) return args.fail("--depth goes with --input");
   if (options.size_given && options.input == ViewInput::Image)
-    return fail("--size applies to --demo and --demo-image (an input image has its own size)");
+    return args.fail("--size applies to --demo and --demo-image (an input image has its own size)");
   if ((options.lights_given || seed_given) && options.input != ViewInput::DemoScene &&
       options.input != ViewInput::ModelScene)
-    return fail("--lights and --seed go with --demo or --scene");
+    return args.fail("--lights and --seed go with --demo or --scene");
   if (options.size_given && !options.window_given) options.window_width = options.width, options.window_height = options.height;
   if ((!options.screenshot.empty() || !options.window_shot.empty()) && options.frames == 0)
-    return fail("--screenshot and --window-shot go with --frames N");
+    return args.fail("--screenshot and --window-shot go with --frames N");
   *out = options;
   return true;
 }
