@@ -1,8 +1,8 @@
 // The bloom plugin's entry point: the effect factory and the CPU reference factory. Everything here
 // is static data; GL is loaded only when an instance is created.
 #include <cstring>
-#include <new>
 
+#include <pfx/cpp/plugin_entry.hpp>
 #include <pfx/pfx.h>
 #include <pfx/reference.h>
 
@@ -33,43 +33,31 @@ int has_reference(const char* effect_id, pfx_reference_kind kind) {
 }
 
 pfx_status evaluate(const pfx_reference_request* request) {
-  if (!request || request->struct_size < sizeof(pfx_reference_request) || !request->frame ||
-      request->frame->struct_size < sizeof(pfx_frame) || !request->params || !request->color || !request->output ||
-      request->frame->width == 0 || request->frame->height == 0)
-    return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_reference_request(request)) return PFX_INVALID_ARGUMENT;
   if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
   const uint32_t w = request->frame->width, h = request->frame->height;
-  try {
+  return pfx::plugin::without_exceptions([&] {
     if (is_glare(request->effect_id))
       evaluate_glare_model(glare_settings_from(request->params), w, h, request->color, request->output);
     else if (request->kind == PFX_REFERENCE_IDEAL)
       evaluate_ideal(settings_from(request->params), w, h, request->color, request->output);
     else
       evaluate_model(settings_from(request->params), w, h, request->color, request->output);
-  } catch (const std::bad_alloc&) {
-    return PFX_OUT_OF_MEMORY;
-  } catch (...) {
-    return PFX_ERROR;
-  }
-  return PFX_OK;
+    return PFX_OK;
+  });
 }
 
 const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
 
 // No GL and no state: init is trivially idempotent.
 pfx_status plugin_init(const pfx_host* host) {
-  if (!host || host->struct_size < sizeof(pfx_host) || !host->log || !host->get_proc_address)
-    return PFX_INVALID_ARGUMENT;
-  return PFX_OK;
+  return pfx::plugin::usable_host(host) ? PFX_OK : PFX_INVALID_ARGUMENT;
 }
 
 void plugin_deinit() {}
 
 const void* plugin_get_factory(const char* factory_id) {
-  if (!factory_id) return nullptr;
-  if (std::strcmp(factory_id, PFX_EFFECTS_FACTORY_ID) == 0) return &kEffectFactory;
-  if (std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return &kReferenceFactory;
-  return nullptr;
+  return pfx::plugin::factory_for(factory_id, &kEffectFactory, &kReferenceFactory);
 }
 
 const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR,  PFX_ABI_MINOR,      "org.pfx.bloom",

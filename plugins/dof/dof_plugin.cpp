@@ -2,9 +2,9 @@
 // Everything here is static data; GL is loaded only when an instance is created.
 #include <cstring>
 #include <mutex>
-#include <new>
 #include <vector>
 
+#include <pfx/cpp/plugin_entry.hpp>
 #include <pfx/pfx.h>
 #include <pfx/reference.h>
 
@@ -65,44 +65,32 @@ void evaluate_ideal(const pfx_reference_request& r, const Settings& s) {
 }
 
 pfx_status evaluate(const pfx_reference_request* request) {
-  if (!request || request->struct_size < sizeof(pfx_reference_request) || !request->frame ||
-      request->frame->struct_size < sizeof(pfx_frame) || !request->params || !request->color || !request->output ||
-      !request->depth || request->frame->width == 0 || request->frame->height == 0)
-    return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_reference_request(request) || !request->depth) return PFX_INVALID_ARGUMENT;
   if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
   if (!camera_problem(*request->frame).empty()) return PFX_INVALID_ARGUMENT;
   const Settings settings = settings_from(request->params);
-  try {
+  return pfx::plugin::without_exceptions([&] {
     if (request->kind == PFX_REFERENCE_IDEAL)
       evaluate_ideal(*request, settings);
     else if (settings.mode == MODE_SEED)
       evaluate_seed_model(settings, *request->frame, request->color, request->depth, request->output);
     else
       evaluate_gather_model(settings, *request->frame, request->color, request->depth, request->output);
-  } catch (const std::bad_alloc&) {
-    return PFX_OUT_OF_MEMORY;
-  } catch (...) {
-    return PFX_ERROR;
-  }
-  return PFX_OK;
+    return PFX_OK;
+  });
 }
 
 const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
 
 // No GL and no state: init is trivially idempotent.
 pfx_status plugin_init(const pfx_host* host) {
-  if (!host || host->struct_size < sizeof(pfx_host) || !host->log || !host->get_proc_address)
-    return PFX_INVALID_ARGUMENT;
-  return PFX_OK;
+  return pfx::plugin::usable_host(host) ? PFX_OK : PFX_INVALID_ARGUMENT;
 }
 
 void plugin_deinit() {}
 
 const void* plugin_get_factory(const char* factory_id) {
-  if (!factory_id) return nullptr;
-  if (std::strcmp(factory_id, PFX_EFFECTS_FACTORY_ID) == 0) return &kEffectFactory;
-  if (std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return &kReferenceFactory;
-  return nullptr;
+  return pfx::plugin::factory_for(factory_id, &kEffectFactory, &kReferenceFactory);
 }
 
 const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR, "org.pfx.dof", "pfx depth of field",

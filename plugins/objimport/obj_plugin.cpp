@@ -2,13 +2,13 @@
 // out is a plain C struct pointing into C++ storage the plugin keeps until release.
 #include <chrono>
 #include <filesystem>
-#include <cstring>
 #include <mutex>
 #include <new>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include <pfx/cpp/plugin_entry.hpp>
 #include <pfx/pfx.h>
 
 #include "obj_chunk.hpp"
@@ -160,8 +160,7 @@ pfx_status plugin_init(const pfx_host* host) {
 void plugin_deinit() {}
 
 const void* plugin_get_factory(const char* factory_id) {
-  if (factory_id && std::strcmp(factory_id, PFX_IMPORTERS_FACTORY_ID) == 0) return &kFactory;
-  return nullptr;
+  return pfx::plugin::factory_for(factory_id, nullptr, nullptr, &kFactory);
 }
 
 const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR,      "org.pfx.objimport", "pfx OBJ importer",

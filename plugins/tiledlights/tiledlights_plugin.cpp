@@ -2,9 +2,9 @@
 // the windowed sum every mode computes; ideal: the un-windowed sum). Static data only; GL is
 // loaded when an instance is created.
 #include <cstring>
-#include <new>
 #include <string>
 
+#include <pfx/cpp/plugin_entry.hpp>
 #include <pfx/pfx.h>
 
 #include "reference/light_shading.hpp"
@@ -26,19 +26,14 @@ int has_reference(const char* effect_id, pfx_reference_kind kind) {
          (kind == PFX_REFERENCE_MODEL || kind == PFX_REFERENCE_IDEAL);
 }
 
-// The G-buffer fields arrived in ABI 1.1: only read them when the request is that large.
-constexpr size_t kRequestWithGBuffer = offsetof(pfx_reference_request, emissive) + sizeof(const float*);
-
 pfx_status evaluate(const pfx_reference_request* request) {
-  if (!request || request->struct_size < sizeof(pfx_reference_request) - 3 * sizeof(const float*) ||
-      !request->frame || request->frame->struct_size < sizeof(pfx_frame) || !request->params || !request->color ||
-      !request->output || request->frame->width == 0 || request->frame->height == 0)
-    return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_reference_request(request)) return PFX_INVALID_ARGUMENT;
   if (!has_reference(request->effect_id, request->kind)) return PFX_UNSUPPORTED;
   const Settings settings = settings_from(request->params);
   // The heat view shows how the GPU's lists came out, which only the GPU knows.
   if (settings.show != SHOW_LIGHT) return PFX_UNSUPPORTED;
-  if (request->struct_size < kRequestWithGBuffer || !request->depth || !request->normal || !request->albedo ||
+  // The G-buffer fields arrived in ABI 1.1: only read them when the request is that large.
+  if (!pfx::plugin::has_gbuffer_fields(*request) || !request->depth || !request->normal || !request->albedo ||
       (settings.base == BASE_EMISSIVE && !request->emissive))
     return PFX_MISSING_INPUT;
   GBufferImages images;
@@ -47,26 +42,21 @@ pfx_status evaluate(const pfx_reference_request* request) {
   images.normal = request->normal;
   images.albedo = request->albedo;
   images.emissive = request->emissive;
-  try {
+  return pfx::plugin::without_exceptions([&] {
     std::string error;
     if (!shade_reference(*request->frame, settings, images, request->kind == PFX_REFERENCE_MODEL, request->output,
                          &error)) {
       if (g_host) g_host->log(g_host->host_data, PFX_LOG_ERROR, ("tiledlights reference: " + error).c_str());
       return PFX_INVALID_ARGUMENT;
     }
-  } catch (const std::bad_alloc&) {
-    return PFX_OUT_OF_MEMORY;
-  } catch (...) {
-    return PFX_ERROR;
-  }
-  return PFX_OK;
+    return PFX_OK;
+  });
 }
 
 const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
 
 pfx_status plugin_init(const pfx_host* host) {
-  if (!host || host->struct_size < sizeof(pfx_host) || !host->log || !host->get_proc_address)
-    return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_host(host)) return PFX_INVALID_ARGUMENT;
   g_host = host;
   return PFX_OK;
 }
@@ -74,10 +64,7 @@ pfx_status plugin_init(const pfx_host* host) {
 void plugin_deinit() { g_host = nullptr; }
 
 const void* plugin_get_factory(const char* factory_id) {
-  if (!factory_id) return nullptr;
-  if (std::strcmp(factory_id, PFX_EFFECTS_FACTORY_ID) == 0) return &kEffectFactory;
-  if (std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return &kReferenceFactory;
-  return nullptr;
+  return pfx::plugin::factory_for(factory_id, &kEffectFactory, &kReferenceFactory);
 }
 
 const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR,      PFX_ABI_MINOR,  "org.pfx.tiledlights",

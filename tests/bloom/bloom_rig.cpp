@@ -2,7 +2,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -136,6 +138,12 @@ Rendered Rig::render(const Picture& picture) {
     request.params = values;
     request.color = r.input.rgba.data();
     request.output = through_abi.rgba.data();
+    REQUIRE(references_->evaluate(&request) == PFX_OK);
+    REQUIRE(std::memcmp(through_abi.rgba.data(), r.model.rgba.data(), r.model.rgba.size() * sizeof(float)) == 0);
+    // A host built against ABI 1.0 sends the request without the G-buffer fields of 1.1: the
+    // same answer (minor versions only append).
+    request.struct_size = offsetof(pfx_reference_request, normal);
+    std::fill(through_abi.rgba.begin(), through_abi.rgba.end(), -1.0f);
     REQUIRE(references_->evaluate(&request) == PFX_OK);
     REQUIRE(std::memcmp(through_abi.rgba.data(), r.model.rgba.data(), r.model.rgba.size() * sizeof(float)) == 0);
   }

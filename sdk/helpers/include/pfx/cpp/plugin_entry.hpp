@@ -1,0 +1,61 @@
+// Header-only pieces of a plugin's entry point that every plugin writes the same way: the check
+// of the host in init, the check of a CPU reference request, the wall that keeps C++ exceptions
+// from crossing the C ABI, and get_factory over the factories the plugin offers.
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+#include <new>
+
+#include <pfx/pfx.h>
+
+namespace pfx::plugin {
+
+// init's check: a host struct at least as large as this plugin's ABI knows, with the two
+// callbacks plugins call (logging and GL function lookup).
+inline bool usable_host(const pfx_host* host) {
+  return host && host->struct_size >= sizeof(pfx_host) && host->log && host->get_proc_address;
+}
+
+// The size of a reference request from an ABI 1.0 host (before normal, albedo and emissive).
+// Minor versions only append, so a reference must accept a request this small and read the
+// appended fields only when struct_size covers them.
+constexpr size_t kReferenceRequestSizeV1_0 = offsetof(pfx_reference_request, normal);
+// Whether the request carries the ABI 1.1 G-buffer fields.
+inline bool has_gbuffer_fields(const pfx_reference_request& request) {
+  return request.struct_size >= offsetof(pfx_reference_request, emissive) + sizeof(request.emissive);
+}
+
+// What every CPU reference needs of a request: a readable struct, a frame of at least one pixel,
+// the parameters, the colour in and the output.
+inline bool usable_reference_request(const pfx_reference_request* request) {
+  return request && request->struct_size >= kReferenceRequestSizeV1_0 && request->frame &&
+         request->frame->struct_size >= sizeof(pfx_frame) && request->params && request->color && request->output &&
+         request->frame->width > 0 && request->frame->height > 0;
+}
+
+// Runs work (a callable returning pfx_status) and turns an exception into a status: nothing may
+// unwind through the C ABI.
+template <class Work>
+pfx_status without_exceptions(Work&& work) {
+  try {
+    return work();
+  } catch (const std::bad_alloc&) {
+    return PFX_OUT_OF_MEMORY;
+  } catch (...) {
+    return PFX_ERROR;
+  }
+}
+
+// get_factory for a plugin offering these factories (nullptr for a kind it does not offer):
+// the factory for the id, or nullptr for an id it does not know.
+inline const void* factory_for(const char* factory_id, const pfx_effect_factory* effects,
+                               const pfx_reference_factory* references, const pfx_importer_factory* importers = nullptr) {
+  if (!factory_id) return nullptr;
+  if (effects && std::strcmp(factory_id, PFX_EFFECTS_FACTORY_ID) == 0) return effects;
+  if (references && std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return references;
+  if (importers && std::strcmp(factory_id, PFX_IMPORTERS_FACTORY_ID) == 0) return importers;
+  return nullptr;
+}
+
+}  // namespace pfx::plugin
