@@ -111,9 +111,9 @@ class ChunkParser {
     const char* next = nullptr;
     if (p[0] == 'f' && plain::blank(p[1])) {
       uint32_t corners;
-      if (!(next = read_plain_face(p + 2, plain_limit_, corner_at_, &corners))) return false;
+      if (!(next = read_plain_face(p + 2, plain_limit_, corner_at_, &corners, out_->max_index))) return false;
       corner_at_ += 3 * corners;
-      out_->faces.push_back({corners, static_cast<uint32_t>(line_)});
+      add_face(corners);
     } else if (p[0] == 'v') {
       double values[7];
       int count;
@@ -277,18 +277,21 @@ class ChunkParser {
     return fail("f: malformed corner '" + printable(corner_text(start)) + "' (expected v, v/vt, v//vn or v/vt/vn)");
   }
 
-  // Stores one index of a corner; `count` is how many elements of its kind the chunk has so far.
-  bool store_index(int64_t value, bool too_long, const char* field_start, const char* corner_start, const char* what,
+  // Stores one index of a corner (kind 0, 1, 2: v, vt, vn); `count` is how many elements of its kind
+  // the chunk has so far.
+  bool store_index(int64_t value, bool too_long, const char* field_start, const char* corner_start, int kind,
                    uint64_t count) {
+    static const char* const kKinds[] = {"v", "vt", "vn"};
     if (too_long || value > kMaxWrittenIndex || value < -kMaxWrittenIndex) {
       const std::string_view field(field_start, static_cast<size_t>(cursor_.p - field_start));
       return fail("f: index '" + printable(field) + "' is too large");
     }
     if (value == 0)
-      return fail("f: " + std::string(what) + " index 0 in '" + printable(corner_text(corner_start)) +
+      return fail("f: " + std::string(kKinds[kind]) + " index 0 in '" + printable(corner_text(corner_start)) +
                   "' (OBJ indices start at 1)");
     if (value > 0) {
-      *corner_at_++ = static_cast<uint32_t>(value);
+      out_->max_index[kind] = std::max(out_->max_index[kind], static_cast<uint32_t>(value));
+      *corner_at_++ = static_cast<uint32_t>(value - 1);
     } else {
       mark_relative(static_cast<size_t>(corner_at_ - out_->corners.data()));
       *corner_at_++ = static_cast<uint32_t>(static_cast<int64_t>(count) + value + 1);
@@ -304,7 +307,7 @@ class ChunkParser {
     const char* field = cursor_.p;
     if (!read_index(&value, &too_long)) return malformed_corner(start);
     if (!cursor_.at_token_end() && *cursor_.p != '/') return malformed_corner(start);
-    if (!store_index(value, too_long, field, start, "v", out_->position_count())) return false;
+    if (!store_index(value, too_long, field, start, 0, out_->position_count())) return false;
     bool has_vt = false, has_vn = false;
     if (!cursor_.at_token_end()) {  // at the first '/'
       ++cursor_.p;
@@ -313,24 +316,24 @@ class ChunkParser {
         ++cursor_.p;
         field = cursor_.p;
         if (!read_index(&value, &too_long) || !cursor_.at_token_end()) return malformed_corner(start);
-        *corner_at_++ = kAbsent;
-        if (!store_index(value, too_long, field, start, "vn", normal_count)) return false;
+        *corner_at_++ = kNoIndex;
+        if (!store_index(value, too_long, field, start, 2, normal_count)) return false;
         return true;
       }
       if (!read_index(&value, &too_long)) return malformed_corner(start);
       if (!cursor_.at_token_end() && *cursor_.p != '/') return malformed_corner(start);
-      if (!store_index(value, too_long, field, start, "vt", texcoord_count)) return false;
+      if (!store_index(value, too_long, field, start, 1, texcoord_count)) return false;
       has_vt = true;
       if (!cursor_.at_token_end()) {  // at the second '/'
         ++cursor_.p;
         field = cursor_.p;
         if (!read_index(&value, &too_long) || !cursor_.at_token_end()) return malformed_corner(start);
-        if (!store_index(value, too_long, field, start, "vn", normal_count)) return false;
+        if (!store_index(value, too_long, field, start, 2, normal_count)) return false;
         has_vn = true;
       }
     }
-    if (!has_vt) *corner_at_++ = kAbsent;
-    if (!has_vn) *corner_at_++ = kAbsent;
+    if (!has_vt) *corner_at_++ = kNoIndex;
+    if (!has_vn) *corner_at_++ = kNoIndex;
     return true;
   }
 
@@ -345,8 +348,14 @@ class ChunkParser {
       ++corners;
     }
     if (corners < 3) return fail("f: needs at least 3 corners (got " + std::to_string(corners) + ")");
-    out_->faces.push_back({corners, static_cast<uint32_t>(line_)});
+    add_face(corners);
     return true;
+  }
+
+  void add_face(uint32_t corners) {
+    out_->triangles_by_material[material_] += corners - 2;
+    if (out_->first_face_by_material[material_] == ChunkData::kNoFace) out_->first_face_by_material[material_] = out_->faces.size();
+    out_->faces.push_back({corners, static_cast<uint32_t>(line_)});
   }
 
   bool use_material() {
@@ -358,7 +367,10 @@ class ChunkParser {
     if (fresh) {
       out_->material_names.push_back(name);
       out_->material_name_lines.push_back(line_);
+      out_->triangles_by_material.push_back(0);
+      out_->first_face_by_material.push_back(ChunkData::kNoFace);
     }
+    material_ = it->second + 1;
     record_change(StateChange::kMaterial, it->second);
     return true;
   }
@@ -399,6 +411,7 @@ class ChunkParser {
   ChunkData* out_;
   uint64_t line_ = 0;
   uint32_t* corner_at_ = nullptr;  // where the next corner field goes in out_->corners
+  uint32_t material_ = 0;  // the material of the next face: 0, or 1 + its index in material_names
   const char* plain_limit_ = nullptr;  // plain lines start before this (null: the general grammar only)
   std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index
 };

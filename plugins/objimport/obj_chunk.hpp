@@ -15,8 +15,7 @@
 
 namespace pfx_obj {
 
-// An index field a corner lacks (no vt, no vn) before resolution, and after it.
-constexpr uint32_t kAbsent = 0;
+// An index field a corner lacks (no vt, no vn); also "none" wherever an index may be missing.
 constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 // OBJ indices as written must fit in 31 bits (a file with 2^31 vertices would be over 16 GB).
 constexpr int64_t kMaxWrittenIndex = 0x7FFFFFFF;
@@ -58,13 +57,20 @@ struct ChunkData {
   BigVector<float> normals;    // x y z per vn
   uint32_t position_count() const { return static_cast<uint32_t>(positions.size() / 3); }
 
-  // Face corners, three fields each (v, vt, vn): a positive index as written, kAbsent for a
-  // missing vt or vn, or for a relative (negative) index the 1-based position it denotes counted
-  // from the chunk's first element — which may be zero or negative (stored two's complement),
-  // when it reaches back into earlier chunks. relative_fields marks those, one bit per field.
+  // Face corners, three fields each (v, vt, vn): a positive index as written minus one (0-based,
+  // final), kNoIndex for a missing vt or vn, or for a relative (negative) index the 1-based
+  // position it denotes counted from the chunk's first element — which may be zero or negative
+  // (stored two's complement), when it reaches back into earlier chunks. relative_fields marks
+  // those, one bit per field; the resolve stage makes them final.
   BigVector<uint32_t> corners;
   std::vector<uint64_t> relative_fields;
+  uint32_t max_index[3] = {0, 0, 0};  // the largest positive v, vt, vn index written (1-based)
   BigVector<Face> faces;
+  // Per material of the chunk — 0: the one in force at the chunk's start, i + 1: material_names[i]
+  // — the triangles its faces make, and its first face (chunk-local), or kNoFace.
+  static constexpr uint64_t kNoFace = ~uint64_t{0};
+  std::vector<uint64_t> triangles_by_material{0};
+  std::vector<uint64_t> first_face_by_material{kNoFace};
   std::vector<StateChange> changes;
   std::vector<std::string> material_names;  // usemtl names, in order of first use in the chunk
   std::vector<uint64_t> material_name_lines;  // the chunk-local line of each name's first usemtl

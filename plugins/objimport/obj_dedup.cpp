@@ -69,8 +69,10 @@ class VariantIndex {
 template <typename Visit>
 void for_each_corner(const DedupChunk& chunk, Visit&& visit) {
   uint64_t corner = 0;
+  FaceStates states = chunk.states;
   for (uint64_t f = 0; f < chunk.face_count; ++f) {
-    const uint32_t group = chunk.face_groups[f];
+    states.at_face(f);
+    const uint32_t group = states.normal_group();
     for (uint32_t k = 0; k < chunk.faces[f].corner_count; ++k, ++corner) {
       const uint32_t* fields = chunk.corners + 3 * corner;
       visit(corner, VertexKey{fields[0], fields[1], fields[2], fields[2] == kNoIndex ? group : 0});

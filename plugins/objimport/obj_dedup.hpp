@@ -14,6 +14,7 @@
 
 #include "obj_buffer.hpp"
 #include "obj_chunk.hpp"
+#include "obj_face_states.hpp"
 
 namespace pfx_obj {
 
@@ -26,13 +27,13 @@ struct VertexKey {
 };
 
 // The corners of one chunk after resolution: three fields per corner (0-based or kNoIndex), the
-// faces, and each face's normal group.
+// faces, and their states (for each face's normal group).
 struct DedupChunk {
   const uint32_t* corners = nullptr;  // 3 per corner
   uint64_t corner_count = 0;
   const Face* faces = nullptr;
   uint64_t face_count = 0;
-  const uint32_t* face_groups = nullptr;
+  FaceStates states;  // each face's normal group
 };
 
 // vertices: the distinct keys in order of first use. corner_vertex[c][k]: the vertex of corner k

@@ -29,6 +29,7 @@
 
 #include "obj_chunk.hpp"
 #include "obj_dedup.hpp"
+#include "obj_face_states.hpp"
 #include "obj_file.hpp"
 #include "obj_normals.hpp"
 #include "obj_parallel.hpp"
@@ -38,11 +39,6 @@
 namespace pfx_obj {
 
 namespace {
-
-// Smoothing group of faces before any `s` statement: smoothed together, as if `s 1`.
-constexpr uint32_t kDefaultSmoothing = 1;
-// Normal group of a face with smoothing off: its own ordinal, marked by the top bit.
-constexpr uint32_t kFlatFaceBit = 0x80000000u;
 
 struct Located {
   uint64_t line;  // 1-based, in the OBJ file
@@ -57,12 +53,11 @@ struct ChunkPlan {
   uint32_t start_material = kNoIndex;  // material slot in force at the chunk's start
   uint32_t start_smoothing = kDefaultSmoothing;
   std::vector<uint32_t> material_slots;  // chunk material name index -> material slot
+  uint32_t start_slot = 0;  // start_material, or the no-material slot (set by the resolve stage)
 };
 
 // What the resolve stage makes of one chunk.
 struct ChunkFaces {
-  BigVector<uint32_t> face_groups;
-  BigVector<uint32_t> face_slots;     // material slot of each face
   std::vector<uint64_t> triangle_counts;  // per material slot
   std::vector<uint64_t> first_use;        // per material slot: the file ordinal of its first face
   bool failed = false;
@@ -272,42 +267,36 @@ class Importer {
 
   void resolve(size_t c, size_t slots) {
     ChunkData& chunk = chunks_[c];
-    const ChunkPlan& plan = plans_[c];
+    ChunkPlan& plan = plans_[c];
     ChunkFaces& result = faces_[c];
-    const char* kinds[3] = {"v", "vt", "vn"};
-    const uint32_t bases[3] = {plan.position_base, plan.texcoord_base, plan.normal_base};
-    result.face_groups.resize(chunk.faces.size());
-    result.face_slots.resize(chunk.faces.size());
+    plan.start_slot = plan.start_material == kNoIndex ? static_cast<uint32_t>(slots - 1) : plan.start_material;
     result.triangle_counts.assign(slots, 0);
     result.first_use.assign(slots, ~uint64_t{0});
-    uint32_t slot = plan.start_material == kNoIndex ? static_cast<uint32_t>(slots - 1) : plan.start_material;
-    uint32_t smoothing = plan.start_smoothing;
-    size_t change = 0;
+    for (size_t m = 0; m < chunk.triangles_by_material.size(); ++m) {
+      if (chunk.first_face_by_material[m] == ChunkData::kNoFace) continue;
+      const uint32_t slot = m == 0 ? plan.start_slot : plan.material_slots[m - 1];
+      result.triangle_counts[slot] += chunk.triangles_by_material[m];
+      result.first_use[slot] = std::min(result.first_use[slot], plan.face_base + chunk.first_face_by_material[m]);
+    }
+    // Positive indices are stored final: only relative ones, or an index past the file's last
+    // element (an error), need a walk over the corners.
+    if (chunk.relative_fields.empty() && chunk.max_index[0] <= totals_[0] && chunk.max_index[1] <= totals_[1] &&
+        chunk.max_index[2] <= totals_[2])
+      return;
+    const char* kinds[3] = {"v", "vt", "vn"};
+    const uint32_t bases[3] = {plan.position_base, plan.texcoord_base, plan.normal_base};
     uint64_t field = 0;
     for (size_t f = 0; f < chunk.faces.size(); ++f) {
-      for (; change < chunk.changes.size() && chunk.changes[change].first_face == f; ++change) {
-        const StateChange& sc = chunk.changes[change];
-        if (sc.kind == StateChange::kMaterial) slot = plan.material_slots[sc.value];
-        else smoothing = sc.value;
-      }
       const Face& face = chunk.faces[f];
-      const uint64_t face_ordinal = plan.face_base + f;
-      result.face_groups[f] = smoothing == 0 ? (kFlatFaceBit | static_cast<uint32_t>(face_ordinal)) : smoothing;
-      result.face_slots[f] = slot;
-      result.triangle_counts[slot] += face.corner_count - 2;
-      result.first_use[slot] = std::min(result.first_use[slot], face_ordinal);
       for (uint32_t k = 0; k < face.corner_count; ++k) {
         for (int j = 0; j < 3; ++j, ++field) {
           uint32_t& value = chunk.corners[field];
-          // A relative index may be stored as 0 (it reaches back into an earlier chunk): only a
-          // field not marked relative can mean "absent".
+          // A relative index may be stored as kNoIndex (-1: it reaches two elements back before
+          // the chunk): only a field not marked relative can mean "absent".
           const bool relative = field / 64 < chunk.relative_fields.size() &&
                                 (chunk.relative_fields[field / 64] >> (field % 64) & 1);
-          if (j > 0 && value == kAbsent && !relative) {
-            value = kNoIndex;
-            continue;
-          }
-          int64_t one_based = relative ? int64_t{bases[j]} + static_cast<int32_t>(value) : int64_t{value};
+          if (!relative && value == kNoIndex) continue;
+          const int64_t one_based = relative ? int64_t{bases[j]} + static_cast<int32_t>(value) : int64_t{value} + 1;
           if (relative && one_based < 1) {
             result.failed = true;
             result.error = {plan.first_line + face.line,
@@ -329,6 +318,12 @@ class Importer {
       }
     }
     chunk.relative_fields = {};
+  }
+
+  // The material slot and normal group of chunk c's faces, walked in order.
+  FaceStates face_states(size_t c) const {
+    const ChunkPlan& plan = plans_[c];
+    return FaceStates(&chunks_[c].changes, &plan.material_slots, plan.start_slot, plan.start_smoothing, plan.face_base);
   }
 
   bool first_resolve_error(std::string* error) {
@@ -372,10 +367,9 @@ class Importer {
       inputs[c].corner_count = chunks_[c].corners.size() / 3;
       inputs[c].faces = chunks_[c].faces.data();
       inputs[c].face_count = chunks_[c].faces.size();
-      inputs[c].face_groups = faces_[c].face_groups.data();
+      inputs[c].states = face_states(c);
     }
     deduplicate(inputs, totals_[0], threads_, &keys_, &corner_vertex_);
-    for (ChunkFaces& f : faces_) f.face_groups = {};
   }
 
   void build_triangles();
@@ -440,10 +434,12 @@ void Importer::build_triangles() {
     TriangulationScratch scratch;
     std::vector<const float*> corner_positions;
     std::vector<uint32_t> polygon;
+    FaceStates states = face_states(c);
     uint64_t corner = 0;
     for (size_t f = 0; f < chunk.faces.size(); ++f) {
       const uint32_t n = chunk.faces[f].corner_count;
-      uint64_t& cursor = at[result.face_slots[f]];
+      states.at_face(f);
+      uint64_t& cursor = at[states.slot()];
       if (n == 3) {
         indices[cursor] = vertex[corner];
         indices[cursor + 1] = vertex[corner + 1];

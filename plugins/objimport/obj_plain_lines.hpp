@@ -13,8 +13,10 @@
 // before limit and reads at most kPlainElementBytes past its start, so nothing past end is read.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
+#include "obj_chunk.hpp"
 #include "obj_text.hpp"
 
 namespace pfx_obj {
@@ -91,14 +93,19 @@ inline const char* read_plain_numbers(const char* p, const char* limit, double* 
 }
 
 // Reads the corners of an "f" line (after the keyword) to the line end, three fields each as the
-// general grammar stores them (the index as written, 0 for a missing vt or vn) at `fields`, which
-// has room for every corner the rest of the chunk can hold. Returns the start of the next line, or
-// nullptr (fewer than 3 corners, a negative index, anything not plain).
-inline const char* read_plain_face(const char* p, const char* limit, uint32_t* fields, uint32_t* corner_count) {
-  uint32_t corners = 0;
+// general grammar stores them (the index as written minus one, kNoIndex for a missing vt or vn) at
+// `fields`, which has room for every corner the rest of the chunk can hold, and raises max_index
+// (v, vt, vn) to the largest index read. Returns the start of the next line, or nullptr (fewer than
+// 3 corners, a negative index, anything not plain) having changed nothing but fields.
+inline const char* read_plain_face(const char* p, const char* limit, uint32_t* fields, uint32_t* corner_count,
+                                   uint32_t* max_index) {
+  uint32_t corners = 0, max_v = max_index[0], max_vt = max_index[1], max_vn = max_index[2];
   for (;;) {
     if (const char* next = plain::line_end_after_blanks(p, limit)) {
       *corner_count = corners;
+      max_index[0] = max_v;
+      max_index[1] = max_vt;
+      max_index[2] = max_vn;
       return corners >= 3 ? next : nullptr;
     }
     if (p >= limit) return nullptr;
@@ -118,9 +125,13 @@ inline const char* read_plain_face(const char* p, const char* limit, uint32_t* f
       }
     }
     if (!(plain::blank(*p) || *p == '\n' || *p == '\r')) return nullptr;
-    fields[0] = v;
-    fields[1] = vt;
-    fields[2] = vn;
+    max_v = std::max(max_v, v);
+    max_vt = std::max(max_vt, vt);
+    max_vn = std::max(max_vn, vn);
+    static_assert(kNoIndex == uint32_t{0} - 1, "an absent field (0) minus one is kNoIndex");
+    fields[0] = v - 1;
+    fields[1] = vt - 1;
+    fields[2] = vn - 1;
     fields += 3;
     ++corners;
   }
