@@ -49,24 +49,34 @@ class ChunkParser {
         break;
       }
     }
+    out_->positions.resize(static_cast<size_t>(position_at_ - out_->positions.data()));
+    out_->texcoords.resize(static_cast<size_t>(texcoord_at_ - out_->texcoords.data()));
+    out_->normals.resize(static_cast<size_t>(normal_at_ - out_->normals.data()));
     out_->corners.resize(static_cast<size_t>(corner_at_ - out_->corners.data()));
     out_->line_ends = cursor_.line_ends;
   }
 
  private:
   // The most elements `bytes` of text can hold (the shortest statements: "v 0 0 0\n", "vt 0\n",
-  // "vn 0 0 0\n", a corner "1 ", "f 1 2 3\n"), reserved up front: growing by copying cost more
-  // than the parse. Only the pages written become resident.
+  // "vn 0 0 0\n", a corner "1 ", "f 1 2 3\n"), made room for up front: growing by copying cost
+  // more than the parse. Vertex data and corners are written through pointers (no capacity check
+  // per element) into arrays sized without touching them (BigVector does not initialise, and only
+  // the pages written become resident), trimmed at the end.
   void reserve_upper_bounds(size_t bytes) {
-    out_->positions.reserve(3 * (bytes / 8 + 1));
-    out_->texcoords.reserve(2 * (bytes / 5 + 1));
-    out_->normals.reserve(3 * (bytes / 9 + 1));
-    // Corners are written through a pointer (the hottest path): room for every corner the text
-    // can hold, made without touching it (BigVector does not initialise), trimmed at the end.
+    out_->positions.resize(3 * (bytes / 8 + 1));
+    out_->texcoords.resize(2 * (bytes / 5 + 1));
+    out_->normals.resize(3 * (bytes / 9 + 1));
     out_->corners.resize(3 * (bytes / 2 + 1));
+    position_at_ = out_->positions.data();
+    texcoord_at_ = out_->texcoords.data();
+    normal_at_ = out_->normals.data();
     corner_at_ = out_->corners.data();
     out_->faces.reserve(bytes / 8 + 1);
   }
+
+  uint32_t positions_so_far() const { return static_cast<uint32_t>((position_at_ - out_->positions.data()) / 3); }
+  uint32_t texcoords_so_far() const { return static_cast<uint32_t>((texcoord_at_ - out_->texcoords.data()) / 2); }
+  uint32_t normals_so_far() const { return static_cast<uint32_t>((normal_at_ - out_->normals.data()) / 3); }
 
   bool fail(std::string text) {
     out_->error = {line_, std::move(text)};
@@ -204,10 +214,10 @@ class ChunkParser {
   }
 
   void store_vertex(const double* values, int count) {
-    for (int i = 0; i < 3; ++i) out_->positions.push_back(static_cast<float>(values[i]));
+    for (int i = 0; i < 3; ++i) *position_at_++ = static_cast<float>(values[i]);
     if (count == 6) {
       // The first coloured v of the chunk: earlier ones are white.
-      if (out_->colors.empty()) out_->colors.assign(out_->positions.size() - 3, 1.0f);
+      if (out_->colors.empty()) out_->colors.assign(3 * size_t{positions_so_far() - 1}, 1.0f);
       for (int i = 3; i < 6; ++i) out_->colors.push_back(static_cast<float>(values[i]));
     } else if (!out_->colors.empty()) {
       out_->colors.insert(out_->colors.end(), 3, 1.0f);
@@ -224,8 +234,8 @@ class ChunkParser {
   }
 
   void store_texcoord(const double* values, int count) {
-    out_->texcoords.push_back(static_cast<float>(values[0]));
-    out_->texcoords.push_back(count > 1 ? static_cast<float>(values[1]) : 0.0f);
+    *texcoord_at_++ = static_cast<float>(values[0]);
+    *texcoord_at_++ = count > 1 ? static_cast<float>(values[1]) : 0.0f;
   }
 
   bool normal() {
@@ -238,7 +248,7 @@ class ChunkParser {
   }
 
   void store_normal(const double* values) {
-    for (int i = 0; i < 3; ++i) out_->normals.push_back(static_cast<float>(values[i]));
+    for (int i = 0; i < 3; ++i) *normal_at_++ = static_cast<float>(values[i]);
   }
 
   void mark_relative(size_t field) {
@@ -307,7 +317,7 @@ class ChunkParser {
     const char* field = cursor_.p;
     if (!read_index(&value, &too_long)) return malformed_corner(start);
     if (!cursor_.at_token_end() && *cursor_.p != '/') return malformed_corner(start);
-    if (!store_index(value, too_long, field, start, 0, out_->position_count())) return false;
+    if (!store_index(value, too_long, field, start, 0, positions_so_far())) return false;
     bool has_vt = false, has_vn = false;
     if (!cursor_.at_token_end()) {  // at the first '/'
       ++cursor_.p;
@@ -338,8 +348,8 @@ class ChunkParser {
   }
 
   bool face() {
-    const uint32_t texcoord_count = static_cast<uint32_t>(out_->texcoords.size() / 2);
-    const uint32_t normal_count = static_cast<uint32_t>(out_->normals.size() / 3);
+    const uint32_t texcoord_count = texcoords_so_far();
+    const uint32_t normal_count = normals_so_far();
     uint32_t corners = 0;
     for (;;) {
       cursor_.skip_blanks();
@@ -410,7 +420,10 @@ class ChunkParser {
   Cursor cursor_;
   ChunkData* out_;
   uint64_t line_ = 0;
-  uint32_t* corner_at_ = nullptr;  // where the next corner field goes in out_->corners
+  float* position_at_ = nullptr;  // where the next v, vt, vn, corner field goes in out_'s arrays
+  float* texcoord_at_ = nullptr;
+  float* normal_at_ = nullptr;
+  uint32_t* corner_at_ = nullptr;
   uint32_t material_ = 0;  // the material of the next face: 0, or 1 + its index in material_names
   const char* plain_limit_ = nullptr;  // plain lines start before this (null: the general grammar only)
   std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index

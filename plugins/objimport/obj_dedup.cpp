@@ -20,7 +20,12 @@ constexpr uint32_t kMaxChain = 8;
 // Distinct keys numbered in order of first insertion.
 class VariantIndex {
  public:
-  explicit VariantIndex(uint32_t position_count) : head_(position_count, kNoIndex) {}
+  // max_keys: room reserved for that many keys up front — address space only (BigVector maps
+  // without touching), so the arrays never move and copy while growing.
+  VariantIndex(uint32_t position_count, uint64_t max_keys) : head_(position_count, kNoIndex) {
+    keys_.reserve(max_keys);
+    next_.reserve(max_keys);
+  }
 
   uint32_t find_or_insert(const VertexKey& key) {
     uint32_t last = kNoIndex, length = 0;
@@ -94,7 +99,7 @@ void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count,
 
   if (threads <= 1 || chunks.size() == 1) {
     // Sequential: every corner straight into one index; its ids are the final vertex numbers.
-    VariantIndex index(position_count);
+    VariantIndex index(position_count, total_corners);
     for (size_t c = 0; c < chunks.size(); ++c) {
       BigVector<uint32_t>& ids = (*corner_vertex)[c];
       for_each_corner(chunks[c], [&](uint64_t corner, const VertexKey& key) { ids[corner] = index.find_or_insert(key); });
@@ -110,8 +115,10 @@ void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count,
   // of their first corner in the chunk.
   std::vector<BigVector<VertexKey>> chunk_keys(chunks.size());
   std::vector<std::unique_ptr<VariantIndex>> worker_index(threads);
+  uint64_t largest_chunk = 0;
+  for (const DedupChunk& chunk : chunks) largest_chunk = std::max(largest_chunk, chunk.corner_count);
   run_parallel(threads, chunks.size(), [&](size_t c, unsigned worker) {
-    if (!worker_index[worker]) worker_index[worker] = std::make_unique<VariantIndex>(position_count);
+    if (!worker_index[worker]) worker_index[worker] = std::make_unique<VariantIndex>(position_count, largest_chunk);
     VariantIndex& index = *worker_index[worker];
     BigVector<uint32_t>& ids = (*corner_vertex)[c];
     for_each_corner(chunks[c], [&](uint64_t corner, const VertexKey& key) { ids[corner] = index.find_or_insert(key); });
@@ -120,7 +127,9 @@ void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count,
   });
   worker_index.clear();
 
-  VariantIndex file_index(position_count);
+  uint64_t chunk_key_total = 0;
+  for (const auto& keys : chunk_keys) chunk_key_total += keys.size();
+  VariantIndex file_index(position_count, chunk_key_total);
   std::vector<BigVector<uint32_t>> to_file(chunks.size());
   for (size_t c = 0; c < chunks.size(); ++c) {
     to_file[c].resize(chunk_keys[c].size());
