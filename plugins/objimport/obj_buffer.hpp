@@ -6,6 +6,7 @@
 
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <new>
 #include <utility>
@@ -56,5 +57,15 @@ struct BigBufferAllocator {
 
 template <typename T>
 using BigVector = std::vector<T, BigBufferAllocator<T>>;
+
+// Element-wise equality with a plain vector (tests compare results with literals).
+template <typename T>
+bool operator==(const BigVector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+}
+template <typename T>
+bool operator==(const std::vector<T>& a, const BigVector<T>& b) {
+  return b == a;
+}
 
 }  // namespace pfx_obj

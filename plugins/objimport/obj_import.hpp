@@ -11,16 +11,19 @@
 #include <string_view>
 #include <vector>
 
+#include "obj_buffer.hpp"
 #include "obj_mtl.hpp"
 
 namespace pfx_obj {
 
 struct ObjMesh {
-  std::vector<float> positions;  // 3 per vertex
-  std::vector<float> normals;    // 3 per vertex
-  std::vector<float> texcoords;  // 2 per vertex, or empty when no corner has one
-  std::vector<float> colors;     // 3 per vertex, or empty when no v has a colour
-  std::vector<uint32_t> indices;
+  // BigVector: sized without zero-filling first (finish() writes every element) and mapped with
+  // huge pages when large.
+  BigVector<float> positions;  // 3 per vertex
+  BigVector<float> normals;    // 3 per vertex
+  BigVector<float> texcoords;  // 2 per vertex, or empty when no corner has one
+  BigVector<float> colors;     // 3 per vertex, or empty when no v has a colour
+  BigVector<uint32_t> indices;
   struct Submesh {
     uint32_t first_index, index_count, material;  // material: index or kNoIndex (no usemtl)
   };

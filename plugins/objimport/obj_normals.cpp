@@ -7,8 +7,8 @@
 
 namespace pfx_obj {
 
-void generate_normals(const BigVector<VertexKey>& keys, const std::vector<float>& positions,
-                      const std::vector<uint32_t>& indices, unsigned threads, std::vector<float>* normals) {
+void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& positions,
+                      const BigVector<uint32_t>& indices, unsigned threads, BigVector<float>* normals) {
   const size_t count = keys.size();
   std::vector<uint8_t> generated(count);
   bool any = false, with_texcoords = false;
@@ -18,7 +18,7 @@ void generate_normals(const BigVector<VertexKey>& keys, const std::vector<float>
     with_texcoords |= generated[i] && keys[i].vt != kNoIndex;
   }
   if (!any) return;
-  std::vector<float>& n = *normals;
+  BigVector<float>& n = *normals;
   for (size_t i = 0; i < count; ++i)
     if (generated[i]) n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;
 

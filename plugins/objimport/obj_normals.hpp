@@ -13,7 +13,7 @@ namespace pfx_obj {
 
 // normals: 3 per vertex; those of vertices with keys[i].vn == kNoIndex are overwritten.
 // Deterministic: every sum runs in index order whatever the thread count.
-void generate_normals(const BigVector<VertexKey>& keys, const std::vector<float>& positions,
-                      const std::vector<uint32_t>& indices, unsigned threads, std::vector<float>* normals);
+void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& positions,
+                      const BigVector<uint32_t>& indices, unsigned threads, BigVector<float>* normals);
 
 }  // namespace pfx_obj

@@ -14,7 +14,7 @@
 namespace {
 
 bool same(const pfx_obj::ObjMesh& a, const pfx_obj::ObjMesh& b) {
-  auto same_floats = [](const std::vector<float>& x, const std::vector<float>& y) {
+  auto same_floats = [](const pfx_obj::BigVector<float>& x, const pfx_obj::BigVector<float>& y) {
     if (x.size() != y.size()) return false;
     for (size_t i = 0; i < x.size(); ++i)
       if (!(x[i] == y[i]) && !(x[i] != x[i] && y[i] != y[i])) return false;
