@@ -88,7 +88,7 @@ void for_each_corner(const DedupChunk& chunk, Visit&& visit) {
 }  // namespace
 
 void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count, unsigned threads,
-                 BigVector<VertexKey>* vertices, std::vector<BigVector<uint32_t>>* corner_vertex) {
+                 BigVector<VertexKey>* vertices, std::vector<BigVector<uint32_t>>* corner_vertex, StageClock* clock) {
   uint64_t total_corners = 0;
   corner_vertex->assign(chunks.size(), {});
   for (size_t c = 0; c < chunks.size(); ++c) {
@@ -99,12 +99,14 @@ void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count,
 
   if (threads <= 1 || chunks.size() == 1) {
     // Sequential: every corner straight into one index; its ids are the final vertex numbers.
-    VariantIndex index(position_count, total_corners);
-    for (size_t c = 0; c < chunks.size(); ++c) {
-      BigVector<uint32_t>& ids = (*corner_vertex)[c];
-      for_each_corner(chunks[c], [&](uint64_t corner, const VertexKey& key) { ids[corner] = index.find_or_insert(key); });
-    }
-    vertices->swap(index.keys());
+    clock->time("dedup", false, [&] {
+      VariantIndex index(position_count, total_corners);
+      for (size_t c = 0; c < chunks.size(); ++c) {
+        BigVector<uint32_t>& ids = (*corner_vertex)[c];
+        for_each_corner(chunks[c], [&](uint64_t corner, const VertexKey& key) { ids[corner] = index.find_or_insert(key); });
+      }
+      vertices->swap(index.keys());
+    });
     return;
   }
 
@@ -117,29 +119,35 @@ void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count,
   std::vector<std::unique_ptr<VariantIndex>> worker_index(threads);
   uint64_t largest_chunk = 0;
   for (const DedupChunk& chunk : chunks) largest_chunk = std::max(largest_chunk, chunk.corner_count);
-  run_parallel(threads, chunks.size(), [&](size_t c, unsigned worker) {
-    if (!worker_index[worker]) worker_index[worker] = std::make_unique<VariantIndex>(position_count, largest_chunk);
-    VariantIndex& index = *worker_index[worker];
-    BigVector<uint32_t>& ids = (*corner_vertex)[c];
-    for_each_corner(chunks[c], [&](uint64_t corner, const VertexKey& key) { ids[corner] = index.find_or_insert(key); });
-    chunk_keys[c] = index.keys();
-    index.clear();
+  clock->time("dedup chunks", true, [&] {
+    run_parallel(threads, chunks.size(), [&](size_t c, unsigned worker) {
+      if (!worker_index[worker]) worker_index[worker] = std::make_unique<VariantIndex>(position_count, largest_chunk);
+      VariantIndex& index = *worker_index[worker];
+      BigVector<uint32_t>& ids = (*corner_vertex)[c];
+      for_each_corner(chunks[c], [&](uint64_t corner, const VertexKey& key) { ids[corner] = index.find_or_insert(key); });
+      chunk_keys[c] = index.keys();
+      index.clear();
+    });
+    worker_index.clear();
   });
-  worker_index.clear();
 
-  uint64_t chunk_key_total = 0;
-  for (const auto& keys : chunk_keys) chunk_key_total += keys.size();
-  VariantIndex file_index(position_count, chunk_key_total);
   std::vector<BigVector<uint32_t>> to_file(chunks.size());
-  for (size_t c = 0; c < chunks.size(); ++c) {
-    to_file[c].resize(chunk_keys[c].size());
-    for (size_t i = 0; i < chunk_keys[c].size(); ++i) to_file[c][i] = file_index.find_or_insert(chunk_keys[c][i]);
-    chunk_keys[c] = {};
-  }
-  run_parallel(threads, chunks.size(), [&](size_t c, unsigned) {
-    for (uint32_t& id : (*corner_vertex)[c]) id = to_file[c][id];
+  clock->time("dedup merge", false, [&] {
+    uint64_t chunk_key_total = 0;
+    for (const auto& keys : chunk_keys) chunk_key_total += keys.size();
+    VariantIndex file_index(position_count, chunk_key_total);
+    for (size_t c = 0; c < chunks.size(); ++c) {
+      to_file[c].resize(chunk_keys[c].size());
+      for (size_t i = 0; i < chunk_keys[c].size(); ++i) to_file[c][i] = file_index.find_or_insert(chunk_keys[c][i]);
+      chunk_keys[c] = {};
+    }
+    vertices->swap(file_index.keys());
   });
-  vertices->swap(file_index.keys());
+  clock->time("dedup renumber", true, [&] {
+    run_parallel(threads, chunks.size(), [&](size_t c, unsigned) {
+      for (uint32_t& id : (*corner_vertex)[c]) id = to_file[c][id];
+    });
+  });
 }
 
 }  // namespace pfx_obj

@@ -15,6 +15,7 @@
 #include "obj_buffer.hpp"
 #include "obj_chunk.hpp"
 #include "obj_face_states.hpp"
+#include "obj_stages.hpp"
 
 namespace pfx_obj {
 
@@ -39,7 +40,8 @@ struct DedupChunk {
 // vertices: the distinct keys in order of first use. corner_vertex[c][k]: the vertex of corner k
 // of chunk c.
 // position_count: how many positions the file has (every corner's v is below it).
+// clock: times its phases (with threads: the chunks in parallel, the serial merge, the renumbering).
 void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count, unsigned threads,
-                 BigVector<VertexKey>* vertices, std::vector<BigVector<uint32_t>>* corner_vertex);
+                 BigVector<VertexKey>* vertices, std::vector<BigVector<uint32_t>>* corner_vertex, StageClock* clock);
 
 }  // namespace pfx_obj

@@ -20,7 +20,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <ctime>
 #include <filesystem>
 #include <new>
 #include <stdexcept>
@@ -66,12 +65,6 @@ struct ChunkFaces {
   uint64_t warning_total = 0;
 };
 
-double process_cpu_seconds() {
-  timespec now{};
-  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
-}
-
 std::string at(const std::string& name, uint64_t line, const std::string& text) {
   return name + ":" + std::to_string(line) + ": " + text;
 }
@@ -105,33 +98,27 @@ class Importer {
   bool run(std::string_view text, ObjMesh* out, std::string* error) {
     out_ = out;
     *out = ObjMesh{};
+    StageClock clock(&out->stages);
     report(0.0f);
-    stage("parse", true, [&] { parse(text); });
+    clock.time("parse", true, [&] { parse(text); });
     bool ok = true;
-    stage("plan", false, [&] { ok = plan(error); });
+    clock.time("plan", false, [&] { ok = plan(error); });
     if (!ok) return false;
-    stage("resolve", true, [&] { resolve_all(); });
+    clock.time("resolve", true, [&] { resolve_all(); });
     if (!first_resolve_error(error)) return false;
-    stage("gather", true, [&] { gather(); });
+    clock.time("gather", true, [&] { gather(); });
     report(0.7f);
-    stage("dedup", true, [&] { deduplicate_corners(); });
+    deduplicate_corners(&clock);
     report(0.85f);
-    stage("triangles", true, [&] { build_triangles(); });
-    stage("finish", true, [&] { finish(); });
+    clock.time("triangles", true, [&] { build_triangles(); });
+    clock.time("vertices", true, [&] { fill_vertices(); });
+    clock.time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, threads_, &out_->normals); });
+    clock.time("bounds, warnings", false, [&] { finish(); });
     report(1.0f);
     return true;
   }
 
  private:
-  template <typename Work>
-  void stage(const char* name, bool parallel, Work&& work) {
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = process_cpu_seconds();
-    work();
-    out_->stages.push_back({name, parallel, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                            process_cpu_seconds() - cpu_start});
-  }
-
   void report(float fraction) {
     if (options_.progress) options_.progress(fraction);
   }
@@ -360,7 +347,7 @@ class Importer {
     });
   }
 
-  void deduplicate_corners() {
+  void deduplicate_corners(StageClock* clock) {
     std::vector<DedupChunk> inputs(chunks_.size());
     for (size_t c = 0; c < chunks_.size(); ++c) {
       inputs[c].corners = chunks_[c].corners.data();
@@ -369,10 +356,11 @@ class Importer {
       inputs[c].face_count = chunks_[c].faces.size();
       inputs[c].states = face_states(c);
     }
-    deduplicate(inputs, totals_[0], threads_, &keys_, &corner_vertex_);
+    deduplicate(inputs, totals_[0], threads_, &keys_, &corner_vertex_, clock);
   }
 
   void build_triangles();
+  void fill_vertices();
   void finish();
 
   const std::string& name_;
@@ -476,7 +464,7 @@ void Importer::build_triangles() {
   faces_ = {};
 }
 
-void Importer::finish() {
+void Importer::fill_vertices() {
   const size_t count = keys_.size();
   const bool any_texcoords = std::any_of(keys_.begin(), keys_.end(), [](const VertexKey& k) { return k.vt != kNoIndex; });
   out_->positions.resize(3 * count);
@@ -500,9 +488,11 @@ void Importer::finish() {
   all_texcoords_ = {};
   all_normals_ = {};
   all_colors_ = {};
-  generate_normals(keys_, out_->positions, out_->indices, threads_, &out_->normals);
-  keys_ = {};
+}
 
+void Importer::finish() {
+  keys_ = {};
+  const size_t count = out_->vertex_count();
   if (count > 0) {
     float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
     for (size_t i = 0; i < count; ++i)

@@ -13,6 +13,7 @@
 
 #include "obj_buffer.hpp"
 #include "obj_mtl.hpp"
+#include "obj_stages.hpp"
 
 namespace pfx_obj {
 
@@ -35,14 +36,7 @@ struct ObjMesh {
   uint64_t warning_total = 0;
   uint32_t vertex_count() const { return static_cast<uint32_t>(positions.size() / 3); }
 
-  // Wall and CPU time (all threads of the process) of each pipeline stage (obj_import.cpp), for
-  // the benchmark's breakdown: which part runs on all threads and which on one.
-  struct Stage {
-    const char* name;
-    bool parallel;
-    double seconds, cpu_seconds;
-  };
-  std::vector<Stage> stages;
+  std::vector<ImportStage> stages;  // each stage's times, in order (obj_stages.hpp)
 };
 
 constexpr size_t kMaxWarnings = 100;
