@@ -16,6 +16,7 @@
 #include "import_files.hpp"
 #include "import_loaders.hpp"
 #include "import_measure.hpp"
+#include "import_stages.hpp"
 #include "plugin_directory.hpp"
 
 namespace fs = std::filesystem;
@@ -55,7 +56,8 @@ const ImportRow* find_row(const std::vector<ImportRow>& rows, double size, const
   return nullptr;
 }
 
-std::string markdown(const std::vector<ImportRow>& rows, const ImportBenchOptions& options) {
+std::string markdown(const std::vector<ImportRow>& rows, const std::vector<StageTable>& stages,
+                     const ImportBenchOptions& options) {
   std::string text = "## OBJ import (pfx-bench --import)\n\n";
   char line[512];
   std::snprintf(line, sizeof line, "Median of %d runs at 100 MB and below, 1 run above; each load in a fresh child process; "
@@ -102,10 +104,11 @@ std::string markdown(const std::vector<ImportRow>& rows, const ImportBenchOption
   }
   text += "\nVertices: pfx and assimp count distinct corners (deduplicated); tinyobjloader counts `v` "
           "positions (it does not deduplicate).\n";
+  if (!stages.empty()) text += "\n" + stage_markdown(stages);
   return text;
 }
 
-nlohmann::ordered_json json(const std::vector<ImportRow>& rows) {
+nlohmann::ordered_json json(const std::vector<ImportRow>& rows, const std::vector<StageTable>& stages) {
   nlohmann::ordered_json root;
   root["rows"] = nlohmann::ordered_json::array();
   for (const auto& row : rows) {
@@ -126,6 +129,19 @@ nlohmann::ordered_json json(const std::vector<ImportRow>& rows) {
     r["triangles"] = row.counts.triangles;
     root["rows"].push_back(r);
   }
+  root["pfx_stages"] = nlohmann::ordered_json::array();
+  for (const auto& table : stages)
+    for (const auto& b : table.by_threads) {
+      nlohmann::ordered_json t;
+      t["file_mb"] = table.file_mb;
+      t["threads"] = b.threads;
+      t["ok"] = b.ok;
+      if (!b.ok) t["error"] = b.error;
+      t["stages"] = nlohmann::ordered_json::array();
+      for (const auto& s : b.stages)
+        t["stages"].push_back({{"name", s.name}, {"parallel", s.parallel}, {"seconds", s.seconds}, {"cpu_seconds", s.cpu_seconds}});
+      root["pfx_stages"].push_back(t);
+    }
   return root;
 }
 
@@ -150,7 +166,9 @@ std::string import_bench_usage() {
       "generated at each size (a height field with v, vt, vn and v/vt/vn triangles): MB/s (file bytes\n"
       "over the median wall time of a load) and the peak memory a load adds, with pfx at each thread\n"
       "count (the others are single-threaded). Each load runs in a forked child process after the\n"
-      "file was read once into the page cache. Writes DIR/import.json and DIR/import.md.\n"
+      "file was read once into the page cache. Then pfx's stages (parse, dedup, ...: wall and CPU time,\n"
+      "which run on every thread and which on one) at each thread count, and the speed-up they predict\n"
+      "on idle cores. Writes DIR/import.json and DIR/import.md.\n"
       "\n"
       "  --sizes LIST      file sizes in MB (default 10,100,500)\n"
       "  --threads LIST    pfx thread counts (default 1,2)\n"
@@ -242,6 +260,7 @@ int import_bench_main(const std::vector<std::string>& args) {
   }
 
   std::vector<ImportRow> rows;
+  std::vector<StageTable> stage_tables;
   int code = 0;
   for (double size : options.sizes_mb) {
     GeneratedObj file;
@@ -280,12 +299,21 @@ int import_bench_main(const std::vector<std::string>& args) {
         rows.push_back(row);
       }
     }
+    if (std::find(options.loaders.begin(), options.loaders.end(), "pfx") != options.loaders.end()) {
+      StageTable table;
+      table.file_mb = file.bytes / 1e6;
+      for (unsigned threads : options.threads) {
+        std::fprintf(stderr, "pfx-bench: pfx stages, %u thread(s), %.0f MB\n", threads, file.bytes / 1e6);
+        table.by_threads.push_back(measure_stages(file.path, threads, runs));
+      }
+      stage_tables.push_back(table);
+    }
   }
   if (temporary_dir && !options.keep_files) fs::remove_all(options.work_dir, ec);
 
   fs::create_directories(options.out_dir, ec);
-  const std::string text = markdown(rows, options);
-  if (!write_text(options.out_dir + "/import.json", json(rows).dump(2) + "\n", &message) ||
+  const std::string text = markdown(rows, stage_tables, options);
+  if (!write_text(options.out_dir + "/import.json", json(rows, stage_tables).dump(2) + "\n", &message) ||
       !write_text(options.out_dir + "/import.md", text, &message)) {
     std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
     return 1;

@@ -1,0 +1,117 @@
+#include "import_stages.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "obj_import.hpp"
+
+namespace pfx::bench {
+
+namespace {
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n == 0 ? 0 : (n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2);
+}
+
+const StageBreakdown* with_threads(const StageTable& table, unsigned threads) {
+  for (const auto& b : table.by_threads)
+    if (b.threads == threads && b.ok) return &b;
+  return nullptr;
+}
+
+}  // namespace
+
+double StageBreakdown::parallel_seconds() const {
+  double total = 0;
+  for (const auto& s : stages) total += s.parallel ? s.seconds : 0;
+  return total;
+}
+
+double StageBreakdown::serial_seconds() const {
+  double total = 0;
+  for (const auto& s : stages) total += s.parallel ? 0 : s.seconds;
+  return total;
+}
+
+StageBreakdown measure_stages(const std::string& path, unsigned threads, int runs) {
+  StageBreakdown result;
+  result.threads = threads;
+  std::vector<std::vector<double>> wall, cpu;
+  for (int r = 0; r < runs; ++r) {
+    pfx_obj::ImportOptions options;
+    options.threads = threads;
+    pfx_obj::ObjMesh mesh;
+    if (!pfx_obj::import_obj_file(path, options, &mesh, &result.error)) return result;
+    if (r == 0) {
+      for (const auto& stage : mesh.stages) result.stages.push_back({stage.name, stage.parallel, 0, 0});
+      wall.resize(mesh.stages.size());
+      cpu.resize(mesh.stages.size());
+    }
+    for (size_t s = 0; s < mesh.stages.size() && s < wall.size(); ++s) {
+      wall[s].push_back(mesh.stages[s].seconds);
+      cpu[s].push_back(mesh.stages[s].cpu_seconds);
+    }
+  }
+  for (size_t s = 0; s < result.stages.size(); ++s) {
+    result.stages[s].seconds = median(wall[s]);
+    result.stages[s].cpu_seconds = median(cpu[s]);
+  }
+  result.ok = true;
+  return result;
+}
+
+std::string stage_markdown(const std::vector<StageTable>& tables) {
+  std::string text =
+      "### pfx stages\n\nEach stage of pfx's import (the plugin's code, called in the benchmark's process; medians). "
+      "Parallel stages run on every thread, serial ones on one. Wall time counts waiting for a core on a shared "
+      "machine; CPU time is that of all the process's threads during the stage.\n\n";
+  char line[512];
+  for (const auto& table : tables) {
+    const StageBreakdown* one = with_threads(table, 1);
+    for (const auto& b : table.by_threads) {
+      if (!b.ok) {
+        std::snprintf(line, sizeof line, "%.1f MB, %u thread(s): failed: %s\n\n", table.file_mb, b.threads,
+                      b.error.substr(0, 200).c_str());
+        text += line;
+        continue;
+      }
+      std::snprintf(line, sizeof line, "%.1f MB, %u thread(s):\n\n| stage | runs on | wall s | CPU s |\n|---|---|---:|---:|\n",
+                    table.file_mb, b.threads);
+      text += line;
+      for (const auto& s : b.stages) {
+        std::snprintf(line, sizeof line, "| %s | %s | %.4f | %.4f |\n", s.name.c_str(), s.parallel ? "all threads" : "one",
+                      s.seconds, s.cpu_seconds);
+        text += line;
+      }
+      std::snprintf(line, sizeof line, "| **parallel stages** | | %.4f | |\n| **serial stages** | | %.4f | |\n\n",
+                    b.parallel_seconds(), b.serial_seconds());
+      text += line;
+    }
+    if (!one) continue;
+    double one_cpu = 0;
+    for (const auto& s : one->stages) one_cpu += s.cpu_seconds;
+    for (const auto& b : table.by_threads) {
+      if (!b.ok || b.threads == 1) continue;
+      // On idle cores, the run's serial CPU time stays and its parallel CPU time divides.
+      double serial_cpu = 0, parallel_cpu = 0;
+      for (const auto& s : b.stages) (s.parallel ? parallel_cpu : serial_cpu) += s.cpu_seconds;
+      const double idle_wall = serial_cpu + parallel_cpu / b.threads;
+      const double total_one = one->parallel_seconds() + one->serial_seconds();
+      const double total = b.parallel_seconds() + b.serial_seconds();
+      std::snprintf(line, sizeof line,
+                    "%.1f MB, %u threads against 1 thread: whole import %.2fx by wall time (parallel stages %.2fx); "
+                    "serial stages %.1f %% of this run's CPU time; on %u idle cores its CPU times predict %.2fx "
+                    "(1-thread CPU %.4f s / (serial %.4f s + parallel %.4f s / %u)).\n\n",
+                    table.file_mb, b.threads, total > 0 ? total_one / total : 0,
+                    b.parallel_seconds() > 0 ? one->parallel_seconds() / b.parallel_seconds() : 0,
+                    100 * serial_cpu / std::max(1e-12, serial_cpu + parallel_cpu), b.threads,
+                    idle_wall > 0 ? one_cpu / idle_wall : 0, one_cpu, serial_cpu, parallel_cpu, b.threads);
+      text += line;
+    }
+  }
+  return text;
+}
+
+}  // namespace pfx::bench
