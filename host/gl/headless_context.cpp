@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "keep_loaded.hpp"
+
 namespace pfx::app {
 namespace {
 
@@ -31,6 +33,9 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* error) {
     if (error) *error = "cannot create a headless OpenGL 4.5 core context: " + message;
     return nullptr;
   };
+  // What EGL loads from here on (its vendor library, the driver and LLVM) stays loaded after
+  // eglTerminate: keep_loaded.hpp says why.
+  const std::vector<std::string> loaded_before = loaded_shared_objects();
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   if (!client_extensions || !std::strstr(client_extensions, "EGL_MESA_platform_surfaceless"))
     return fail("EGL has no surfaceless platform (EGL_MESA_platform_surfaceless); install libegl-mesa0");
@@ -43,6 +48,7 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* error) {
   if (display == EGL_NO_DISPLAY) return fail(egl_error_text("eglGetPlatformDisplayEXT"));
   EGLint major = 0, minor = 0;
   if (!eglInitialize(display, &major, &minor)) return fail(egl_error_text("eglInitialize"));
+  keep_loaded_since(loaded_before);
   self->display_ = display;
   if (!eglBindAPI(EGL_OPENGL_API)) return fail(egl_error_text("eglBindAPI(EGL_OPENGL_API)"));
 
