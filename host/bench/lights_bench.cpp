@@ -280,7 +280,6 @@ void run_sweep(const LightsOptions& o, const pfx::host::PluginRegistry& registry
     double brute_ms_per_light = -1;  // from the last brute cell that ran at this size
     for (int count : o.counts) {
       const pfx::app::Scene scene = pfx::app::make_light_field_scene(count, o.seed);
-      Stage stage(registry, scene, w, h);
       double brute_total = 0;
       bool brute_estimated = false;
       for (const auto& mode : o.modes) {
@@ -289,6 +288,9 @@ void run_sweep(const LightsOptions& o, const pfx::host::PluginRegistry& registry
         cell.height = h;
         cell.lights = count;
         cell.mode = mode;
+        // A fresh instance per mode: an instance keeps the largest buffers it has needed, so a
+        // shared one would report an earlier mode's storage as this one's.
+        Stage stage(registry, scene, w, h);
         stage.set("mode=" + mode);
         // Brute force is linear in the lights that reach anything: its time per frame is predicted
         // from the last count that ran. Past the limit for one frame it is not run; otherwise it
