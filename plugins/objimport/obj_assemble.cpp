@@ -1,0 +1,179 @@
+// From resolved chunks to the mesh (obj_importer.hpp): vertex data gathered, corners deduplicated,
+// triangles written at offsets precomputed per chunk and material (polygons ear-clipped), the
+// vertex arrays filled, bounds and warnings.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "obj_importer.hpp"
+#include "obj_parallel.hpp"
+#include "obj_triangulate.hpp"
+
+namespace pfx_obj {
+
+// One array per kind of vertex data, chunk arrays copied in at their bases in parallel, each
+// chunk's freed as soon as it is copied.
+void Importer::gather() {
+  uint64_t position_total = totals_[0];
+  all_positions_.resize(3 * position_total);
+  all_texcoords_.resize(2 * size_t{totals_[1]});
+  all_normals_.resize(3 * size_t{totals_[2]});
+  if (any_colors_) all_colors_.resize(3 * position_total);
+  run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned) {
+    ChunkData& chunk = chunks_[c];
+    const ChunkPlan& plan = plans_[c];
+    auto copy = [](BigVector<float>& from, BigVector<float>& to, size_t at) {
+      if (!from.empty()) std::memcpy(&to[at], from.data(), from.size() * sizeof(float));
+      from = {};
+    };
+    if (any_colors_) {
+      if (chunk.colors.empty()) std::fill_n(&all_colors_[3 * size_t{plan.position_base}], chunk.positions.size(), 1.0f);
+      copy(chunk.colors, all_colors_, 3 * size_t{plan.position_base});
+    }
+    copy(chunk.positions, all_positions_, 3 * size_t{plan.position_base});
+    copy(chunk.texcoords, all_texcoords_, 2 * size_t{plan.texcoord_base});
+    copy(chunk.normals, all_normals_, 3 * size_t{plan.normal_base});
+  });
+}
+
+void Importer::deduplicate_corners(StageClock* clock) {
+  std::vector<DedupChunk> inputs(chunks_.size());
+  for (size_t c = 0; c < chunks_.size(); ++c) {
+    inputs[c].corners = chunks_[c].corners.data();
+    inputs[c].corner_count = chunks_[c].corners.size() / 3;
+    inputs[c].faces = chunks_[c].faces.data();
+    inputs[c].face_count = chunks_[c].faces.size();
+    inputs[c].states = face_states(c);
+  }
+  deduplicate(inputs, totals_[0], threads_, &keys_, &corner_vertex_, clock);
+}
+
+void Importer::build_triangles() {
+  const size_t slots = out_->materials.size() + 1;
+  // Sub-meshes in order of their material's first face.
+  std::vector<uint64_t> triangles(slots, 0), first_use(slots, ~uint64_t{0});
+  for (const ChunkFaces& f : faces_)
+    for (size_t s = 0; s < slots; ++s) {
+      triangles[s] += f.triangle_counts[s];
+      first_use[s] = std::min(first_use[s], f.first_use[s]);
+    }
+  std::vector<uint32_t> order;
+  for (uint32_t s = 0; s < slots; ++s)
+    if (triangles[s] > 0) order.push_back(s);
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return first_use[a] < first_use[b]; });
+  std::vector<uint64_t> start(slots, 0);
+  uint64_t index_total = 0;
+  for (uint32_t s : order) {
+    start[s] = index_total;
+    index_total += 3 * triangles[s];
+  }
+  if (index_total > 0xFFFFFFFFull) throw std::length_error(name_ + ": more than 2^32 - 1 triangle indices");
+  for (uint32_t s : order)
+    out_->submeshes.push_back({static_cast<uint32_t>(start[s]), static_cast<uint32_t>(3 * triangles[s]),
+                               s == slots - 1 ? kNoIndex : s});
+  std::vector<std::vector<uint64_t>> write_at(chunks_.size());
+  for (size_t c = 0; c < chunks_.size(); ++c) {
+    write_at[c] = start;
+    for (size_t s = 0; s < slots; ++s) start[s] += 3 * faces_[c].triangle_counts[s];
+  }
+  out_->indices.resize(index_total);
+
+  run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned) {
+    const ChunkData& chunk = chunks_[c];
+    ChunkFaces& result = faces_[c];
+    const uint32_t* vertex = corner_vertex_[c].data();
+    uint32_t* indices = out_->indices.data();
+    std::vector<uint64_t>& at = write_at[c];
+    TriangulationScratch scratch;
+    std::vector<const float*> corner_positions;
+    std::vector<uint32_t> polygon;
+    FaceStates states = face_states(c);
+    uint64_t corner = 0;
+    for (size_t f = 0; f < chunk.faces.size(); ++f) {
+      const uint32_t n = chunk.faces[f].corner_count;
+      states.at_face(f);
+      uint64_t& cursor = at[states.slot()];
+      if (n == 3) {
+        indices[cursor] = vertex[corner];
+        indices[cursor + 1] = vertex[corner + 1];
+        indices[cursor + 2] = vertex[corner + 2];
+        cursor += 3;
+        corner += 3;
+        continue;
+      }
+      corner_positions.resize(n);
+      for (uint32_t k = 0; k < n; ++k)
+        corner_positions[k] = &all_positions_[3 * size_t{chunk.corners[3 * (corner + k)]}];
+      polygon.clear();
+      Triangulation how = triangulate_polygon(corner_positions.data(), n, &polygon, &scratch);
+      for (uint32_t k : polygon) indices[cursor++] = vertex[corner + k];
+      corner += n;
+      if (how != Triangulation::kEarClipped) {
+        const char* why = how == Triangulation::kFanDegenerate      ? "has no area"
+                          : how == Triangulation::kFanTooLarge      ? "is too large for ear clipping (over 4096 corners)"
+                                                                    : "is self-intersecting";
+        ++result.warning_total;
+        if (result.warnings.size() < kMaxWarnings)
+          result.warnings.push_back({plans_[c].first_line + chunk.faces[f].line,
+                                     "f: polygon of " + std::to_string(n) + " corners " + why +
+                                         ": triangulated as a fan"});
+      }
+    }
+  });
+  for (ChunkFaces& f : faces_) {
+    for (Located& w : f.warnings) warnings_.push_back(std::move(w));
+    extra_warnings_ += f.warning_total - f.warnings.size();
+  }
+  chunks_ = {};
+  corner_vertex_ = {};
+  faces_ = {};
+}
+
+void Importer::fill_vertices() {
+  const size_t count = keys_.size();
+  const bool any_texcoords = std::any_of(keys_.begin(), keys_.end(), [](const VertexKey& k) { return k.vt != kNoIndex; });
+  out_->positions.resize(3 * count);
+  out_->normals.resize(3 * count);
+  if (any_texcoords) out_->texcoords.resize(2 * count);
+  if (any_colors_) out_->colors.resize(3 * count);
+  run_parallel(threads_, threads_, [&](size_t w, unsigned) {
+    const size_t lo = count * w / threads_, hi = count * (w + 1) / threads_;
+    for (size_t i = lo; i < hi; ++i) {
+      const VertexKey& key = keys_[i];
+      std::memcpy(&out_->positions[3 * i], &all_positions_[3 * size_t{key.v}], 3 * sizeof(float));
+      if (any_colors_) std::memcpy(&out_->colors[3 * i], &all_colors_[3 * size_t{key.v}], 3 * sizeof(float));
+      if (any_texcoords) {
+        if (key.vt != kNoIndex) std::memcpy(&out_->texcoords[2 * i], &all_texcoords_[2 * size_t{key.vt}], 2 * sizeof(float));
+        else out_->texcoords[2 * i] = out_->texcoords[2 * i + 1] = 0.0f;
+      }
+      if (key.vn != kNoIndex) std::memcpy(&out_->normals[3 * i], &all_normals_[3 * size_t{key.vn}], 3 * sizeof(float));
+    }
+  });
+  all_positions_ = {};
+  all_texcoords_ = {};
+  all_normals_ = {};
+  all_colors_ = {};
+}
+
+void Importer::finish() {
+  keys_ = {};
+  const size_t count = out_->vertex_count();
+  if (count > 0) {
+    float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
+    for (size_t i = 0; i < count; ++i)
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], out_->positions[3 * i + k]);
+        hi[k] = std::max(hi[k], out_->positions[3 * i + k]);
+      }
+    std::copy(lo, lo + 3, out_->bounds_min);
+    std::copy(hi, hi + 3, out_->bounds_max);
+  }
+
+  std::stable_sort(warnings_.begin(), warnings_.end(), [](const Located& a, const Located& b) { return a.line < b.line; });
+  out_->warning_total = warnings_.size() + extra_warnings_;
+  for (size_t i = 0; i < warnings_.size() && i < kMaxWarnings; ++i)
+    out_->warnings.push_back(at(name_, warnings_[i].line, warnings_[i].text));
+}
+
+}  // namespace pfx_obj

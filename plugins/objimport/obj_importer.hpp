@@ -1,0 +1,121 @@
+// The import pipeline's state, shared by the files that run its stages:
+//
+//   obj_import.cpp    the pipeline in order, and parse: chunks in parallel (obj_chunk.cpp)
+//   obj_plan.cpp      plan, serial: the first parse error, where each chunk's lines, elements and
+//                     faces start, the material libraries, the material and smoothing group in
+//                     force at each chunk's start
+//   obj_resolve.cpp   resolve, chunks in parallel: relative indices made final, range checks,
+//                     triangle counts per material; each face's material and normal group
+//   obj_assemble.cpp  gather vertex data, dedup (obj_dedup.cpp), triangles at precomputed offsets,
+//                     vertex arrays, normals (obj_normals.cpp), bounds and warnings
+//
+// Nothing in the output depends on how the text was cut: vertices are numbered by first use,
+// sub-meshes follow the first use of their material, triangles keep file order within one.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+#include "obj_buffer.hpp"
+#include "obj_chunk.hpp"
+#include "obj_dedup.hpp"
+#include "obj_face_states.hpp"
+#include "obj_import.hpp"
+#include "obj_stages.hpp"
+
+namespace pfx_obj {
+
+struct Located {
+  uint64_t line;  // 1-based, in the OBJ file
+  std::string text;
+};
+
+// "FILE:LINE: text"
+inline std::string at(const std::string& name, uint64_t line, const std::string& text) {
+  return name + ":" + std::to_string(line) + ": " + text;
+}
+
+// What the serial plan knows of one chunk before the parallel stages use it.
+struct ChunkPlan {
+  uint64_t first_line = 1;
+  uint32_t position_base = 0, texcoord_base = 0, normal_base = 0;
+  uint64_t face_base = 0, corner_base = 0;
+  uint32_t start_material = kNoIndex;  // material slot in force at the chunk's start
+  uint32_t start_smoothing = kDefaultSmoothing;
+  std::vector<uint32_t> material_slots;  // chunk material name index -> material slot
+  uint32_t start_slot = 0;  // start_material, or the no-material slot (set by the resolve stage)
+};
+
+// What the resolve stage makes of one chunk.
+struct ChunkFaces {
+  std::vector<uint64_t> triangle_counts;  // per material slot
+  std::vector<uint64_t> first_use;        // per material slot: the file ordinal of its first face
+  bool failed = false;
+  Located error;
+  std::vector<Located> warnings;
+  uint64_t warning_total = 0;
+};
+
+class Importer {
+ public:
+  Importer(const std::string& name, const std::string& directory, const ImportOptions& options)
+      : name_(name), directory_(directory), options_(options) {
+    threads_ = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  }
+
+  bool run(std::string_view text, ObjMesh* out, std::string* error);
+
+ private:
+  void report(float fraction) {
+    if (options_.progress) options_.progress(fraction);
+  }
+  void warn(uint64_t line, std::string text) { warnings_.push_back({line, std::move(text)}); }
+
+  // obj_import.cpp
+  void parse(std::string_view text);
+
+  // obj_plan.cpp
+  bool plan(std::string* error);
+  void load_material_library(uint64_t line, const std::string& text);
+  uint32_t material_slot(const std::string& name, uint64_t line);
+
+  // obj_resolve.cpp
+  void resolve_all();
+  void resolve(size_t c, size_t slots);
+  bool first_resolve_error(std::string* error);
+  FaceStates face_states(size_t c) const;
+
+  // obj_assemble.cpp
+  void gather();
+  void deduplicate_corners(StageClock* clock);
+  void build_triangles();
+  void fill_vertices();
+  void finish();
+
+  const std::string& name_;
+  const std::string& directory_;
+  const ImportOptions& options_;
+  unsigned threads_ = 1;
+  ObjMesh* out_ = nullptr;
+  std::vector<std::string_view> texts_;
+  std::vector<ChunkData> chunks_;
+  std::vector<ChunkPlan> plans_;
+  std::vector<ChunkFaces> faces_;
+  uint32_t totals_[3] = {0, 0, 0};
+  bool any_colors_ = false;
+  std::vector<Located> warnings_;
+  uint64_t extra_warnings_ = 0;  // warnings the chunks counted but did not keep
+  std::map<std::string, IgnoredKeyword> ignored_;
+  std::unordered_map<std::string, uint32_t> material_index_;  // material name -> index in out_->materials
+  BigVector<float> all_positions_, all_texcoords_, all_normals_, all_colors_;
+  BigVector<VertexKey> keys_;
+  std::vector<BigVector<uint32_t>> corner_vertex_;
+};
+
+}  // namespace pfx_obj
