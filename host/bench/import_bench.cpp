@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#include "bench_timing.hpp"
 #include "arg_reader.hpp"
 #include "cli_text.hpp"
 #include "import_files.hpp"
@@ -42,12 +43,6 @@ struct ImportRow {
 double load_average() {
   double load[1] = {0};
   return ::getloadavg(load, 1) == 1 ? load[0] : 0;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n == 0 ? 0 : (n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2);
 }
 
 const ImportRow* find_row(const std::vector<ImportRow>& rows, double size, const std::string& loader, unsigned threads) {

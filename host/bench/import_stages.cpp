@@ -3,17 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "bench_timing.hpp"
 #include "obj_import.hpp"
 
 namespace pfx::bench {
 
 namespace {
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n == 0 ? 0 : (n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2);
-}
 
 const StageBreakdown* with_threads(const StageTable& table, unsigned threads) {
   for (const auto& b : table.by_threads)
