@@ -14,27 +14,23 @@ namespace pfx_obj {
 
 // One array per kind of vertex data, chunk arrays copied in at their bases in parallel, each
 // chunk's freed as soon as it is copied.
+// The chunks' vertex arrays move out of the chunks (freed with the triangles' inputs) and are
+// read where they lie: copying them into one array per kind cost a pass and as much fresh memory.
 void Importer::gather() {
-  uint64_t position_total = totals_[0];
-  all_positions_.resize(3 * position_total);
-  all_texcoords_.resize(2 * size_t{totals_[1]});
-  all_normals_.resize(3 * size_t{totals_[2]});
-  if (any_colors_) all_colors_.resize(3 * position_total);
-  run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned) {
+  static const float kWhite[3] = {1.0f, 1.0f, 1.0f};
+  all_colors_ = ChunkedElements(3, kWhite);
+  for (size_t c = 0; c < chunks_.size(); ++c) {
     ChunkData& chunk = chunks_[c];
     const ChunkPlan& plan = plans_[c];
-    auto copy = [](BigVector<float>& from, BigVector<float>& to, size_t at) {
-      if (!from.empty()) std::memcpy(&to[at], from.data(), from.size() * sizeof(float));
-      from = {};
-    };
-    if (any_colors_) {
-      if (chunk.colors.empty()) std::fill_n(&all_colors_[3 * size_t{plan.position_base}], chunk.positions.size(), 1.0f);
-      copy(chunk.colors, all_colors_, 3 * size_t{plan.position_base});
-    }
-    copy(chunk.positions, all_positions_, 3 * size_t{plan.position_base});
-    copy(chunk.texcoords, all_texcoords_, 2 * size_t{plan.texcoord_base});
-    copy(chunk.normals, all_normals_, 3 * size_t{plan.normal_base});
-  });
+    all_positions_.add(plan.position_base, chunk.position_count(), chunk.positions.data());
+    all_texcoords_.add(plan.texcoord_base, static_cast<uint32_t>(chunk.texcoords.size() / 2), chunk.texcoords.data());
+    all_normals_.add(plan.normal_base, static_cast<uint32_t>(chunk.normals.size() / 3), chunk.normals.data());
+    all_colors_.add(plan.position_base, chunk.position_count(), chunk.colors.empty() ? nullptr : chunk.colors.data());
+    vertex_data_.push_back(std::move(chunk.positions));
+    vertex_data_.push_back(std::move(chunk.texcoords));
+    vertex_data_.push_back(std::move(chunk.normals));
+    vertex_data_.push_back(std::move(chunk.colors));
+  }
 }
 
 void Importer::deduplicate_corners(StageClock* clock) {
@@ -88,6 +84,7 @@ void Importer::build_triangles() {
     TriangulationScratch scratch;
     std::vector<const float*> corner_positions;
     std::vector<uint32_t> polygon;
+    ChunkedElements::Reader positions(all_positions_);
     FaceStates states = face_states(c);
     uint64_t corner = 0;
     for (size_t f = 0; f < chunk.faces.size(); ++f) {
@@ -104,7 +101,7 @@ void Importer::build_triangles() {
       }
       corner_positions.resize(n);
       for (uint32_t k = 0; k < n; ++k)
-        corner_positions[k] = &all_positions_[3 * size_t{chunk.corners[3 * (corner + k)]}];
+        corner_positions[k] = positions.at(chunk.corners[3 * (corner + k)]);
       polygon.clear();
       Triangulation how = triangulate_polygon(corner_positions.data(), n, &polygon, &scratch);
       for (uint32_t k : polygon) indices[cursor++] = vertex[corner + k];
@@ -139,21 +136,23 @@ void Importer::fill_vertices() {
   if (any_colors_) out_->colors.resize(3 * count);
   run_parallel(threads_, threads_, [&](size_t w, unsigned) {
     const size_t lo = count * w / threads_, hi = count * (w + 1) / threads_;
+    ChunkedElements::Reader positions(all_positions_), colors(all_colors_), texcoords(all_texcoords_),
+        normals(all_normals_);
     for (size_t i = lo; i < hi; ++i) {
       const VertexKey& key = keys_[i];
-      std::memcpy(&out_->positions[3 * i], &all_positions_[3 * size_t{key.v}], 3 * sizeof(float));
-      if (any_colors_) std::memcpy(&out_->colors[3 * i], &all_colors_[3 * size_t{key.v}], 3 * sizeof(float));
+      std::memcpy(&out_->positions[3 * i], positions.at(key.v), 3 * sizeof(float));
+      if (any_colors_) std::memcpy(&out_->colors[3 * i], colors.at(key.v), 3 * sizeof(float));
       if (any_texcoords) {
-        if (key.vt != kNoIndex) std::memcpy(&out_->texcoords[2 * i], &all_texcoords_[2 * size_t{key.vt}], 2 * sizeof(float));
+        if (key.vt != kNoIndex) std::memcpy(&out_->texcoords[2 * i], texcoords.at(key.vt), 2 * sizeof(float));
         else out_->texcoords[2 * i] = out_->texcoords[2 * i + 1] = 0.0f;
       }
-      if (key.vn != kNoIndex) std::memcpy(&out_->normals[3 * i], &all_normals_[3 * size_t{key.vn}], 3 * sizeof(float));
+      if (key.vn != kNoIndex) std::memcpy(&out_->normals[3 * i], normals.at(key.vn), 3 * sizeof(float));
     }
   });
-  all_positions_ = {};
-  all_texcoords_ = {};
-  all_normals_ = {};
-  all_colors_ = {};
+  all_positions_ = ChunkedElements(3);
+  all_texcoords_ = ChunkedElements(2);
+  all_normals_ = ChunkedElements(3);
+  vertex_data_ = {};
 }
 
 void Importer::finish() {

@@ -25,7 +25,7 @@ bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
   if (!ok) return false;
   clock.time("resolve", true, [&] { resolve_all(); });
   if (!first_resolve_error(error)) return false;
-  clock.time("gather", true, [&] { gather(); });
+  clock.time("gather", false, [&] { gather(); });
   report(0.7f);
   deduplicate_corners(&clock);
   report(0.85f);

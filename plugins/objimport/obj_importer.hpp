@@ -6,8 +6,9 @@
 //                     force at each chunk's start
 //   obj_resolve.cpp   resolve, chunks in parallel: relative indices made final, range checks,
 //                     triangle counts per material; each face's material and normal group
-//   obj_assemble.cpp  gather vertex data, dedup (obj_dedup.cpp), triangles at precomputed offsets,
-//                     vertex arrays, normals (obj_normals.cpp), bounds and warnings
+//   obj_assemble.cpp  vertex data kept where the chunks wrote it, dedup (obj_dedup.cpp),
+//                     triangles at precomputed offsets, vertex arrays, normals
+//                     (obj_normals.cpp), bounds and warnings
 //
 // Nothing in the output depends on how the text was cut: vertices are numbered by first use,
 // sub-meshes follow the first use of their material, triangles keep file order within one.
@@ -24,6 +25,7 @@
 
 #include "obj_buffer.hpp"
 #include "obj_chunk.hpp"
+#include "obj_chunked_elements.hpp"
 #include "obj_dedup.hpp"
 #include "obj_face_states.hpp"
 #include "obj_import.hpp"
@@ -113,7 +115,9 @@ class Importer {
   uint64_t extra_warnings_ = 0;  // warnings the chunks counted but did not keep
   std::map<std::string, IgnoredKeyword> ignored_;
   std::unordered_map<std::string, uint32_t> material_index_;  // material name -> index in out_->materials
-  BigVector<float> all_positions_, all_texcoords_, all_normals_, all_colors_;
+  // Each kind of vertex data, read where the chunks wrote it (their arrays kept in vertex_data_).
+  ChunkedElements all_positions_{3}, all_texcoords_{2}, all_normals_{3}, all_colors_{3};
+  std::vector<BigVector<float>> vertex_data_;
   BigVector<VertexKey> keys_;
   std::vector<BigVector<uint32_t>> corner_vertex_;
 };
