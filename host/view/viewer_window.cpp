@@ -9,6 +9,8 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include "keep_loaded.hpp"
+
 namespace pfx::app {
 namespace {
 
@@ -32,6 +34,9 @@ std::unique_ptr<ViewerWindow> ViewerWindow::create(int width, int height, const 
     if (error) *error = "cannot open a window with an OpenGL 4.5 core context: " + message;
     return nullptr;
   };
+  // GLFW and GLX load the GL driver and X libraries from here on; they stay loaded after
+  // glfwTerminate (keep_loaded.hpp says why: no LeakSanitizer reports from unloaded modules).
+  const std::vector<std::string> loaded_before = loaded_shared_objects();
   glfwSetErrorCallback(remember_glfw_error);
   if (!glfwInit())
     return fail(g_last_glfw_error + " - is there a display? Without one, run under xvfb-run (Debian package xvfb)");
@@ -42,6 +47,7 @@ std::unique_ptr<ViewerWindow> ViewerWindow::create(int width, int height, const 
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   self->window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!self->window_) return fail(g_last_glfw_error);
+  keep_loaded_since(loaded_before);
   glfwMakeContextCurrent(self->window_);
   if (!gladLoadGL(glad_loader) || !GLAD_GL_VERSION_4_5) return fail("could not load the GL 4.5 entry points");
   // No vsync wait: a software renderer is slow enough, and scripted runs should not be paced.
