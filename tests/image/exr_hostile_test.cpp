@@ -7,6 +7,12 @@
 #include <cstdint>
 #include <cstring>
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfTileDescription.h>
+#include <ImfTiledOutputFile.h>
+
 #include "exr_io.hpp"
 #include "test_files.hpp"
 
@@ -252,4 +258,63 @@ TEST_CASE("EXR size limits are configurable", "[image][exr]") {
   exact.max_dimension = 37;
   exact.max_pixels = 37 * 19;
   CHECK(pfx::app::read_exr(path, &img, &error, exact));
+}
+
+TEST_CASE("EXR tiled header declaring huge tiles is refused before OpenEXR allocates them",
+          "[image][exr]") {
+  // fuzz.exr found it: a 4x17039360 tile on a 9x7 image made OpenEXR allocate a row of tiles,
+  // 2.4 GB, when the file was read by scanlines.
+  pfx_test::TempDir dir;
+  // A 9x7 float RGB image of 0.5 in tiles of tile_w x tile_h.
+  auto write_tiled = [&](const std::string& path, int tile_w, int tile_h) {
+    const int w = 9, h = 7;
+    std::vector<float> plane(static_cast<std::size_t>(w) * h, 0.5f);
+    Imf::Header header(w, h);
+    for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    header.setTileDescription(Imf::TileDescription(tile_w, tile_h, Imf::ONE_LEVEL));
+    Imf::FrameBuffer fb;
+    for (const char* name : {"R", "G", "B"})
+      fb.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(plane.data()), sizeof(float), sizeof(float) * w));
+    Imf::TiledOutputFile file(path.c_str(), header);
+    file.setFrameBuffer(fb);
+    file.writeTiles(0, file.numXTiles() - 1, 0, file.numYTiles() - 1);
+  };
+  const std::string valid = dir.file("tiled.exr");
+  write_tiled(valid, 4, 4);
+  Image img;
+  std::string error;
+  REQUIRE(pfx::app::read_exr(valid, &img, &error));
+  CHECK(img.rgba[0] == 0.5f);
+
+  const std::vector<char> bytes = pfx_test::read_bytes(valid);
+  const std::string key = std::string("tiles") + '\0' + "tiledesc" + '\0';
+  const auto it = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
+  REQUIRE(it != bytes.end());
+  const std::size_t at = static_cast<std::size_t>(it - bytes.begin()) + key.size() + 4;  // x size, y size
+  SECTION("a row of tiles too large") {
+    std::vector<char> patched = bytes;
+    put_int32(patched, at + 4, 17039360);
+    const std::string path = dir.file("tall-tiles.exr");
+    pfx_test::write_bytes(path, patched);
+    expect_refused(path, "tile size 4x17039360 exceeds the limit of 67108864 pixels");
+  }
+  SECTION("one tile too large") {
+    std::vector<char> patched = bytes;
+    put_int32(patched, at + 0, 1 << 16);
+    put_int32(patched, at + 4, 1 << 16);
+    const std::string path = dir.file("huge-tiles.exr");
+    pfx_test::write_bytes(path, patched);
+    expect_refused(path, "tile size 65536x65536 exceeds the limit");
+  }
+  SECTION("the limit applies to a row of tiles even when the image fits") {
+    const std::string path = dir.file("tiles-4x16.exr");
+    write_tiled(path, 4, 16);
+    pfx::app::ExrLimits limits;
+    limits.max_pixels = 143;  // the image (63 pixels) fits, a row of tiles (9x16 = 144) does not
+    CHECK_FALSE(pfx::app::read_exr(path, &img, &error, limits));
+    CHECK_THAT(error, Catch::Contains("tile size 4x16 exceeds the limit of 143 pixels"));
+    limits.max_pixels = 144;
+    CHECK(pfx::app::read_exr(path, &img, &error, limits));
+    CHECK(img.rgba[0] == 0.5f);
+  }
 }
