@@ -12,6 +12,7 @@
 
 #include <pfx/host/chain.hpp>
 
+#include "arg_reader.hpp"
 #include "bench_timing.hpp"
 #include "cli_text.hpp"
 #include "gbuffer.hpp"
@@ -82,19 +83,12 @@ bool is_mode(const std::string& name) {
   return name == "brute" || name == "cpu8x4" || name == "tiled" || name == "clustered";
 }
 
-bool parse_options(const std::vector<std::string>& args, LightsOptions* out, std::string* error) {
+bool parse_options(const std::vector<std::string>& list, LightsOptions* out, std::string* error) {
   LightsOptions o;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
+  pfx::app::ArgReader args(list, error);
+  while (args.next()) {
+    const std::string& arg = args.arg();
     std::string text;
-    auto value = [&]() {
-      if (i + 1 >= args.size()) {
-        *error = arg + " needs a value";
-        return false;
-      }
-      text = args[++i];
-      return true;
-    };
     auto whole = [&](double v, double lo, double hi) { return v == std::floor(v) && v >= lo && v <= hi; };
     double number = 0;
     if (arg == "-h" || arg == "--help") o.help = true;
@@ -107,7 +101,7 @@ bool parse_options(const std::vector<std::string>& args, LightsOptions* out, std
       o.error_lights = 400;
       o.cutoffs = {0.1, 0.05};
     } else if (arg == "--sizes") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       o.sizes.clear();
       for (const auto& item : pfx::app::split_list(text)) {
         int w = 0, h = 0;
@@ -115,13 +109,12 @@ bool parse_options(const std::vector<std::string>& args, LightsOptions* out, std
         o.sizes.push_back({w, h});
       }
     } else if (arg == "--counts" || arg == "--cutoffs") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       std::vector<double> numbers;
       for (const auto& item : pfx::app::split_list(text)) {
         if (!parse_number(item, &number) || (arg == "--counts" ? !whole(number, 0, 1e7) : !(number > 0)))
-          return *error = arg + " " + text + ": '" + item + "' is not " +
-                          (arg == "--counts" ? "a light count from 0 to 10000000" : "a positive cutoff"),
-                 false;
+          return args.fail(arg + " " + text + ": '" + item + "' is not " +
+                           (arg == "--counts" ? "a light count from 0 to 10000000" : "a positive cutoff"));
         numbers.push_back(number);
       }
       if (arg == "--counts") {
@@ -131,38 +124,35 @@ bool parse_options(const std::vector<std::string>& args, LightsOptions* out, std
         o.cutoffs = numbers;
       }
     } else if (arg == "--modes") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       o.modes = pfx::app::split_list(text);
       for (const auto& m : o.modes)
         if (!is_mode(m))
-          return *error = "--modes: unknown mode '" + m + "' (brute, cpu8x4, tiled, clustered)", false;
+          return args.fail("--modes: unknown mode '" + m + "' (brute, cpu8x4, tiled, clustered)");
     } else if (arg == "--error-mode") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       o.error_mode = text;
-      if (!is_mode(text)) return *error = "--error-mode: unknown mode '" + text + "' (brute, cpu8x4, tiled, clustered)", false;
+      if (!is_mode(text)) return args.fail("--error-mode: unknown mode '" + text + "' (brute, cpu8x4, tiled, clustered)");
     } else if (arg == "--frames" || arg == "--warmup" || arg == "--error-lights" || arg == "--brute-limit" ||
                arg == "--seed") {
-      if (!value()) return false;
+      if (!args.value(&text)) return false;
       const bool ok = parse_number(text, &number) &&
                       (arg == "--brute-limit" ? number >= 0 : whole(number, arg == "--frames" ? 1 : 0, 1e7));
-      if (!ok) return *error = arg + " " + text + ": not a valid number", false;
+      if (!ok) return args.fail(arg + " " + text + ": not a valid number");
       if (arg == "--frames") o.frames = int(number);
       if (arg == "--warmup") o.warmup = int(number);
       if (arg == "--error-lights") o.error_lights = int(number);
       if (arg == "--brute-limit") o.brute_limit_s = number;
       if (arg == "--seed") o.seed = uint64_t(number);
     } else if (arg == "--error-size") {
-      if (!value() || !pfx::app::parse_frame_size("--error-size", text, &o.error_size.first, &o.error_size.second, error))
+      if (!args.value(&text) || !pfx::app::parse_frame_size("--error-size", text, &o.error_size.first, &o.error_size.second, error))
         return false;
     } else if (arg == "--out") {
-      if (!value()) return false;
-      o.out_dir = text;
+      if (!args.value(&o.out_dir)) return false;
     } else if (arg == "--plugins") {
-      if (!value()) return false;
-      o.plugin_dirs.push_back(text);
+      if (!args.value(&o.plugin_dirs)) return false;
     } else {
-      *error = "unknown option '" + arg + "' (see pfx-bench --lights --help)";
-      return false;
+      return args.fail("unknown option '" + arg + "' (see pfx-bench --lights --help)");
     }
   }
   *out = o;

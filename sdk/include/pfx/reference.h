@@ -44,7 +44,8 @@ typedef struct pfx_reference_factory {
   uint32_t struct_size;
   /* Whether a reference of this kind exists for the effect (the answer never changes). */
   int (*has_reference)(const char* effect_id, pfx_reference_kind kind);
-  /* Any thread, no GL. PFX_UNSUPPORTED when has_reference says no. */
+  /* Any thread, no GL. PFX_UNSUPPORTED when has_reference says no, or when the request asks for
+   * a setting the reference does not model (e.g. a debug view of GPU-only data). */
   pfx_status (*evaluate)(const pfx_reference_request* request);
 } pfx_reference_factory;
 
