@@ -7,6 +7,8 @@
 #include <new>
 #include <string>
 
+#include <pfx/cpp/plugin_entry.hpp>
+
 #include "bloom_gl.hpp"
 #include "bloom_passes.hpp"
 #include "bloom_shaders.hpp"
@@ -51,9 +53,7 @@ pfx_status create(const pfx_host* host, void** out) {
 
 pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !frame || !params || !out || frame->struct_size < sizeof(pfx_frame) ||
-      out->struct_size < sizeof(pfx_declaration))
-    return PFX_INVALID_ARGUMENT;
+  if (!inst || !pfx::plugin::usable_declare_arguments(frame, params, out)) return PFX_INVALID_ARGUMENT;
   const Settings settings = settings_from(params);
   inst->declaration.clear();
   inst->last_mode = settings.mode;

@@ -14,9 +14,7 @@ void log_error(const pfx_host* host, const char* message) { host->log(host->host
 bool load_gl(const pfx_host* host) {
   // The table is private to this library; filling it per instance is cheap and keeps it right if
   // the host's context (and so its entry points) changed since the last instance.
-  if (pfx::gl::load_gl(host)) return true;
-  log_error(host, "bloom: the host's context lacks OpenGL 4.5 core");
-  return false;
+  return pfx::gl::load_gl_or_log(host, "bloom");
 }
 
 GLuint build_program(const pfx_host* host, const char* name, const std::string& fragment_source) {

@@ -14,6 +14,8 @@
 #include <new>
 #include <string>
 
+#include <pfx/cpp/plugin_entry.hpp>
+
 #include "bloom_gl.hpp"
 #include "bloom_shaders.hpp"
 #include "declaration_builder.hpp"
@@ -69,9 +71,7 @@ int buffer_side(uint32_t frame_side, int downscale) {
 
 pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !frame || !params || !out || frame->struct_size < sizeof(pfx_frame) ||
-      out->struct_size < sizeof(pfx_declaration))
-    return PFX_INVALID_ARGUMENT;
+  if (!inst || !pfx::plugin::usable_declare_arguments(frame, params, out)) return PFX_INVALID_ARGUMENT;
   const GlareSettings g = glare_settings_from(params);
   DeclarationBuilder& d = inst->declaration;
   d.clear();

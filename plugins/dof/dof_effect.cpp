@@ -18,6 +18,7 @@
 
 #include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/gl_program.hpp>
+#include <pfx/cpp/plugin_entry.hpp>
 
 #include "dof_camera.hpp"
 #include "dof_gather_plan.hpp"
@@ -113,10 +114,7 @@ void set_inputs(PassInputs* in) {
 
 pfx_status create(const pfx_host* host, void** out) {
   if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
-  if (!pfx::gl::load_gl(host)) {
-    host->log(host->host_data, PFX_LOG_ERROR, "dof: the host's context lacks OpenGL 4.5 core");
-    return PFX_GL_ERROR;
-  }
+  if (!pfx::gl::load_gl_or_log(host, "dof")) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
   inst->host = host;
@@ -152,9 +150,7 @@ pfx_status create(const pfx_host* host, void** out) {
 
 pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !frame || !params || !out || frame->struct_size < sizeof(pfx_frame) ||
-      out->struct_size < sizeof(pfx_declaration))
-    return PFX_INVALID_ARGUMENT;
+  if (!inst || !pfx::plugin::usable_declare_arguments(frame, params, out)) return PFX_INVALID_ARGUMENT;
   const std::string problem = camera_problem(*frame);
   if (!problem.empty()) {
     // declare runs every frame: say it once, not sixty times a second.

@@ -15,6 +15,7 @@
 
 #include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/gl_program.hpp>
+#include <pfx/cpp/plugin_entry.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -93,10 +94,7 @@ void destroy(void* self) {
 
 pfx_status create(const pfx_host* host, void** out) {
   if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
-  if (!pfx::gl::load_gl(host)) {
-    host->log(host->host_data, PFX_LOG_ERROR, "tiledlights: the host's context lacks OpenGL 4.5 core");
-    return PFX_GL_ERROR;
-  }
+  if (!pfx::gl::load_gl_or_log(host, "tiledlights")) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
   inst->host = host;
@@ -156,9 +154,7 @@ bool check_frame(Instance* inst, const pfx_frame& frame, const Settings& setting
 
 pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !frame || !params || !out || frame->struct_size < sizeof(pfx_frame) ||
-      out->struct_size < sizeof(pfx_declaration))
-    return PFX_INVALID_ARGUMENT;
+  if (!inst || !pfx::plugin::usable_declare_arguments(frame, params, out)) return PFX_INVALID_ARGUMENT;
   const Settings settings = settings_from(params);
   Perspective perspective;
   if (!check_frame(inst, *frame, settings, &perspective)) return PFX_INVALID_ARGUMENT;

@@ -31,6 +31,14 @@ inline bool load_gl(const pfx_host* host) {
   return gladLoadGLUserPtr(loader, const_cast<pfx_host*>(host)) && GLAD_GL_VERSION_4_5;
 }
 
+// load_gl, saying in the host's log what went wrong ("<who>: the host's context lacks OpenGL 4.5
+// core") when it fails, as create must before it returns PFX_GL_ERROR.
+inline bool load_gl_or_log(const pfx_host* host, const char* who) {
+  if (load_gl(host)) return true;
+  host->log(host->host_data, PFX_LOG_ERROR, (std::string(who) + ": the host's context lacks OpenGL 4.5 core").c_str());
+  return false;
+}
+
 // Compiles and links one shader per stage. Returns 0 and the compiler's or linker's message in
 // *error on failure.
 inline GLuint build_program(const GLenum* stages, const char* const* sources, int count, std::string* error) {

@@ -34,6 +34,12 @@ inline bool usable_reference_request(const pfx_reference_request* request) {
          request->frame->width > 0 && request->frame->height > 0;
 }
 
+// declare's check of what the host hands it: a frame and a declaration this ABI can read, and the
+// parameter values.
+inline bool usable_declare_arguments(const pfx_frame* frame, const pfx_value* params, const pfx_declaration* out) {
+  return frame && params && out && frame->struct_size >= sizeof(pfx_frame) && out->struct_size >= sizeof(pfx_declaration);
+}
+
 // Runs work (a callable returning pfx_status) and turns an exception into a status: nothing may
 // unwind through the C ABI.
 template <class Work>
