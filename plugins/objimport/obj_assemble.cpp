@@ -1,9 +1,10 @@
-// From resolved chunks to the mesh (obj_importer.hpp): vertex data gathered, corners deduplicated,
-// triangles written at offsets precomputed per chunk and material (polygons ear-clipped), the
-// vertex arrays filled, bounds and warnings.
+// From resolved chunks to the mesh (obj_importer.hpp): vertex data gathered, the index array laid
+// out per chunk and material, corners numbered (obj_dedup.hpp) and written straight there as
+// triangles (polygons ear-clipped), the vertex arrays filled, bounds and warnings.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 
 #include "obj_importer.hpp"
@@ -33,21 +34,10 @@ void Importer::gather() {
   }
 }
 
-void Importer::deduplicate_corners(StageClock* clock) {
-  std::vector<DedupChunk> inputs(chunks_.size());
-  for (size_t c = 0; c < chunks_.size(); ++c) {
-    inputs[c].corners = chunks_[c].corners.data();
-    inputs[c].corner_count = chunks_[c].corners.size() / 3;
-    inputs[c].faces = chunks_[c].faces.data();
-    inputs[c].face_count = chunks_[c].faces.size();
-    inputs[c].states = face_states(c);
-  }
-  deduplicate(inputs, totals_[0], threads_, &keys_, &corner_vertex_, clock);
-}
-
-void Importer::build_triangles() {
+// Sub-meshes in order of their material's first face, and where each chunk's triangles of each
+// material go in the index array: the walk below writes them there directly.
+void Importer::layout_triangles() {
   const size_t slots = out_->materials.size() + 1;
-  // Sub-meshes in order of their material's first face.
   std::vector<uint64_t> triangles(slots, 0), first_use(slots, ~uint64_t{0});
   for (const ChunkFaces& f : faces_)
     for (size_t s = 0; s < slots; ++s) {
@@ -68,63 +58,115 @@ void Importer::build_triangles() {
   for (uint32_t s : order)
     out_->submeshes.push_back({static_cast<uint32_t>(start[s]), static_cast<uint32_t>(3 * triangles[s]),
                                s == slots - 1 ? kNoIndex : s});
-  std::vector<std::vector<uint64_t>> write_at(chunks_.size());
+  write_at_.assign(chunks_.size(), {});
   for (size_t c = 0; c < chunks_.size(); ++c) {
-    write_at[c] = start;
+    write_at_[c] = start;
     for (size_t s = 0; s < slots; ++s) start[s] += 3 * faces_[c].triangle_counts[s];
   }
   out_->indices.resize(index_total);
+}
 
-  run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned) {
-    const ChunkData& chunk = chunks_[c];
-    ChunkFaces& result = faces_[c];
-    const uint32_t* vertex = corner_vertex_[c].data();
-    uint32_t* indices = out_->indices.data();
-    std::vector<uint64_t>& at = write_at[c];
-    TriangulationScratch scratch;
-    std::vector<const float*> corner_positions;
-    std::vector<uint32_t> polygon;
-    ChunkedElements::Reader positions(all_positions_);
-    FaceStates states = face_states(c);
-    uint64_t corner = 0;
-    for (size_t f = 0; f < chunk.faces.size(); ++f) {
-      const uint32_t n = chunk.faces[f].corner_count;
-      states.at_face(f);
-      uint64_t& cursor = at[states.slot()];
-      if (n == 3) {
-        indices[cursor] = vertex[corner];
-        indices[cursor + 1] = vertex[corner + 1];
-        indices[cursor + 2] = vertex[corner + 2];
-        cursor += 3;
-        corner += 3;
-        continue;
-      }
-      corner_positions.resize(n);
-      for (uint32_t k = 0; k < n; ++k)
-        corner_positions[k] = positions.at(chunk.corners[3 * (corner + k)]);
-      polygon.clear();
-      Triangulation how = triangulate_polygon(corner_positions.data(), n, &polygon, &scratch);
-      for (uint32_t k : polygon) indices[cursor++] = vertex[corner + k];
-      corner += n;
-      if (how != Triangulation::kEarClipped) {
-        const char* why = how == Triangulation::kFanDegenerate      ? "has no area"
-                          : how == Triangulation::kFanTooLarge      ? "is too large for ear clipping (over 4096 corners)"
-                                                                    : "is self-intersecting";
-        ++result.warning_total;
-        if (result.warnings.size() < kMaxWarnings)
-          result.warnings.push_back({plans_[c].first_line + chunk.faces[f].line,
-                                     "f: polygon of " + std::to_string(n) + " corners " + why +
-                                         ": triangulated as a fan"});
-      }
+// Chunk c's faces in order: each corner numbered by `numbering`, each face's triangles written at
+// its material's place (polygons ear-clipped). The chunk's corners and faces are freed afterwards.
+void Importer::triangulate_chunk(size_t c, VertexNumbering* numbering) {
+  ChunkData& chunk = chunks_[c];
+  ChunkFaces& result = faces_[c];
+  std::vector<uint64_t> at = write_at_[c];
+  uint32_t* indices = out_->indices.data();
+  const uint32_t* fields = chunk.corners.data();
+  TriangulationScratch scratch;
+  std::vector<const float*> corner_positions;
+  std::vector<uint32_t> corner_ids, polygon;
+  ChunkedElements::Reader positions(all_positions_);
+  FaceStates states = face_states(c);
+  for (size_t f = 0; f < chunk.faces.size(); ++f) {
+    const uint32_t n = chunk.faces[f].corner_count;
+    states.at_face(f);
+    const uint32_t group = states.normal_group();
+    auto vertex = [&](const uint32_t* corner) {
+      return numbering->find_or_insert(VertexKey{corner[0], corner[1], corner[2], corner[2] == kNoIndex ? group : 0});
+    };
+    uint64_t& cursor = at[states.slot()];
+    if (n == 3) {
+      indices[cursor] = vertex(fields);
+      indices[cursor + 1] = vertex(fields + 3);
+      indices[cursor + 2] = vertex(fields + 6);
+      cursor += 3;
+      fields += 9;
+      continue;
     }
-  });
+    corner_ids.resize(n);
+    corner_positions.resize(n);
+    for (uint32_t k = 0; k < n; ++k, fields += 3) {
+      corner_ids[k] = vertex(fields);
+      corner_positions[k] = positions.at(fields[0]);
+    }
+    polygon.clear();
+    Triangulation how = triangulate_polygon(corner_positions.data(), n, &polygon, &scratch);
+    for (uint32_t k : polygon) indices[cursor++] = corner_ids[k];
+    if (how != Triangulation::kEarClipped) {
+      const char* why = how == Triangulation::kFanDegenerate  ? "has no area"
+                        : how == Triangulation::kFanTooLarge  ? "is too large for ear clipping (over 4096 corners)"
+                                                              : "is self-intersecting";
+      ++result.warning_total;
+      if (result.warnings.size() < kMaxWarnings)
+        result.warnings.push_back({plans_[c].first_line + chunk.faces[f].line,
+                                   "f: polygon of " + std::to_string(n) + " corners " + why + ": triangulated as a fan"});
+    }
+  }
+  chunk.corners = {};
+  chunk.faces = {};
+}
+
+void Importer::number_and_triangulate(StageClock* clock) {
+  uint64_t total_corners = 0, largest_chunk = 0;
+  for (const ChunkData& chunk : chunks_) {
+    total_corners += chunk.corners.size() / 3;
+    largest_chunk = std::max<uint64_t>(largest_chunk, chunk.corners.size() / 3);
+  }
+  if (total_corners > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
+
+  if (threads_ <= 1 || chunks_.size() == 1) {
+    // Every corner, in file order, against one numbering: its numbers are final.
+    clock->time("dedup, triangles", false, [&] {
+      VertexNumbering numbering(totals_[0], total_corners);
+      for (size_t c = 0; c < chunks_.size(); ++c) triangulate_chunk(c, &numbering);
+      keys_.swap(numbering.keys());
+    });
+  } else {
+    // Each chunk numbered on its own (each worker reuses one numbering), then the chunks' keys
+    // merged in file order, then each chunk's triangles renumbered where they lie.
+    std::vector<BigVector<VertexKey>> chunk_keys(chunks_.size());
+    clock->time("dedup chunks, triangles", true, [&] {
+      std::vector<std::unique_ptr<VertexNumbering>> worker_numbering(threads_);
+      run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned worker) {
+        if (!worker_numbering[worker]) worker_numbering[worker] = std::make_unique<VertexNumbering>(totals_[0], largest_chunk);
+        VertexNumbering& numbering = *worker_numbering[worker];
+        triangulate_chunk(c, &numbering);
+        chunk_keys[c] = numbering.keys();
+        numbering.clear();
+      });
+    });
+    std::vector<BigVector<uint32_t>> to_file;
+    clock->time("dedup merge", false, [&] { merge_chunk_keys(&chunk_keys, totals_[0], &keys_, &to_file); });
+    clock->time("dedup renumber", true, [&] {
+      run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned) {
+        uint32_t* indices = out_->indices.data();
+        const uint32_t* map = to_file[c].data();
+        for (size_t s = 0; s < write_at_[c].size(); ++s) {
+          const uint64_t begin = write_at_[c][s], end = begin + 3 * faces_[c].triangle_counts[s];
+          for (uint64_t i = begin; i < end; ++i) indices[i] = map[indices[i]];
+        }
+      });
+    });
+  }
   for (ChunkFaces& f : faces_) {
     for (Located& w : f.warnings) warnings_.push_back(std::move(w));
     extra_warnings_ += f.warning_total - f.warnings.size();
   }
   chunks_ = {};
-  corner_vertex_ = {};
   faces_ = {};
+  write_at_ = {};
 }
 
 void Importer::fill_vertices() {

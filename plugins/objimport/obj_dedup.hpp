@@ -1,21 +1,22 @@
 // One vertex per distinct face corner. A corner is keyed by its full 32-bit indices — position,
 // texture coordinate, normal — plus, for a corner without a normal, the smoothing group its
-// normal will be generated for (obj_import.cpp). Nothing is packed, so nothing collides: the
+// normal will be generated for (obj_normals.cpp). Nothing is packed, so nothing collides: the
 // seed's 21-bit packing merged distinct corners past 2^21 elements.
 //
-// With several threads, chunks are deduplicated on their own in parallel, their distinct keys are
-// then merged in file order, and their corners renumbered in parallel. Vertices are numbered in the
-// order of their first corner in the file, whatever the thread count, so the output never depends
-// on it.
+// Vertices are numbered in the order of their first corner in the file, whatever the thread
+// count, so the output never depends on it. With one thread, one VertexNumbering sees every corner
+// in file order and its numbers are final. With several, each chunk is numbered on its own in
+// parallel, the chunks' distinct keys are then merged in file order (merge_chunk_keys) and their
+// numbers mapped to the file's — a chunk lists its keys in the order of their first corner in the
+// chunk, so the merge numbers them exactly as one pass over the file would.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "obj_buffer.hpp"
 #include "obj_chunk.hpp"
-#include "obj_face_states.hpp"
-#include "obj_stages.hpp"
 
 namespace pfx_obj {
 
@@ -23,25 +24,58 @@ struct VertexKey {
   uint32_t v;      // 0-based position index
   uint32_t vt;     // 0-based texture coordinate index, or kNoIndex
   uint32_t vn;     // 0-based normal index, or kNoIndex
-  uint32_t group;  // 0 when vn is given; otherwise which generated normal (see obj_import.cpp)
+  uint32_t group;  // 0 when vn is given; otherwise which generated normal (see obj_face_states.hpp)
   bool operator==(const VertexKey& o) const { return v == o.v && vt == o.vt && vn == o.vn && group == o.group; }
 };
 
-// The corners of one chunk after resolution: three fields per corner (0-based or kNoIndex), the
-// faces, and their states (for each face's normal group).
-struct DedupChunk {
-  const uint32_t* corners = nullptr;  // 3 per corner
-  uint64_t corner_count = 0;
-  const Face* faces = nullptr;
-  uint64_t face_count = 0;
-  FaceStates states;  // each face's normal group
+class VertexTable;
+
+// Distinct keys numbered in order of first insertion. Variants of one position (different vt, vn
+// or normal group) are chained from a table indexed by the position itself, so a lookup reads one
+// slot of a dense array and one key — in files that list vertices in the order faces use them,
+// both are already in cache. A position with more than kMaxChain variants (a pathological file)
+// sends the rest to a hash table, so no lookup walks far.
+class VertexNumbering {
+ public:
+  // position_count: every key's v is below it. max_keys: room reserved for that many keys up
+  // front — address space only (BigVector maps without touching), so the arrays never move.
+  VertexNumbering(uint32_t position_count, uint64_t max_keys);
+  ~VertexNumbering();
+
+  uint32_t find_or_insert(const VertexKey& key) {
+    uint32_t last = kNoIndex, length = 0;
+    for (uint32_t id = head_[key.v]; id != kNoIndex; id = next_[id]) {
+      if (keys_[id] == key) return id;
+      last = id;
+      ++length;
+    }
+    if (length >= kMaxChain) return find_or_insert_overflow(key);
+    const uint32_t id = add(key);
+    (last == kNoIndex ? head_[key.v] : next_[last]) = id;
+    return id;
+  }
+
+  // The distinct keys, in order of first insertion.
+  BigVector<VertexKey>& keys() { return keys_; }
+
+  // Empties the numbering for the next chunk, resetting only the heads its keys used.
+  void clear();
+
+ private:
+  static constexpr uint32_t kMaxChain = 8;
+  uint32_t add(const VertexKey& key);
+  uint32_t find_or_insert_overflow(const VertexKey& key);
+
+  BigVector<uint32_t> head_;   // per position: its first variant, or kNoIndex
+  BigVector<uint32_t> next_;   // per vertex: the next variant of its position
+  BigVector<VertexKey> keys_;  // in order of first insertion
+  std::unique_ptr<VertexTable> overflow_;
 };
 
-// vertices: the distinct keys in order of first use. corner_vertex[c][k]: the vertex of corner k
-// of chunk c.
-// position_count: how many positions the file has (every corner's v is below it).
-// clock: times its phases (with threads: the chunks in parallel, the serial merge, the renumbering).
-void deduplicate(const std::vector<DedupChunk>& chunks, uint32_t position_count, unsigned threads,
-                 BigVector<VertexKey>* vertices, std::vector<BigVector<uint32_t>>* corner_vertex, StageClock* clock);
+// The chunks' distinct keys (each chunk's in order of first use), in file order, numbered as one:
+// to_file[c][i] is the file's number of chunk c's key i, and *file_keys the file's distinct keys in
+// order of first use. Each chunk's keys are freed once merged.
+void merge_chunk_keys(std::vector<BigVector<VertexKey>>* chunk_keys, uint32_t position_count,
+                      BigVector<VertexKey>* file_keys, std::vector<BigVector<uint32_t>>* to_file);
 
 }  // namespace pfx_obj

@@ -27,9 +27,9 @@ bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
   if (!first_resolve_error(error)) return false;
   clock.time("gather", false, [&] { gather(); });
   report(0.7f);
-  deduplicate_corners(&clock);
+  clock.time("layout", false, [&] { layout_triangles(); });
+  number_and_triangulate(&clock);
   report(0.85f);
-  clock.time("triangles", true, [&] { build_triangles(); });
   clock.time("vertices", true, [&] { fill_vertices(); });
   clock.time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, threads_, &out_->normals); });
   clock.time("bounds, warnings", false, [&] { finish(); });
@@ -47,6 +47,7 @@ void Importer::parse(std::string_view text) {
   run_parallel(
       threads_, texts_.size(),
       [&](size_t c, unsigned) {
+        populate_for_reading(texts_[c]);
         parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunks_[c]);
         bytes_done += texts_[c].size();
       },

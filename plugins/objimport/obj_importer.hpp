@@ -6,9 +6,9 @@
 //                     force at each chunk's start
 //   obj_resolve.cpp   resolve, chunks in parallel: relative indices made final, range checks,
 //                     triangle counts per material; each face's material and normal group
-//   obj_assemble.cpp  vertex data kept where the chunks wrote it, dedup (obj_dedup.cpp),
-//                     triangles at precomputed offsets, vertex arrays, normals
-//                     (obj_normals.cpp), bounds and warnings
+//   obj_assemble.cpp  vertex data kept where the chunks wrote it, the index array laid out, each
+//                     corner numbered (obj_dedup.cpp) and written there in the same walk,
+//                     vertex arrays, normals (obj_normals.cpp), bounds and warnings
 //
 // Nothing in the output depends on how the text was cut: vertices are numbered by first use,
 // sub-meshes follow the first use of their material, triangles keep file order within one.
@@ -95,8 +95,9 @@ class Importer {
 
   // obj_assemble.cpp
   void gather();
-  void deduplicate_corners(StageClock* clock);
-  void build_triangles();
+  void layout_triangles();
+  void number_and_triangulate(StageClock* clock);
+  void triangulate_chunk(size_t c, VertexNumbering* numbering);
   void fill_vertices();
   void finish();
 
@@ -119,7 +120,7 @@ class Importer {
   ChunkedElements all_positions_{3}, all_texcoords_{2}, all_normals_{3}, all_colors_{3};
   std::vector<BigVector<float>> vertex_data_;
   BigVector<VertexKey> keys_;
-  std::vector<BigVector<uint32_t>> corner_vertex_;
+  std::vector<std::vector<uint64_t>> write_at_;  // per chunk and material slot: its first index
 };
 
 }  // namespace pfx_obj
