@@ -55,7 +55,7 @@ std::string markdown(const std::vector<ImportRow>& rows, const std::vector<Stage
                      const ImportBenchOptions& options) {
   std::string text = "## OBJ import (pfx-bench --import)\n\n";
   char line[512];
-  std::snprintf(line, sizeof line, "Median of %d runs at 100 MB and below, 1 run above; each load in a fresh child process; "
+  std::snprintf(line, sizeof line, "Median of %d runs, taken in rounds (one load of every row per round); each load in a fresh child process; "
                 "peak = resident memory the load added (mapped file pages included); CPU s = user + system time of "
                 "all the load's threads (unlike wall time, it does not count waiting for a core on a shared "
                 "machine). %u hardware threads; load average %.1f at the start.\n\n",
@@ -161,14 +161,14 @@ std::string import_bench_usage() {
       "generated at each size (a height field with v, vt, vn and v/vt/vn triangles): MB/s (file bytes\n"
       "over the median wall time of a load) and the peak memory a load adds, with pfx at each thread\n"
       "count (the others are single-threaded). Each load runs in a forked child process after the\n"
-      "file was read once into the page cache. Then pfx's stages (parse, dedup, ...: wall and CPU time,\n"
+      "file was read once into the page cache and written out to disk. Then pfx's stages (parse, dedup, ...: wall and CPU time,\n"
       "which run on every thread and which on one) at each thread count, and the speed-up they predict\n"
       "on idle cores. Writes DIR/import.json and DIR/import.md.\n"
       "\n"
       "  --sizes LIST      file sizes in MB (default 10,100,500)\n"
       "  --threads LIST    pfx thread counts (default 1,2)\n"
       "  --loaders LIST    pfx,tinyobjloader,assimp (default: all three)\n"
-      "  --runs N          loads per row at 100 MB and below (default 3; larger files: 1)\n"
+      "  --runs N          loads per row, taken in rounds of one load per row (default 5)\n"
       "  --dir DIR         where to generate the files (default: a new folder under /tmp, removed\n"
       "                    after the run unless --keep); existing complete files there are reused\n"
       "  --out DIR         output folder (default out/bench)\n"
@@ -265,9 +265,12 @@ int import_bench_main(const std::vector<std::string>& args) {
       code = 1;
       break;
     }
-    const int runs = size <= 100 ? options.runs : 1;
+    // Every row's loads in rounds — one load of each row per round — so that whatever changes on
+    // the machine during the run (memory handed back to the hypervisor, other work) falls on every
+    // loader alike instead of on whichever row came first.
+    const int runs = options.runs;
+    const size_t first_row = rows.size();
     for (const auto& loader : options.loaders) {
-      const bool available = std::find(built.begin(), built.end(), loader) != built.end();
       const std::vector<unsigned> thread_counts =
           loader_is_multithreaded(loader) ? options.threads : std::vector<unsigned>{1};
       for (unsigned threads : thread_counts) {
@@ -276,23 +279,35 @@ int import_bench_main(const std::vector<std::string>& args) {
         row.bytes = file.bytes;
         row.loader = loader;
         row.threads = threads;
-        std::vector<double> seconds, cpu_seconds;
-        if (!available) row.counts.error = "not built into this pfx-bench (package missing at configure time)";
-        for (int r = 0; available && r < runs; ++r) {
-          std::fprintf(stderr, "pfx-bench: %s, %u thread(s), %.0f MB, run %d of %d\n", loader.c_str(), threads,
-                       file.bytes / 1e6, r + 1, runs);
-          LoadMeasure m = measure_in_child([&] { return load_with(loader, file.path, threads, registry); });
-          row.counts = m.counts;
-          if (!m.counts.ok) break;
-          seconds.push_back(m.seconds);
-          cpu_seconds.push_back(m.cpu_seconds);
-          row.peak_bytes = std::max(row.peak_bytes, m.peak_bytes);
-          ++row.runs;
-        }
-        row.median_seconds = median(seconds);
-        row.median_cpu_seconds = median(cpu_seconds);
+        if (std::find(built.begin(), built.end(), loader) == built.end())
+          row.counts.error = "not built into this pfx-bench (package missing at configure time)";
         rows.push_back(row);
       }
+    }
+    std::vector<std::vector<double>> seconds(rows.size()), cpu_seconds(rows.size());
+    std::vector<bool> stopped(rows.size(), false);  // not built, or a load failed
+    for (size_t i = first_row; i < rows.size(); ++i) stopped[i] = !rows[i].counts.error.empty();
+    for (int r = 0; r < runs; ++r) {
+      for (size_t i = first_row; i < rows.size(); ++i) {
+        ImportRow& row = rows[i];
+        if (stopped[i]) continue;
+        std::fprintf(stderr, "pfx-bench: round %d of %d, %s, %u thread(s), %.0f MB\n", r + 1, runs, row.loader.c_str(),
+                     row.threads, file.bytes / 1e6);
+        LoadMeasure m = measure_in_child([&] { return load_with(row.loader, file.path, row.threads, registry); });
+        row.counts = m.counts;
+        if (!m.counts.ok) {
+          stopped[i] = true;
+          continue;
+        }
+        seconds[i].push_back(m.seconds);
+        cpu_seconds[i].push_back(m.cpu_seconds);
+        row.peak_bytes = std::max(row.peak_bytes, m.peak_bytes);
+        ++row.runs;
+      }
+    }
+    for (size_t i = first_row; i < rows.size(); ++i) {
+      rows[i].median_seconds = median(seconds[i]);
+      rows[i].median_cpu_seconds = median(cpu_seconds[i]);
     }
     if (std::find(options.loaders.begin(), options.loaders.end(), "pfx") != options.loaders.end()) {
       StageTable table;

@@ -14,7 +14,7 @@ struct ImportBenchOptions {
   std::vector<double> sizes_mb = {10, 100, 500};
   std::vector<unsigned> threads = {1, 2};
   std::vector<std::string> loaders = {"pfx", "tinyobjloader", "assimp"};
-  int runs = 3;                  // per row at 100 MB and below; 1 above
+  int runs = 5;                  // loads per row, in rounds of one load per row
   std::string work_dir;          // where the generated files go (default: a fresh folder in /tmp)
   bool keep_files = false;
   std::string out_dir = "out/bench";

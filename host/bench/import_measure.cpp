@@ -106,6 +106,9 @@ bool warm_file(const std::string& path, std::string* error) {
   static char buffer[1 << 20];
   while (::read(fd, buffer, sizeof buffer) > 0) {
   }
+  // A file just generated is still being written back to disk: finish that now, so it does not
+  // run during (and slow) the first loads.
+  ::fdatasync(fd);
   ::close(fd);
   return true;
 }

@@ -21,7 +21,8 @@ struct LoadMeasure {
 
 LoadMeasure measure_in_child(const std::function<LoadCounts()>& load);
 
-// Reads the whole file once so every loader finds it in the page cache.
+// Reads the whole file once so every loader finds it in the page cache, and waits until it is on
+// disk.
 bool warm_file(const std::string& path, std::string* error);
 
 }  // namespace pfx::bench

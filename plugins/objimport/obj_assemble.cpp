@@ -67,7 +67,7 @@ void Importer::layout_triangles() {
 }
 
 // Chunk c's faces in order: each corner numbered by `numbering`, each face's triangles written at
-// its material's place (polygons ear-clipped). The chunk's corners and faces are freed afterwards.
+// its material's place (polygons ear-clipped).
 void Importer::triangulate_chunk(size_t c, VertexNumbering* numbering) {
   ChunkData& chunk = chunks_[c];
   ChunkFaces& result = faces_[c];
@@ -114,8 +114,14 @@ void Importer::triangulate_chunk(size_t c, VertexNumbering* numbering) {
                                    "f: polygon of " + std::to_string(n) + " corners " + why + ": triangulated as a fan"});
     }
   }
-  chunk.corners = {};
-  chunk.faces = {};
+}
+
+// A chunk's corners and faces once walked. Freed by the calling thread only while no other thread
+// runs: unmapping memory while another thread of the process runs interrupts that thread's core to
+// flush its address translations, which in a virtual machine costs far more than the unmapping.
+void Importer::free_corners(size_t c) {
+  chunks_[c].corners = {};
+  chunks_[c].faces = {};
 }
 
 void Importer::number_and_triangulate(StageClock* clock) {
@@ -130,7 +136,10 @@ void Importer::number_and_triangulate(StageClock* clock) {
     // Every corner, in file order, against one numbering: its numbers are final.
     clock->time("dedup, triangles", false, [&] {
       VertexNumbering numbering(totals_[0], total_corners);
-      for (size_t c = 0; c < chunks_.size(); ++c) triangulate_chunk(c, &numbering);
+      for (size_t c = 0; c < chunks_.size(); ++c) {
+        triangulate_chunk(c, &numbering);
+        free_corners(c);
+      }
       keys_.swap(numbering.keys());
     });
   } else {
@@ -147,6 +156,7 @@ void Importer::number_and_triangulate(StageClock* clock) {
         numbering.clear();
       });
     });
+    for (size_t c = 0; c < chunks_.size(); ++c) free_corners(c);
     std::vector<BigVector<uint32_t>> to_file;
     clock->time("dedup merge", false, [&] { merge_chunk_keys(&chunk_keys, totals_[0], &keys_, &to_file); });
     clock->time("dedup renumber", true, [&] {

@@ -1,7 +1,16 @@
 // The importer's large working arrays: std::vector with an allocator that (1) maps big buffers
-// directly with transparent huge pages requested, so filling hundreds of megabytes takes one page
-// fault per 2 MB instead of one per 4 KB, and (2) leaves elements uninitialised on resize() — every
-// element is written before it is read, and zero-filling first only doubled the memory traffic.
+// directly, so an array reserved for the most a chunk could hold costs address space only — the
+// pages never written are never touched — and unmaps them as a whole when freed, and (2) leaves
+// elements uninitialised on resize(): every element is written before it is read, and zero-filling
+// first only doubled the memory traffic.
+//
+// No transparent huge pages: a huge page is a free 2 MB block, and on virtual machines whose guest
+// hands free memory back to the host (virtio-balloon free page reporting, as on the machines this
+// project is measured on) such a block has usually been handed back, so touching it makes the host
+// fault it in again. Measured there: touching 400 MB took 0.02 s with huge pages just freed by the
+// previous process, 1.0-1.3 s with huge pages after 3 s idle, and 0.15-0.20 s with 4 KB pages in
+// either case; pfx-import on a 99 MB file after 3 s idle took 310 ms with huge pages, 140 ms
+// without (docs/importers/obj.md).
 #pragma once
 
 #include <sys/mman.h>
@@ -29,7 +38,6 @@ struct BigBufferAllocator {
     if (bytes < kMapThreshold) return static_cast<T*>(::operator new(bytes));
     void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
-    ::madvise(p, bytes, MADV_HUGEPAGE);  // advice only: without THP it is ignored
     return static_cast<T*>(p);
   }
 

@@ -18,8 +18,9 @@
 namespace pfx_obj {
 
 struct ObjMesh {
-  // BigVector: sized without zero-filling first (finish() writes every element) and mapped with
-  // huge pages when large.
+  // BigVector: sized without zero-filling first (every element is written before the import
+  // returns), mapped
+  // directly when large.
   BigVector<float> positions;  // 3 per vertex
   BigVector<float> normals;    // 3 per vertex
   BigVector<float> texcoords;  // 2 per vertex, or empty when no corner has one

@@ -98,6 +98,7 @@ class Importer {
   void layout_triangles();
   void number_and_triangulate(StageClock* clock);
   void triangulate_chunk(size_t c, VertexNumbering* numbering);
+  void free_corners(size_t c);
   void fill_vertices();
   void finish();
 
