@@ -19,8 +19,7 @@ namespace pfx_obj {
 
 struct ObjMesh {
   // BigVector: sized without zero-filling first (every element is written before the import
-  // returns), mapped
-  // directly when large.
+  // returns), mapped directly when large.
   BigVector<float> positions;  // 3 per vertex
   BigVector<float> normals;    // 3 per vertex
   BigVector<float> texcoords;  // 2 per vertex, or empty when no corner has one
