@@ -116,12 +116,13 @@ void Importer::triangulate_chunk(size_t c, VertexNumbering* numbering) {
   }
 }
 
-// A chunk's corners and faces once walked. Freed by the calling thread only while no other thread
+// A chunk's corners and faces once walked, their pages kept for the arrays made next (the vertex
+// arrays; with threads, the merge's too). Freed by the calling thread only while no other thread
 // runs: unmapping memory while another thread of the process runs interrupts that thread's core to
 // flush its address translations, which in a virtual machine costs far more than the unmapping.
 void Importer::free_corners(size_t c) {
-  chunks_[c].corners = {};
-  chunks_[c].faces = {};
+  keep_for_reuse(&chunks_[c].corners);
+  keep_for_reuse(&chunks_[c].faces);
 }
 
 void Importer::number_and_triangulate(StageClock* clock) {

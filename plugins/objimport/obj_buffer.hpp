@@ -21,6 +21,8 @@
 #include <utility>
 #include <vector>
 
+#include "obj_spare_mappings.hpp"
+
 namespace pfx_obj {
 
 template <typename T>
@@ -36,6 +38,7 @@ struct BigBufferAllocator {
   T* allocate(size_t n) {
     const size_t bytes = n * sizeof(T);
     if (bytes < kMapThreshold) return static_cast<T*>(::operator new(bytes));
+    if (void* spare = take_spare_mapping(bytes)) return static_cast<T*>(spare);
     void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
     return static_cast<T*>(p);
@@ -44,8 +47,13 @@ struct BigBufferAllocator {
   void deallocate(T* p, size_t n) {
     const size_t bytes = n * sizeof(T);
     if (bytes < kMapThreshold) ::operator delete(p);
+    else if (keep_written_ != kNotKept) keep_spare_mapping(p, bytes, keep_written_);
     else ::munmap(p, bytes);
   }
+
+  // Set by keep_for_reuse around the one deallocation it makes.
+  static constexpr size_t kNotKept = ~size_t{0};
+  static inline thread_local size_t keep_written_ = kNotKept;
 
   // Default-initialisation: nothing at all for the plain numbers and structs stored here.
   template <typename U>
@@ -65,6 +73,17 @@ struct BigBufferAllocator {
 
 template <typename T>
 using BigVector = std::vector<T, BigBufferAllocator<T>>;
+
+// Frees the array, keeping its mapping (with its written pages) for the import's next arrays
+// (obj_spare_mappings.hpp) instead of unmapping it.
+template <typename T>
+void keep_for_reuse(BigVector<T>* array) {
+  BigVector<T> freed;
+  freed.swap(*array);
+  BigBufferAllocator<T>::keep_written_ = freed.size() * sizeof(T);
+  freed = BigVector<T>();  // the one deallocation, of the kept array
+  BigBufferAllocator<T>::keep_written_ = BigBufferAllocator<T>::kNotKept;
+}
 
 // Element-wise equality with a plain vector (tests compare results with literals).
 template <typename T>

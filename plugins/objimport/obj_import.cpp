@@ -56,6 +56,10 @@ void Importer::parse(std::string_view text) {
 
 bool import_obj_text(std::string_view text, const std::string& name, const std::string& directory,
                      const ImportOptions& options, ObjMesh* out, std::string* error) {
+  // Whatever way the import ends, the pages it kept for reuse go back (obj_spare_mappings.hpp).
+  struct ReleaseSpares {
+    ~ReleaseSpares() { release_spare_mappings(); }
+  } release_spares;
   try {
     return Importer(name, directory, options).run(text, out, error);
   } catch (const std::bad_alloc&) {
