@@ -55,7 +55,7 @@ std::string markdown(const std::vector<ImportRow>& rows, const std::vector<Stage
                      const ImportBenchOptions& options) {
   std::string text = "## OBJ import (pfx-bench --import)\n\n";
   char line[512];
-  std::snprintf(line, sizeof line, "Median of %d runs, taken in rounds (one load of every row per round); each load in a fresh child process; "
+  std::snprintf(line, sizeof line, "Median of %d runs, taken in rounds (one load of every row per round); each load in a new process; "
                 "peak = resident memory the load added (mapped file pages included); CPU s = user + system time of "
                 "all the load's threads (unlike wall time, it does not count waiting for a core on a shared "
                 "machine). %u hardware threads; load average %.1f at the start.\n\n",
@@ -160,10 +160,12 @@ std::string import_bench_usage() {
       "Measures the OBJ importer plugin against tinyobjloader and assimp, in one run, on OBJ files\n"
       "generated at each size (a height field with v, vt, vn and v/vt/vn triangles): MB/s (file bytes\n"
       "over the median wall time of a load) and the peak memory a load adds, with pfx at each thread\n"
-      "count (the others are single-threaded). Each load runs in a forked child process after the\n"
-      "file was read once into the page cache and written out to disk. Then pfx's stages (parse, dedup, ...: wall and CPU time,\n"
-      "which run on every thread and which on one) at each thread count, and the speed-up they predict\n"
-      "on idle cores. Writes DIR/import.json and DIR/import.md.\n"
+      "count (the others are single-threaded). The file is read once into the page cache and\n"
+      "written out to disk first; then each load runs in a new process (pfx-bench runs itself with\n"
+      "the internal option --import-load), in rounds of one load per row. Then pfx's stages (parse,\n"
+      "dedup, ...: wall and CPU time, which run on every thread and which on one) at each thread\n"
+      "count, in this process, and the speed-up they predict on idle cores.\n"
+      "Writes DIR/import.json and DIR/import.md.\n"
       "\n"
       "  --sizes LIST      file sizes in MB (default 10,100,500)\n"
       "  --threads LIST    pfx thread counts (default 1,2)\n"
@@ -293,7 +295,7 @@ int import_bench_main(const std::vector<std::string>& args) {
         if (stopped[i]) continue;
         std::fprintf(stderr, "pfx-bench: round %d of %d, %s, %u thread(s), %.0f MB\n", r + 1, runs, row.loader.c_str(),
                      row.threads, file.bytes / 1e6);
-        LoadMeasure m = measure_in_child([&] { return load_with(row.loader, file.path, row.threads, registry); });
+        LoadMeasure m = measure_in_new_process(row.loader, file.path, row.threads, options.plugin_dirs);
         row.counts = m.counts;
         if (!m.counts.ok) {
           stopped[i] = true;

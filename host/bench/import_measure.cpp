@@ -7,9 +7,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+
+#include "plugin_directory.hpp"
 
 namespace pfx::bench {
 
@@ -41,8 +44,18 @@ void write_all(int fd, const std::string& text) {
 
 }  // namespace
 
-LoadMeasure measure_in_child(const std::function<LoadCounts()>& load) {
+LoadMeasure measure_in_new_process(const std::string& loader, const std::string& path, unsigned threads,
+                                   const std::vector<std::string>& plugin_dirs) {
   LoadMeasure measure;
+  std::vector<std::string> args = {"pfx-bench", "--import-load", loader, path, std::to_string(threads)};
+  for (const auto& dir : plugin_dirs) {
+    args.push_back("--plugins");
+    args.push_back(dir);
+  }
+  std::vector<char*> argv;
+  for (auto& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+
   int fds[2];
   if (::pipe(fds) != 0) {
     measure.counts.error = std::string("pipe: ") + std::strerror(errno);
@@ -58,23 +71,10 @@ LoadMeasure measure_in_child(const std::function<LoadCounts()>& load) {
   }
   if (child == 0) {
     ::close(fds[0]);
-    {
-      std::ofstream clear("/proc/self/clear_refs");
-      clear << "5";  // resets VmHWM to the current resident size
-    }
-    const uint64_t before = status_kib("VmRSS:");
-    const double cpu_start = cpu_seconds_so_far();
-    const auto start = std::chrono::steady_clock::now();
-    LoadCounts counts = load();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double cpu = cpu_seconds_so_far() - cpu_start;
-    const uint64_t peak = status_kib("VmHWM:");
-    std::ostringstream out;
-    out << (counts.ok ? 1 : 0) << ' ' << seconds << ' ' << cpu << ' ' << (peak > before ? (peak - before) * 1024 : 0) << ' '
-        << counts.vertices << ' ' << counts.triangles << '\n'
-        << counts.error;
-    write_all(fds[1], out.str());
-    ::_exit(0);
+    if (::dup2(fds[1], STDOUT_FILENO) < 0) ::_exit(127);
+    ::close(fds[1]);
+    ::execv("/proc/self/exe", argv.data());
+    ::_exit(127);
   }
   ::close(fds[1]);
   std::string text;
@@ -88,13 +88,57 @@ LoadMeasure measure_in_child(const std::function<LoadCounts()>& load) {
   int ok = 0;
   if (!(in >> ok >> measure.seconds >> measure.cpu_seconds >> measure.peak_bytes >> measure.counts.vertices >> measure.counts.triangles)) {
     measure.counts.error = WIFSIGNALED(status) ? "the loader died (signal " + std::to_string(WTERMSIG(status)) + ")"
-                                               : "the loader's process reported nothing";
+                           : WIFEXITED(status) && WEXITSTATUS(status) == 127 ? "could not run pfx-bench --import-load"
+                                                                             : "the loader's process reported nothing";
     return measure;
   }
   measure.counts.ok = ok == 1;
   in.get();
   std::getline(in, measure.counts.error, '\0');
   return measure;
+}
+
+int import_load_main(const std::vector<std::string>& args) {
+  // LOADER FILE THREADS [--plugins DIR]...
+  unsigned threads = 0;
+  std::vector<std::string> plugin_dirs;
+  bool ok = args.size() >= 3 && (args.size() - 3) % 2 == 0;
+  if (ok) {
+    char* end = nullptr;
+    const long n = std::strtol(args[2].c_str(), &end, 10);
+    ok = *end == 0 && n >= 1 && n <= 1024;
+    threads = static_cast<unsigned>(n);
+  }
+  for (size_t i = 3; ok && i + 1 < args.size(); i += 2) {
+    ok = args[i] == "--plugins";
+    plugin_dirs.push_back(args[i + 1]);
+  }
+  if (!ok) {
+    std::fprintf(stderr, "pfx-bench: --import-load LOADER FILE THREADS [--plugins DIR]...: an internal mode of "
+                         "pfx-bench --import, which runs it once per load\n");
+    return 2;
+  }
+  pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
+                                     pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
+  if (args[0] == "pfx") pfx::app::load_plugins(registry, plugin_dirs);  // failures show as a failed load
+
+  {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";  // resets VmHWM to the current resident size
+  }
+  const uint64_t before = status_kib("VmRSS:");
+  const double cpu_start = cpu_seconds_so_far();
+  const auto start = std::chrono::steady_clock::now();
+  const LoadCounts counts = load_with(args[0], args[1], threads, registry);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu = cpu_seconds_so_far() - cpu_start;
+  const uint64_t peak = status_kib("VmHWM:");
+  std::ostringstream out;
+  out << (counts.ok ? 1 : 0) << ' ' << seconds << ' ' << cpu << ' ' << (peak > before ? (peak - before) * 1024 : 0) << ' '
+      << counts.vertices << ' ' << counts.triangles << '\n'
+      << counts.error;
+  write_all(STDOUT_FILENO, out.str());
+  return 0;
 }
 
 bool warm_file(const std::string& path, std::string* error) {

@@ -12,6 +12,7 @@
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
 #include "import_bench.hpp"
+#include "import_measure.hpp"
 #include "lights_bench.hpp"
 #include "headless_context.hpp"
 #include "plugin_directory.hpp"
@@ -55,6 +56,8 @@ std::vector<SuiteRow> select_rows(const std::vector<SuiteRow>& suite, const pfx:
 int main(int argc, char** argv) {
   // The OBJ import benchmark is a mode of its own (no GL): import_bench.cpp.
   if (argc > 1 && std::string(argv[1]) == "--import") return import_bench_main(std::vector<std::string>(argv + 2, argv + argc));
+  // One load of that benchmark, in a process of its own (import_measure.hpp).
+  if (argc > 1 && std::string(argv[1]) == "--import-load") return import_load_main(std::vector<std::string>(argv + 2, argv + argc));
   // The tiledlights benchmark against the light count renders scenes of its own: lights_bench.cpp.
   if (argc > 1 && std::string(argv[1]) == "--lights") return lights_bench_main(std::vector<std::string>(argv + 2, argv + argc));
   BenchOptions options;
