@@ -38,9 +38,17 @@ bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
 }
 
 void Importer::parse(std::string_view text) {
-  size_t chunk_bytes = options_.chunk_bytes;
-  if (chunk_bytes == 0) chunk_bytes = std::clamp<size_t>(text.size() / (size_t{threads_} * 8), 1 << 20, 32 << 20);
-  texts_ = split_at_line_ends(text, std::max<size_t>(1, (text.size() + chunk_bytes - 1) / chunk_bytes));
+  size_t chunks;
+  if (options_.chunk_bytes > 0) {
+    chunks = (text.size() + options_.chunk_bytes - 1) / options_.chunk_bytes;
+  } else {
+    // About eight chunks per thread of 1 to 32 MB each, their count a multiple of the thread count
+    // so that the threads, taking equal chunks in turn, finish together.
+    const size_t chunk_bytes = std::clamp<size_t>(text.size() / (size_t{threads_} * 8), 1 << 20, 32 << 20);
+    chunks = (text.size() + chunk_bytes - 1) / chunk_bytes;
+    if (chunks > 1) chunks = (chunks + threads_ - 1) / threads_ * threads_;
+  }
+  texts_ = split_at_line_ends(text, std::max<size_t>(1, chunks));
   chunks_.assign(texts_.size(), ChunkData{});
   std::atomic<size_t> bytes_done{0};
   const double total = std::max<size_t>(1, text.size());

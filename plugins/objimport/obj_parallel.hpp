@@ -7,8 +7,10 @@
 #include <exception>
 #include <functional>
 #include <mutex>
-#include <thread>
+#include <memory>
 #include <vector>
+
+#include "obj_helper_thread.hpp"
 
 namespace pfx_obj {
 
@@ -38,10 +40,11 @@ inline void run_parallel(unsigned threads, size_t count, const std::function<voi
       if (worker == 0 && after_own_job) after_own_job();
     }
   };
-  std::vector<std::thread> helpers;
-  for (unsigned w = 1; w < threads; ++w) helpers.emplace_back(work, w);
-  work(0);
-  for (auto& helper : helpers) helper.join();
+  {
+    std::vector<std::unique_ptr<HelperThread>> helpers;
+    for (unsigned w = 1; w < threads; ++w) helpers.push_back(std::make_unique<HelperThread>(w, [&work, w] { work(w); }));
+    work(0);
+  }  // the helpers are joined here
   if (failure) std::rethrow_exception(failure);
 }
 
