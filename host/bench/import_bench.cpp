@@ -164,7 +164,7 @@ std::string import_bench_usage() {
       "written out to disk first; then each load runs in a new process (pfx-bench runs itself with\n"
       "the internal option --import-load), in rounds of one load per row. Then pfx's stages (parse,\n"
       "dedup, ...: wall and CPU time, which run on every thread and which on one) at each thread\n"
-      "count, in this process, and the speed-up they predict on idle cores.\n"
+      "count, each run in a new process too, and the speed-up they predict on idle cores.\n"
       "Writes DIR/import.json and DIR/import.md.\n"
       "\n"
       "  --sizes LIST      file sizes in MB (default 10,100,500)\n"

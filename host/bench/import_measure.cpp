@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "import_stages.hpp"
 #include "plugin_directory.hpp"
 
 namespace pfx::bench {
@@ -44,30 +45,19 @@ void write_all(int fd, const std::string& text) {
 
 }  // namespace
 
-LoadMeasure measure_in_new_process(const std::string& loader, const std::string& path, unsigned threads,
-                                   const std::vector<std::string>& plugin_dirs) {
-  LoadMeasure measure;
-  std::vector<std::string> args = {"pfx-bench", "--import-load", loader, path, std::to_string(threads)};
-  for (const auto& dir : plugin_dirs) {
-    args.push_back("--plugins");
-    args.push_back(dir);
-  }
+bool run_self(const std::vector<std::string>& args, std::string* output, int* status) {
+  std::vector<std::string> copy = args;
   std::vector<char*> argv;
-  for (auto& arg : args) argv.push_back(arg.data());
+  for (auto& arg : copy) argv.push_back(arg.data());
   argv.push_back(nullptr);
-
   int fds[2];
-  if (::pipe(fds) != 0) {
-    measure.counts.error = std::string("pipe: ") + std::strerror(errno);
-    return measure;
-  }
+  if (::pipe(fds) != 0) return false;
   std::fflush(nullptr);
   const pid_t child = ::fork();
   if (child < 0) {
-    measure.counts.error = std::string("fork: ") + std::strerror(errno);
     ::close(fds[0]);
     ::close(fds[1]);
-    return measure;
+    return false;
   }
   if (child == 0) {
     ::close(fds[0]);
@@ -77,13 +67,29 @@ LoadMeasure measure_in_new_process(const std::string& loader, const std::string&
     ::_exit(127);
   }
   ::close(fds[1]);
-  std::string text;
+  output->clear();
   char buffer[4096];
   ssize_t n;
-  while ((n = ::read(fds[0], buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<size_t>(n));
+  while ((n = ::read(fds[0], buffer, sizeof buffer)) > 0) output->append(buffer, static_cast<size_t>(n));
   ::close(fds[0]);
+  ::waitpid(child, status, 0);
+  return true;
+}
+
+LoadMeasure measure_in_new_process(const std::string& loader, const std::string& path, unsigned threads,
+                                   const std::vector<std::string>& plugin_dirs) {
+  LoadMeasure measure;
+  std::vector<std::string> args = {"pfx-bench", "--import-load", loader, path, std::to_string(threads)};
+  for (const auto& dir : plugin_dirs) {
+    args.push_back("--plugins");
+    args.push_back(dir);
+  }
+  std::string text;
   int status = 0;
-  ::waitpid(child, &status, 0);
+  if (!run_self(args, &text, &status)) {
+    measure.counts.error = std::string("cannot start a process: ") + std::strerror(errno);
+    return measure;
+  }
   std::istringstream in(text);
   int ok = 0;
   if (!(in >> ok >> measure.seconds >> measure.cpu_seconds >> measure.peak_bytes >> measure.counts.vertices >> measure.counts.triangles)) {
@@ -118,6 +124,7 @@ int import_load_main(const std::vector<std::string>& args) {
                          "pfx-bench --import, which runs it once per load\n");
     return 2;
   }
+  if (args[0] == kStagesLoader) return print_stages(args[1], threads);
   pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
                                      pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
   if (args[0] == "pfx") pfx::app::load_plugins(registry, plugin_dirs);  // failures show as a failed load

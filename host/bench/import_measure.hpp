@@ -23,12 +23,17 @@ struct LoadMeasure {
   uint64_t peak_bytes = 0;
 };
 
+// Runs this program (/proc/self/exe) with `args` (args[0] is the name it sees) and collects its
+// standard output and wait status. False when no process could be started.
+bool run_self(const std::vector<std::string>& args, std::string* output, int* status);
+
 // Runs `pfx-bench --import-load LOADER FILE THREADS [--plugins DIR]...` and reads its report.
 LoadMeasure measure_in_new_process(const std::string& loader, const std::string& path, unsigned threads,
                                    const std::vector<std::string>& plugin_dirs);
 
 // The --import-load mode: loads the plugins, then measures one load and writes the report on
-// standard output. Returns the exit code (2 on bad arguments).
+// standard output; with the loader kStagesLoader, pfx's stage times instead (import_stages.hpp).
+// Returns the exit code (2 on bad arguments).
 int import_load_main(const std::vector<std::string>& args);
 
 // Reads the whole file once so every loader finds it in the page cache, and waits until it is on

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <sstream>
 
 #include "bench_timing.hpp"
+#include "import_measure.hpp"
 #include "obj_import.hpp"
 
 namespace pfx::bench {
@@ -30,23 +32,59 @@ double StageBreakdown::serial_seconds() const {
   return total;
 }
 
+int print_stages(const std::string& path, unsigned threads) {
+  pfx_obj::ImportOptions options;
+  options.threads = threads;
+  pfx_obj::ObjMesh mesh;
+  std::string error;
+  if (!pfx_obj::import_obj_file(path, options, &mesh, &error)) {
+    std::printf("error %s\n", error.c_str());
+    return 0;
+  }
+  for (const auto& stage : mesh.stages)
+    std::printf("%d %.9f %.9f %s\n", stage.parallel ? 1 : 0, stage.seconds, stage.cpu_seconds, stage.name);
+  return 0;
+}
+
 StageBreakdown measure_stages(const std::string& path, unsigned threads, int runs) {
   StageBreakdown result;
   result.threads = threads;
   std::vector<std::vector<double>> wall, cpu;
   for (int r = 0; r < runs; ++r) {
-    pfx_obj::ImportOptions options;
-    options.threads = threads;
-    pfx_obj::ObjMesh mesh;
-    if (!pfx_obj::import_obj_file(path, options, &mesh, &result.error)) return result;
-    if (r == 0) {
-      for (const auto& stage : mesh.stages) result.stages.push_back({stage.name, stage.parallel, 0, 0});
-      wall.resize(mesh.stages.size());
-      cpu.resize(mesh.stages.size());
+    std::string text;
+    int status = 0;
+    if (!run_self({"pfx-bench", "--import-load", kStagesLoader, path, std::to_string(threads)}, &text, &status)) {
+      result.error = "cannot start a process";
+      return result;
     }
-    for (size_t s = 0; s < mesh.stages.size() && s < wall.size(); ++s) {
-      wall[s].push_back(mesh.stages[s].seconds);
-      cpu[s].push_back(mesh.stages[s].cpu_seconds);
+    std::istringstream in(text);
+    std::vector<StageTime> stages;
+    std::string first;
+    while (in >> first) {
+      if (first == "error") {
+        std::getline(in, result.error);
+        result.error = result.error.empty() ? "import failed" : result.error.substr(1);
+        return result;
+      }
+      StageTime stage;
+      stage.parallel = first == "1";
+      in >> stage.seconds >> stage.cpu_seconds;
+      in.get();
+      std::getline(in, stage.name);
+      stages.push_back(stage);
+    }
+    if (stages.empty()) {
+      result.error = "the stage process reported nothing";
+      return result;
+    }
+    if (r == 0) {
+      for (const auto& stage : stages) result.stages.push_back({stage.name, stage.parallel, 0, 0});
+      wall.resize(stages.size());
+      cpu.resize(stages.size());
+    }
+    for (size_t s = 0; s < stages.size() && s < wall.size(); ++s) {
+      wall[s].push_back(stages[s].seconds);
+      cpu[s].push_back(stages[s].cpu_seconds);
     }
   }
   for (size_t s = 0; s < result.stages.size(); ++s) {
@@ -59,7 +97,7 @@ StageBreakdown measure_stages(const std::string& path, unsigned threads, int run
 
 std::string stage_markdown(const std::vector<StageTable>& tables) {
   std::string text =
-      "### pfx stages\n\nEach stage of pfx's import (the plugin's code, called in the benchmark's process; medians). "
+      "### pfx stages\n\nEach stage of pfx's import (the plugin's code, each run an import in a new process; medians). "
       "Parallel stages run on every thread, serial ones on one. Wall time counts waiting for a core on a shared "
       "machine; CPU time is that of all the process's threads during the stage.\n\n";
   char line[512];
