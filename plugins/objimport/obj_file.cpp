@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdint>
 #include <cstring>
 
 namespace pfx_obj {
@@ -60,11 +59,14 @@ bool FileBytes::open(const std::string& path, std::string* error) {
   if (!open_for_reading(path, &file, &info, error)) return false;
   if (S_ISREG(info.st_mode) && info.st_size > 0) {
     size_ = static_cast<size_t>(info.st_size);
-    // Not populated here: each chunk's parser maps its own pages (populate_for_reading), so the
-    // page-table work is split between the threads instead of done on one before they start.
-    void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, file.fd, 0);
+    // MAP_POPULATE maps every page now, in one pass, instead of one fault per 64 KB while parsing.
+    // Done before the threads start: populating each chunk on its own thread was slower with two
+    // threads (99 MB: 78 against 72 ms, 10 MB: 13.4 against 10.1 ms, medians of 7) — likely as
+    // populating holds the process's memory-map lock, which the other thread's mappings wait for.
+    void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.fd, 0);
     if (mapping != MAP_FAILED) {
-      // Read-ahead for a file not yet in the page cache (no effect on one that is).
+      // The parser reads front to back, each chunk by one thread.
+      ::madvise(mapping, size_, MADV_SEQUENTIAL);
       ::madvise(mapping, size_, MADV_WILLNEED);
       mapping_ = mapping;
       data_ = static_cast<const char*>(mapping);
@@ -79,15 +81,6 @@ bool FileBytes::open(const std::string& path, std::string* error) {
   data_ = copy_.data();
   size_ = copy_.size();
   return true;
-}
-
-void populate_for_reading(std::string_view bytes) {
-  if (bytes.empty()) return;
-  const uintptr_t page = static_cast<uintptr_t>(::sysconf(_SC_PAGESIZE));
-  const uintptr_t begin = reinterpret_cast<uintptr_t>(bytes.data()) & ~(page - 1);
-  const uintptr_t end = reinterpret_cast<uintptr_t>(bytes.data()) + bytes.size();
-  // Advice only: on kernels before 5.14 (EINVAL) the pages are mapped by faults as the parser reads.
-  ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_READ);
 }
 
 bool read_small_file(const std::string& path, std::string* out, std::string* error) {

@@ -25,10 +25,6 @@ class FileBytes {
   std::string copy_;
 };
 
-// Maps the pages under `bytes` (part of a FileBytes) in one system call, before they are read: one
-// call per chunk, on the thread that parses it, instead of a page fault per 64 KB.
-void populate_for_reading(std::string_view bytes);
-
 // The whole of a small file (a material library) as a string; false when it cannot be read.
 bool read_small_file(const std::string& path, std::string* out, std::string* error);
 

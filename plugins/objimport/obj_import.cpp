@@ -55,7 +55,6 @@ void Importer::parse(std::string_view text) {
   run_parallel(
       threads_, texts_.size(),
       [&](size_t c, unsigned) {
-        populate_for_reading(texts_[c]);
         parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunks_[c]);
         bytes_done += texts_[c].size();
       },
