@@ -1,7 +1,7 @@
 // pfx-bench --import: the OBJ importer against tinyobjloader and assimp (Debian packages, linked
 // by the benchmark only), in one run, on OBJ files generated at given sizes: MB/s and peak memory,
-// our importer at each thread count. Every load runs in a forked child, so one loader's heap and
-// peak never count against the next.
+// our importer at each thread count. Every load runs in a new process (import_measure.hpp), so one
+// loader's heap and peak never count against the next.
 #pragma once
 
 #include <string>

@@ -166,11 +166,11 @@ TEST_CASE("pfx-import: --progress on reports rising percentages up to 100 on std
 }
 
 TEST_CASE("pfx-bench --import: a tiny run writes both reports with every loader", "[import][bench]") {
-  // A smoke test of the benchmark's plumbing (generation, forked loads, reports); the speeds it
-  // prints are not checked here.
+  // A smoke test of the benchmark's plumbing (generation, loads in new processes, reports); the
+  // speeds it prints are not checked here.
   Scratch scratch;
   const std::string out = (scratch.dir / "bench").string();
-  const std::string command = std::string(PFX_BENCH) + " --import --sizes 0.05 --runs 1 --threads 1,2 --plugins " +
+  const std::string command = std::string(PFX_BENCH) + " --import --sizes 0.05 --runs 2 --threads 1,2 --plugins " +
                               PFX_PLUGIN_DIR + " --dir " + (scratch.dir / "files").string() + " --out " + out +
                               " > " + (scratch.dir / "stdout.md").string() + " 2>/dev/null";
   REQUIRE(std::system(command.c_str()) == 0);
@@ -185,6 +185,15 @@ TEST_CASE("pfx-bench --import: a tiny run writes both reports with every loader"
     CHECK(row["ok"] == true);
     CHECK(row["triangles"] == triangles);  // every loader read the same mesh
     CHECK(row["mb_per_s"].get<double>() > 0);
+    CHECK(row["runs"] == 2);  // each in a process of its own, in rounds
+  }
+  // pfx's stages, also from imports in new processes: parse first, at each thread count.
+  REQUIRE(j["pfx_stages"].size() == 2);  // at 1 and 2 threads
+  for (const auto& breakdown : j["pfx_stages"]) {
+    INFO(breakdown.dump());
+    CHECK(breakdown["ok"] == true);
+    REQUIRE(!breakdown["stages"].empty());
+    CHECK(breakdown["stages"][0]["name"] == "parse");
   }
   CHECK(fs::exists(out + "/import.md"));
   CHECK(fs::file_size(scratch.dir / "stdout.md") > 0);
