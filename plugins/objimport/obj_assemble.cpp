@@ -187,8 +187,11 @@ void Importer::fill_vertices() {
   out_->normals.resize(3 * count);
   if (any_texcoords) out_->texcoords.resize(2 * count);
   if (any_colors_) out_->colors.resize(3 * count);
-  run_parallel(threads_, threads_, [&](size_t w, unsigned) {
-    const size_t lo = count * w / threads_, hi = count * (w + 1) / threads_;
+  // In blocks handed out in turn rather than one range per thread: the arrays' first pages may be
+  // reused ones (obj_spare_mappings.hpp) and the rest fresh, which made one half twice the work.
+  constexpr size_t kBlock = size_t{1} << 15;
+  run_parallel(threads_, (count + kBlock - 1) / kBlock, [&](size_t b, unsigned) {
+    const size_t lo = b * kBlock, hi = std::min(count, lo + kBlock);
     ChunkedElements::Reader positions(all_positions_), colors(all_colors_), texcoords(all_texcoords_),
         normals(all_normals_);
     for (size_t i = lo; i < hi; ++i) {
