@@ -55,6 +55,7 @@ void Importer::layout_triangles() {
     index_total += 3 * triangles[s];
   }
   if (index_total > 0xFFFFFFFFull) throw std::length_error(name_ + ": more than 2^32 - 1 triangle indices");
+  index_total_ = index_total;
   for (uint32_t s : order)
     out_->submeshes.push_back({static_cast<uint32_t>(start[s]), static_cast<uint32_t>(3 * triangles[s]),
                                s == slots - 1 ? kNoIndex : s});
@@ -63,20 +64,18 @@ void Importer::layout_triangles() {
     write_at_[c] = start;
     for (size_t s = 0; s < slots; ++s) start[s] += 3 * faces_[c].triangle_counts[s];
   }
-  out_->indices.resize(index_total);
 }
 
 // Chunk c's faces in order: each corner numbered by `numbering`, each face's triangles written at
 // its material's place (polygons ear-clipped).
 void Importer::triangulate_chunk(size_t c, VertexNumbering* numbering) {
   ChunkData& chunk = chunks_[c];
-  ChunkFaces& result = faces_[c];
   std::vector<uint64_t> at = write_at_[c];
   uint32_t* indices = out_->indices.data();
   const uint32_t* fields = chunk.corners.data();
-  TriangulationScratch scratch;
+  PolygonScratch scratch;
   std::vector<const float*> corner_positions;
-  std::vector<uint32_t> corner_ids, polygon;
+  std::vector<uint32_t> corner_ids;
   ChunkedElements::Reader positions(all_positions_);
   FaceStates states = face_states(c);
   for (size_t f = 0; f < chunk.faces.size(); ++f) {
@@ -101,18 +100,27 @@ void Importer::triangulate_chunk(size_t c, VertexNumbering* numbering) {
       corner_ids[k] = vertex(fields);
       corner_positions[k] = positions.at(fields[0]);
     }
-    polygon.clear();
-    Triangulation how = triangulate_polygon(corner_positions.data(), n, &polygon, &scratch);
-    for (uint32_t k : polygon) indices[cursor++] = corner_ids[k];
-    if (how != Triangulation::kEarClipped) {
-      const char* why = how == Triangulation::kFanDegenerate  ? "has no area"
-                        : how == Triangulation::kFanTooLarge  ? "is too large for ear clipping (over 4096 corners)"
-                                                              : "is self-intersecting";
-      ++result.warning_total;
-      if (result.warnings.size() < kMaxWarnings)
-        result.warnings.push_back({plans_[c].first_line + chunk.faces[f].line,
-                                   "f: polygon of " + std::to_string(n) + " corners " + why + ": triangulated as a fan"});
-    }
+    write_polygon(c, f, n, corner_ids.data(), corner_positions.data(), &cursor, &scratch);
+  }
+}
+
+// Face f of chunk c, a polygon of n corners (their vertex numbers and positions), ear-clipped into
+// the index array at *cursor; a warning when it had to be a fan.
+void Importer::write_polygon(size_t c, size_t f, uint32_t n, const uint32_t* corner_ids,
+                             const float* const* corner_positions, uint64_t* cursor, PolygonScratch* scratch) {
+  uint32_t* indices = out_->indices.data();
+  scratch->polygon.clear();
+  Triangulation how = triangulate_polygon(corner_positions, n, &scratch->polygon, &scratch->triangulation);
+  for (uint32_t k : scratch->polygon) indices[(*cursor)++] = corner_ids[k];
+  if (how != Triangulation::kEarClipped) {
+    const char* why = how == Triangulation::kFanDegenerate ? "has no area"
+                      : how == Triangulation::kFanTooLarge ? "is too large for ear clipping (over 4096 corners)"
+                                                           : "is self-intersecting";
+    ChunkFaces& result = faces_[c];
+    ++result.warning_total;
+    if (result.warnings.size() < kMaxWarnings)
+      result.warnings.push_back({plans_[c].first_line + chunks_[c].faces[f].line,
+                                 "f: polygon of " + std::to_string(n) + " corners " + why + ": triangulated as a fan"});
   }
 }
 
@@ -132,6 +140,7 @@ void Importer::number_and_triangulate(StageClock* clock) {
     largest_chunk = std::max<uint64_t>(largest_chunk, chunk.corners.size() / 3);
   }
   if (total_corners > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
+  out_->indices.resize(index_total_);
 
   if (threads_ <= 1 || chunks_.size() == 1) {
     // Every corner, in file order, against one numbering: its numbers are final.

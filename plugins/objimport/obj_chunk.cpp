@@ -31,8 +31,8 @@ bool is_unsupported_obj_keyword(std::string_view k) {
 
 class ChunkParser {
  public:
-  ChunkParser(std::string_view text, ChunkData* out, bool plain_lines)
-      : cursor_{text.data(), text.data() + text.size()}, out_(out) {
+  ChunkParser(std::string_view text, ChunkData* out, bool plain_lines, size_t reserve_bytes)
+      : cursor_{text.data(), text.data() + text.size()}, out_(out), reserve_bytes_(std::max(reserve_bytes, text.size())) {
     // Plain lines are read by the fast readers up to kPlainLineMargin bytes before the end.
     if (plain_lines && text.size() > static_cast<size_t>(kPlainLineMargin)) plain_limit_ = cursor_.end - kPlainLineMargin;
   }
@@ -41,7 +41,7 @@ class ChunkParser {
     if (first_in_file && cursor_.end - cursor_.p >= 3 && static_cast<unsigned char>(cursor_.p[0]) == 0xEF &&
         static_cast<unsigned char>(cursor_.p[1]) == 0xBB && static_cast<unsigned char>(cursor_.p[2]) == 0xBF)
       cursor_.p += 3;
-    reserve_upper_bounds(static_cast<size_t>(cursor_.end - cursor_.p));
+    reserve_upper_bounds(reserve_bytes_);
     while (!cursor_.at_end()) {
       line_ = cursor_.line_ends;
       if (!statement()) {
@@ -54,6 +54,7 @@ class ChunkParser {
     out_->normals.resize(static_cast<size_t>(normal_at_ - out_->normals.data()));
     out_->corners.resize(static_cast<size_t>(corner_at_ - out_->corners.data()));
     out_->line_ends = cursor_.line_ends;
+    out_->face_count = out_->faces.size();
   }
 
  private:
@@ -71,6 +72,7 @@ class ChunkParser {
     texcoord_at_ = out_->texcoords.data();
     normal_at_ = out_->normals.data();
     corner_at_ = out_->corners.data();
+    out_->faces.clear();
     out_->faces.reserve(bytes / 8 + 1);
   }
 
@@ -419,6 +421,7 @@ class ChunkParser {
 
   Cursor cursor_;
   ChunkData* out_;
+  size_t reserve_bytes_;
   uint64_t line_ = 0;
   float* position_at_ = nullptr;  // where the next v, vt, vn, corner field goes in out_'s arrays
   float* texcoord_at_ = nullptr;
@@ -431,8 +434,8 @@ class ChunkParser {
 
 }  // namespace
 
-void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out) {
-  ChunkParser(text, out, plain_lines).run(first_in_file);
+void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out, size_t reserve_bytes) {
+  ChunkParser(text, out, plain_lines, reserve_bytes).run(first_in_file);
 }
 
 }  // namespace pfx_obj

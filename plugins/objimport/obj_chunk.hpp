@@ -66,6 +66,7 @@ struct ChunkData {
   std::vector<uint64_t> relative_fields;
   uint32_t max_index[3] = {0, 0, 0};  // the largest positive v, vt, vn index written (1-based)
   BigVector<Face> faces;
+  uint64_t face_count = 0;  // faces.size() once parsed (the one-thread import may hand faces on)
   // Per material of the chunk — 0: the one in force at the chunk's start, i + 1: material_names[i]
   // — the triangles its faces make, and its first face (chunk-local), or kNoFace.
   static constexpr uint64_t kNoFace = ~uint64_t{0};
@@ -93,7 +94,9 @@ struct ChunkData {
 
 // Parses the chunk's text. `first_in_file` lets a UTF-8 byte-order mark be skipped. `plain_lines`:
 // read the common line forms with the fast readers (obj_plain_lines.hpp); false only in tests that
-// check both ways give the same result.
-void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out);
+// check both ways give the same result. The arrays are sized for the most `reserve_bytes` (at least
+// the text's size) could hold, so that chunks parsed one after another into the same corner and
+// face arrays (obj_streamed.cpp) all fit the first one's; *out's arrays are kept if large enough.
+void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out, size_t reserve_bytes = 0);
 
 }  // namespace pfx_obj

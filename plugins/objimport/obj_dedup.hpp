@@ -55,6 +55,12 @@ class VertexNumbering {
     return id;
   }
 
+  // For a numbering that meets the positions as the file is read (obj_streamed.cpp): keys with v
+  // below position_count may be numbered from now on, and key_count keys in all. An array that
+  // must grow for that grows to the room given, or at least twice its size, so that it is seldom
+  // copied.
+  void grow(uint32_t position_count, uint64_t position_room, uint64_t key_count, uint64_t key_room);
+
   // The distinct keys, in order of first insertion.
   BigVector<VertexKey>& keys() { return keys_; }
 

@@ -29,26 +29,31 @@ bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
   report(0.7f);
   clock.time("layout", false, [&] { layout_triangles(); });
   number_and_triangulate(&clock);
-  report(0.85f);
-  clock.time("vertices", true, [&] { fill_vertices(); });
-  clock.time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, threads_, &out_->normals); });
-  clock.time("bounds, warnings", false, [&] { finish(); });
-  report(1.0f);
+  assemble(&clock);
   return true;
 }
 
+// The stages after the index array: vertex arrays, normals, bounds and warnings.
+void Importer::assemble(StageClock* clock) {
+  report(0.85f);
+  clock->time("vertices", true, [&] { fill_vertices(); });
+  clock->time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, threads_, &out_->normals); });
+  clock->time("bounds, warnings", false, [&] { finish(); });
+  report(1.0f);
+}
+
+size_t Importer::chunk_count(size_t bytes) const {
+  if (options_.chunk_bytes > 0) return std::max<size_t>(1, (bytes + options_.chunk_bytes - 1) / options_.chunk_bytes);
+  // About eight chunks per thread of 1 to 32 MB each, their count a multiple of the thread count
+  // so that the threads, taking equal chunks in turn, finish together.
+  const size_t chunk_bytes = std::clamp<size_t>(bytes / (size_t{threads_} * 8), 1 << 20, 32 << 20);
+  size_t chunks = (bytes + chunk_bytes - 1) / chunk_bytes;
+  if (chunks > 1) chunks = (chunks + threads_ - 1) / threads_ * threads_;
+  return std::max<size_t>(1, chunks);
+}
+
 void Importer::parse(std::string_view text) {
-  size_t chunks;
-  if (options_.chunk_bytes > 0) {
-    chunks = (text.size() + options_.chunk_bytes - 1) / options_.chunk_bytes;
-  } else {
-    // About eight chunks per thread of 1 to 32 MB each, their count a multiple of the thread count
-    // so that the threads, taking equal chunks in turn, finish together.
-    const size_t chunk_bytes = std::clamp<size_t>(text.size() / (size_t{threads_} * 8), 1 << 20, 32 << 20);
-    chunks = (text.size() + chunk_bytes - 1) / chunk_bytes;
-    if (chunks > 1) chunks = (chunks + threads_ - 1) / threads_ * threads_;
-  }
-  texts_ = split_at_line_ends(text, std::max<size_t>(1, chunks));
+  texts_ = split_at_line_ends(text, chunk_count(text.size()));
   chunks_.assign(texts_.size(), ChunkData{});
   std::atomic<size_t> bytes_done{0};
   const double total = std::max<size_t>(1, text.size());
@@ -68,6 +73,12 @@ bool import_obj_text(std::string_view text, const std::string& name, const std::
     ~ReleaseSpares() { release_spare_mappings(); }
   } release_spares;
   try {
+    // One thread: chunk by chunk, unless the file needs the stages (then from the start).
+    if (options.threads == 1 && options.streamed) {
+      const Importer::Outcome outcome = Importer(name, directory, options).run_streamed(text, out, error);
+      if (outcome != Importer::Outcome::kUseStages) return outcome == Importer::Outcome::kDone;
+      release_spare_mappings();
+    }
     return Importer(name, directory, options).run(text, out, error);
   } catch (const std::bad_alloc&) {
     *error = name + ": out of memory";

@@ -9,6 +9,8 @@
 //   obj_assemble.cpp  vertex data kept where the chunks wrote it, the index array laid out, each
 //                     corner numbered (obj_dedup.cpp) and written there in the same walk,
 //                     vertex arrays, normals (obj_normals.cpp), bounds and warnings
+//   obj_streamed.cpp  one thread: each chunk parsed and its corners numbered at once, then the
+//                     stages above from plan on, the index array written from the numbers
 //
 // Nothing in the output depends on how the text was cut: vertices are numbered by first use,
 // sub-meshes follow the first use of their material, triangles keep file order within one.
@@ -30,6 +32,7 @@
 #include "obj_face_states.hpp"
 #include "obj_import.hpp"
 #include "obj_stages.hpp"
+#include "obj_triangulate.hpp"
 
 namespace pfx_obj {
 
@@ -47,7 +50,7 @@ inline std::string at(const std::string& name, uint64_t line, const std::string&
 struct ChunkPlan {
   uint64_t first_line = 1;
   uint32_t position_base = 0, texcoord_base = 0, normal_base = 0;
-  uint64_t face_base = 0, corner_base = 0;
+  uint64_t face_base = 0;
   uint32_t start_material = kNoIndex;  // material slot in force at the chunk's start
   uint32_t start_smoothing = kDefaultSmoothing;
   std::vector<uint32_t> material_slots;  // chunk material name index -> material slot
@@ -71,7 +74,13 @@ class Importer {
     threads_ = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   }
 
+  // The staged pipeline, on any number of threads.
   bool run(std::string_view text, ObjMesh* out, std::string* error);
+
+  // One thread, chunk by chunk (obj_streamed.cpp). kUseStages: the file needs what only the staged
+  // pipeline does (an index the chunks read so far cannot settle); *out is then to be discarded.
+  enum class Outcome { kDone, kFailed, kUseStages };
+  Outcome run_streamed(std::string_view text, ObjMesh* out, std::string* error);
 
  private:
   void report(float fraction) {
@@ -80,7 +89,9 @@ class Importer {
   void warn(uint64_t line, std::string text) { warnings_.push_back({line, std::move(text)}); }
 
   // obj_import.cpp
+  size_t chunk_count(size_t bytes) const;
   void parse(std::string_view text);
+  void assemble(StageClock* clock);
 
   // obj_plan.cpp
   bool plan(std::string* error);
@@ -98,9 +109,20 @@ class Importer {
   void layout_triangles();
   void number_and_triangulate(StageClock* clock);
   void triangulate_chunk(size_t c, VertexNumbering* numbering);
+  struct PolygonScratch {
+    TriangulationScratch triangulation;
+    std::vector<uint32_t> polygon;
+  };
+  void write_polygon(size_t c, size_t f, uint32_t n, const uint32_t* corner_ids, const float* const* corner_positions,
+                     uint64_t* cursor, PolygonScratch* scratch);
   void free_corners(size_t c);
   void fill_vertices();
   void finish();
+
+  // obj_streamed.cpp
+  bool number_streamed_chunk(size_t c, const uint32_t bases[3], uint32_t start_smoothing, uint64_t face_base,
+                             VertexNumbering* numbering, uint32_t* ids);
+  void write_streamed_triangles();
 
   const std::string& name_;
   const std::string& directory_;
@@ -122,6 +144,12 @@ class Importer {
   std::vector<BigVector<float>> vertex_data_;
   BigVector<VertexKey> keys_;
   std::vector<std::vector<uint64_t>> write_at_;  // per chunk and material slot: its first index
+  uint64_t index_total_ = 0;                     // the index array's length
+  // One thread (obj_streamed.cpp): every corner's vertex number in file order, where each chunk's
+  // start, and which chunks kept their faces (those with polygons or a usemtl).
+  BigVector<uint32_t> streamed_ids_;
+  std::vector<uint64_t> id_begin_;
+  std::vector<bool> faces_kept_;
 };
 
 }  // namespace pfx_obj

@@ -31,7 +31,7 @@ std::vector<std::string> material_library_names(const std::string& directory, co
 
 bool Importer::plan(std::string* error) {
   plans_.assign(chunks_.size(), ChunkPlan{});
-  uint64_t line = 1, positions = 0, texcoords = 0, normals = 0, faces = 0, corners = 0;
+  uint64_t line = 1, positions = 0, texcoords = 0, normals = 0, faces = 0;
   uint32_t material = kNoIndex, smoothing = kDefaultSmoothing;
   // The first error in file order; then every material library (in file order, before any
   // usemtl is looked up, as a usemtl may come before its mtllib).
@@ -56,7 +56,6 @@ bool Importer::plan(std::string* error) {
     plan.texcoord_base = static_cast<uint32_t>(texcoords);
     plan.normal_base = static_cast<uint32_t>(normals);
     plan.face_base = faces;
-    plan.corner_base = corners;
     plan.start_material = material;
     plan.start_smoothing = smoothing;
     for (size_t i = 0; i < chunk.material_names.size(); ++i)
@@ -81,8 +80,7 @@ bool Importer::plan(std::string* error) {
     positions += chunk.position_count();
     texcoords += chunk.texcoords.size() / 2;
     normals += chunk.normals.size() / 3;
-    faces += chunk.faces.size();
-    corners += chunk.corners.size() / 3;
+    faces += chunk.face_count;
     any_colors_ |= !chunk.colors.empty();
     const uint64_t limit = static_cast<uint64_t>(kMaxWrittenIndex);
     if (positions > limit || texcoords > limit || normals > limit || faces > limit) {

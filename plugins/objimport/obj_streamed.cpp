@@ -1,0 +1,197 @@
+// One thread, chunk by chunk (obj_importer.hpp). Each chunk is parsed and its corners numbered at
+// once, against one numbering for the whole file (the corners come in file order, so the numbers
+// are final), into one array of vertex numbers in file order — which, for a file of triangles in
+// one material, is the index array itself. A chunk's corners (12 bytes each) therefore live only
+// until numbered, and the next chunk is parsed into the same pages, as are its faces when nothing
+// later needs them. The staged pipeline keeps every chunk's corners until all are parsed, as it
+// must to share the work between threads; on one thread, parsing into pages already written saves
+// the kernel's price for fresh ones (docs/importers/obj.md).
+//
+// The output is the staged pipeline's, byte for byte (the tests compare). What a chunk cannot
+// settle with the file read so far up to its end — a position index past the positions read so
+// far, a relative index reaching before the first element, an index the whole file does not reach
+// — sends the import to the staged pipeline, from the start: all but the first are errors, which
+// it reports with their line.
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "obj_importer.hpp"
+#include "obj_split.hpp"
+
+namespace pfx_obj {
+
+namespace {
+
+// How much of an array to make room for, from what the text read so far needed of it: the same
+// per byte for the rest of the text, and an eighth more (growing an array copies it).
+uint64_t room_for(uint64_t so_far, uint64_t bytes_read, uint64_t bytes_total) {
+  const double per_byte = bytes_read > 0 ? static_cast<double>(so_far) / static_cast<double>(bytes_read) : 0.0;
+  return static_cast<uint64_t>(per_byte * static_cast<double>(bytes_total) * 1.125) + 1024;
+}
+
+}  // namespace
+
+Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, std::string* error) {
+  out_ = out;
+  *out = ObjMesh{};
+  StageClock clock(&out->stages);
+  report(0.0f);
+  texts_ = split_at_line_ends(text, chunk_count(text.size()));
+  const size_t chunk_total = texts_.size();
+  chunks_.assign(chunk_total, ChunkData{});
+  id_begin_.assign(chunk_total + 1, 0);
+  faces_kept_.assign(chunk_total, false);
+  // Every chunk's arrays sized for the largest, so that each fits in the previous one's pages.
+  size_t largest = 0;
+  for (std::string_view chunk : texts_) largest = std::max(largest, chunk.size());
+
+  VertexNumbering numbering(0, 0);
+  uint64_t positions = 0, texcoords = 0, normals = 0, faces = 0, corners = 0, bytes = 0;
+  uint32_t smoothing = kDefaultSmoothing;
+  for (size_t c = 0; c < chunk_total; ++c) {
+    ChunkData& chunk = chunks_[c];
+    if (c > 0) {
+      chunk.corners.swap(chunks_[c - 1].corners);
+      if (!faces_kept_[c - 1]) chunk.faces.swap(chunks_[c - 1].faces);
+    }
+    clock.time("parse", false, [&] { parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunk, largest); });
+    if (chunk.failed) break;  // the plan reports it, as the first error in file order
+    bytes += texts_[c].size();
+    const uint64_t chunk_corners = chunk.corners.size() / 3;
+    const uint64_t positions_now = positions + chunk.position_count();
+    if (chunk.max_index[0] > positions_now || positions_now > kMaxWrittenIndex) return Outcome::kUseStages;
+    if (corners + chunk_corners > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
+
+    bool numbered = false;
+    clock.time("dedup", false, [&] {
+      // Room for as many corners as the rest of the text could hold (two bytes each): address
+      // space only, never copied.
+      if (c == 0) streamed_ids_.reserve(text.size() / 2 + 1);
+      streamed_ids_.resize(corners + chunk_corners);
+      numbering.grow(static_cast<uint32_t>(positions_now), room_for(positions_now, bytes, text.size()),
+                     numbering.keys().size() + chunk_corners,
+                     room_for(numbering.keys().size() + chunk_corners, bytes, text.size()));
+      const uint32_t bases[3] = {static_cast<uint32_t>(positions), static_cast<uint32_t>(texcoords),
+                                 static_cast<uint32_t>(normals)};
+      numbered = number_streamed_chunk(c, bases, smoothing, faces, &numbering, streamed_ids_.data() + corners);
+    });
+    if (!numbered) return Outcome::kUseStages;
+
+    // Its faces are needed again only to place polygons' triangles or to follow usemtl.
+    uint64_t triangles = 0;
+    for (uint64_t t : chunk.triangles_by_material) triangles += t;
+    faces_kept_[c] = 3 * triangles != chunk_corners ||
+                     std::any_of(chunk.changes.begin(), chunk.changes.end(),
+                                 [](const StateChange& s) { return s.kind == StateChange::kMaterial; });
+    for (const StateChange& change : chunk.changes)
+      if (change.kind == StateChange::kSmoothing) smoothing = change.value;
+    positions = positions_now;
+    texcoords += chunk.texcoords.size() / 2;
+    normals += chunk.normals.size() / 3;
+    faces += chunk.faces.size();
+    corners += chunk_corners;
+    id_begin_[c + 1] = corners;
+    report(static_cast<float>(0.7 * static_cast<double>(bytes) / std::max<double>(1.0, text.size())));
+  }
+  // The last corners and faces handed on, for the arrays made next (obj_spare_mappings.hpp).
+  for (ChunkData& chunk : chunks_) {
+    keep_for_reuse(&chunk.corners);
+    if (!faces_kept_[&chunk - chunks_.data()]) keep_for_reuse(&chunk.faces);
+  }
+
+  bool ok = true;
+  clock.time("plan", false, [&] { ok = plan(error); });
+  if (!ok) return Outcome::kFailed;
+  for (const ChunkData& chunk : chunks_)
+    for (int k = 0; k < 3; ++k)
+      if (chunk.max_index[k] > totals_[k]) return Outcome::kUseStages;  // an error, reported with its line there
+  clock.time("resolve", false, [&] { resolve_all(); });  // each chunk's triangles per material
+  clock.time("gather", false, [&] { gather(); });
+  clock.time("layout", false, [&] { layout_triangles(); });
+  keys_.swap(numbering.keys());
+  clock.time("triangles", false, [&] { write_streamed_triangles(); });
+  for (ChunkFaces& f : faces_) {
+    for (Located& w : f.warnings) warnings_.push_back(std::move(w));
+    extra_warnings_ += f.warning_total - f.warnings.size();
+  }
+  chunks_ = {};
+  faces_ = {};
+  write_at_ = {};
+  assemble(&clock);
+  return Outcome::kDone;
+}
+
+// Chunk c's corners, in order, numbered into ids: relative indices made final (false when one
+// reaches before the first element: an error the staged pipeline reports), each corner without a
+// normal keyed by the normal group of its face.
+bool Importer::number_streamed_chunk(size_t c, const uint32_t bases[3], uint32_t start_smoothing, uint64_t face_base,
+                                     VertexNumbering* numbering, uint32_t* ids) {
+  ChunkData& chunk = chunks_[c];
+  // Only the normal group is wanted here: materials are placed later, once the plan knows them.
+  const std::vector<uint32_t> no_slots(chunk.material_names.size(), 0);
+  FaceStates states(&chunk.changes, &no_slots, 0, start_smoothing, face_base);
+  uint32_t* fields = chunk.corners.data();
+  const std::vector<uint64_t>& relative = chunk.relative_fields;
+  uint64_t field = 0;
+  for (size_t f = 0; f < chunk.faces.size(); ++f) {
+    states.at_face(f);
+    const uint32_t group = states.normal_group();
+    for (uint32_t k = 0; k < chunk.faces[f].corner_count; ++k, fields += 3, field += 3) {
+      if (!relative.empty())
+        for (uint64_t j = 0; j < 3; ++j) {
+          const uint64_t at = field + j;
+          if (at / 64 >= relative.size() || !(relative[at / 64] >> (at % 64) & 1)) continue;
+          const int64_t one_based = int64_t{bases[j]} + static_cast<int32_t>(fields[j]);
+          if (one_based < 1) return false;
+          fields[j] = static_cast<uint32_t>(one_based - 1);
+        }
+      *ids++ = numbering->find_or_insert(VertexKey{fields[0], fields[1], fields[2], fields[2] == kNoIndex ? group : 0});
+    }
+  }
+  chunk.relative_fields = {};
+  return true;
+}
+
+// The index array from the vertex numbers: the numbers themselves when every face is a triangle
+// of one material; otherwise each chunk's numbers copied to its material's place, and its
+// polygons ear-clipped there.
+void Importer::write_streamed_triangles() {
+  if (out_->submeshes.size() <= 1 && index_total_ == streamed_ids_.size()) {
+    out_->indices.swap(streamed_ids_);
+    return;
+  }
+  out_->indices.resize(index_total_);
+  uint32_t* indices = out_->indices.data();
+  ChunkedElements::Reader positions(all_positions_);
+  PolygonScratch scratch;
+  std::vector<const float*> corner_positions;
+  for (size_t c = 0; c < chunks_.size(); ++c) {
+    std::vector<uint64_t>& at = write_at_[c];
+    const uint32_t* ids = streamed_ids_.data() + id_begin_[c];
+    if (!faces_kept_[c]) {  // triangles only, all of the material in force at its start
+      const uint64_t count = id_begin_[c + 1] - id_begin_[c];
+      if (count > 0) std::memcpy(indices + at[plans_[c].start_slot], ids, count * sizeof(uint32_t));
+      continue;
+    }
+    const ChunkData& chunk = chunks_[c];
+    FaceStates states = face_states(c);
+    for (size_t f = 0; f < chunk.faces.size(); ++f) {
+      const uint32_t n = chunk.faces[f].corner_count;
+      states.at_face(f);
+      uint64_t& cursor = at[states.slot()];
+      if (n == 3) {
+        std::memcpy(indices + cursor, ids, 3 * sizeof(uint32_t));
+        cursor += 3;
+      } else {
+        corner_positions.resize(n);
+        for (uint32_t k = 0; k < n; ++k) corner_positions[k] = positions.at(keys_[ids[k]].v);
+        write_polygon(c, f, n, ids, corner_positions.data(), &cursor, &scratch);
+      }
+      ids += n;
+    }
+  }
+  streamed_ids_ = {};
+}
+
+}  // namespace pfx_obj
