@@ -180,6 +180,11 @@ void Importer::number_and_triangulate(StageClock* clock) {
       });
     });
   }
+  end_chunks();
+}
+
+// Once the index array is written: the walks' warnings kept, the chunks' remaining arrays freed.
+void Importer::end_chunks() {
   for (ChunkFaces& f : faces_) {
     for (Located& w : f.warnings) warnings_.push_back(std::move(w));
     extra_warnings_ += f.warning_total - f.warnings.size();

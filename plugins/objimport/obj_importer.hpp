@@ -116,6 +116,7 @@ class Importer {
   void write_polygon(size_t c, size_t f, uint32_t n, const uint32_t* corner_ids, const float* const* corner_positions,
                      uint64_t* cursor, PolygonScratch* scratch);
   void free_corners(size_t c);
+  void end_chunks();
   void fill_vertices();
   void finish();
 

@@ -113,13 +113,7 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
   clock.time("layout", false, [&] { layout_triangles(); });
   keys_.swap(numbering.keys());
   clock.time("triangles", false, [&] { write_streamed_triangles(); });
-  for (ChunkFaces& f : faces_) {
-    for (Located& w : f.warnings) warnings_.push_back(std::move(w));
-    extra_warnings_ += f.warning_total - f.warnings.size();
-  }
-  chunks_ = {};
-  faces_ = {};
-  write_at_ = {};
+  end_chunks();
   assemble(&clock);
   return Outcome::kDone;
 }
