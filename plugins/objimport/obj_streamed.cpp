@@ -12,6 +12,8 @@
 // far, a relative index reaching before the first element, an index the whole file does not reach
 // — sends the import to the staged pipeline, from the start: all but the first are errors, which
 // it reports with their line.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -28,6 +30,17 @@ namespace {
 uint64_t room_for(uint64_t so_far, uint64_t bytes_read, uint64_t bytes_total) {
   const double per_byte = bytes_read > 0 ? static_cast<double>(so_far) / static_cast<double>(bytes_read) : 0.0;
   return static_cast<uint64_t>(per_byte * static_cast<double>(bytes_total) * 1.125) + 1024;
+}
+
+// Room for the vertex numbers: for as many corners as the text could hold (two bytes each) —
+// address space only, never copied — unless that would be more than an eighth of the machine's
+// memory (the kernel refuses a mapping much larger than memory): then an estimate from the text
+// read so far, the array doubling when it falls short.
+uint64_t id_room(uint64_t text_bytes, uint64_t ids_so_far, uint64_t bytes_read) {
+  const uint64_t most = text_bytes / 2 + 1;
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  const uint64_t memory = pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
+  return most * sizeof(uint32_t) <= memory / 8 ? most : room_for(ids_so_far, bytes_read, text_bytes);
 }
 
 }  // namespace
@@ -67,9 +80,9 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
 
     bool numbered = false;
     clock.time("dedup", true, [&] {
-      // Room for as many corners as the rest of the text could hold (two bytes each): address
-      // space only, never copied.
-      if (c == 0) streamed_ids_.reserve(text.size() / 2 + 1);
+      if (corners + chunk_corners > streamed_ids_.capacity())
+        streamed_ids_.reserve(std::max({corners + chunk_corners, id_room(text.size(), corners + chunk_corners, bytes),
+                                        2 * uint64_t{streamed_ids_.capacity()}}));
       streamed_ids_.resize(corners + chunk_corners);
       numbering.grow(static_cast<uint32_t>(positions_now), room_for(positions_now, bytes, text.size()),
                      numbering.keys().size() + chunk_corners,
