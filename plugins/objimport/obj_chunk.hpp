@@ -64,6 +64,9 @@ struct ChunkData {
   // those, one bit per field; the resolve stage makes them final.
   BigVector<uint32_t> corners;
   std::vector<uint64_t> relative_fields;
+  bool is_relative(uint64_t field) const {
+    return field / 64 < relative_fields.size() && (relative_fields[field / 64] >> (field % 64) & 1);
+  }
   uint32_t max_index[3] = {0, 0, 0};  // the largest positive v, vt, vn index written (1-based)
   BigVector<Face> faces;
   uint64_t face_count = 0;  // faces.size() once parsed (the one-thread import may hand faces on)

@@ -42,8 +42,7 @@ void Importer::resolve(size_t c, size_t slots) {
         uint32_t& value = chunk.corners[field];
         // A relative index may be stored as kNoIndex (-1: it reaches two elements back before
         // the chunk): only a field not marked relative can mean "absent".
-        const bool relative = field / 64 < chunk.relative_fields.size() &&
-                              (chunk.relative_fields[field / 64] >> (field % 64) & 1);
+        const bool relative = chunk.is_relative(field);
         if (!relative && value == kNoIndex) continue;
         const int64_t one_based = relative ? int64_t{bases[j]} + static_cast<int32_t>(value) : int64_t{value} + 1;
         if (relative && one_based < 1) {

@@ -104,7 +104,7 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
     positions = positions_now;
     texcoords += chunk.texcoords.size() / 2;
     normals += chunk.normals.size() / 3;
-    faces += chunk.faces.size();
+    faces += chunk.face_count;
     corners += chunk_corners;
     id_begin_[c + 1] = corners;
     report(static_cast<float>(0.7 * static_cast<double>(bytes) / std::max<double>(1.0, text.size())));
@@ -141,16 +141,15 @@ bool Importer::number_streamed_chunk(size_t c, const uint32_t bases[3], uint32_t
   const std::vector<uint32_t> no_slots(chunk.material_names.size(), 0);
   FaceStates states(&chunk.changes, &no_slots, 0, start_smoothing, face_base);
   uint32_t* fields = chunk.corners.data();
-  const std::vector<uint64_t>& relative = chunk.relative_fields;
+  const bool any_relative = !chunk.relative_fields.empty();
   uint64_t field = 0;
   for (size_t f = 0; f < chunk.faces.size(); ++f) {
     states.at_face(f);
     const uint32_t group = states.normal_group();
     for (uint32_t k = 0; k < chunk.faces[f].corner_count; ++k, fields += 3, field += 3) {
-      if (!relative.empty())
+      if (any_relative)
         for (uint64_t j = 0; j < 3; ++j) {
-          const uint64_t at = field + j;
-          if (at / 64 >= relative.size() || !(relative[at / 64] >> (at % 64) & 1)) continue;
+          if (!chunk.is_relative(field + j)) continue;
           const int64_t one_based = int64_t{bases[j]} + static_cast<int32_t>(fields[j]);
           if (one_based < 1) return false;
           fields[j] = static_cast<uint32_t>(one_based - 1);
