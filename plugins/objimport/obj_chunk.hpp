@@ -69,7 +69,7 @@ struct ChunkData {
   }
   uint32_t max_index[3] = {0, 0, 0};  // the largest positive v, vt, vn index written (1-based)
   BigVector<Face> faces;
-  uint64_t face_count = 0;  // faces.size() once parsed (the one-thread import may hand faces on)
+  uint64_t face_count = 0;  // faces.size() once parsed (the import chunk by chunk may hand faces on)
   // Per material of the chunk — 0: the one in force at the chunk's start, i + 1: material_names[i]
   // — the triangles its faces make, and its first face (chunk-local), or kNoFace.
   static constexpr uint64_t kNoFace = ~uint64_t{0};

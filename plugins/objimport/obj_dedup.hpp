@@ -4,8 +4,9 @@
 // seed's 21-bit packing merged distinct corners past 2^21 elements.
 //
 // Vertices are numbered in the order of their first corner in the file, whatever the thread
-// count, so the output never depends on it. With one thread, one VertexNumbering sees every corner
-// in file order and its numbers are final. With several, each chunk is numbered on its own in
+// count, so the output never depends on it. Chunk by chunk (obj_streamed.cpp) and in the staged
+// pipeline on one thread, one VertexNumbering sees every corner in file order and its numbers are
+// final. In the staged pipeline on several threads, each chunk is numbered on its own in
 // parallel, the chunks' distinct keys are then merged in file order (merge_chunk_keys) and their
 // numbers mapped to the file's — a chunk lists its keys in the order of their first corner in the
 // chunk, so the merge numbers them exactly as one pass over the file would.

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 
 namespace pfx_obj {
@@ -83,6 +84,13 @@ bool FileBytes::open(const std::string& path, std::string* error) {
   data_ = copy_.data();
   size_ = copy_.size();
   return true;
+}
+
+void release_read_pages(std::string_view range) {
+  const uintptr_t page = static_cast<uintptr_t>(::sysconf(_SC_PAGESIZE));
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(range.data()) + page - 1) / page * page;
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(range.data()) + range.size()) / page * page;
+  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
 }
 
 bool read_small_file(const std::string& path, std::string* out, std::string* error) {

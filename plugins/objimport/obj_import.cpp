@@ -60,26 +60,37 @@ void Importer::parse(std::string_view text) {
   run_parallel(
       threads_, texts_.size(),
       [&](size_t c, unsigned) {
-        parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunks_[c]);
+        parse_one(c, 0);
         bytes_done += texts_[c].size();
       },
       [&] { report(static_cast<float>(0.6 * bytes_done.load() / total)); });
 }
 
-bool import_obj_text(std::string_view text, const std::string& name, const std::string& directory,
-                     const ImportOptions& options, ObjMesh* out, std::string* error) {
+// Chunk c's text into chunks_[c], its file pages then dropped where they are the importer's own.
+void Importer::parse_one(size_t c, size_t reserve_bytes) {
+  parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunks_[c], reserve_bytes);
+  if (release_text_) release_read_pages(texts_[c]);
+}
+
+namespace {
+
+// import_obj_text, told whether the text is import_obj_file's own mapping of the file (see
+// release_read_pages).
+bool import_text(std::string_view text, const std::string& name, const std::string& directory,
+                 const ImportOptions& options, bool text_is_file_mapping, ObjMesh* out, std::string* error) {
   // Whatever way the import ends, the pages it kept for reuse go back (obj_spare_mappings.hpp).
   struct ReleaseSpares {
     ~ReleaseSpares() { release_spare_mappings(); }
   } release_spares;
   try {
-    // One thread: chunk by chunk, unless the file needs the stages (then from the start).
-    if (options.threads == 1 && options.streamed) {
-      const Importer::Outcome outcome = Importer(name, directory, options).run_streamed(text, out, error);
+    // Chunk by chunk, unless the file needs the stages (then from the start).
+    if (options.streamed) {
+      const Importer::Outcome outcome =
+          Importer(name, directory, options, text_is_file_mapping).run_streamed(text, out, error);
       if (outcome != Importer::Outcome::kUseStages) return outcome == Importer::Outcome::kDone;
       release_spare_mappings();
     }
-    return Importer(name, directory, options).run(text, out, error);
+    return Importer(name, directory, options, text_is_file_mapping).run(text, out, error);
   } catch (const std::bad_alloc&) {
     *error = name + ": out of memory";
   } catch (const std::exception& e) {
@@ -89,11 +100,18 @@ bool import_obj_text(std::string_view text, const std::string& name, const std::
   return false;
 }
 
+}  // namespace
+
+bool import_obj_text(std::string_view text, const std::string& name, const std::string& directory,
+                     const ImportOptions& options, ObjMesh* out, std::string* error) {
+  return import_text(text, name, directory, options, false, out, error);
+}
+
 bool import_obj_file(const std::string& path, const ImportOptions& options, ObjMesh* out, std::string* error) {
   FileBytes file;
   if (!file.open(path, error)) return false;
   const std::string directory = std::filesystem::path(path).parent_path().string();
-  return import_obj_text(file.bytes(), path, directory.empty() ? "." : directory, options, out, error);
+  return import_text(file.bytes(), path, directory.empty() ? "." : directory, options, file.mapped(), out, error);
 }
 
 }  // namespace pfx_obj

@@ -46,8 +46,8 @@ struct ImportOptions {
   std::function<void(float)> progress;   // 0..1, on the calling thread
   size_t chunk_bytes = 0;                // 0: chosen from the size and thread count (tests set it)
   bool plain_lines = true;               // the fast readers for common lines; tests compare with false
-  bool streamed = true;                  // one thread: chunk by chunk (obj_streamed.cpp); tests compare
-                                         // with false, the staged pipeline every thread count runs
+  bool streamed = true;                  // chunk by chunk (obj_streamed.cpp); tests compare with
+                                         // false, the staged pipeline (also where a file needs it)
 };
 
 // name: the file name in messages. directory: where mtllib files are looked for; empty means

@@ -9,8 +9,9 @@
 //   obj_assemble.cpp  vertex data kept where the chunks wrote it, the index array laid out, each
 //                     corner numbered (obj_dedup.cpp) and written there in the same walk,
 //                     vertex arrays, normals (obj_normals.cpp), bounds and warnings
-//   obj_streamed.cpp  one thread: each chunk parsed and its corners numbered at once, then the
-//                     stages above from plan on, the index array written from the numbers
+//   obj_streamed.cpp  the default: each chunk parsed, its corners numbered in file order while
+//                     later chunks are parsed, then the stages above from plan on, the index
+//                     array written from the numbers
 //
 // Nothing in the output depends on how the text was cut: vertices are numbered by first use,
 // sub-meshes follow the first use of their material, triangles keep file order within one.
@@ -69,15 +70,18 @@ struct ChunkFaces {
 
 class Importer {
  public:
-  Importer(const std::string& name, const std::string& directory, const ImportOptions& options)
-      : name_(name), directory_(directory), options_(options) {
+  // text_is_file_mapping: the text to import is a FileBytes mapping, whose pages each chunk drops
+  // once parsed (release_read_pages).
+  Importer(const std::string& name, const std::string& directory, const ImportOptions& options,
+           bool text_is_file_mapping)
+      : name_(name), directory_(directory), options_(options), release_text_(text_is_file_mapping) {
     threads_ = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   }
 
   // The staged pipeline, on any number of threads.
   bool run(std::string_view text, ObjMesh* out, std::string* error);
 
-  // One thread, chunk by chunk (obj_streamed.cpp). kUseStages: the file needs what only the staged
+  // Chunk by chunk (obj_streamed.cpp). kUseStages: the file needs what only the staged
   // pipeline does (an index the chunks read so far cannot settle); *out is then to be discarded.
   enum class Outcome { kDone, kFailed, kUseStages };
   Outcome run_streamed(std::string_view text, ObjMesh* out, std::string* error);
@@ -91,6 +95,7 @@ class Importer {
   // obj_import.cpp
   size_t chunk_count(size_t bytes) const;
   void parse(std::string_view text);
+  void parse_one(size_t c, size_t reserve_bytes);
   void assemble(StageClock* clock);
 
   // obj_plan.cpp
@@ -129,6 +134,7 @@ class Importer {
   const std::string& directory_;
   const ImportOptions& options_;
   unsigned threads_ = 1;
+  bool release_text_ = false;
   ObjMesh* out_ = nullptr;
   std::vector<std::string_view> texts_;
   std::vector<ChunkData> chunks_;
@@ -146,7 +152,7 @@ class Importer {
   BigVector<VertexKey> keys_;
   std::vector<std::vector<uint64_t>> write_at_;  // per chunk and material slot: its first index
   uint64_t index_total_ = 0;                     // the index array's length
-  // One thread (obj_streamed.cpp): every corner's vertex number in file order, where each chunk's
+  // Chunk by chunk (obj_streamed.cpp): every corner's vertex number in file order, where each chunk's
   // start, and which chunks kept their faces (those with polygons or a usemtl).
   BigVector<uint32_t> streamed_ids_;
   std::vector<uint64_t> id_begin_;

@@ -1,11 +1,14 @@
-// One thread, chunk by chunk (obj_importer.hpp). Each chunk is parsed and its corners numbered at
-// once, against one numbering for the whole file (the corners come in file order, so the numbers
-// are final), into one array of vertex numbers in file order — which, for a file of triangles in
-// one material, is the index array itself. A chunk's corners (12 bytes each) therefore live only
-// until numbered, and the next chunk is parsed into the same pages, as are its faces when nothing
-// later needs them. The staged pipeline keeps every chunk's corners until all are parsed, as it
-// must to share the work between threads; on one thread, parsing into pages already written saves
-// the kernel's price for fresh ones (docs/importers/obj.md).
+// Chunk by chunk (obj_importer.hpp). Each chunk is parsed, and as soon as it and every chunk
+// before it are, its corners are numbered against one numbering for the whole file (the corners
+// come in file order, so the numbers are final) into one array of vertex numbers in file order —
+// which, for a file of triangles in one material, is the index array itself. On several threads
+// the numbering runs on one thread at a time while the others parse the chunks after it
+// (obj_ordered_jobs.hpp). A chunk's corners (12 bytes each) therefore live only until numbered,
+// and a later chunk is parsed into the same pages, as are its faces when nothing later needs
+// them: a few chunks' worth instead of the whole file's, and pages already written instead of
+// fresh ones, for which the kernel charges as much as for parsing (docs/importers/obj.md). The
+// staged pipeline keeps every chunk's corners until all are parsed and numbers each chunk on its
+// own, then merges the chunks' keys.
 //
 // The output is the staged pipeline's, byte for byte (the tests compare). What a chunk cannot
 // settle with the file read so far up to its end — a position index past the positions read so
@@ -15,10 +18,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <stdexcept>
 
 #include "obj_importer.hpp"
+#include "obj_ordered_jobs.hpp"
 #include "obj_split.hpp"
 
 namespace pfx_obj {
@@ -55,50 +60,67 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
   chunks_.assign(chunk_total, ChunkData{});
   id_begin_.assign(chunk_total + 1, 0);
   faces_kept_.assign(chunk_total, false);
-  // Every chunk's arrays sized for the largest, so that each fits in the previous one's pages.
+  // Every chunk's arrays sized for the largest, so that each fits in the pages of any before it.
   size_t largest = 0;
   for (std::string_view chunk : texts_) largest = std::max(largest, chunk.size());
 
+  // The corner and face pages of the chunks between parse and numbering (run_ordered_jobs): a
+  // chunk is parsed into its slot's pages, which go back to the slot once it is numbered.
+  struct ChunkPages {
+    BigVector<uint32_t> corners;
+    BigVector<Face> faces;
+  };
+  const size_t window = threads_ == 1 ? 1 : 2 * size_t{threads_};
+  std::vector<ChunkPages> pages(window);
+
   VertexNumbering numbering(0, 0);
+  // The file up to the last chunk numbered.
   uint64_t positions = 0, texcoords = 0, normals = 0, faces = 0, corners = 0, bytes = 0;
   uint32_t smoothing = kDefaultSmoothing;
-  for (size_t c = 0; c < chunk_total; ++c) {
+  std::atomic<uint64_t> bytes_numbered{0};
+  bool use_stages = false;
+
+  auto parse_job = [&](size_t c, unsigned) {
     ChunkData& chunk = chunks_[c];
-    if (c > 0) {
-      chunk.corners.swap(chunks_[c - 1].corners);
-      if (!faces_kept_[c - 1]) chunk.faces.swap(chunks_[c - 1].faces);
-    }
-    // "parse" and "dedup" are marked as the stages the staged pipeline runs on every thread, so
-    // that the benchmark's breakdown compares like with like across thread counts.
-    clock.time("parse", true, [&] { parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunk, largest); });
-    if (chunk.failed) break;  // the plan reports it, as the first error in file order
+    ChunkPages& slot = pages[c % window];
+    chunk.corners.swap(slot.corners);
+    chunk.faces.swap(slot.faces);
+    parse_one(c, largest);
+  };
+  // In file order: chunk c's corners numbered, its pages handed back. false stops the import.
+  auto number_job = [&](size_t c) {
+    ChunkData& chunk = chunks_[c];
+    if (chunk.failed) return false;  // the plan reports it, as the first error in file order
     bytes += texts_[c].size();
     const uint64_t chunk_corners = chunk.corners.size() / 3;
     const uint64_t positions_now = positions + chunk.position_count();
-    if (chunk.max_index[0] > positions_now || positions_now > kMaxWrittenIndex) return Outcome::kUseStages;
+    if (chunk.max_index[0] > positions_now || positions_now > kMaxWrittenIndex) {
+      use_stages = true;
+      return false;
+    }
     if (corners + chunk_corners > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
-
-    bool numbered = false;
-    clock.time("dedup", true, [&] {
-      if (corners + chunk_corners > streamed_ids_.capacity())
-        streamed_ids_.reserve(std::max({corners + chunk_corners, id_room(text.size(), corners + chunk_corners, bytes),
-                                        2 * uint64_t{streamed_ids_.capacity()}}));
-      streamed_ids_.resize(corners + chunk_corners);
-      numbering.grow(static_cast<uint32_t>(positions_now), room_for(positions_now, bytes, text.size()),
-                     numbering.keys().size() + chunk_corners,
-                     room_for(numbering.keys().size() + chunk_corners, bytes, text.size()));
-      const uint32_t bases[3] = {static_cast<uint32_t>(positions), static_cast<uint32_t>(texcoords),
-                                 static_cast<uint32_t>(normals)};
-      numbered = number_streamed_chunk(c, bases, smoothing, faces, &numbering, streamed_ids_.data() + corners);
-    });
-    if (!numbered) return Outcome::kUseStages;
-
+    if (corners + chunk_corners > streamed_ids_.capacity())
+      streamed_ids_.reserve(std::max({corners + chunk_corners, id_room(text.size(), corners + chunk_corners, bytes),
+                                      2 * uint64_t{streamed_ids_.capacity()}}));
+    streamed_ids_.resize(corners + chunk_corners);
+    numbering.grow(static_cast<uint32_t>(positions_now), room_for(positions_now, bytes, text.size()),
+                   numbering.keys().size() + chunk_corners,
+                   room_for(numbering.keys().size() + chunk_corners, bytes, text.size()));
+    const uint32_t bases[3] = {static_cast<uint32_t>(positions), static_cast<uint32_t>(texcoords),
+                               static_cast<uint32_t>(normals)};
+    if (!number_streamed_chunk(c, bases, smoothing, faces, &numbering, streamed_ids_.data() + corners)) {
+      use_stages = true;
+      return false;
+    }
     // Its faces are needed again only to place polygons' triangles or to follow usemtl.
     uint64_t triangles = 0;
     for (uint64_t t : chunk.triangles_by_material) triangles += t;
     faces_kept_[c] = 3 * triangles != chunk_corners ||
                      std::any_of(chunk.changes.begin(), chunk.changes.end(),
                                  [](const StateChange& s) { return s.kind == StateChange::kMaterial; });
+    ChunkPages& slot = pages[c % window];
+    slot.corners.swap(chunk.corners);
+    if (!faces_kept_[c]) slot.faces.swap(chunk.faces);
     for (const StateChange& change : chunk.changes)
       if (change.kind == StateChange::kSmoothing) smoothing = change.value;
     positions = positions_now;
@@ -107,12 +129,21 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
     faces += chunk.face_count;
     corners += chunk_corners;
     id_begin_[c + 1] = corners;
-    report(static_cast<float>(0.7 * static_cast<double>(bytes) / std::max<double>(1.0, text.size())));
-  }
+    bytes_numbered = bytes;
+    return true;
+  };
+  // One stage: the numbering runs in file order on one thread at a time, beside the parse of
+  // later chunks on the others.
+  clock.time("parse and numbering", true, [&] {
+    run_ordered_jobs(threads_, chunk_total, window, parse_job, number_job, [&] {
+      report(static_cast<float>(0.7 * static_cast<double>(bytes_numbered.load()) / std::max<double>(1.0, text.size())));
+    });
+  });
+  if (use_stages) return Outcome::kUseStages;
   // The last corners and faces handed on, for the arrays made next (obj_spare_mappings.hpp).
-  for (ChunkData& chunk : chunks_) {
-    keep_for_reuse(&chunk.corners);
-    if (!faces_kept_[&chunk - chunks_.data()]) keep_for_reuse(&chunk.faces);
+  for (ChunkPages& slot : pages) {
+    keep_for_reuse(&slot.corners);
+    keep_for_reuse(&slot.faces);
   }
 
   bool ok = true;

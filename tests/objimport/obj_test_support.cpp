@@ -7,12 +7,13 @@
 namespace pfx_obj_test {
 
 Imported import_text(const std::string& text, unsigned threads, size_t chunk_bytes, const std::string& directory,
-                     bool plain_lines) {
+                     bool plain_lines, bool streamed) {
   Imported result;
   pfx_obj::ImportOptions options;
   options.threads = threads;
   options.chunk_bytes = chunk_bytes;
   options.plain_lines = plain_lines;
+  options.streamed = streamed;
   const std::string name = directory.empty() ? "test.obj" : directory + "/test.obj";
   result.ok = pfx_obj::import_obj_text(text, name, directory, options, &result.mesh, &result.error);
   return result;

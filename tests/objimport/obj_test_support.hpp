@@ -21,7 +21,7 @@ struct Imported {
 // Imports `text` as the file "test.obj" (no material libraries read) or, with `directory`, as a
 // file in that folder. plain_lines = false: the general grammar reads every line (no fast readers).
 Imported import_text(const std::string& text, unsigned threads = 1, size_t chunk_bytes = 0,
-                     const std::string& directory = "", bool plain_lines = true);
+                     const std::string& directory = "", bool plain_lines = true, bool streamed = true);
 
 struct SoupCorner {
   std::array<float, 3> position{};

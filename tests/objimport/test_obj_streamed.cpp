@@ -1,11 +1,15 @@
-// The one-thread import runs chunk by chunk (obj_streamed.cpp) and must give what the staged
-// pipeline gives, byte for byte, whatever the cut; files it cannot settle chunk by chunk (a face
-// using positions defined further on, indices out of range) go to the staged pipeline, which the
-// stage names show.
+// The import runs chunk by chunk (obj_streamed.cpp) — on several threads, parsing ahead while one
+// numbers in file order — and must give what the staged pipeline gives, byte for byte, whatever
+// the cut and the thread count; files it cannot settle chunk by chunk (a face using positions
+// defined further on, indices out of range) go to the staged pipeline, which the stage names show.
 #include <catch2/catch.hpp>
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "obj_test_support.hpp"
@@ -21,9 +25,9 @@ struct Run {
   std::string error;
 };
 
-Run import_one_thread(const std::string& text, size_t chunk_bytes, bool streamed) {
+Run import_cut(const std::string& text, size_t chunk_bytes, bool streamed, unsigned threads = 1) {
   pfx_obj::ImportOptions options;
-  options.threads = 1;
+  options.threads = threads;
   options.chunk_bytes = chunk_bytes;
   options.streamed = streamed;
   Run run;
@@ -38,13 +42,17 @@ bool ran_streamed(const pfx_obj::ObjMesh& mesh) {
                      [](const pfx_obj::ImportStage& s) { return std::strcmp(s.name, "triangles") == 0; });
 }
 
+// The staged pipeline on one thread against the import chunk by chunk on one to three threads.
 void check_streamed_like_staged(const std::string& text, size_t chunk_bytes) {
   INFO("chunk bytes " << chunk_bytes);
-  const Run staged = import_one_thread(text, chunk_bytes, false);
-  const Run streamed = import_one_thread(text, chunk_bytes, true);
-  REQUIRE(streamed.ok == staged.ok);
-  CHECK(streamed.error == staged.error);
-  if (staged.ok) check_same(staged.mesh, streamed.mesh);
+  const Run staged = import_cut(text, chunk_bytes, false);
+  for (unsigned threads : {1u, 2u, 3u}) {
+    INFO("threads " << threads);
+    const Run streamed = import_cut(text, chunk_bytes, true, threads);
+    REQUIRE(streamed.ok == staged.ok);
+    CHECK(streamed.error == staged.error);
+    if (staged.ok) check_same(staged.mesh, streamed.mesh);
+  }
 }
 
 const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
@@ -56,7 +64,7 @@ TEST_CASE("obj streamed: the same bytes as the staged pipeline for any cut", "[o
   const std::string text = varied_file(20000, 41);
   for (size_t chunk : {size_t{0}, size_t{61}, size_t{997}, size_t{65536}, size_t{1} << 30}) {
     check_streamed_like_staged(text, chunk);
-    CHECK(ran_streamed(import_one_thread(text, chunk, true).mesh));
+    CHECK(ran_streamed(import_cut(text, chunk, true).mesh));
   }
 }
 
@@ -64,7 +72,7 @@ TEST_CASE("obj streamed: triangles of one material become the index array as num
   std::string text = kQuad;
   for (int i = 0; i < 300; ++i) text += i % 2 ? "f 1 2 3\n" : "f 1 3 4\n";
   for (size_t chunk : {size_t{0}, size_t{40}}) {
-    const Run run = import_one_thread(text, chunk, true);
+    const Run run = import_cut(text, chunk, true);
     REQUIRE(run.ok);
     CHECK(ran_streamed(run.mesh));
     REQUIRE(run.mesh.indices.size() == 900);
@@ -86,7 +94,7 @@ TEST_CASE("obj streamed: materials and smoothing that change across chunks", "[o
   }
   for (size_t chunk : {size_t{0}, size_t{23}, size_t{150}}) {
     check_streamed_like_staged(text, chunk);
-    CHECK(ran_streamed(import_one_thread(text, chunk, true).mesh));
+    CHECK(ran_streamed(import_cut(text, chunk, true).mesh));
   }
 }
 
@@ -95,12 +103,12 @@ TEST_CASE("obj streamed: a face using positions defined further on goes to the s
   const std::string text = "f 1 2 3\n# " + std::string(100, '.') + "\n" + kQuad;
   for (size_t chunk : {size_t{16}, size_t{1} << 30}) {
     check_streamed_like_staged(text, chunk);
-    const Run run = import_one_thread(text, chunk, true);
+    const Run run = import_cut(text, chunk, true);
     REQUIRE(run.ok);
     CHECK(run.mesh.indices == std::vector<uint32_t>{0, 1, 2});
   }
-  CHECK_FALSE(ran_streamed(import_one_thread(text, 16, true).mesh));
-  CHECK(ran_streamed(import_one_thread(text, size_t{1} << 30, true).mesh));  // one chunk: all read
+  CHECK_FALSE(ran_streamed(import_cut(text, 16, true).mesh));
+  CHECK(ran_streamed(import_cut(text, size_t{1} << 30, true).mesh));  // one chunk: all read
 }
 
 TEST_CASE("obj streamed: errors it leaves to the staged pipeline keep their lines", "[objimport][streamed]") {
@@ -108,7 +116,7 @@ TEST_CASE("obj streamed: errors it leaves to the staged pipeline keep their line
                                   std::string("f -9 2 3\n"), std::string("f 1 2 x\n")}) {
     const std::string text = std::string(kQuad) + "f 1 2 3\n" + tail + "f 1 2 3\n";
     INFO(tail);
-    const Run run = import_one_thread(text, 12, true);
+    const Run run = import_cut(text, 12, true);
     REQUIRE_FALSE(run.ok);
     CHECK(run.error.rfind("test.obj:6: ", 0) == 0);
     for (size_t chunk : {size_t{0}, size_t{12}, size_t{31}}) check_streamed_like_staged(text, chunk);
@@ -118,4 +126,38 @@ TEST_CASE("obj streamed: errors it leaves to the staged pipeline keep their line
 TEST_CASE("obj streamed: an empty file, and a file without faces", "[objimport][streamed]") {
   for (const std::string& text : {std::string(), std::string(kQuad), std::string("# nothing\n")})
     for (size_t chunk : {size_t{0}, size_t{5}}) check_streamed_like_staged(text, chunk);
+}
+
+TEST_CASE("obj streamed: a file's pages dropped once parsed are read again when the staged pipeline starts over", "[objimport][streamed]") {
+  // Importing a file, each chunk drops its whole pages of the file's mapping once parsed
+  // (release_read_pages). A face using positions defined further on sends the import to the
+  // staged pipeline after chunks were parsed, and it must read the same bytes again.
+  namespace fs = std::filesystem;
+  const fs::path path = fs::temp_directory_path() / ("pfx-obj-streamed-" + std::to_string(::getpid()) + ".obj");
+  const std::string varied = varied_file(20000, 7);
+  // The face's chunk ends with a long comment line, before any position.
+  for (const std::string& text : {varied, "f 1 2 3\n# " + std::string(20000, '.') + "\n" + varied}) {
+    std::ofstream(path, std::ios::binary) << text;
+    // The reference: the same text from memory (nothing dropped), staged, in one chunk.
+    pfx_obj::ImportOptions one_chunk;
+    one_chunk.threads = 1;
+    one_chunk.chunk_bytes = size_t{1} << 30;
+    one_chunk.streamed = false;
+    Run whole;
+    whole.ok = pfx_obj::import_obj_text(text, path.string(), path.parent_path().string(), one_chunk, &whole.mesh,
+                                        &whole.error);
+    REQUIRE(whole.ok);
+    for (unsigned threads : {1u, 2u, 3u}) {
+      INFO("threads " << threads << ", forward face " << (text != varied));
+      pfx_obj::ImportOptions options;
+      options.threads = threads;
+      options.chunk_bytes = 16384;  // chunks of several pages
+      Run run;
+      run.ok = pfx_obj::import_obj_file(path.string(), options, &run.mesh, &run.error);
+      REQUIRE(run.ok);
+      check_same(whole.mesh, run.mesh);
+      CHECK(ran_streamed(run.mesh) == (text == varied));
+    }
+  }
+  fs::remove(path);
 }
