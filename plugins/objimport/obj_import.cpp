@@ -33,12 +33,12 @@ bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
   return true;
 }
 
-// The stages after the index array: vertex arrays, normals, bounds and warnings.
+// The stages after the index array: vertex arrays and bounds, normals, warnings.
 void Importer::assemble(StageClock* clock) {
   report(0.85f);
-  clock->time("vertices", true, [&] { fill_vertices(); });
+  clock->time("vertices, bounds", true, [&] { fill_vertices(); });
   clock->time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, threads_, &out_->normals); });
-  clock->time("bounds, warnings", false, [&] { finish(); });
+  clock->time("warnings", false, [&] { finish(); });
   report(1.0f);
 }
 

@@ -8,7 +8,7 @@
 //                     triangle counts per material; each face's material and normal group
 //   obj_assemble.cpp  vertex data kept where the chunks wrote it, the index array laid out, each
 //                     corner numbered (obj_dedup.cpp) and written there in the same walk,
-//                     vertex arrays, normals (obj_normals.cpp), bounds and warnings
+//                     vertex arrays and bounds, normals (obj_normals.cpp), warnings
 //   obj_streamed.cpp  the default: each chunk parsed, its corners numbered in file order while
 //                     later chunks are parsed, then the stages above from plan on, the index
 //                     array written from the numbers

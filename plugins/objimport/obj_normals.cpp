@@ -1,5 +1,6 @@
 #include "obj_normals.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "obj_parallel.hpp"
@@ -10,21 +11,29 @@ namespace pfx_obj {
 void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& positions,
                       const BigVector<uint32_t>& indices, unsigned threads, BigVector<float>* normals) {
   const size_t count = keys.size();
-  std::vector<uint8_t> generated(count);
-  bool any = false, with_texcoords = false;
-  for (size_t i = 0; i < count; ++i) {
-    generated[i] = keys[i].vn == kNoIndex;
-    any |= generated[i] != 0;
-    with_texcoords |= generated[i] && keys[i].vt != kNoIndex;
-  }
-  if (!any) return;
+  const unsigned workers = threads < 1 ? 1 : threads;
   BigVector<float>& n = *normals;
-  for (size_t i = 0; i < count; ++i)
-    if (generated[i]) n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;
+  // Which vertices get a generated normal (their sums zeroed), found in blocks on every thread:
+  // in a file that gives every corner a normal this is all the stage does.
+  std::vector<uint8_t> generated(count);
+  constexpr size_t kBlock = size_t{1} << 16;
+  const size_t blocks = (count + kBlock - 1) / kBlock;
+  std::vector<uint8_t> block_any(blocks, 0), block_texcoords(blocks, 0);
+  run_parallel(workers, blocks, [&](size_t b, unsigned) {
+    for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
+      generated[i] = keys[i].vn == kNoIndex;
+      if (!generated[i]) continue;
+      block_any[b] = 1;
+      block_texcoords[b] |= keys[i].vt != kNoIndex;
+      n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;
+    }
+  });
+  const bool any = std::find(block_any.begin(), block_any.end(), 1) != block_any.end();
+  const bool with_texcoords = std::find(block_texcoords.begin(), block_texcoords.end(), 1) != block_texcoords.end();
+  if (!any) return;
 
   // Each worker owns a range of vertices and adds every triangle's normal to the ones it owns, in
   // index order: no two workers write one vertex, and the order of each sum is fixed.
-  const unsigned workers = threads < 1 ? 1 : threads;
   run_on_each_worker(workers, [&](unsigned w) {
     const uint64_t lo = count * w / workers, hi = count * (w + 1) / workers;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
