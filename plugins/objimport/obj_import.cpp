@@ -23,7 +23,7 @@ bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
   bool ok = true;
   clock.time("plan", false, [&] { ok = plan(error); });
   if (!ok) return false;
-  clock.time("resolve", true, [&] { resolve_all(); });
+  clock.time("resolve", true, [&] { resolve_all(threads_); });
   if (!first_resolve_error(error)) return false;
   clock.time("gather", false, [&] { gather(); });
   report(0.7f);

@@ -104,7 +104,7 @@ class Importer {
   uint32_t material_slot(const std::string& name, uint64_t line);
 
   // obj_resolve.cpp
-  void resolve_all();
+  void resolve_all(unsigned threads);
   void resolve(size_t c, size_t slots);
   bool first_resolve_error(std::string* error);
   FaceStates face_states(size_t c) const;

@@ -152,7 +152,9 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
   for (const ChunkData& chunk : chunks_)
     for (int k = 0; k < 3; ++k)
       if (chunk.max_index[k] > totals_[k]) return Outcome::kUseStages;  // an error, reported with its line there
-  clock.time("resolve", false, [&] { resolve_all(); });  // each chunk's triangles per material
+  // Each chunk's triangles per material: no walk over corners here (relative indices were made
+  // final as numbered, indices out of range went to the stages), so no thread is worth starting.
+  clock.time("resolve", false, [&] { resolve_all(1); });
   clock.time("gather", false, [&] { gather(); });
   clock.time("layout", false, [&] { layout_triangles(); });
   keys_.swap(numbering.keys());
