@@ -98,8 +98,8 @@ struct ChunkData {
 // Parses the chunk's text. `first_in_file` lets a UTF-8 byte-order mark be skipped. `plain_lines`:
 // read the common line forms with the fast readers (obj_plain_lines.hpp); false only in tests that
 // check both ways give the same result. The arrays are sized for the most `reserve_bytes` (at least
-// the text's size) could hold, so that chunks parsed one after another into the same corner and
-// face arrays (obj_streamed.cpp) all fit the first one's; *out's arrays are kept if large enough.
+// the text's size) could hold, so that chunks parsed in turn into the same corner and face arrays
+// (obj_streamed.cpp) all fit the first one's; *out's arrays are kept if large enough.
 void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out, size_t reserve_bytes = 0);
 
 }  // namespace pfx_obj
