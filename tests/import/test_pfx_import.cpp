@@ -187,13 +187,14 @@ TEST_CASE("pfx-bench --import: a tiny run writes both reports with every loader"
     CHECK(row["mb_per_s"].get<double>() > 0);
     CHECK(row["runs"] == 2);  // each in a process of its own, in rounds
   }
-  // pfx's stages, also from imports in new processes: parse first, at each thread count.
+  // pfx's stages, also from imports in new processes: the parse (chunk by chunk, with the
+  // numbering) first, at each thread count.
   REQUIRE(j["pfx_stages"].size() == 2);  // at 1 and 2 threads
   for (const auto& breakdown : j["pfx_stages"]) {
     INFO(breakdown.dump());
     CHECK(breakdown["ok"] == true);
     REQUIRE(!breakdown["stages"].empty());
-    CHECK(breakdown["stages"][0]["name"] == "parse");
+    CHECK(breakdown["stages"][0]["name"] == "parse and numbering");
   }
   CHECK(fs::exists(out + "/import.md"));
   CHECK(fs::file_size(scratch.dir / "stdout.md") > 0);
