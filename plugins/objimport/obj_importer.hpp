@@ -126,6 +126,13 @@ class Importer {
   void finish();
 
   // obj_streamed.cpp
+  // The file up to the last chunk numbered, chunk by chunk.
+  struct StreamedSoFar {
+    uint64_t positions = 0, texcoords = 0, normals = 0, faces = 0, corners = 0, bytes = 0;
+    uint32_t smoothing = kDefaultSmoothing;
+  };
+  enum class Taken { kNumbered, kStop, kUseStages };
+  Taken take_streamed_chunk(size_t c, uint64_t text_bytes, StreamedSoFar* so_far, VertexNumbering* numbering);
   bool number_streamed_chunk(size_t c, const uint32_t bases[3], uint32_t start_smoothing, uint64_t face_base,
                              VertexNumbering* numbering, uint32_t* ids);
   void write_streamed_triangles();

@@ -74,9 +74,7 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
   std::vector<ChunkPages> pages(window);
 
   VertexNumbering numbering(0, 0);
-  // The file up to the last chunk numbered.
-  uint64_t positions = 0, texcoords = 0, normals = 0, faces = 0, corners = 0, bytes = 0;
-  uint32_t smoothing = kDefaultSmoothing;
+  StreamedSoFar so_far;
   std::atomic<uint64_t> bytes_numbered{0};
   bool use_stages = false;
 
@@ -87,49 +85,15 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
     chunk.faces.swap(slot.faces);
     parse_one(c, largest);
   };
-  // In file order: chunk c's corners numbered, its pages handed back. false stops the import.
+  // In file order: chunk c numbered, its pages handed back to its slot. false stops the import.
   auto number_job = [&](size_t c) {
-    ChunkData& chunk = chunks_[c];
-    if (chunk.failed) return false;  // the plan reports it, as the first error in file order
-    bytes += texts_[c].size();
-    const uint64_t chunk_corners = chunk.corners.size() / 3;
-    const uint64_t positions_now = positions + chunk.position_count();
-    if (chunk.max_index[0] > positions_now || positions_now > kMaxWrittenIndex) {
-      use_stages = true;
-      return false;
-    }
-    if (corners + chunk_corners > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
-    if (corners + chunk_corners > streamed_ids_.capacity())
-      streamed_ids_.reserve(std::max({corners + chunk_corners, id_room(text.size(), corners + chunk_corners, bytes),
-                                      2 * uint64_t{streamed_ids_.capacity()}}));
-    streamed_ids_.resize(corners + chunk_corners);
-    numbering.grow(static_cast<uint32_t>(positions_now), room_for(positions_now, bytes, text.size()),
-                   numbering.keys().size() + chunk_corners,
-                   room_for(numbering.keys().size() + chunk_corners, bytes, text.size()));
-    const uint32_t bases[3] = {static_cast<uint32_t>(positions), static_cast<uint32_t>(texcoords),
-                               static_cast<uint32_t>(normals)};
-    if (!number_streamed_chunk(c, bases, smoothing, faces, &numbering, streamed_ids_.data() + corners)) {
-      use_stages = true;
-      return false;
-    }
-    // Its faces are needed again only to place polygons' triangles or to follow usemtl.
-    uint64_t triangles = 0;
-    for (uint64_t t : chunk.triangles_by_material) triangles += t;
-    faces_kept_[c] = 3 * triangles != chunk_corners ||
-                     std::any_of(chunk.changes.begin(), chunk.changes.end(),
-                                 [](const StateChange& s) { return s.kind == StateChange::kMaterial; });
+    const Taken taken = take_streamed_chunk(c, text.size(), &so_far, &numbering);
+    use_stages = taken == Taken::kUseStages;
+    if (taken != Taken::kNumbered) return false;
     ChunkPages& slot = pages[c % window];
-    slot.corners.swap(chunk.corners);
-    if (!faces_kept_[c]) slot.faces.swap(chunk.faces);
-    for (const StateChange& change : chunk.changes)
-      if (change.kind == StateChange::kSmoothing) smoothing = change.value;
-    positions = positions_now;
-    texcoords += chunk.texcoords.size() / 2;
-    normals += chunk.normals.size() / 3;
-    faces += chunk.face_count;
-    corners += chunk_corners;
-    id_begin_[c + 1] = corners;
-    bytes_numbered = bytes;
+    slot.corners.swap(chunks_[c].corners);
+    if (!faces_kept_[c]) slot.faces.swap(chunks_[c].faces);
+    bytes_numbered = so_far.bytes;
     return true;
   };
   // One stage: the numbering runs in file order on one thread at a time, beside the parse of
@@ -162,6 +126,47 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
   end_chunks();
   assemble(&clock);
   return Outcome::kDone;
+}
+
+// Chunk c, parsed, after every chunk before it: its corners numbered into the vertex numbers, and
+// *so_far moved past it. kStop: it failed to parse (the plan reports it, as the first error in
+// file order); kUseStages: it needs what only the staged pipeline does.
+Importer::Taken Importer::take_streamed_chunk(size_t c, uint64_t text_bytes, StreamedSoFar* so_far,
+                                              VertexNumbering* numbering) {
+  ChunkData& chunk = chunks_[c];
+  if (chunk.failed) return Taken::kStop;
+  StreamedSoFar& at = *so_far;
+  at.bytes += texts_[c].size();
+  const uint64_t chunk_corners = chunk.corners.size() / 3;
+  const uint64_t positions_now = at.positions + chunk.position_count();
+  if (chunk.max_index[0] > positions_now || positions_now > kMaxWrittenIndex) return Taken::kUseStages;
+  if (at.corners + chunk_corners > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
+  if (at.corners + chunk_corners > streamed_ids_.capacity())
+    streamed_ids_.reserve(std::max({at.corners + chunk_corners, id_room(text_bytes, at.corners + chunk_corners, at.bytes),
+                                    2 * uint64_t{streamed_ids_.capacity()}}));
+  streamed_ids_.resize(at.corners + chunk_corners);
+  numbering->grow(static_cast<uint32_t>(positions_now), room_for(positions_now, at.bytes, text_bytes),
+                  numbering->keys().size() + chunk_corners,
+                  room_for(numbering->keys().size() + chunk_corners, at.bytes, text_bytes));
+  const uint32_t bases[3] = {static_cast<uint32_t>(at.positions), static_cast<uint32_t>(at.texcoords),
+                             static_cast<uint32_t>(at.normals)};
+  if (!number_streamed_chunk(c, bases, at.smoothing, at.faces, numbering, streamed_ids_.data() + at.corners))
+    return Taken::kUseStages;
+  // Its faces are needed again only to place polygons' triangles or to follow usemtl.
+  uint64_t triangles = 0;
+  for (uint64_t t : chunk.triangles_by_material) triangles += t;
+  faces_kept_[c] = 3 * triangles != chunk_corners ||
+                   std::any_of(chunk.changes.begin(), chunk.changes.end(),
+                               [](const StateChange& s) { return s.kind == StateChange::kMaterial; });
+  for (const StateChange& change : chunk.changes)
+    if (change.kind == StateChange::kSmoothing) at.smoothing = change.value;
+  at.positions = positions_now;
+  at.texcoords += chunk.texcoords.size() / 2;
+  at.normals += chunk.normals.size() / 3;
+  at.faces += chunk.face_count;
+  at.corners += chunk_corners;
+  id_begin_[c + 1] = at.corners;
+  return Taken::kNumbered;
 }
 
 // Chunk c's corners, in order, numbered into ids: relative indices made final (false when one
