@@ -152,6 +152,7 @@ void Importer::number_and_triangulate(StageClock* clock) {
         free_corners(c);
       }
       keys_.swap(numbering.keys());
+      numbering.keep_pages_for_reuse();
     });
   } else {
     // Each chunk numbered on its own (each worker reuses one numbering), then the chunks' keys

@@ -47,6 +47,13 @@ void VertexNumbering::clear() {
   overflow_.reset();
 }
 
+void VertexNumbering::keep_pages_for_reuse() {
+  keys_ = {};
+  keep_for_reuse(&head_);
+  keep_for_reuse(&next_);
+  overflow_.reset();
+}
+
 void merge_chunk_keys(std::vector<BigVector<VertexKey>>* chunk_keys, uint32_t position_count,
                       BigVector<VertexKey>* file_keys, std::vector<BigVector<uint32_t>>* to_file) {
   uint64_t total = 0;

@@ -68,6 +68,10 @@ class VertexNumbering {
   // Empties the numbering for the next chunk, resetting only the heads its keys used.
   void clear();
 
+  // Frees what is left once the keys are taken, keeping the written pages for the arrays the
+  // import makes next (obj_spare_mappings.hpp): the result's vertex arrays.
+  void keep_pages_for_reuse();
+
  private:
   static constexpr uint32_t kMaxChain = 8;
   uint32_t add(const VertexKey& key);

@@ -37,15 +37,17 @@ uint64_t room_for(uint64_t so_far, uint64_t bytes_read, uint64_t bytes_total) {
   return static_cast<uint64_t>(per_byte * static_cast<double>(bytes_total) * 1.125) + 1024;
 }
 
-// Room for the vertex numbers: for as many corners as the text could hold (two bytes each) —
-// address space only, never copied — unless that would be more than an eighth of the machine's
-// memory (the kernel refuses a mapping much larger than memory): then an estimate from the text
-// read so far, the array doubling when it falls short.
-uint64_t id_room(uint64_t text_bytes, uint64_t ids_so_far, uint64_t bytes_read) {
-  const uint64_t most = text_bytes / 2 + 1;
+// Room for an array that grows as chunks are numbered: for the most elements the text could
+// still make (`most`) — address space only, never copied — unless that would be more than an
+// eighth of the machine's memory (the kernel refuses a mapping much larger than memory): then an
+// estimate from the text read so far, the array doubling when it falls short. Growing by copying
+// costs fresh pages as well as the copy: estimates from the text read so far fall short in files
+// that list every vertex before the faces.
+uint64_t room_at_most(uint64_t most, uint64_t element_bytes, uint64_t so_far, uint64_t bytes_read,
+                      uint64_t text_bytes) {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
   const uint64_t memory = pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
-  return most * sizeof(uint32_t) <= memory / 8 ? most : room_for(ids_so_far, bytes_read, text_bytes);
+  return most * element_bytes <= memory / 8 ? most : room_for(so_far, bytes_read, text_bytes);
 }
 
 }  // namespace
@@ -122,6 +124,7 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
   clock.time("gather", false, [&] { gather(); });
   clock.time("layout", false, [&] { layout_triangles(); });
   keys_.swap(numbering.keys());
+  numbering.keep_pages_for_reuse();
   clock.time("triangles", false, [&] { write_streamed_triangles(); });
   end_chunks();
   assemble(&clock);
@@ -141,13 +144,20 @@ Importer::Taken Importer::take_streamed_chunk(size_t c, uint64_t text_bytes, Str
   const uint64_t positions_now = at.positions + chunk.position_count();
   if (chunk.max_index[0] > positions_now || positions_now > kMaxWrittenIndex) return Taken::kUseStages;
   if (at.corners + chunk_corners > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
-  if (at.corners + chunk_corners > streamed_ids_.capacity())
-    streamed_ids_.reserve(std::max({at.corners + chunk_corners, id_room(text_bytes, at.corners + chunk_corners, at.bytes),
+  // The most the rest of the text could add: a corner per two bytes ("1 "), a v per eight.
+  const uint64_t bytes_left = text_bytes - at.bytes;
+  const uint64_t corners_now = at.corners + chunk_corners, keys_now = numbering->keys().size() + chunk_corners;
+  if (corners_now > streamed_ids_.capacity())
+    streamed_ids_.reserve(std::max({corners_now,
+                                    room_at_most(corners_now + bytes_left / 2 + 1, sizeof(uint32_t), corners_now,
+                                                 at.bytes, text_bytes),
                                     2 * uint64_t{streamed_ids_.capacity()}}));
-  streamed_ids_.resize(at.corners + chunk_corners);
-  numbering->grow(static_cast<uint32_t>(positions_now), room_for(positions_now, at.bytes, text_bytes),
-                  numbering->keys().size() + chunk_corners,
-                  room_for(numbering->keys().size() + chunk_corners, at.bytes, text_bytes));
+  streamed_ids_.resize(corners_now);
+  numbering->grow(static_cast<uint32_t>(positions_now),
+                  room_at_most(positions_now + bytes_left / 8 + 1, sizeof(uint32_t), positions_now, at.bytes, text_bytes),
+                  keys_now,
+                  room_at_most(keys_now + bytes_left / 2 + 1, sizeof(VertexKey) + sizeof(uint32_t), keys_now, at.bytes,
+                               text_bytes));
   const uint32_t bases[3] = {static_cast<uint32_t>(at.positions), static_cast<uint32_t>(at.texcoords),
                              static_cast<uint32_t>(at.normals)};
   if (!number_streamed_chunk(c, bases, at.smoothing, at.faces, numbering, streamed_ids_.data() + at.corners))
