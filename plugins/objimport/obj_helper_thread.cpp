@@ -2,28 +2,46 @@
 
 #include <system_error>
 #include <utility>
-#include <vector>
 
 namespace pfx_obj {
 
-HelperThread::HelperThread(unsigned index, std::function<void()> body) : body_(std::move(body)) {
+WorkerPlacement::WorkerPlacement(unsigned workers) {
+  CPU_ZERO(&allowed_);
+  if (workers < 2) return;
+  const int here = ::sched_getcpu();
+  if (here < 0 || ::sched_getaffinity(0, sizeof allowed_, &allowed_) != 0) return;
+  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+    if (CPU_ISSET(cpu, &allowed_)) {
+      if (cpu == here) here_ = cpus_.size();
+      cpus_.push_back(cpu);
+    }
+  if (cpus_.size() < 2 || cpus_[here_] != here) {  // nothing to place, or here is outside the set
+    cpus_.clear();
+    return;
+  }
+  if (workers <= cpus_.size()) {
+    cpu_set_t only;
+    CPU_ZERO(&only);
+    CPU_SET(here, &only);
+    pinned_ = ::sched_setaffinity(0, sizeof only, &only) == 0;
+  }
+}
+
+WorkerPlacement::~WorkerPlacement() {
+  if (pinned_) ::sched_setaffinity(0, sizeof allowed_, &allowed_);
+}
+
+HelperThread::HelperThread(const WorkerPlacement& placement, unsigned index, std::function<void()> body)
+    : body_(std::move(body)) {
   pthread_attr_t attributes;
   pthread_attr_init(&attributes);
-  const int here = ::sched_getcpu();
-  if (here >= 0 && ::sched_getaffinity(0, sizeof allowed_, &allowed_) == 0) {
-    std::vector<int> cpus;
-    size_t from = 0;
-    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
-      if (CPU_ISSET(cpu, &allowed_)) {
-        if (cpu == here) from = cpus.size();
-        cpus.push_back(cpu);
-      }
-    if (cpus.size() > 1) {
-      cpu_set_t first;
-      CPU_ZERO(&first);
-      CPU_SET(cpus[(from + index) % cpus.size()], &first);
-      restore_ = pthread_attr_setaffinity_np(&attributes, sizeof first, &first) == 0;
-    }
+  const int cpu = placement.cpu_of(index);
+  if (cpu >= 0) {
+    cpu_set_t first;
+    CPU_ZERO(&first);
+    CPU_SET(cpu, &first);
+    if (pthread_attr_setaffinity_np(&attributes, sizeof first, &first) == 0 && !placement.pinned())
+      allow_after_start_ = &placement.allowed();
   }
   const int failed = pthread_create(&thread_, &attributes, &HelperThread::start, this);
   pthread_attr_destroy(&attributes);
@@ -34,7 +52,7 @@ HelperThread::~HelperThread() { pthread_join(thread_, nullptr); }
 
 void* HelperThread::start(void* self) {
   auto* helper = static_cast<HelperThread*>(self);
-  if (helper->restore_) ::sched_setaffinity(0, sizeof helper->allowed_, &helper->allowed_);
+  if (helper->allow_after_start_) ::sched_setaffinity(0, sizeof *helper->allow_after_start_, helper->allow_after_start_);
   helper->body_();
   return nullptr;
 }

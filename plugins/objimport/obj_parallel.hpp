@@ -41,10 +41,12 @@ inline void run_parallel(unsigned threads, size_t count, const std::function<voi
     }
   };
   {
+    const WorkerPlacement placement(threads);  // pins the calling thread for the run, where it pins
     std::vector<std::unique_ptr<HelperThread>> helpers;
-    for (unsigned w = 1; w < threads; ++w) helpers.push_back(std::make_unique<HelperThread>(w, [&work, w] { work(w); }));
+    for (unsigned w = 1; w < threads; ++w)
+      helpers.push_back(std::make_unique<HelperThread>(placement, w, [&work, w] { work(w); }));
     work(0);
-  }  // the helpers are joined here
+  }  // the helpers are joined here, then the caller's affinity restored
   if (failure) std::rethrow_exception(failure);
 }
 

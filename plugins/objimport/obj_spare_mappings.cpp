@@ -42,12 +42,22 @@ void* take_spare_mapping(size_t bytes) {
     if (spares[i].bytes >= want && (best == spares.size() || spares[i].written > spares[best].written)) best = i;
   if (best == spares.size()) return nullptr;
   Spare spare = spares[best];
-  spares.erase(spares.begin() + static_cast<std::ptrdiff_t>(best));
-  // Shrinking in place keeps the start, and unmaps the rest; the caller frees `bytes` later.
-  if (spare.bytes > want && ::munmap(static_cast<char*>(spare.p) + want, spare.bytes - want) != 0) {
-    ::munmap(spare.p, spare.bytes);
-    return nullptr;
+  // The start is taken (the caller frees `bytes` later). The rest stays kept where it has written
+  // pages — a small array takes a piece of a large mapping, not all of it — and is unmapped where
+  // it has none.
+  if (spare.bytes > want) {
+    char* rest = static_cast<char*>(spare.p) + want;
+    if (spare.written > want) {
+      spares[best] = {rest, spare.bytes - want, spare.written - want};
+      return spare.p;
+    }
+    if (::munmap(rest, spare.bytes - want) != 0) {
+      spares.erase(spares.begin() + static_cast<std::ptrdiff_t>(best));
+      ::munmap(spare.p, spare.bytes);
+      return nullptr;
+    }
   }
+  spares.erase(spares.begin() + static_cast<std::ptrdiff_t>(best));
   return spare.p;
 }
 

@@ -14,9 +14,9 @@ namespace pfx_obj {
 // take_spare_mapping.
 void keep_spare_mapping(void* p, size_t bytes, size_t written);
 
-// A kept mapping of at least `bytes` (the one with the most written pages), trimmed to `bytes`
-// rounded up to whole pages; nullptr when none is large enough. Its contents are whatever was
-// written there.
+// The start, `bytes` rounded up to whole pages, of a kept mapping at least that large (the one
+// with the most written pages); the rest of it stays kept where it has written pages. nullptr
+// when none is large enough. Its contents are whatever was written there.
 void* take_spare_mapping(size_t bytes);
 
 // Unmaps every kept mapping.
