@@ -78,7 +78,9 @@ cpu_set_t affinity_now() {
 }
 
 // Each worker's CPU affinity during one run_parallel of `threads` workers. Jobs are handed out as
-// workers ask, so each job waits until every one has started: no worker takes two.
+// workers ask, so each job waits until every one has started: no worker takes two. The workers
+// call sched_getaffinity themselves, not affinity_now: Catch's assertions are for the test's own
+// thread only.
 std::vector<cpu_set_t> affinity_of_each_worker(unsigned threads) {
   std::vector<cpu_set_t> seen(threads);
   std::vector<char> ran(threads, 0);
