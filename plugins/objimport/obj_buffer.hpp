@@ -88,6 +88,15 @@ void keep_for_reuse(BigVector<T>* array) {
   BigBufferAllocator<T>::keep_written_ = BigBufferAllocator<T>::kNotKept;
 }
 
+// Empties an array and gives its memory back at once. `array = {}` does not: it calls
+// operator=(initializer_list), which destroys the elements and keeps the capacity, so the memory
+// went back only with the array's owner (a 487 MB file's 35 MB of vertex keys, say, at the very
+// end of the import instead of after the normals).
+template <typename Array>
+void free_array(Array* array) {
+  Array().swap(*array);
+}
+
 // Element-wise equality with a plain vector (tests compare results with literals).
 template <typename T>
 bool operator==(const BigVector<T>& a, const std::vector<T>& b) {

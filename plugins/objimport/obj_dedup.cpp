@@ -48,7 +48,7 @@ void VertexNumbering::clear() {
 }
 
 void VertexNumbering::keep_pages_for_reuse() {
-  keys_ = {};
+  free_array(&keys_);
   keep_for_reuse(&head_);
   keep_for_reuse(&next_);
   overflow_.reset();
@@ -65,7 +65,7 @@ void merge_chunk_keys(std::vector<BigVector<VertexKey>>* chunk_keys, uint32_t po
     BigVector<uint32_t>& map = (*to_file)[c];
     map.resize(keys.size());
     for (size_t i = 0; i < keys.size(); ++i) map[i] = file.find_or_insert(keys[i]);
-    keys = {};
+    free_array(&keys);
   }
   file_keys->swap(file.keys());
 }

@@ -65,7 +65,7 @@ void Importer::resolve(size_t c, size_t slots) {
       }
     }
   }
-  chunk.relative_fields = {};
+  free_array(&chunk.relative_fields);
 }
 
 bool Importer::first_resolve_error(std::string* error) {

@@ -208,7 +208,7 @@ bool Importer::number_streamed_chunk(size_t c, const uint32_t bases[3], uint32_t
       *ids++ = numbering->find_or_insert(VertexKey{fields[0], fields[1], fields[2], fields[2] == kNoIndex ? group : 0});
     }
   }
-  chunk.relative_fields = {};
+  free_array(&chunk.relative_fields);
   return true;
 }
 
@@ -250,7 +250,7 @@ void Importer::write_streamed_triangles() {
       ids += n;
     }
   }
-  streamed_ids_ = {};
+  free_array(&streamed_ids_);
 }
 
 }  // namespace pfx_obj
