@@ -5,10 +5,12 @@
 // in file order, so the result is the same for every thread count (the tests compare bytes).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "obj_buffer.hpp"
@@ -42,13 +44,18 @@ struct ObjMesh {
 constexpr size_t kMaxWarnings = 100;
 
 struct ImportOptions {
-  unsigned threads = 0;                  // 0: std::thread::hardware_concurrency()
+  unsigned threads = 0;                  // 0: std::thread::hardware_concurrency() (worker_count)
   std::function<void(float)> progress;   // 0..1, on the calling thread
   size_t chunk_bytes = 0;                // 0: chosen from the size and thread count (tests set it)
   bool plain_lines = true;               // the fast readers for common lines; tests compare with false
   bool streamed = true;                  // chunk by chunk (obj_streamed.cpp); tests compare with
                                          // false, the staged pipeline (also where a file needs it)
 };
+
+// The threads an import (and the plugin's release of its result) runs on, for options.threads.
+inline unsigned worker_count(unsigned requested) {
+  return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
 
 // name: the file name in messages. directory: where mtllib files are looked for; empty means
 // material libraries are not read (a warning says so).

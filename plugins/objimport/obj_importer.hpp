@@ -75,7 +75,7 @@ class Importer {
   Importer(const std::string& name, const std::string& directory, const ImportOptions& options,
            bool text_is_file_mapping)
       : name_(name), directory_(directory), options_(options), release_text_(text_is_file_mapping) {
-    threads_ = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads_ = worker_count(options.threads);
   }
 
   // The staged pipeline, on any number of threads.

@@ -13,6 +13,7 @@
 
 #include "obj_chunk.hpp"
 #include "obj_import.hpp"
+#include "obj_parallel_free.hpp"
 
 namespace pfx_obj {
 namespace {
@@ -26,6 +27,7 @@ struct ResultStorage {
   std::vector<pfx_import_submesh> submeshes;
   std::vector<pfx_import_material> materials;
   std::vector<const char*> warnings;
+  unsigned threads = 1;  // the import's, which release frees the arrays on too
 };
 
 // Results handed out and not yet released: release ignores any other pointer.
@@ -88,6 +90,7 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
     } else {
       ImportOptions options;
       options.threads = request->threads;
+      storage->threads = worker_count(request->threads);
       if (request->progress) {
         pfx_import_progress_fn progress = request->progress;
         void* user = request->progress_user;
@@ -141,6 +144,7 @@ void release(pfx_import_result* result) {
     storage = it->second;
     g_results.erase(it);
   }
+  free_mesh_in_parallel(storage->threads, &storage->mesh);
   delete storage;
 }
 

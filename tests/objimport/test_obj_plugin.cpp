@@ -2,9 +2,11 @@
 // importer by extension, imports a file and bytes, and gets errors as "FILE:LINE: reason".
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include <unistd.h>
 
@@ -28,6 +30,15 @@ pfx_import_request request_for_path(const char* path) {
   request.path = path;
   request.threads = 2;
   return request;
+}
+
+// This process's resident memory in bytes (/proc/self/status), 0 when unknown.
+uint64_t resident_bytes() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmRSS:", 0) == 0) return std::stoull(line.substr(6)) * 1024;
+  return 0;
 }
 
 }  // namespace
@@ -135,4 +146,55 @@ TEST_CASE("obj plugin: bytes in memory, errors and release", "[objimport][plugin
   importer->release(nullptr);
   pfx_import_result foreign{};
   importer->release(&foreign);
+}
+
+TEST_CASE("obj plugin: a large result, imported and released on two threads, gives its memory back", "[objimport][plugin][memory]") {
+  // A 450 x 450 grid with v, vt, vn and v/vt/vn triangles: 202,500 vertices (32 bytes each) and
+  // 403,202 triangles (12 bytes): 11.3 MB of arrays, enough that release frees them on the
+  // import's two threads (obj_parallel_free.hpp).
+  constexpr int n = 450;
+  std::string text;
+  char line[256];
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      std::snprintf(line, sizeof line, "v %d %d %g\nvt %g %g\nvn 0 0 1\n", x, y, 0.001 * ((x * 7 + y * 13) % 100),
+                    x / double(n), y / double(n));
+      text += line;
+    }
+  for (int y = 0; y + 1 < n; ++y)
+    for (int x = 0; x + 1 < n; ++x) {
+      const int a = y * n + x + 1, b = a + 1, c = a + n, d = c + 1;
+      std::snprintf(line, sizeof line, "f %d/%d/%d %d/%d/%d %d/%d/%d\nf %d/%d/%d %d/%d/%d %d/%d/%d\n", a, a, a, b, b, b, d, d,
+                    d, a, a, a, d, d, d, c, c, c);
+      text += line;
+    }
+  auto registry = load_obj_plugin();
+  const pfx_importer_desc* importer = registry->find_importer("obj")->desc;
+  pfx_import_request request{};
+  request.struct_size = sizeof request;
+  request.bytes = text.data();
+  request.byte_count = text.size();
+  request.threads = 2;
+  const uint64_t before = resident_bytes();
+  REQUIRE(before > 0);
+  pfx_import_result* result = nullptr;
+  const pfx_status status = importer->import(&request, &result);
+  REQUIRE(result);
+  INFO((result->error ? result->error : ""));
+  REQUIRE(status == PFX_OK);
+  REQUIRE(result->vertex_count == uint32_t{n * n});
+  REQUIRE(result->index_count == uint32_t{6 * (n - 1) * (n - 1)});
+  const uint64_t arrays = uint64_t{result->vertex_count} * 8 * sizeof(float) + uint64_t{result->index_count} * sizeof(uint32_t);
+  // The arrays are resident while the result lives (the last corner is the grid's x = n - 2,
+  // y = n - 1) ...
+  CHECK(resident_bytes() >= before + arrays);
+  const uint32_t last = result->indices[result->index_count - 1];
+  REQUIRE(last < result->vertex_count);
+  CHECK(result->positions[3 * last] == float(n - 2));
+  CHECK(result->positions[3 * last + 1] == float(n - 1));
+  CHECK(result->texcoords[2 * last] == Approx(double(n - 2) / n));
+  CHECK(result->normals[3 * last + 2] == 1.0f);
+  // ... and given back by release, all but a little bookkeeping (heap the allocator keeps).
+  importer->release(result);
+  CHECK(resident_bytes() < before + arrays / 4);
 }

@@ -8,7 +8,8 @@
  *
  * Threading: import and release run on any thread, make no GL call, and may be called
  * concurrently (each call has its own result). An importer may start worker threads inside
- * import (pfx_import_request.threads); they are joined before import returns. */
+ * import and release (as many as pfx_import_request.threads); they are joined before the call
+ * returns. */
 #ifndef PFX_IMPORTER_H
 #define PFX_IMPORTER_H
 

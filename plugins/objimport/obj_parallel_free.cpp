@@ -1,0 +1,67 @@
+#include "obj_parallel_free.hpp"
+
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include "obj_parallel.hpp"
+
+namespace pfx_obj {
+
+namespace {
+
+// The array's memory where it is a mapping of its own (obj_buffer.hpp); small ones are heap.
+template <typename T>
+void add_mapped(const BigVector<T>& array, std::vector<ByteRange>* ranges) {
+  const size_t bytes = array.capacity() * sizeof(T);
+  if (bytes >= BigBufferAllocator<T>::kMapThreshold) ranges->push_back(ByteRange{array.data(), bytes});
+}
+
+}  // namespace
+
+void drop_pages_in_parallel(unsigned threads, const std::vector<ByteRange>& ranges) {
+  if (threads < 2) return;
+  const long page_size = ::sysconf(_SC_PAGESIZE);
+  if (page_size <= 0) return;
+  const uintptr_t page = static_cast<uintptr_t>(page_size);
+  std::vector<ByteRange> whole;  // each range's whole pages
+  size_t total = 0;
+  for (const ByteRange& range : ranges) {
+    const uintptr_t begin = reinterpret_cast<uintptr_t>(range.begin);
+    const uintptr_t first = (begin + page - 1) / page * page, end = (begin + range.bytes) / page * page;
+    if (end <= first) continue;
+    whole.push_back(ByteRange{reinterpret_cast<const void*>(first), end - first});
+    total += end - first;
+  }
+  if (total < kMinParallelFreeBytes) return;
+  // A few pieces per thread, so that the threads finish together; not many more — each call
+  // flushes the other threads' TLBs.
+  const size_t piece = std::max<size_t>(size_t{1} << 20, total / (size_t{threads} * 4)) / page * page;
+  std::vector<ByteRange> pieces;
+  for (const ByteRange& range : whole)
+    for (size_t at = 0; at < range.bytes; at += piece)
+      pieces.push_back(ByteRange{static_cast<const char*>(range.begin) + at, std::min(piece, range.bytes - at)});
+  run_parallel(threads, pieces.size(), [&](size_t i, unsigned) {
+    // Best effort: where it fails, the munmap that follows frees the pages all the same.
+    ::madvise(const_cast<void*>(pieces[i].begin), pieces[i].bytes, MADV_DONTNEED);
+  });
+}
+
+void free_mesh_in_parallel(unsigned threads, ObjMesh* mesh) {
+  std::vector<ByteRange> ranges;
+  add_mapped(mesh->positions, &ranges);
+  add_mapped(mesh->normals, &ranges);
+  add_mapped(mesh->texcoords, &ranges);
+  add_mapped(mesh->colors, &ranges);
+  add_mapped(mesh->indices, &ranges);
+  drop_pages_in_parallel(threads, ranges);
+  free_array(&mesh->positions);
+  free_array(&mesh->normals);
+  free_array(&mesh->texcoords);
+  free_array(&mesh->colors);
+  free_array(&mesh->indices);
+}
+
+}  // namespace pfx_obj
