@@ -246,8 +246,8 @@ void Importer::fill_vertices() {
   // Freed on this thread: two threads unmapping these arrays (one per chunk and kind of data, 472
   // at 487 MB) mostly wait for each other's hold on the address space, and took 7.7 ms against
   // 6.2 ms on one (medians of 5). Dropping their pages on two threads first (as the plugin does for
-  // the result, obj_parallel_free.hpp) took 6.1-7.4 ms: a call per array, each one interrupting
-  // the other thread to flush its TLB.
+  // the result, obj_parallel_free.hpp) took 6.1-7.4 ms: a call per array, each of which likely
+  // interrupts the other thread to flush its TLB, against about ten calls for the result.
   free_array(&vertex_data_);
 }
 

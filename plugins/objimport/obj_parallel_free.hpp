@@ -1,10 +1,10 @@
 // Giving a large result's memory back on the threads it was imported with. Freeing its arrays on
-// one thread after a two-thread import of 487 MB took 9.5-13.9 ms (the kernel's work of
-// unmapping the written pages, slower than after a one-thread import: half the pages were last
-// touched on the other core). Two threads each calling munmap mostly wait for each other's hold
+// one thread after a two-thread import of 487 MB took 14.3 ms (median of 7; 9.1 ms after a
+// one-thread import): the kernel's work of unmapping the written pages, half of them last
+// touched on the other core. Two threads each calling munmap mostly wait for each other's hold
 // on the address space; madvise(MADV_DONTNEED) holds it only for reading, so the threads drop the
-// pages side by side — 6.8-8.6 ms — and the unmapping that frees each array afterwards finds
-// none left (docs/importers/obj.md).
+// pages side by side — 7.0 ms — and the unmapping that frees each array afterwards finds none
+// left (docs/importers/obj.md, session 9).
 #pragma once
 
 #include <cstddef>
