@@ -4,7 +4,7 @@
 // touched on the other core. Two threads each calling munmap mostly wait for each other's hold
 // on the address space; madvise(MADV_DONTNEED) holds it only for reading, so the threads drop the
 // pages side by side — 7.0 ms — and the unmapping that frees each array afterwards finds none
-// left (docs/importers/obj.md, session 9).
+// left. (Another day, 9 runs: 9.4 against 5.0 ms; docs/importers/obj.md, session 9.)
 #pragma once
 
 #include <cstddef>
