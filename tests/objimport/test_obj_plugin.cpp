@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <pfx/host/plugin_registry.hpp>
@@ -175,6 +176,8 @@ TEST_CASE("obj plugin: a large result, imported and released on two threads, giv
   request.bytes = text.data();
   request.byte_count = text.size();
   request.threads = 2;
+  cpu_set_t affinity_before, affinity_after;
+  REQUIRE(::sched_getaffinity(0, sizeof affinity_before, &affinity_before) == 0);
   const uint64_t before = resident_bytes();
   REQUIRE(before > 0);
   pfx_import_result* result = nullptr;
@@ -197,4 +200,7 @@ TEST_CASE("obj plugin: a large result, imported and released on two threads, giv
   // ... and given back by release, all but a little bookkeeping (heap the allocator keeps).
   importer->release(result);
   CHECK(resident_bytes() < before + arrays / 4);
+  // The import and the release pin the calling thread while their parallel runs last, no longer.
+  REQUIRE(::sched_getaffinity(0, sizeof affinity_after, &affinity_after) == 0);
+  CHECK(CPU_EQUAL(&affinity_before, &affinity_after));
 }
