@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "obj_pages.hpp"
+
 namespace pfx_obj {
 
 namespace {
@@ -87,10 +89,8 @@ bool FileBytes::open(const std::string& path, std::string* error) {
 }
 
 void release_read_pages(std::string_view range) {
-  const uintptr_t page = static_cast<uintptr_t>(::sysconf(_SC_PAGESIZE));
-  const uintptr_t begin = (reinterpret_cast<uintptr_t>(range.data()) + page - 1) / page * page;
-  const uintptr_t end = (reinterpret_cast<uintptr_t>(range.data()) + range.size()) / page * page;
-  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+  const ByteRange pages = whole_pages_inside(range.data(), range.size());
+  if (pages.bytes > 0) ::madvise(const_cast<void*>(pages.begin), pages.bytes, MADV_DONTNEED);
 }
 
 bool read_small_file(const std::string& path, std::string* out, std::string* error) {

@@ -26,19 +26,16 @@ void add_mapped(const BigVector<T>& array, std::vector<ByteRange>* ranges) {
 
 void drop_pages_in_parallel(unsigned threads, const std::vector<ByteRange>& ranges) {
   if (threads < 2) return;
-  const long page_size = ::sysconf(_SC_PAGESIZE);
-  if (page_size <= 0) return;
-  const uintptr_t page = static_cast<uintptr_t>(page_size);
   std::vector<ByteRange> whole;  // each range's whole pages
   size_t total = 0;
   for (const ByteRange& range : ranges) {
-    const uintptr_t begin = reinterpret_cast<uintptr_t>(range.begin);
-    const uintptr_t first = (begin + page - 1) / page * page, end = (begin + range.bytes) / page * page;
-    if (end <= first) continue;
-    whole.push_back(ByteRange{reinterpret_cast<const void*>(first), end - first});
-    total += end - first;
+    const ByteRange pages = whole_pages_inside(range.begin, range.bytes);
+    if (pages.bytes == 0) continue;
+    whole.push_back(pages);
+    total += pages.bytes;
   }
   if (total < kMinParallelFreeBytes) return;
+  const size_t page = static_cast<size_t>(::sysconf(_SC_PAGESIZE));  // whole_pages_inside found it valid
   // A few pieces per thread, so that the threads finish together; not many more — each call
   // flushes the other threads' TLBs.
   const size_t piece = std::max<size_t>(size_t{1} << 20, total / (size_t{threads} * 4)) / page * page;

@@ -11,13 +11,9 @@
 #include <vector>
 
 #include "obj_import.hpp"
+#include "obj_pages.hpp"
 
 namespace pfx_obj {
-
-struct ByteRange {
-  const void* begin;
-  size_t bytes;
-};
 
 // Drops the whole pages inside the ranges on `threads` workers (their contents read as zero
 // after). The ranges must be the caller's own mappings, about to be unmapped; a page only partly
