@@ -73,9 +73,9 @@ std::vector<std::string> param_descriptor_problems(const pfx_param_desc& p) {
   const std::string name = "parameter '" + std::string(p.id ? p.id : "(null)") + "': ";
   auto problem = [&](const std::string& text) { problems.push_back(name + text); };
 
-  if (p.struct_size < sizeof(pfx_param_desc))
-    problem("struct_size " + std::to_string(p.struct_size) + " is smaller than pfx_param_desc (" +
-            std::to_string(sizeof(pfx_param_desc)) + ")");
+  if (p.struct_size < PFX_PARAM_DESC_MIN_SIZE)
+    problem("struct_size " + std::to_string(p.struct_size) + " is smaller than pfx_param_desc's first version (" +
+            std::to_string(PFX_PARAM_DESC_MIN_SIZE) + ")");
   if (!is_effect_or_param_id(p.id)) problem("the id is not [a-z0-9_]+");
   if (!present(p.label)) problem("no label");
   if (!present(p.tooltip)) problem("no tooltip");
@@ -141,9 +141,9 @@ std::vector<std::string> param_descriptor_problems(const pfx_param_desc& p) {
 
 std::vector<std::string> effect_descriptor_problems(const pfx_effect_desc& e) {
   std::vector<std::string> problems;
-  if (e.struct_size < sizeof(pfx_effect_desc))
-    problems.push_back("struct_size " + std::to_string(e.struct_size) + " is smaller than pfx_effect_desc (" +
-                       std::to_string(sizeof(pfx_effect_desc)) + ")");
+  if (e.struct_size < PFX_EFFECT_DESC_MIN_SIZE)
+    problems.push_back("struct_size " + std::to_string(e.struct_size) + " is smaller than pfx_effect_desc's first version (" +
+                       std::to_string(PFX_EFFECT_DESC_MIN_SIZE) + ")");
   if (!is_effect_or_param_id(e.id)) problems.push_back("the effect id is not [a-z0-9_]+");
   if (!present(e.label)) problems.push_back("no label");
   if (!present(e.description)) problems.push_back("no description");

@@ -38,7 +38,7 @@ const pfx_entry* open_entry(const std::string& path, CheckReporter& report) {
 const pfx_entry* usable_entry(const std::string& path, CheckReporter& report) {
   const pfx_entry* entry = open_entry(path, report);
   if (!entry) return nullptr;
-  if (entry->struct_size < sizeof(pfx_entry) || entry->abi_major != PFX_ABI_MAJOR || !entry->init || !entry->deinit ||
+  if (entry->struct_size < PFX_ENTRY_MIN_SIZE || entry->abi_major != PFX_ABI_MAJOR || !entry->init || !entry->deinit ||
       !entry->get_factory) {
     report.problem("the entry struct is unusable (see the entry check)");
     return nullptr;
@@ -61,9 +61,9 @@ void check_load(const std::string& path, CheckReporter& report) { open_entry(pat
 void check_entry(const std::string& path, CheckReporter& report) {
   const pfx_entry* entry = open_entry(path, report);
   if (!entry) return;
-  if (entry->struct_size < sizeof(pfx_entry)) {
-    report.problem("struct_size " + std::to_string(entry->struct_size) + " is smaller than pfx_entry (" +
-                   std::to_string(sizeof(pfx_entry)) + ")");
+  if (entry->struct_size < PFX_ENTRY_MIN_SIZE) {
+    report.problem("struct_size " + std::to_string(entry->struct_size) + " is smaller than pfx_entry's first version (" +
+                   std::to_string(PFX_ENTRY_MIN_SIZE) + ")");
     return;  // the fields after struct_size may not exist
   }
   if (entry->abi_major != PFX_ABI_MAJOR)
@@ -118,7 +118,7 @@ void check_factories(const std::string& path, CheckReporter& report) {
     entry->deinit();
     return;
   }
-  if (factory->struct_size < sizeof(pfx_effect_factory) || !factory->effect_count || !factory->get_effect) {
+  if (factory->struct_size < PFX_EFFECT_FACTORY_MIN_SIZE || !factory->effect_count || !factory->get_effect) {
     report.problem("the effect factory is incomplete (struct_size, effect_count or get_effect)");
     return;
   }

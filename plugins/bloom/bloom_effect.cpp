@@ -39,7 +39,7 @@ const ProgramSpec kPrograms[PROGRAM_COUNT] = {
     {"gaussian_composite", shaders::gaussian_composite}, {"mgf_composite", shaders::mgf_composite}};
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
+  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -74,7 +74,7 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !context || context->struct_size < sizeof(pfx_pass_context)) return PFX_INVALID_ARGUMENT;
+  if (!inst || !context || context->struct_size < PFX_PASS_CONTEXT_MIN_SIZE) return PFX_INVALID_ARGUMENT;
   const Settings s = settings_from(context->params);
   const LevelPlan plan = plan_for(s, context->frame->width, context->frame->height);
   if (s.mode == MODE_CHAIN || s.mode == MODE_CHAIN13)

@@ -52,7 +52,7 @@ void destroy(void* self) {
 }
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
+  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -105,7 +105,7 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !context || context->struct_size < sizeof(pfx_pass_context)) return PFX_INVALID_ARGUMENT;
+  if (!inst || !context || context->struct_size < PFX_PASS_CONTEXT_MIN_SIZE) return PFX_INVALID_ARGUMENT;
   const GlareSettings g = glare_settings_from(context->params);
   const float out_w = static_cast<float>(context->output_width), out_h = static_cast<float>(context->output_height);
   const int index = static_cast<int>(context->user_tag & 0xffu);

@@ -113,7 +113,7 @@ void set_inputs(PassInputs* in) {
 }
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
+  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
   if (!pfx::gl::load_gl_or_log(host, "dof")) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -229,7 +229,7 @@ void upload_rings(Instance* inst, int count) {
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !context || context->struct_size < sizeof(pfx_pass_context) || context->user_tag >= PROGRAM_COUNT)
+  if (!inst || !context || context->struct_size < PFX_PASS_CONTEXT_MIN_SIZE || context->user_tag >= PROGRAM_COUNT)
     return PFX_INVALID_ARGUMENT;
   const pfx_frame& frame = *context->frame;
   const Settings s = settings_from(context->params);

@@ -83,7 +83,7 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
   pfx_import_result& r = storage->result;
   r.struct_size = sizeof(pfx_import_result);
   try {
-    if (!request || request->struct_size < sizeof(pfx_import_request) || (!request->path && !request->bytes) ||
+    if (!request || request->struct_size < PFX_IMPORT_REQUEST_MIN_SIZE || (!request->path && !request->bytes) ||
         (request->bytes && request->byte_count > 0 && !request->bytes) || (request->path && request->bytes)) {
       r.status = PFX_INVALID_ARGUMENT;
       storage->error = "import request: give either path or bytes";
@@ -157,7 +157,7 @@ const pfx_importer_desc* get_importer(uint32_t index) { return index == 0 ? &kOb
 const pfx_importer_factory kFactory = {sizeof(pfx_importer_factory), importer_count, get_importer};
 
 pfx_status plugin_init(const pfx_host* host) {
-  if (!host || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
+  if (!host || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
   return PFX_OK;
 }
 

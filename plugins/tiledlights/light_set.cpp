@@ -26,7 +26,7 @@ bool prepare_lights(const pfx_frame& frame, const Settings& settings, LightSet* 
   out->frame_lights = frame.light_count;
   out->unreachable = 0;
   if (frame.light_count == 0) return true;
-  if (!frame.lights || frame.light_struct_size < sizeof(pfx_light)) {
+  if (!frame.lights || frame.light_struct_size < PFX_LIGHT_MIN_SIZE) {
     *error = "the frame's light array is missing or its light_struct_size is smaller than pfx_light";
     return false;
   }

@@ -93,7 +93,7 @@ void destroy(void* self) {
 }
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < sizeof(pfx_host)) return PFX_INVALID_ARGUMENT;
+  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
   if (!pfx::gl::load_gl_or_log(host, "tiledlights")) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -350,7 +350,7 @@ pfx_status shade(Instance* inst, const pfx_pass_context* context) {
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
   Instance* inst = static_cast<Instance*>(self);
-  if (!inst || !context || context->struct_size < sizeof(pfx_pass_context) || !context->frame ||
+  if (!inst || !context || context->struct_size < PFX_PASS_CONTEXT_MIN_SIZE || !context->frame ||
       !context->params)
     return PFX_INVALID_ARGUMENT;
   if (context->user_tag & TAG_PREPARE) {

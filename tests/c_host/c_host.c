@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
   /* ISO C has no cast from an object pointer to a function pointer; POSIX guarantees the bits. */
   memcpy(&get_entry, &symbol, sizeof get_entry);
   entry = get_entry();
-  if (!entry || entry->struct_size < sizeof(pfx_entry) || entry->abi_major != PFX_ABI_MAJOR)
+  if (!entry || entry->struct_size < PFX_ENTRY_MIN_SIZE || entry->abi_major != PFX_ABI_MAJOR)
     die("bad entry struct (abi_major %u)", entry ? (unsigned)entry->abi_major : 0u);
   if (strcmp(entry->id, "org.pfx.test.minimal") != 0) fail("plugin id is \"%s\"", entry->id);
 
@@ -352,7 +352,7 @@ int main(int argc, char** argv) {
   if (entry->get_factory(PFX_IMPORTERS_FACTORY_ID) != NULL)
     fail("get_factory(importers) is not NULL");
   factory = (const pfx_effect_factory*)entry->get_factory(PFX_EFFECTS_FACTORY_ID);
-  if (!factory || factory->struct_size < sizeof(pfx_effect_factory)) die("no effects factory");
+  if (!factory || factory->struct_size < PFX_EFFECT_FACTORY_MIN_SIZE) die("no effects factory");
   if (factory->get_effect(factory->effect_count()) != NULL)
     fail("get_effect(past the end) is not NULL");
 

@@ -198,7 +198,7 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
     return false;
   };
   if (!gl_loaded_) return fail("no OpenGL 4.5 context was current when the chain was made");
-  if (frame.struct_size < sizeof(pfx_frame)) return fail("pfx_frame struct too small");
+  if (frame.struct_size < PFX_FRAME_MIN_SIZE) return fail("pfx_frame struct too small");
   if (frame.width < 1 || frame.height < 1) return fail("frame size must be at least 1x1");
   if (!textures.color || !(frame.inputs & PFX_INPUT_COLOR)) return fail("the frame has no colour input");
   if (!output_texture || output_texture == textures.color) return fail("the output must be its own texture");

@@ -22,7 +22,7 @@ bool is_identifier(const char* text) {
 }
 
 std::string check_param_descriptor(const pfx_param_desc& param) {
-  if (param.struct_size < sizeof(pfx_param_desc)) return "descriptor struct too small";
+  if (param.struct_size < PFX_PARAM_DESC_MIN_SIZE) return "descriptor struct too small";
   if (!is_identifier(param.id)) return "id must be non-empty [a-z0-9_]+";
   const std::string name = std::string("parameter '") + param.id + "': ";
   if (param.type > PFX_PARAM_VEC3) return name + "unknown type " + std::to_string(param.type);
@@ -51,7 +51,7 @@ std::string check_param_descriptor(const pfx_param_desc& param) {
 
 std::string check_effect_descriptor(const pfx_effect_desc* desc) {
   if (!desc) return "NULL descriptor";
-  if (desc->struct_size < sizeof(pfx_effect_desc)) return "descriptor struct too small";
+  if (desc->struct_size < PFX_EFFECT_DESC_MIN_SIZE) return "descriptor struct too small";
   if (!is_identifier(desc->id)) return "effect id must be non-empty [a-z0-9_]+";
   const std::string name = std::string("effect '") + desc->id + "': ";
   if (!desc->create || !desc->destroy || !desc->declare || !desc->run_pass)
@@ -68,7 +68,7 @@ std::string check_effect_descriptor(const pfx_effect_desc* desc) {
 
 std::string check_importer_descriptor(const pfx_importer_desc* desc) {
   if (!desc) return "NULL importer descriptor";
-  if (desc->struct_size < sizeof(pfx_importer_desc)) return "importer descriptor struct too small";
+  if (desc->struct_size < PFX_IMPORTER_DESC_MIN_SIZE) return "importer descriptor struct too small";
   if (!is_identifier(desc->id)) return "importer id must be non-empty [a-z0-9_]+";
   const std::string name = std::string("importer '") + desc->id + "': ";
   if (!desc->import || !desc->release) return name + "import and release are required";

@@ -68,7 +68,7 @@ bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t 
   std::set<std::string> names;
   for (uint32_t i = 0; i < in.target_count; ++i) {
     const pfx_target_desc& t = in.targets[i];
-    if (t.struct_size < sizeof(pfx_target_desc)) return fail("target #" + std::to_string(i) + ": struct too small");
+    if (t.struct_size < PFX_TARGET_DESC_MIN_SIZE) return fail("target #" + std::to_string(i) + ": struct too small");
     if (!t.name || !*t.name) return fail("target #" + std::to_string(i) + " has no name");
     std::string name = t.name;
     if (name == PFX_OUTPUT_NAME || find_frame_input(name))
@@ -97,7 +97,7 @@ bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t 
   for (uint32_t i = 0; i < in.pass_count; ++i) {
     const pfx_pass_desc& p = in.passes[i];
     std::string label = "pass #" + std::to_string(i) + (p.name ? " '" + std::string(p.name) + "'" : "");
-    if (p.struct_size < sizeof(pfx_pass_desc)) return fail(label + ": struct too small");
+    if (p.struct_size < PFX_PASS_DESC_MIN_SIZE) return fail(label + ": struct too small");
     if (p.kind != PFX_PASS_FULLSCREEN && p.kind != PFX_PASS_CUSTOM) return fail(label + ": unknown kind");
     if (p.blend > PFX_BLEND_ADD || p.load > PFX_LOAD_KEEP) return fail(label + ": unknown blend or load");
     if (!p.output && p.kind == PFX_PASS_FULLSCREEN) return fail(label + ": a full-screen pass needs an output");

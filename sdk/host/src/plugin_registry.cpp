@@ -42,6 +42,9 @@ pfx_gl_proc host_get_proc_address(void* host_data, const char* name) {
   return record->registry->gl_loader()(name);
 }
 
+// The services libpfxhost offers its plugins (pfx/services.h); none yet.
+const void* host_get_service(void* /*host_data*/, const char* /*service_id*/) { return nullptr; }
+
 bool is_elf_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   char magic[4] = {};
@@ -109,9 +112,9 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   if (!get_entry) return fail("no entry symbol " PFX_ENTRY_SYMBOL " (not a pfx plugin)");
   const pfx_entry* entry = get_entry();
   if (!entry) return fail(PFX_ENTRY_SYMBOL "() returned NULL");
-  if (entry->struct_size < sizeof(pfx_entry))
+  if (entry->struct_size < PFX_ENTRY_MIN_SIZE)
     return fail("entry struct is " + std::to_string(entry->struct_size) + " bytes, expected at least " +
-                std::to_string(sizeof(pfx_entry)));
+                std::to_string(PFX_ENTRY_MIN_SIZE) + " (ABI 1.0)");
   if (entry->abi_major != PFX_ABI_MAJOR)
     return fail("ABI major version mismatch: plugin built for ABI " + std::to_string(entry->abi_major) + "." +
                 std::to_string(entry->abi_minor) + ", host implements ABI " + std::to_string(PFX_ABI_MAJOR) +
@@ -134,6 +137,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   record->host.host_data = record.get();
   record->host.log = host_log;
   record->host.get_proc_address = host_get_proc_address;
+  record->host.get_service = host_get_service;
 
   pfx_status status = entry->init(&record->host);
   if (status != PFX_OK) return fail("init failed (status " + std::to_string(status) + ")");
@@ -154,7 +158,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   // A plugin may provide no effects (an importer only): a NULL factory is fine.
   auto factory = static_cast<const pfx_effect_factory*>(entry->get_factory(PFX_EFFECTS_FACTORY_ID));
   if (factory) {
-    if (factory->struct_size < sizeof(pfx_effect_factory) || !factory->effect_count || !factory->get_effect)
+    if (factory->struct_size < PFX_EFFECT_FACTORY_MIN_SIZE || !factory->effect_count || !factory->get_effect)
       return undo_init("effect factory is incomplete");
     std::set<std::string> own_ids;
     for (uint32_t i = 0, n = factory->effect_count(); i < n; ++i) {
@@ -173,7 +177,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   auto importer_factory =
       static_cast<const pfx_importer_factory*>(entry->get_factory(PFX_IMPORTERS_FACTORY_ID));
   if (importer_factory) {
-    if (importer_factory->struct_size < sizeof(pfx_importer_factory) || !importer_factory->importer_count ||
+    if (importer_factory->struct_size < PFX_IMPORTER_FACTORY_MIN_SIZE || !importer_factory->importer_count ||
         !importer_factory->get_importer)
       return undo_init("importer factory is incomplete");
     std::set<std::string> own_ids;
@@ -192,7 +196,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   }
 
   auto references = static_cast<const pfx_reference_factory*>(entry->get_factory(PFX_REFERENCES_FACTORY_ID));
-  if (references && references->struct_size >= sizeof(pfx_reference_factory) && references->has_reference &&
+  if (references && references->struct_size >= PFX_REFERENCE_FACTORY_MIN_SIZE && references->has_reference &&
       references->evaluate)
     plugin->references = references;
 

@@ -1,7 +1,23 @@
-/* pfx C ABI v1 — versions, status codes, the host services and the plugin entry point.
- * Pure C99. Every struct that may grow starts with its size in bytes; a reader only touches the
- * fields that fit inside the size it was given. A published struct never changes: a new version
- * gets a new factory id. */
+/* pfx C ABI v1 — versions, status codes, the host and the plugin entry point, and the one rule for
+ * how the ABI grows. Pure C99.
+ *
+ * How structs grow (every header follows it; docs/sdk.md §1.7 publishes the sizes):
+ *  1. A struct that may grow starts with uint32_t struct_size, set by whoever fills the struct to
+ *     sizeof the struct it was compiled with.
+ *  2. A minor version may only append fields at the end of such a struct; nothing is removed,
+ *     reordered, retyped or given a new meaning. Each appended field says "since 1.N".
+ *  3. A reader reads a field only when struct_size covers it (PFX_STRUCT_HAS) and uses the
+ *     documented default otherwise; it refuses a struct smaller than the struct's first published
+ *     version (PFX_<NAME>_MIN_SIZE). A writer into a struct it did not allocate (pfx_declaration) writes
+ *     only the fields its struct_size covers.
+ *  4. An array of sized structs is stepped by the struct_size of its elements, never by the
+ *     reader's sizeof: element i starts i * array[0].struct_size bytes in (pfx_at). Every element
+ *     of one array has the same struct_size. pfx_light has no size field of its own: lights are
+ *     stepped by pfx_frame.light_struct_size, which makes pfx_light a sized struct too.
+ *  5. Structs without struct_size (pfx_value, pfx_camera, pfx_enum_item, pfx_pass_input,
+ *     pfx_bound_texture, pfx_import_submesh) are frozen for good.
+ *  6. Any other change is a new id: a new factory ("pfx.effects/2") or a new service id, which a
+ *     plugin or host can offer beside the old one. */
 #ifndef PFX_CORE_H
 #define PFX_CORE_H
 
@@ -13,7 +29,17 @@ extern "C" {
 #endif
 
 #define PFX_ABI_MAJOR 1u
-#define PFX_ABI_MINOR 1u
+#define PFX_ABI_MINOR 2u
+
+/* The size of a struct up to and including one of its fields: the size a writer of the version
+ * that ended with that field sets. */
+#define PFX_STRUCT_SIZE_THROUGH(type, field) (offsetof(type, field) + sizeof(((type*)0)->field))
+/* Whether a struct the caller did not compile carries a field (rule 3). */
+#define PFX_STRUCT_HAS(pointer, type, field) \
+  ((size_t)(pointer)->struct_size >= PFX_STRUCT_SIZE_THROUGH(type, field))
+/* Element index of an array of sized structs, stepped by the elements' own struct_size (rule 4). */
+#define pfx_at(type, array, index) \
+  ((const type*)(const void*)((const unsigned char*)(array) + (size_t)(index) * (array)[0].struct_size))
 
 /* The one symbol a plugin library exports: const pfx_entry* pfx_get_entry(void). */
 #define PFX_ENTRY_SYMBOL "pfx_get_entry"
@@ -50,9 +76,16 @@ typedef struct pfx_host {
   void* host_data;                /* opaque to the plugin; passed back to every callback */
   /* Thread-safe. A plugin never prints to stdout or stderr and never calls exit(): it logs. */
   void (*log)(void* host_data, pfx_log_level level, const char* message);
-  /* GL thread only, with the host's context current. NULL for a name the context does not have. */
+  /* GL thread only, with the host's context current. A non-NULL result does not prove the context
+   * has the function: Mesa and other drivers return dispatch stubs for any name. Check the
+   * context's version (glGetIntegerv(GL_MAJOR_VERSION)) or extension before calling one. */
   pfx_gl_proc (*get_proc_address)(void* host_data, const char* name);
+  /* Since 1.2. The host's service for a versioned id ("pfx.thread_pool/1", pfx/services.h), or
+   * NULL when the host does not offer it. Any thread; the result is valid until deinit. A host
+   * without services leaves it NULL (or passes a 1.0/1.1 struct without it): check both. */
+  const void* (*get_service)(void* host_data, const char* service_id); /* since 1.2 */
 } pfx_host;
+#define PFX_HOST_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_host, get_proc_address)
 
 /* The versioned entry struct the entry symbol returns. Static storage owned by the plugin. */
 typedef struct pfx_entry {
@@ -70,6 +103,7 @@ typedef struct pfx_entry {
    * know. Callable only between init and deinit. */
   const void* (*get_factory)(const char* factory_id);
 } pfx_entry;
+#define PFX_ENTRY_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_entry, get_factory)
 
 typedef const pfx_entry* (*pfx_get_entry_fn)(void);
 

@@ -64,6 +64,7 @@ typedef struct pfx_light {
   float color[3];     /* linear RGB */
   float intensity;    /* multiplies color */
 } pfx_light;
+#define PFX_LIGHT_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_light, intensity)
 
 typedef struct pfx_frame {
   uint32_t struct_size;
@@ -77,6 +78,7 @@ typedef struct pfx_frame {
   uint32_t light_count;
   uint32_t light_struct_size;      /* sizeof(pfx_light) of the host; later versions may grow it */
 } pfx_frame;
+#define PFX_FRAME_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_frame, light_struct_size)
 
 /* ---- Declared targets and passes ------------------------------------------------------------- */
 
@@ -108,6 +110,7 @@ typedef struct pfx_target_desc {
   float scale_x, scale_y;
   uint32_t width, height;
 } pfx_target_desc;
+#define PFX_TARGET_DESC_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_target_desc, height)
 
 typedef uint32_t pfx_filter;
 enum { PFX_FILTER_LINEAR = 0, PFX_FILTER_NEAREST = 1 };
@@ -162,6 +165,7 @@ typedef struct pfx_pass_desc {
   pfx_load load;
   uint32_t user_tag;              /* the plugin's own number for the pass; passed back on run */
 } pfx_pass_desc;
+#define PFX_PASS_DESC_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_pass_desc, user_tag)
 
 /* Filled by declare. The host zeroes it and sets struct_size; the plugin points the arrays at its
  * own storage, which must stay valid until the next declare or destroy. No passes means the effect
@@ -174,6 +178,7 @@ typedef struct pfx_declaration {
   uint32_t pass_count;
   uint32_t inputs;  /* PFX_INPUT_* bits these passes need beyond the textures they name (e.g. LIGHTS) */
 } pfx_declaration;
+#define PFX_DECLARATION_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_declaration, inputs)
 
 /* One texture a pass reads, as bound by the host. */
 typedef struct pfx_bound_texture {
@@ -195,6 +200,7 @@ typedef struct pfx_pass_context {
   const pfx_bound_texture* inputs;   /* input_count entries, in declared order */
   uint32_t input_count;
 } pfx_pass_context;
+#define PFX_PASS_CONTEXT_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_pass_context, input_count)
 
 /* ---- The effect ------------------------------------------------------------------------------ */
 
@@ -220,6 +226,7 @@ typedef struct pfx_effect_desc {
    * braces, e.g. "\"lights_visible\": 120". Owned by the instance, valid until the next call. */
   const char* (*report_json)(void* instance);
 } pfx_effect_desc;
+#define PFX_EFFECT_DESC_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_effect_desc, report_json)
 
 /* What get_factory(PFX_EFFECTS_FACTORY_ID) returns. */
 typedef struct pfx_effect_factory {
@@ -227,6 +234,7 @@ typedef struct pfx_effect_factory {
   uint32_t (*effect_count)(void);
   const pfx_effect_desc* (*get_effect)(uint32_t index);
 } pfx_effect_factory;
+#define PFX_EFFECT_FACTORY_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_effect_factory, get_effect)
 
 #ifdef __cplusplus
 }

@@ -41,6 +41,7 @@ typedef struct pfx_import_material {
   const char* diffuse_map;
   const char* emissive_map;
 } pfx_import_material;
+#define PFX_IMPORT_MATERIAL_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_import_material, emissive_map)
 
 /* A range of the index array drawn with one material. Frozen (no size field). */
 typedef struct pfx_import_submesh {
@@ -85,6 +86,7 @@ typedef struct pfx_import_result {
 
   double parse_seconds;      /* wall-clock time of the import, reading the file included */
 } pfx_import_result;
+#define PFX_IMPORT_RESULT_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_import_result, parse_seconds)
 
 #define PFX_IMPORT_MAX_WARNINGS 100u
 
@@ -105,6 +107,7 @@ typedef struct pfx_import_request {
   pfx_import_progress_fn progress;  /* optional */
   void* progress_user;
 } pfx_import_request;
+#define PFX_IMPORT_REQUEST_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_import_request, progress_user)
 
 typedef struct pfx_importer_desc {
   uint32_t struct_size;
@@ -120,6 +123,7 @@ typedef struct pfx_importer_desc {
   /* Frees a result of this importer and everything it points to; NULL is ignored. */
   void (*release)(pfx_import_result* result);
 } pfx_importer_desc;
+#define PFX_IMPORTER_DESC_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_importer_desc, release)
 
 /* What get_factory(PFX_IMPORTERS_FACTORY_ID) returns. */
 typedef struct pfx_importer_factory {
@@ -127,6 +131,7 @@ typedef struct pfx_importer_factory {
   uint32_t (*importer_count)(void);
   const pfx_importer_desc* (*get_importer)(uint32_t index);
 } pfx_importer_factory;
+#define PFX_IMPORTER_FACTORY_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_importer_factory, get_importer)
 
 #ifdef __cplusplus
 }

@@ -54,6 +54,7 @@ typedef struct pfx_param_desc {
   const pfx_enum_item* items;        /* ENUM only: item_count items, index = value */
   uint32_t item_count;
 } pfx_param_desc;
+#define PFX_PARAM_DESC_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_param_desc, item_count)
 
 #ifdef __cplusplus
 }

@@ -8,5 +8,6 @@
 #include "pfx/importer.h"
 #include "pfx/depth.h"
 #include "pfx/reference.h"
+#include "pfx/services.h"
 
 #endif /* PFX_PFX_H */

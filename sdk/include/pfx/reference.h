@@ -33,12 +33,13 @@ typedef struct pfx_reference_request {
   const float* color;        /* width*height*4 */
   const float* depth;        /* width*height, as frame->depth_encoding says; NULL without depth */
   float* output;             /* width*height*4, written by the reference */
-  /* ABI 1.1: the G-buffer inputs, width*height*4 each (RGB used), NULL where the frame has none.
+  /* Since 1.1: the G-buffer inputs, width*height*4 each (RGB used), NULL where the frame has none.
    * A reference reads them only when struct_size covers them. */
-  const float* normal;
-  const float* albedo;
-  const float* emissive;
+  const float* normal;   /* since 1.1 */
+  const float* albedo;   /* since 1.1 */
+  const float* emissive; /* since 1.1 */
 } pfx_reference_request;
+#define PFX_REFERENCE_REQUEST_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_reference_request, output)
 
 typedef struct pfx_reference_factory {
   uint32_t struct_size;
@@ -48,6 +49,7 @@ typedef struct pfx_reference_factory {
    * a setting the reference does not model (e.g. a debug view of GPU-only data). */
   pfx_status (*evaluate)(const pfx_reference_request* request);
 } pfx_reference_factory;
+#define PFX_REFERENCE_FACTORY_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_reference_factory, evaluate)
 
 #ifdef __cplusplus
 }

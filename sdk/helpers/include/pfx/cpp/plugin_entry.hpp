@@ -14,7 +14,7 @@ namespace pfx::plugin {
 // init's check: a host struct at least as large as this plugin's ABI knows, with the two
 // callbacks plugins call (logging and GL function lookup).
 inline bool usable_host(const pfx_host* host) {
-  return host && host->struct_size >= sizeof(pfx_host) && host->log && host->get_proc_address;
+  return host && host->struct_size >= PFX_HOST_MIN_SIZE && host->log && host->get_proc_address;
 }
 
 // The size of a reference request from an ABI 1.0 host (before normal, albedo and emissive).
@@ -30,14 +30,14 @@ inline bool has_gbuffer_fields(const pfx_reference_request& request) {
 // the parameters, the colour in and the output.
 inline bool usable_reference_request(const pfx_reference_request* request) {
   return request && request->struct_size >= kReferenceRequestSizeV1_0 && request->frame &&
-         request->frame->struct_size >= sizeof(pfx_frame) && request->params && request->color && request->output &&
+         request->frame->struct_size >= PFX_FRAME_MIN_SIZE && request->params && request->color && request->output &&
          request->frame->width > 0 && request->frame->height > 0;
 }
 
 // declare's check of what the host hands it: a frame and a declaration this ABI can read, and the
 // parameter values.
 inline bool usable_declare_arguments(const pfx_frame* frame, const pfx_value* params, const pfx_declaration* out) {
-  return frame && params && out && frame->struct_size >= sizeof(pfx_frame) && out->struct_size >= sizeof(pfx_declaration);
+  return frame && params && out && frame->struct_size >= PFX_FRAME_MIN_SIZE && out->struct_size >= PFX_DECLARATION_MIN_SIZE;
 }
 
 // Runs work (a callable returning pfx_status) and turns an exception into a status: nothing may
