@@ -1,5 +1,6 @@
 #include "descriptor_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <set>
@@ -150,9 +151,25 @@ std::vector<std::string> effect_descriptor_problems(const pfx_effect_desc& e) {
   if (!e.create || !e.destroy || !e.declare || !e.run_pass)
     problems.push_back("create, destroy, declare and run_pass are all required");
   if (e.param_count > 0 && !e.params) problems.push_back("param_count is " + std::to_string(e.param_count) + " but params is NULL");
+  if (e.params && e.param_count > 0 && e.params[0].struct_size < PFX_PARAM_DESC_MIN_SIZE) {
+    // The array's stride is its first element's struct_size: too small, nothing after it can be found.
+    problems.push_back("parameter #0: struct_size " + std::to_string(e.params[0].struct_size) +
+                       " is smaller than pfx_param_desc's first version (" + std::to_string(PFX_PARAM_DESC_MIN_SIZE) + ")");
+    return problems;
+  }
   std::set<std::string> ids;
   for (uint32_t i = 0; e.params && i < e.param_count; ++i) {
-    const pfx_param_desc& p = e.params[i];
+    // Stepped by the plugin's struct_size and read as far as it reaches (core.h's growth rule), so
+    // a plugin of another minor version is checked for what it is.
+    const pfx_param_desc* element = pfx_at(pfx_param_desc, e.params, i);
+    if (element->struct_size != e.params[0].struct_size) {
+      problems.push_back("parameter #" + std::to_string(i) + ": struct_size " + std::to_string(element->struct_size) +
+                         " differs from parameter #0's " + std::to_string(e.params[0].struct_size) +
+                         " (the elements of one array share one size)");
+      break;
+    }
+    pfx_param_desc p{};
+    std::memcpy(&p, element, std::min<size_t>(element->struct_size, sizeof p));
     for (std::string& problem : param_descriptor_problems(p)) problems.push_back(std::move(problem));
     if (p.id && !ids.insert(p.id).second) problems.push_back("parameter '" + std::string(p.id) + "': the id repeats");
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 
 namespace pfx_tiledlights {
@@ -36,7 +37,11 @@ bool prepare_lights(const pfx_frame& frame, const Settings& settings, LightSet* 
   out->source.reserve(frame.light_count);
   const auto* bytes = reinterpret_cast<const unsigned char*>(frame.lights);
   for (uint32_t i = 0; i < frame.light_count; ++i) {
-    const pfx_light& light = *reinterpret_cast<const pfx_light*>(bytes + size_t(i) * frame.light_struct_size);
+    // A host of another minor version may give lights of another size (core.h's growth rule):
+    // take the part this plugin knows; fields a smaller light lacks stay zero.
+    pfx_light light{};
+    std::memcpy(&light, bytes + size_t(i) * frame.light_struct_size,
+                std::min<size_t>(frame.light_struct_size, sizeof light));
     const float* p = light.position;
     const float* c = light.color;
     char message[200] = "";

@@ -172,7 +172,7 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
   if (status != PFX_OK) die("%s: declare returned %d", effect->id, (int)status);
   if (declaration.target_count > MAX_TARGETS) die("%s: too many targets", effect->id);
   for (i = 0; i < declaration.target_count; ++i) {
-    const pfx_target_desc* d = &declaration.targets[i];
+    const pfx_target_desc* d = pfx_at(pfx_target_desc, declaration.targets, i);
     uint32_t w = d->size_mode == PFX_SIZE_FIXED ? d->width : scaled_size(frame->width, d->scale_x);
     uint32_t h =
         d->size_mode == PFX_SIZE_FIXED ? d->height : scaled_size(frame->height, d->scale_y);
@@ -182,7 +182,7 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
   glCreateSamplers(MAX_INPUTS, samplers);
 
   for (p = 0; p < declaration.pass_count; ++p) {
-    const pfx_pass_desc* pass = &declaration.passes[p];
+    const pfx_pass_desc* pass = pfx_at(pfx_pass_desc, declaration.passes, p);
     const texture* out = NULL;
     pfx_bound_texture bound[MAX_INPUTS];
     pfx_pass_context context;
@@ -191,7 +191,7 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
 
     if (pass->output && strcmp(pass->output, PFX_OUTPUT_NAME) == 0) out = output;
     for (i = 0; pass->output && !out && i < declaration.target_count; ++i)
-      if (strcmp(pass->output, declaration.targets[i].name) == 0) out = &targets[i];
+      if (strcmp(pass->output, pfx_at(pfx_target_desc, declaration.targets, i)->name) == 0) out = &targets[i];
     if (pass->output && !out)
       die("%s/%s: unknown output \"%s\"", effect->id, pass->name, pass->output);
     if (pass->input_count > MAX_INPUTS) die("%s/%s: too many inputs", effect->id, pass->name);
@@ -205,7 +205,7 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
       GLenum filter = in->filter == PFX_FILTER_NEAREST ? GL_NEAREST : GL_LINEAR;
       if (strcmp(in->name, PFX_INPUT_NAME_COLOR) == 0) source = color;
       for (t = 0; !source && t < declaration.target_count; ++t)
-        if (strcmp(in->name, declaration.targets[t].name) == 0) source = &targets[t];
+        if (strcmp(in->name, pfx_at(pfx_target_desc, declaration.targets, t)->name) == 0) source = &targets[t];
       if (!source) die("%s/%s: unknown input \"%s\"", effect->id, pass->name, in->name);
       if (in->wrap > PFX_WRAP_MIRRORED_REPEAT) die("%s/%s: unknown wrap", effect->id, pass->name);
       glSamplerParameteri(samplers[i], GL_TEXTURE_MIN_FILTER, (GLint)filter);
@@ -282,7 +282,7 @@ static const pfx_effect_desc* find_effect(const pfx_effect_factory* factory, con
 static uint32_t find_param(const pfx_effect_desc* effect, const char* id) {
   uint32_t i;
   for (i = 0; i < effect->param_count; ++i)
-    if (strcmp(effect->params[i].id, id) == 0) return i;
+    if (strcmp(pfx_at(pfx_param_desc, effect->params, i)->id, id) == 0) return i;
   die("effect \"%s\" has no parameter \"%s\"", effect->id, id);
   return 0;
 }
@@ -292,7 +292,7 @@ static pfx_value* default_params(const pfx_effect_desc* effect) {
   pfx_value* params = (pfx_value*)calloc(effect->param_count + 1u, sizeof *params);
   uint32_t i;
   if (!params) die("out of memory");
-  for (i = 0; i < effect->param_count; ++i) params[i] = effect->params[i].default_value;
+  for (i = 0; i < effect->param_count; ++i) params[i] = pfx_at(pfx_param_desc, effect->params, i)->default_value;
   return params;
 }
 
@@ -359,8 +359,8 @@ int main(int argc, char** argv) {
   gain = find_effect(factory, "gain");
   gain_index = find_param(gain, "gain");
   channels_index = find_param(gain, "channels");
-  if (gain->params[channels_index].type != PFX_PARAM_ENUM ||
-      gain->params[channels_index].item_count < 2)
+  if (pfx_at(pfx_param_desc, gain->params, channels_index)->type != PFX_PARAM_ENUM ||
+      pfx_at(pfx_param_desc, gain->params, channels_index)->item_count < 2)
     fail("gain.channels is not an enum with two items");
   gain_params = default_params(gain);
 

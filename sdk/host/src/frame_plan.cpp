@@ -5,6 +5,8 @@
 #include <map>
 #include <set>
 
+#include "host_layout.hpp"
+
 namespace pfx::host {
 namespace {
 
@@ -65,10 +67,18 @@ bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t 
   result.inputs = in.inputs;
   if ((in.target_count && !in.targets) || (in.pass_count && !in.passes))
     return fail("declaration has counts without arrays");
+  // The plugin's arrays in this host's layout: a plugin built against another minor version steps
+  // them by its own struct_size (core.h's growth rule).
+  std::string problem;
+  const std::vector<pfx_target_desc> targets =
+      read_sized_array(in.targets, in.target_count, PFX_TARGET_DESC_MIN_SIZE, "target", &problem);
+  if (!problem.empty()) return fail(problem);
+  const std::vector<pfx_pass_desc> passes =
+      read_sized_array(in.passes, in.pass_count, PFX_PASS_DESC_MIN_SIZE, "pass", &problem);
+  if (!problem.empty()) return fail(problem);
   std::set<std::string> names;
   for (uint32_t i = 0; i < in.target_count; ++i) {
-    const pfx_target_desc& t = in.targets[i];
-    if (t.struct_size < PFX_TARGET_DESC_MIN_SIZE) return fail("target #" + std::to_string(i) + ": struct too small");
+    const pfx_target_desc& t = targets[i];
     if (!t.name || !*t.name) return fail("target #" + std::to_string(i) + " has no name");
     std::string name = t.name;
     if (name == PFX_OUTPUT_NAME || find_frame_input(name))
@@ -95,9 +105,8 @@ bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t 
     result.targets.push_back(target);
   }
   for (uint32_t i = 0; i < in.pass_count; ++i) {
-    const pfx_pass_desc& p = in.passes[i];
+    const pfx_pass_desc& p = passes[i];
     std::string label = "pass #" + std::to_string(i) + (p.name ? " '" + std::string(p.name) + "'" : "");
-    if (p.struct_size < PFX_PASS_DESC_MIN_SIZE) return fail(label + ": struct too small");
     if (p.kind != PFX_PASS_FULLSCREEN && p.kind != PFX_PASS_CUSTOM) return fail(label + ": unknown kind");
     if (p.blend > PFX_BLEND_ADD || p.load > PFX_LOAD_KEEP) return fail(label + ": unknown blend or load");
     if (!p.output && p.kind == PFX_PASS_FULLSCREEN) return fail(label + ": a full-screen pass needs an output");

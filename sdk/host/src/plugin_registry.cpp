@@ -12,10 +12,17 @@
 #include <set>
 
 #include "descriptor_check.hpp"
+#include "host_layout.hpp"
 
 namespace fs = std::filesystem;
 
 namespace pfx::host {
+
+struct HostLayoutDescriptors {
+  std::vector<std::unique_ptr<HostLayoutEffect>> effects;
+  std::vector<std::unique_ptr<pfx_importer_desc>> importers;
+  pfx_reference_factory references{};
+};
 
 // What the registry keeps per plugin besides the public Plugin: the library handle, the entry and
 // the pfx_host handed to the plugin (its host_data points at this record).
@@ -154,6 +161,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   plugin->version = text_or(entry->version, "");
   plugin->abi_minor = entry->abi_minor;
   plugin->host = &record->host;
+  auto descriptors = std::make_shared<HostLayoutDescriptors>();
 
   // A plugin may provide no effects (an importer only): a NULL factory is fine.
   auto factory = static_cast<const pfx_effect_factory*>(entry->get_factory(PFX_EFFECTS_FACTORY_ID));
@@ -162,8 +170,11 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
       return undo_init("effect factory is incomplete");
     std::set<std::string> own_ids;
     for (uint32_t i = 0, n = factory->effect_count(); i < n; ++i) {
-      const pfx_effect_desc* desc = factory->get_effect(i);
-      std::string problem = check_effect_descriptor(desc);
+      std::string problem;
+      std::unique_ptr<HostLayoutEffect> effect = effect_in_host_layout(factory->get_effect(i), &problem);
+      if (!effect) return undo_init("effect #" + std::to_string(i) + ": " + problem);
+      const pfx_effect_desc* desc = &effect->desc;
+      problem = check_effect_descriptor(desc);
       if (!problem.empty()) return undo_init("effect #" + std::to_string(i) + ": " + problem);
       if (!own_ids.insert(desc->id).second) return undo_init("duplicate effect id '" + std::string(desc->id) + "' within the plugin");
       const EffectInfo* other = find_effect(desc->id);
@@ -171,6 +182,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
         return undo_init("duplicate effect id '" + std::string(desc->id) + "' (already provided by plugin '" +
                          other->plugin->id + "' from " + other->plugin->path + ")");
       plugin->effects.push_back(desc);
+      descriptors->effects.push_back(std::move(effect));
     }
   }
 
@@ -182,9 +194,11 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
       return undo_init("importer factory is incomplete");
     std::set<std::string> own_ids;
     for (uint32_t i = 0, n = importer_factory->importer_count(); i < n; ++i) {
-      const pfx_importer_desc* desc = importer_factory->get_importer(i);
-      std::string problem = check_importer_descriptor(desc);
+      const pfx_importer_desc* plugin_desc = importer_factory->get_importer(i);
+      std::string problem = check_importer_descriptor(plugin_desc);
       if (!problem.empty()) return undo_init("importer #" + std::to_string(i) + ": " + problem);
+      descriptors->importers.push_back(std::make_unique<pfx_importer_desc>(read_sized(plugin_desc)));
+      const pfx_importer_desc* desc = descriptors->importers.back().get();
       if (!own_ids.insert(desc->id).second)
         return undo_init("duplicate importer id '" + std::string(desc->id) + "' within the plugin");
       const ImporterInfo* other = find_importer(desc->id);
@@ -196,9 +210,12 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   }
 
   auto references = static_cast<const pfx_reference_factory*>(entry->get_factory(PFX_REFERENCES_FACTORY_ID));
-  if (references && references->struct_size >= PFX_REFERENCE_FACTORY_MIN_SIZE && references->has_reference &&
-      references->evaluate)
-    plugin->references = references;
+  if (references && references->struct_size >= PFX_REFERENCE_FACTORY_MIN_SIZE) {
+    descriptors->references = read_sized(references);
+    if (descriptors->references.has_reference && descriptors->references.evaluate)
+      plugin->references = &descriptors->references;
+  }
+  plugin->descriptors = std::move(descriptors);
 
   record->library = library;
   library = nullptr;  // the record owns it now

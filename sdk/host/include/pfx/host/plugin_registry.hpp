@@ -31,6 +31,10 @@ struct ImporterInfo {
   const Plugin* plugin = nullptr;
 };
 
+// The descriptors a plugin handed over, copied into this host's struct layout at load (core.h's
+// growth rule), so a plugin built against another minor version reads like one built with ours.
+struct HostLayoutDescriptors;
+
 // One loaded library. Owned by the registry; pointers stay valid until the registry dies.
 struct Plugin {
   std::string path;
@@ -43,6 +47,9 @@ struct Plugin {
   const pfx_reference_factory* references = nullptr;
   // The services this plugin was given (host_data points back at the registry's record).
   const pfx_host* host = nullptr;
+  // What effects, importers and references point into: this host's layout of the plugin's own
+  // structs (arrays stepped by their struct_size, fields its version lacks zeroed).
+  std::shared_ptr<const HostLayoutDescriptors> descriptors;
 };
 
 class PFX_HOST_API PluginRegistry {
