@@ -1,10 +1,13 @@
-/* c_host.c: a foreign host in plain C99 that runs the minimal fixture plugin without libpfxhost.
+/* c_host.c: a foreign host in plain C99 that runs the fixture plugins without libpfxhost.
  *
- * It proves that the ABI in sdk/include/pfx/ is enough on its own: this file makes its own EGL
- * context, implements pfx_host, loads the plugin with dlopen, allocates the declared targets and
- * runs the declared passes the way DESIGN.md §3 describes, then checks the pixels.
+ * It proves that the ABI in sdk/include/pfx/ and docs/sdk.md are enough on their own: this file
+ * makes its own EGL context, implements pfx_host, loads the plugin with dlopen, allocates the
+ * declared targets and runs the declared passes as docs/sdk.md §1.4-1.7 say (arrays stepped by
+ * struct_size, samplers with compare mode NONE, pending GL errors cleared first, at most
+ * PFX_MAX_PASS_INPUTS inputs), then checks the pixels. With the minimal plugin it checks gain and
+ * boxblur; with --probe, the probe fixture's effects, which show the host's side of the contract.
  *
- * usage: pfx_c_host PATH/minimal.so   (exit 0 when every check passes, 1 with a message otherwise)
+ * usage: pfx_c_host MINIMAL.so | --probe PROBE.so   (exit 0 when every check passes, 1 otherwise)
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -21,7 +24,7 @@
 #include <pfx/pfx.h>
 
 /* Odd sizes on purpose: half-size targets must round, not truncate to a wrong size. */
-enum { WIDTH = 7, HEIGHT = 5, MAX_TARGETS = 8, MAX_INPUTS = 8 };
+enum { WIDTH = 7, HEIGHT = 5, MAX_TARGETS = 8, MAX_INPUTS = PFX_MAX_PASS_INPUTS };
 
 static int g_failures;
 
@@ -157,9 +160,15 @@ static protected_state read_protected_state(void) {
   return s;
 }
 
-/* Declares, then runs every declared pass from `color` into `output`. Returns the pass count. */
+/* The frame's textures: colour in, depth (NULL when the frame has none), the effect's output. */
+typedef struct frame_textures {
+  const texture *color, *depth, *output;
+} frame_textures;
+
+/* Declares, then runs every declared pass from the colour into the output. Returns the pass count. */
 static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const pfx_frame* frame,
-                           const pfx_value* params, const texture* color, const texture* output) {
+                           const pfx_value* params, const frame_textures* io) {
+  const texture* output = io->output;
   pfx_declaration declaration;
   texture targets[MAX_TARGETS];
   GLuint samplers[MAX_INPUTS], vertex_array;
@@ -179,7 +188,13 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
     targets[i] = make_texture(d->format, w, h, NULL);
   }
   glCreateVertexArrays(1, &vertex_array);
+  /* Sampler objects start with compare mode NONE: a depth input then reads as depth, whatever the
+   * compare mode of the texture itself (an engine's shadow-map setup). */
   glCreateSamplers(MAX_INPUTS, samplers);
+  /* Errors the host (or its engine) made before are not the plugin's: clear them, so the check
+   * after each pass blames only that pass. */
+  while (glGetError() != GL_NO_ERROR) {
+  }
 
   for (p = 0; p < declaration.pass_count; ++p) {
     const pfx_pass_desc* pass = pfx_at(pfx_pass_desc, declaration.passes, p);
@@ -194,7 +209,7 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
       if (strcmp(pass->output, pfx_at(pfx_target_desc, declaration.targets, i)->name) == 0) out = &targets[i];
     if (pass->output && !out)
       die("%s/%s: unknown output \"%s\"", effect->id, pass->name, pass->output);
-    if (pass->input_count > MAX_INPUTS) die("%s/%s: too many inputs", effect->id, pass->name);
+    if (pass->input_count > PFX_MAX_PASS_INPUTS) die("%s/%s: more inputs than a pass may name", effect->id, pass->name);
 
     for (i = 0; i < pass->input_count; ++i) {
       static const GLenum wraps[] = {GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER, GL_REPEAT,
@@ -203,7 +218,9 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
       const texture* source = NULL;
       uint32_t t;
       GLenum filter = in->filter == PFX_FILTER_NEAREST ? GL_NEAREST : GL_LINEAR;
-      if (strcmp(in->name, PFX_INPUT_NAME_COLOR) == 0) source = color;
+      if (strcmp(in->name, PFX_INPUT_NAME_COLOR) == 0) source = io->color;
+      if (strcmp(in->name, PFX_INPUT_NAME_DEPTH) == 0) source = io->depth;
+      if (strcmp(in->name, PFX_OUTPUT_NAME) == 0) source = output;
       for (t = 0; !source && t < declaration.target_count; ++t)
         if (strcmp(in->name, pfx_at(pfx_target_desc, declaration.targets, t)->name) == 0) source = &targets[t];
       if (!source) die("%s/%s: unknown input \"%s\"", effect->id, pass->name, in->name);
@@ -309,67 +326,106 @@ static void check_pixels(const char* what, const texture* output, const float* e
   }
 }
 
-int main(int argc, char** argv) {
-  host_state state = {0};
-  pfx_host host;
-  pfx_frame frame;
-  pfx_get_entry_fn get_entry;
+/* ---- Loading: what every host does with a library ------------------------------------------- */
+
+typedef struct loaded_plugin {
+  void* library;
   const pfx_entry* entry;
   const pfx_effect_factory* factory;
+} loaded_plugin;
+
+static host_state g_state;
+static pfx_host g_host;
+
+static loaded_plugin load_plugin(const char* path, const char* expected_id) {
+  loaded_plugin plugin;
+  pfx_get_entry_fn get_entry;
+  void* symbol;
+  plugin.library = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+  if (!plugin.library) die("dlopen: %s", dlerror());
+  symbol = dlsym(plugin.library, PFX_ENTRY_SYMBOL);
+  if (!symbol) die("%s has no %s", path, PFX_ENTRY_SYMBOL);
+  /* ISO C has no cast from an object pointer to a function pointer; POSIX guarantees the bits. */
+  memcpy(&get_entry, &symbol, sizeof get_entry);
+  plugin.entry = get_entry();
+  /* The growth rule (pfx/core.h): accept any struct from its first published size on. */
+  if (!plugin.entry || plugin.entry->struct_size < PFX_ENTRY_MIN_SIZE || plugin.entry->abi_major != PFX_ABI_MAJOR)
+    die("bad entry struct (abi_major %u)", plugin.entry ? (unsigned)plugin.entry->abi_major : 0u);
+  if (strcmp(plugin.entry->id, expected_id) != 0) fail("plugin id is \"%s\"", plugin.entry->id);
+
+  memset(&g_host, 0, sizeof g_host);
+  g_host.struct_size = sizeof g_host;
+  g_host.abi_major = PFX_ABI_MAJOR;
+  g_host.abi_minor = PFX_ABI_MINOR;
+  g_host.host_name = "pfx c_host test";
+  g_host.host_data = &g_state;
+  g_host.log = host_log;
+  g_host.get_proc_address = host_get_proc_address;
+#if PFX_ABI_MINOR == 99
+  g_host.future_count = 0xdeadbeefu;
+  g_host.future_name = "a field of ABI 1.99";
+#endif
+  if (plugin.entry->init(&g_host) != PFX_OK || plugin.entry->init(&g_host) != PFX_OK)
+    die("init failed (twice is allowed)");
+  if (plugin.entry->get_factory("nope") != NULL) fail("get_factory(\"nope\") is not NULL");
+  if (plugin.entry->get_factory(PFX_IMPORTERS_FACTORY_ID) != NULL) fail("get_factory(importers) is not NULL");
+  plugin.factory = (const pfx_effect_factory*)plugin.entry->get_factory(PFX_EFFECTS_FACTORY_ID);
+  if (!plugin.factory || plugin.factory->struct_size < PFX_EFFECT_FACTORY_MIN_SIZE) die("no effects factory");
+  if (plugin.factory->get_effect(plugin.factory->effect_count()) != NULL) fail("get_effect(past the end) is not NULL");
+  return plugin;
+}
+
+static void unload_plugin(loaded_plugin* plugin) {
+  plugin->entry->deinit();
+  if (g_state.errors_logged) fail("the plugin logged %d error(s)", g_state.errors_logged);
+  dlclose(plugin->library);
+}
+
+static pfx_frame make_frame(uint32_t inputs) {
+  pfx_frame frame;
+  memset(&frame, 0, sizeof frame);
+  frame.struct_size = sizeof frame;
+#if PFX_ABI_MINOR == 99
+  /* Built against the future fixture headers: fill what a later host would, which no plugin of
+   * an earlier version may read. */
+  frame.future_count = 0xdeadbeefu;
+  frame.future_name = "a field of ABI 1.99";
+#endif
+  frame.width = WIDTH;
+  frame.height = HEIGHT;
+  frame.inputs = inputs;
+  frame.light_struct_size = sizeof(pfx_light);
+  return frame;
+}
+
+/* get_proc_address of a context that has nothing: a plugin must refuse to create (not crash). */
+static pfx_gl_proc no_gl_proc(void* host_data, const char* name) {
+  (void)host_data, (void)name;
+  return NULL;
+}
+
+/* ---- The minimal plugin: gain and boxblur --------------------------------------------------- */
+
+static void check_minimal(const char* path) {
+  loaded_plugin plugin = load_plugin(path, "org.pfx.test.minimal");
+  pfx_frame frame = make_frame(PFX_INPUT_COLOR);
   const pfx_effect_desc *gain, *blur;
   pfx_value *gain_params, *blur_params;
   uint32_t gain_index, channels_index, radius_index;
-  void *library, *symbol, *instance = NULL;
+  void* instance = NULL;
   float input[WIDTH * HEIGHT * 4], expected[WIDTH * HEIGHT * 4];
   texture color, output;
+  frame_textures io;
+  pfx_host empty_gl;
   int x, y, i;
 
-  if (argc != 2) die("usage: %s PLUGIN.so", argv[0]);
-  create_context();
-
-  library = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
-  if (!library) die("dlopen: %s", dlerror());
-  symbol = dlsym(library, PFX_ENTRY_SYMBOL);
-  if (!symbol) die("%s has no %s", argv[1], PFX_ENTRY_SYMBOL);
-  /* ISO C has no cast from an object pointer to a function pointer; POSIX guarantees the bits. */
-  memcpy(&get_entry, &symbol, sizeof get_entry);
-  entry = get_entry();
-  if (!entry || entry->struct_size < PFX_ENTRY_MIN_SIZE || entry->abi_major != PFX_ABI_MAJOR)
-    die("bad entry struct (abi_major %u)", entry ? (unsigned)entry->abi_major : 0u);
-  if (strcmp(entry->id, "org.pfx.test.minimal") != 0) fail("plugin id is \"%s\"", entry->id);
-
-  memset(&host, 0, sizeof host);
-  host.struct_size = sizeof host;
-  host.abi_major = PFX_ABI_MAJOR;
-  host.abi_minor = PFX_ABI_MINOR;
-  host.host_name = "pfx c_host test";
-  host.host_data = &state;
-  host.log = host_log;
-  host.get_proc_address = host_get_proc_address;
-  if (entry->init(&host) != PFX_OK || entry->init(&host) != PFX_OK)
-    die("init failed (twice is allowed)");
-  if (entry->get_factory("nope") != NULL) fail("get_factory(\"nope\") is not NULL");
-  if (entry->get_factory(PFX_IMPORTERS_FACTORY_ID) != NULL)
-    fail("get_factory(importers) is not NULL");
-  factory = (const pfx_effect_factory*)entry->get_factory(PFX_EFFECTS_FACTORY_ID);
-  if (!factory || factory->struct_size < PFX_EFFECT_FACTORY_MIN_SIZE) die("no effects factory");
-  if (factory->get_effect(factory->effect_count()) != NULL)
-    fail("get_effect(past the end) is not NULL");
-
-  gain = find_effect(factory, "gain");
+  gain = find_effect(plugin.factory, "gain");
   gain_index = find_param(gain, "gain");
   channels_index = find_param(gain, "channels");
   if (pfx_at(pfx_param_desc, gain->params, channels_index)->type != PFX_PARAM_ENUM ||
       pfx_at(pfx_param_desc, gain->params, channels_index)->item_count < 2)
     fail("gain.channels is not an enum with two items");
   gain_params = default_params(gain);
-
-  memset(&frame, 0, sizeof frame);
-  frame.struct_size = sizeof frame;
-  frame.width = WIDTH;
-  frame.height = HEIGHT;
-  frame.inputs = PFX_INPUT_COLOR;
-  frame.light_struct_size = sizeof(pfx_light);
 
   /* Values exact in half precision, negative ones included: a gain must not clamp. */
   for (y = 0; y < HEIGHT; ++y)
@@ -382,18 +438,25 @@ int main(int argc, char** argv) {
     }
   color = make_texture(PFX_FORMAT_RGBA32F, WIDTH, HEIGHT, input);
   output = make_texture(PFX_FORMAT_RGBA16F, WIDTH, HEIGHT, NULL);
+  io.color = &color, io.depth = NULL, io.output = &output;
 
-  if (gain->create(&host, &instance) != PFX_OK || !instance) die("gain: create failed");
+  /* get_proc_address may return stubs for names a context lacks (Mesa does), or NULL: a plugin
+   * checks the version it got. With nothing at all it must refuse, with PFX_GL_ERROR. */
+  empty_gl = g_host;
+  empty_gl.get_proc_address = no_gl_proc;
+  if (gain->create(&empty_gl, &instance) != PFX_GL_ERROR) fail("gain: create without GL is not PFX_GL_ERROR");
+  g_state.errors_logged = 0; /* that refusal was logged as an error, as it should */
+  instance = NULL;
+
+  if (gain->create(&g_host, &instance) != PFX_OK || !instance) die("gain: create failed");
   gain_params[gain_index].v[0] = 2.5;
-  if (run_effect(gain, instance, &frame, gain_params, &color, &output) != 1)
-    fail("gain 2.5: not one pass");
+  if (run_effect(gain, instance, &frame, gain_params, &io) != 1) fail("gain 2.5: not one pass");
   for (i = 0; i < WIDTH * HEIGHT * 4; ++i) expected[i] = i % 4 == 3 ? input[i] : input[i] * 2.5f;
   check_pixels("gain 2.5", &output, expected);
 
   gain_params[gain_index].v[0] = 2.0;
   gain_params[channels_index].v[0] = 1.0; /* "luma" */
-  if (run_effect(gain, instance, &frame, gain_params, &color, &output) != 1)
-    fail("gain luma: not one pass");
+  if (run_effect(gain, instance, &frame, gain_params, &io) != 1) fail("gain luma: not one pass");
   for (i = 0; i < WIDTH * HEIGHT * 4; i += 4) {
     float luma = 0.2126f * input[i] + 0.7152f * input[i + 1] + 0.0722f * input[i + 2];
     expected[i] = expected[i + 1] = expected[i + 2] = 2.0f * luma;
@@ -403,38 +466,117 @@ int main(int argc, char** argv) {
 
   gain_params[gain_index].v[0] = 1.0;
   gain_params[channels_index].v[0] = 0.0;
-  if (run_effect(gain, instance, &frame, gain_params, &color, &output) != 0)
-    fail("gain 1: the no-op must declare zero passes");
+  if (run_effect(gain, instance, &frame, gain_params, &io) != 0) fail("gain 1: the no-op must declare zero passes");
   gain->destroy(instance);
 
   /* boxblur: three passes through two half-size targets. A constant image stays constant. */
-  blur = find_effect(factory, "boxblur");
+  blur = find_effect(plugin.factory, "boxblur");
   radius_index = find_param(blur, "radius");
   blur_params = default_params(blur);
   for (i = 0; i < WIDTH * HEIGHT * 4; ++i) input[i] = expected[i] = (float)(i % 4 + 1) * 0.25f;
   glTextureSubImage2D(color.texture, 0, 0, 0, WIDTH, HEIGHT, GL_RGBA, GL_FLOAT, input);
-  if (blur->create(&host, &instance) != PFX_OK || !instance) die("boxblur: create failed");
+  if (blur->create(&g_host, &instance) != PFX_OK || !instance) die("boxblur: create failed");
   blur_params[radius_index].v[0] = 1.5;
-  if (run_effect(blur, instance, &frame, blur_params, &color, &output) != 3)
-    fail("boxblur: not three passes");
+  if (run_effect(blur, instance, &frame, blur_params, &io) != 3) fail("boxblur: not three passes");
   check_pixels("boxblur of a constant image", &output, expected);
   blur_params[radius_index].v[0] = 0.0;
-  if (run_effect(blur, instance, &frame, blur_params, &color, &output) != 0)
+  if (run_effect(blur, instance, &frame, blur_params, &io) != 0)
     fail("boxblur radius 0: the no-op must declare zero passes");
   blur->destroy(instance);
 
-  entry->deinit();
-  if (state.errors_logged) fail("the plugin logged %d error(s)", state.errors_logged);
+  unload_plugin(&plugin);
   free_texture(&color);
   free_texture(&output);
   free(gain_params);
   free(blur_params);
-  dlclose(library);
+  if (!g_failures) printf("c_host: minimal plugin OK (gain, gain luma, no-op, boxblur, no GL refused)\n");
+}
 
+/* ---- The probe plugin: the host's side of the contract, in pixels ---------------------------- */
+
+/* Runs one probe effect over `io` with its default parameters (and `count` for "inputs"). */
+static void run_probe(const loaded_plugin* plugin, const char* id, const pfx_frame* frame, const frame_textures* io,
+                      double count) {
+  const pfx_effect_desc* effect = find_effect(plugin->factory, id);
+  pfx_value* params = default_params(effect);
+  void* instance = NULL;
+  if (effect->param_count) params[0].v[0] = count;
+  if (effect->create(&g_host, &instance) != PFX_OK || !instance) die("%s: create failed", id);
+  if (run_effect(effect, instance, frame, params, io) == 0) fail("%s: no pass ran", id);
+  effect->destroy(instance);
+  free(params);
+}
+
+static void check_probe(const char* path) {
+  loaded_plugin plugin = load_plugin(path, "org.pfx.test.probe");
+  pfx_frame frame = make_frame(PFX_INPUT_COLOR | PFX_INPUT_DEPTH);
+  float input[WIDTH * HEIGHT * 4], expected[WIDTH * HEIGHT * 4], depth_values[WIDTH * HEIGHT];
+  texture color = make_texture(PFX_FORMAT_RGBA32F, WIDTH, HEIGHT, NULL);
+  texture output = make_texture(PFX_FORMAT_RGBA16F, WIDTH, HEIGHT, NULL);
+  texture depth;
+  frame_textures io;
+  int x, y, i;
+
+  for (i = 0; i < WIDTH * HEIGHT * 4; ++i) input[i] = (float)(i % 13) * 0.125f - 0.5f;
+  glTextureSubImage2D(color.texture, 0, 0, 0, WIDTH, HEIGHT, GL_RGBA, GL_FLOAT, input);
+  /* An engine's depth buffer, its texture set up for shadow lookups: the host's sampler object
+   * (compare mode NONE, as every pfx host binds) must win, or texture() returns comparisons. */
+  for (y = 0; y < HEIGHT; ++y)
+    for (x = 0; x < WIDTH; ++x) depth_values[y * WIDTH + x] = (float)(y * WIDTH + x) / (WIDTH * HEIGHT);
+  glCreateTextures(GL_TEXTURE_2D, 1, &depth.texture);
+  glTextureStorage2D(depth.texture, 1, GL_DEPTH_COMPONENT32F, WIDTH, HEIGHT);
+  glTextureSubImage2D(depth.texture, 0, 0, 0, WIDTH, HEIGHT, GL_DEPTH_COMPONENT, GL_FLOAT, depth_values);
+  glTextureParameteri(depth.texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  depth.framebuffer = 0, depth.width = WIDTH, depth.height = HEIGHT, depth.format = PFX_FORMAT_R32F;
+  io.color = &color, io.depth = &depth, io.output = &output;
+
+  /* Orientation: row 0 of every texture is the bottom row; gl_FragCoord and a full-screen
+   * triangle's v_uv both start at the bottom-left. */
+  run_probe(&plugin, "coords", &frame, &io, 0);
+  for (y = 0; y < HEIGHT; ++y)
+    for (x = 0; x < WIDTH; ++x) {
+      float* e = &expected[(y * WIDTH + x) * 4];
+      e[0] = (float)x + 0.5f, e[1] = (float)y + 0.5f;
+      e[2] = ((float)x + 0.5f) / WIDTH, e[3] = ((float)y + 0.5f) / HEIGHT;
+    }
+  check_pixels("coords (row 0 is the bottom row)", &output, expected);
+
+  /* PFX_SIZE_FRAME_SCALE: max(1, round(frame * scale)), halves away from zero: 7/3 -> 2, 5/2 -> 3. */
+  run_probe(&plugin, "sizes", &frame, &io, 0);
+  for (i = 0; i < WIDTH * HEIGHT * 4; i += 4)
+    expected[i] = 2, expected[i + 1] = 3, expected[i + 2] = WIDTH, expected[i + 3] = HEIGHT;
+  check_pixels("sizes (a target of scale 1/3 x 1/2 of 7x5)", &output, expected);
+
+  run_probe(&plugin, "depth", &frame, &io, 0);
+  for (i = 0; i < WIDTH * HEIGHT; ++i)
+    expected[4 * i] = depth_values[i], expected[4 * i + 1] = 0, expected[4 * i + 2] = 0, expected[4 * i + 3] = 1;
+  check_pixels("depth sampled through the host's sampler", &output, expected);
+
+  /* A custom pass: image store, barrier, then two full-screen passes reading it back. */
+  run_probe(&plugin, "custom", &frame, &io, 0);
+  for (i = 0; i < WIDTH * HEIGHT * 4; ++i) expected[i] = 2.0f * input[i] + 1.0f;
+  check_pixels("custom pass (2 * colour stored as an image, + 1 by full-screen passes)", &output, expected);
+
+  run_probe(&plugin, "inputs", &frame, &io, PFX_MAX_PASS_INPUTS);
+  for (i = 0; i < WIDTH * HEIGHT * 4; ++i) expected[i] = (float)PFX_MAX_PASS_INPUTS * input[i];
+  check_pixels("a pass naming PFX_MAX_PASS_INPUTS inputs", &output, expected);
+
+  unload_plugin(&plugin);
+  free_texture(&color);
+  free_texture(&output);
+  glDeleteTextures(1, &depth.texture);
+  if (!g_failures) printf("c_host: probe plugin OK (orientation, target sizes, depth sampler, custom pass, 16 inputs)\n");
+}
+
+int main(int argc, char** argv) {
+  const int probe = argc == 3 && strcmp(argv[1], "--probe") == 0;
+  if (argc != 2 && !probe) die("usage: %s MINIMAL.so | --probe PROBE.so", argv[0]);
+  create_context();
+  if (probe) check_probe(argv[2]);
+  else check_minimal(argv[1]);
   if (g_failures) {
     fprintf(stderr, "c_host: %d check(s) failed\n", g_failures);
     return 1;
   }
-  printf("c_host: minimal plugin OK (gain, gain luma, no-op, boxblur)\n");
   return 0;
 }

@@ -111,6 +111,9 @@ bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t 
     if (p.blend > PFX_BLEND_ADD || p.load > PFX_LOAD_KEEP) return fail(label + ": unknown blend or load");
     if (!p.output && p.kind == PFX_PASS_FULLSCREEN) return fail(label + ": a full-screen pass needs an output");
     if (p.input_count && !p.inputs) return fail(label + ": input_count without inputs");
+    if (p.input_count > PFX_MAX_PASS_INPUTS)
+      return fail(label + ": " + std::to_string(p.input_count) + " inputs, more than the " +
+                  std::to_string(PFX_MAX_PASS_INPUTS) + " a pass may name (PFX_MAX_PASS_INPUTS)");
     DeclaredPass pass;
     pass.name = p.name ? p.name : "pass" + std::to_string(i);
     pass.kind = p.kind;

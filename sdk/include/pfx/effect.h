@@ -123,6 +123,10 @@ enum {
   PFX_WRAP_MIRRORED_REPEAT = 3
 };
 
+/* The most inputs one pass may name (texture units 0..15): every OpenGL 4.5 context has at least
+ * 16 fragment and 16 compute texture units. A host refuses a pass naming more. */
+#define PFX_MAX_PASS_INPUTS 16u
+
 /* How a pass samples one texture. Sampling is per pass, not per target: a pyramid level may be
  * read clamped-to-border going down and clamped-to-edge going up. */
 typedef struct pfx_pass_input {
