@@ -11,25 +11,22 @@
 
 namespace pfx::plugin {
 
-// init's check: a host struct at least as large as this plugin's ABI knows, with the two
-// callbacks plugins call (logging and GL function lookup).
+// init's check: a host struct of at least the first published size (an older host's is smaller
+// than this plugin's sizeof, and fine), with the two callbacks plugins call (logging and GL lookup).
 inline bool usable_host(const pfx_host* host) {
   return host && host->struct_size >= PFX_HOST_MIN_SIZE && host->log && host->get_proc_address;
 }
 
-// The size of a reference request from an ABI 1.0 host (before normal, albedo and emissive).
-// Minor versions only append, so a reference must accept a request this small and read the
-// appended fields only when struct_size covers them.
-constexpr size_t kReferenceRequestSizeV1_0 = offsetof(pfx_reference_request, normal);
-// Whether the request carries the ABI 1.1 G-buffer fields.
+// Whether the request carries the G-buffer fields appended in ABI 1.1. A reference must accept a
+// request of the first published size (an ABI 1.0 host's) and read them only when it does.
 inline bool has_gbuffer_fields(const pfx_reference_request& request) {
-  return request.struct_size >= offsetof(pfx_reference_request, emissive) + sizeof(request.emissive);
+  return PFX_STRUCT_HAS(&request, pfx_reference_request, emissive);
 }
 
 // What every CPU reference needs of a request: a readable struct, a frame of at least one pixel,
 // the parameters, the colour in and the output.
 inline bool usable_reference_request(const pfx_reference_request* request) {
-  return request && request->struct_size >= kReferenceRequestSizeV1_0 && request->frame &&
+  return request && request->struct_size >= PFX_REFERENCE_REQUEST_MIN_SIZE && request->frame &&
          request->frame->struct_size >= PFX_FRAME_MIN_SIZE && request->params && request->color && request->output &&
          request->frame->width > 0 && request->frame->height > 0;
 }
