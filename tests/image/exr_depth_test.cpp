@@ -84,7 +84,7 @@ TEST_CASE("EXR depth: the channel taken follows Z, depth, a layer's Z, R, Y, a l
   }
 }
 
-TEST_CASE("EXR depth: half and uint depth read as the values written; tiled too", "[image][exr][depth]") {
+TEST_CASE("EXR depth: half and uint depth read as the values written, tiled too", "[image][exr][depth]") {
   pfx_test::TempDir dir;
   const std::string path = dir.file("typed.exr");
   for (Imf::PixelType type : {Imf::HALF, Imf::UINT}) {

@@ -301,7 +301,7 @@ TEST_CASE("EXR colour: channels with nothing to show are refused, naming the fil
   CHECK_THAT(r.error, Catch::Contains("u, v"));
 }
 
-TEST_CASE("EXR colour: --layer names a part of a multi-part file; without it the first part is read",
+TEST_CASE("EXR colour: --layer names a part of a multi-part file, and without it the first part is read",
           "[image][exr][layouts]") {
   pfx_test::TempDir dir;
   const std::string path = dir.file("parts.exr");
