@@ -1,6 +1,5 @@
 #include "exr_channels.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <set>
 
