@@ -28,7 +28,9 @@ bool make_bench_frames(const BenchOptions& options, std::vector<BenchFrame>* fra
   for (size_t i = 0; i < options.inputs.size(); ++i) {
     BenchFrame frame;
     frame.source = options.inputs[i];
-    if (!pfx::app::read_exr(options.inputs[i], &frame.image, error)) return false;
+    pfx::app::ExrRequest request;
+    request.layer = options.layer;
+    if (!pfx::app::read_exr(options.inputs[i], &frame.image, error, request, nullptr)) return false;
     if (i < options.truths.size()) {
       pfx::app::Image truth;
       if (!read_same_size(options.truths[i], frame.image, &truth, error)) return false;

@@ -12,8 +12,8 @@ std::string bench_usage() {
   return
       "usage: pfx-bench [--plugins DIR]... [--out DIR] [--sizes WxH,...] [--frames N] [--warmup N]\n"
       "                 [--effects a,b,...] [--suite FILE] [--set E.P=V]... [--timing auto|gpu|finish]\n"
-      "                 [--input FRAME.exr [--truth TRUTH.exr [--halo-mask MASK.exr]]]... [--camera ...]\n"
-      "                 [--halo-tolerance T] [--quick] [--no-shift]\n"
+      "                 [--input FRAME.exr [--truth TRUTH.exr [--halo-mask MASK.exr]]]... [--layer NAME]\n"
+      "                 [--camera ...] [--halo-tolerance T] [--quick] [--no-shift]\n"
       "\n"
       "Measures, in one process and one run, a plain full-screen copy pass at each size (the unit),\n"
       "then every effect at every setting of the suite: median time over --frames frames after\n"
@@ -36,8 +36,10 @@ std::string bench_usage() {
       "  --suite FILE      rows to run, one per line: EFFECT [param=value ...] ('#' comments);\n"
       "                    default: the built-in suite; loaded effects it does not name run at defaults\n"
       "  --set E.P=V       set parameter P of effect E in every row, before the row's own settings\n"
-      "  --input FRAME.exr measure on this frame (repeatable; replaces --sizes): RGB(A), and its Z\n"
-      "                    channel as linear depth (m)\n"
+      "  --input FRAME.exr measure on this frame (repeatable; replaces --sizes), read as pfx-render\n"
+      "                    --input reads it (R, G, B, A; Y; a lone channel as grey; the only layer\n"
+      "                    with colour), its Z channel as linear depth (m)\n"
+      "  --layer NAME      read the part or layer NAME of every --input (e.g. diffuse for diffuse.R)\n"
       "  --camera K=V,...  the camera the effects see: fovy (degrees, default 45), near (0.1), far\n"
       "                    (1000 or inf), as pfx-render takes it\n"
       "  --truth FILE.exr  per --input, in order: what every output should ideally be (e.g. a\n"
@@ -83,6 +85,7 @@ bool parse_bench_options(const std::vector<std::string>& list, BenchOptions* out
     else if (arg == "--effects") { if (!args.value(&text)) return false; options.effects = pfx::app::split_list(text); }
     else if (arg == "--set") { if (!args.value(&options.sets)) return false; }
     else if (arg == "--input") { if (!args.value(&options.inputs)) return false; }
+    else if (arg == "--layer") { if (!args.value(&options.layer)) return false; }
     else if (arg == "--truth") { if (!args.value(&options.truths)) return false; }
     else if (arg == "--halo-mask") { if (!args.value(&options.halo_masks)) return false; }
     else if (arg == "--camera") {
@@ -114,6 +117,7 @@ bool parse_bench_options(const std::vector<std::string>& list, BenchOptions* out
       return args.unknown();
     }
   }
+  if (!options.layer.empty() && options.inputs.empty()) return args.fail("--layer goes with --input");
   if (!options.inputs.empty() && sizes_given) return args.fail("--sizes and --input exclude each other (an input has its size)");
   if (!options.truths.empty() && options.truths.size() != options.inputs.size())
     return args.fail("give one --truth per --input (" + std::to_string(options.inputs.size()) + " inputs, " +

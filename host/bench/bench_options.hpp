@@ -24,6 +24,7 @@ struct BenchOptions {
   // channel is linear depth. --truth and --halo-mask give, per input in the same order, the image
   // every output should ideally be and the object (R > 0.5) whose halo is measured.
   std::vector<std::string> inputs, truths, halo_masks;
+  std::string layer;                 // --layer NAME: the part or layer of every --input to read
   double halo_tolerance = 0.05;
   pfx::app::CameraOptions camera;    // --camera fovy=..,near=..,far=..
   std::vector<std::string> sets;     // --set effect.param=value, applied to every row first

@@ -1,26 +1,29 @@
 #include "input_image.hpp"
 
-#include "exr_io.hpp"
-
 namespace pfx::app {
 
-bool read_input_image(const std::string& input, const std::string& depth_path, Image* image, std::string* error,
-                      const ExrLimits& limits) {
-  if (!read_exr(input, image, error, limits)) return false;
-  if (depth_path.empty()) return true;
-  Image depth;
-  if (!read_exr(depth_path, &depth, error, limits)) return false;
-  if (depth.width != image->width || depth.height != image->height) {
-    *error = depth_path + ": depth is " + std::to_string(depth.width) + "x" + std::to_string(depth.height) +
-             " but the image is " + std::to_string(image->width) + "x" + std::to_string(image->height);
-    return false;
+bool read_input_image(const InputFiles& files, Image* image, InputReport* report, std::string* error) {
+  ExrRequest color;
+  color.layer = files.layer;
+  color.limits = files.limits;
+  InputReport read;
+  Image result;
+  if (!read_exr(files.input, &result, error, color, &read.color)) return false;
+  if (!files.depth.empty()) {
+    ExrRequest depth_request;
+    depth_request.role = ExrRequest::Role::Depth;
+    depth_request.limits = files.limits;
+    Image depth;
+    if (!read_exr(files.depth, &depth, error, depth_request, &read.depth)) return false;
+    if (depth.width != result.width || depth.height != result.height) {
+      *error = files.depth + ": depth is " + std::to_string(depth.width) + "x" + std::to_string(depth.height) +
+               " but the image is " + std::to_string(result.width) + "x" + std::to_string(result.height);
+      return false;
+    }
+    result.depth = std::move(depth.depth);
   }
-  if (depth.has_depth()) {
-    image->depth = depth.depth;
-  } else {
-    image->depth.resize(image->pixel_count());
-    for (size_t i = 0; i < image->depth.size(); ++i) image->depth[i] = depth.rgba[i * 4];
-  }
+  *image = std::move(result);
+  if (report) *report = std::move(read);
   return true;
 }
 

@@ -42,14 +42,25 @@ int error_exit(int code, const std::string& message) {
   return code;
 }
 
-bool load_input(const RenderOptions& options, Image* image, std::string* error) {
+bool load_input(const RenderOptions& options, Image* image, InputReport* report, std::string* error) {
   if (options.demo_image) {
     *image = make_demo_image(options.width, options.height);
     return true;
   }
-  ExrLimits limits;
-  limits.max_pixels = options.max_input_pixels;
-  return read_input_image(options.input, options.depth, image, error, limits);
+  InputFiles files;
+  files.input = options.input;
+  files.layer = options.layer;
+  files.depth = options.depth;
+  files.limits.max_pixels = options.max_input_pixels;
+  return read_input_image(files, image, report, error);
+}
+
+// Which channels of --input (and --depth) became the frame, so a user can see what was taken
+// from a file with several candidates.
+nlohmann::ordered_json input_json(const RenderOptions& options, const InputReport& report) {
+  nlohmann::ordered_json input = {{"file", options.input}, {"read", report.color}};
+  if (!options.depth.empty()) input["depth"] = {{"file", options.depth}, {"read", report.depth}};
+  return input;
 }
 
 bool write_outputs(const RenderOptions& options, const Image& result, std::string* error) {
@@ -64,9 +75,10 @@ bool write_outputs(const RenderOptions& options, const Image& result, std::strin
 
 nlohmann::ordered_json report_json(const std::string& renderer, const pfx_frame& frame,
                                    const host::FrameReport& report, const ImageStats& stats,
-                                   const std::vector<std::string>& outputs) {
+                                   const std::vector<std::string>& outputs, const nlohmann::ordered_json& input) {
   nlohmann::ordered_json root;
   root["renderer"] = renderer;
+  if (!input.is_null()) root["input"] = input;
   root["lights"] = frame.light_count;
   root["effects"] = report.effects_run;
   root["effects_skipped"] = report.effects_skipped;
@@ -146,6 +158,7 @@ int run(const RenderOptions& options) {
   Scene scene;
   std::unique_ptr<SceneRenderer> scene_renderer;
   Image input;
+  InputReport input_report;
   pfx_frame frame{};
   host::FrameTextures textures;
   if (options.demo || !options.scene.empty()) {
@@ -169,7 +182,7 @@ int run(const RenderOptions& options) {
     frame = make_scene_frame(scene, scene.camera, options.width, options.height);
     textures = scene_renderer->textures();
   } else {
-    if (!load_input(options, &input, &message)) return error_exit(kBadInput, message);
+    if (!load_input(options, &input, &input_report, &message)) return error_exit(kBadInput, message);
     frame.struct_size = sizeof frame;
     frame.width = static_cast<uint32_t>(input.width);
     frame.height = static_cast<uint32_t>(input.height);
@@ -197,8 +210,16 @@ int run(const RenderOptions& options) {
   if (!write_outputs(effective, result, &message)) return error_exit(kInternal, message);
   const host::FrameReport& report = chain.report();
   if (options.json) {
-    std::puts(report_json(context->renderer(), frame, report, compute_image_stats(result), options.outputs).dump(2).c_str());
+    const nlohmann::ordered_json input_read = options.input.empty() ? nlohmann::ordered_json() : input_json(options, input_report);
+    std::puts(report_json(context->renderer(), frame, report, compute_image_stats(result), options.outputs, input_read)
+                  .dump(2)
+                  .c_str());
   } else {
+    if (!options.input.empty()) {
+      std::fprintf(stderr, "input: %s: %s\n", options.input.c_str(), input_report.color.c_str());
+      if (!options.depth.empty())
+        std::fprintf(stderr, "depth: %s: %s\n", options.depth.c_str(), input_report.depth.c_str());
+    }
     std::fprintf(stderr, "renderer: %s (timing: %s)\n", context->renderer().c_str(), report.timing.c_str());
     for (const auto& pass : report.passes)
       std::fprintf(stderr, "  %-12s %-16s %8.3f ms\n", pass.effect.c_str(), pass.pass.c_str(), pass.ms);

@@ -12,7 +12,7 @@ std::string render_usage() {
   return
       "usage: pfx-render [--plugins DIR]... (--demo [--lights N] [--seed S] | --demo-image\n"
       "                  | --scene FILE.obj [--lights N] [--seed S]\n"
-      "                  | --input IMG.exr [--depth DEPTH.exr]) [--size WxH]\n"
+      "                  | --input IMG.exr [--layer NAME] [--depth DEPTH.exr]) [--size WxH]\n"
       "                  [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
       "                  [--preset FILE] [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
       "       pfx-render --list [--json] [--plugins DIR]...\n"
@@ -32,8 +32,14 @@ std::string render_usage() {
       "                       a camera framing the model's bounds; --size WxH (default 1280x720)\n"
       "  --demo-image         the procedural HDR image (bright spots, fine detail, a depth ramp):\n"
       "                       colour and depth only, no lights\n"
-      "  --input IMG.exr      an OpenEXR image: RGB(A) half or float; a Z channel is linear depth (m)\n"
-      "  --depth DEPTH.exr    linear depth from another EXR (its Z channel, else its R channel)\n"
+      "  --input IMG.exr      an OpenEXR image (half, float or uint; scanline, tiled or multi-part):\n"
+      "                       R, G, B (a missing one is 0) and A (else 1); or Y as grey (Y, RY, BY\n"
+      "                       converted to RGB); or its only channel as grey. Colour in a layer\n"
+      "                       (diffuse.R, ...) when the file has no plain one: the only such layer.\n"
+      "                       A Z channel is linear depth (m). --json or the log says what was read\n"
+      "  --layer NAME         with --input: read the part or layer NAME (e.g. diffuse for diffuse.R)\n"
+      "  --depth DEPTH.exr    linear depth (m) from another EXR: its Z channel, else a 'depth' channel\n"
+      "                       or the Z of a layer, else R, else Y, else its only channel\n"
       "  --max-input-pixels N refuse an input EXR whose header declares more than N pixels, before\n"
       "                       reading or allocating anything (default 67108864 = 8192 x 8192)\n"
       "  --camera K=V,...     the camera the effects see: fovy (degrees, default 45), near (m, 0.1),\n"
@@ -86,6 +92,7 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
     else if (arg == "--scene") { if (!args.value(&options.scene)) return false; }
     else if (arg == "--preset") { if (!args.value(&options.preset)) return false; }
     else if (arg == "--depth") { if (!args.value(&options.depth)) return false; }
+    else if (arg == "--layer") { if (!args.value(&options.layer)) return false; }
     else if (arg == "--plugins") {
       if (!args.value(&options.plugin_dirs)) return false;
     } else if (arg == "--set") {
@@ -141,6 +148,7 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
   if (int(options.demo) + int(options.demo_image) + int(!options.input.empty()) + int(!options.scene.empty()) != 1)
     return args.fail("give exactly one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
   if (!options.depth.empty() && options.input.empty()) return args.fail("--depth goes with --input");
+  if (!options.layer.empty() && options.input.empty()) return args.fail("--layer goes with --input");
   if (options.size_given && !options.input.empty())
     return args.fail("--size applies to --demo and --demo-image (an input image has its own size)");
   if ((options.lights_given || options.seed_given) && !options.demo && options.scene.empty())

@@ -20,6 +20,7 @@ struct RenderOptions {
   uint64_t seed = 1;                    // --seed S, --demo only
   bool lights_given = false, seed_given = false;
   std::string input, depth;             // --input IMG.exr [--depth DEPTH.exr]
+  std::string layer;                    // --layer NAME: the part or layer of --input to read
   std::string scene;                    // --scene FILE.obj: an imported model, lit and framed
   int width = 1280, height = 720;       // --size, --demo and --demo-image only
   bool size_given = false;

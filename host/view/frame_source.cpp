@@ -59,13 +59,19 @@ std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, con
     apply_camera_keys(CameraOptions{}, {"fovy", "near", "far"}, &self->camera_);
     if (options.input == ViewInput::Image) {
       Image image;
-      if (!read_input_image(options.input_path, options.depth_path, &image, error)) {
+      InputFiles files;
+      files.input = options.input_path;
+      files.layer = options.layer;
+      files.depth = options.depth_path;
+      InputReport report;
+      if (!read_input_image(files, &image, &report, error)) {
         *bad_input = true;
         return nullptr;
       }
       self->upload_image(image);
       self->description_ = options.input_path + " " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                           (image.has_depth() ? " with depth" : "");
+                           " (" + report.color + ")" +
+                           (options.depth_path.empty() ? "" : ", " + options.depth_path + " (" + report.depth + ")");
     } else {
       self->description_ = "demo image";
     }

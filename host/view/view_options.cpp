@@ -10,7 +10,7 @@ namespace pfx::app {
 std::string view_usage() {
   return
       "usage: pfx-view [--plugins DIR]... [--demo [--lights N] [--seed S] | --demo-image\n"
-      "                | --scene FILE.obj [--lights N] [--seed S] | --input IMG.exr [--depth DEPTH.exr]]\n"
+      "                | --scene FILE.obj [--lights N] [--seed S] | --input IMG.exr [--layer NAME] [--depth DEPTH.exr]]\n"
       "                [--size WxH] [--window WxH]\n"
       "                [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...] [--preset FILE]\n"
       "                [--set effect.param=value]... [--exposure EV] [--tone NAME] [--save-preset FILE]\n"
@@ -29,8 +29,13 @@ std::string view_usage() {
       "  --scene FILE.obj     a model imported through the importer plugins, lit by the demo's 400\n"
       "                       lights spread through its box (--lights N: N instead), as pfx-render --scene\n"
       "  --demo-image         the procedural HDR image of pfx-render --demo-image (colour and depth)\n"
-      "  --input IMG.exr      an OpenEXR image; a Z channel is linear depth (m)\n"
-      "  --depth DEPTH.exr    linear depth from another EXR (its Z channel, else its R channel)\n"
+      "  --input IMG.exr      an OpenEXR image, read as pfx-render --input reads it: R, G, B (a missing\n"
+      "                       one is 0) and A (else 1); or Y as grey (Y, RY, BY converted to RGB); or\n"
+      "                       its only channel as grey; the only layer with colour when none is plain.\n"
+      "                       A Z channel is linear depth (m). The panel says what was read\n"
+      "  --layer NAME         with --input: read the part or layer NAME (e.g. diffuse for diffuse.R)\n"
+      "  --depth DEPTH.exr    linear depth (m) from another EXR: its Z channel, else a 'depth' channel\n"
+      "                       or the Z of a layer, else R, else Y, else its only channel\n"
       "  --size WxH           the frame size; default: the window's size (an image keeps its own)\n"
       "  --window WxH         the window's first size (default: --size, else 1280x720)\n"
       "  --camera K=V,...     lens: fovy (degrees, 45), near (m, 0.1), far (m, 1000, or inf)\n"
@@ -87,6 +92,7 @@ bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, 
       options.input = ViewInput::ModelScene;
       ++inputs_given;
     } else if (arg == "--depth") { if (!args.value(&options.depth_path)) return false; }
+    else if (arg == "--layer") { if (!args.value(&options.layer)) return false; }
     else if (arg == "--preset") { if (!args.value(&options.preset)) return false; }
     else if (arg == "--save-preset") { if (!args.value(&options.save_preset)) return false; }
     else if (arg == "--screenshot") {
@@ -140,6 +146,7 @@ bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, 
   }
   if (inputs_given > 1) return args.fail("give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
   if (!options.depth_path.empty() && options.input != ViewInput::Image) return args.fail("--depth goes with --input");
+  if (!options.layer.empty() && options.input != ViewInput::Image) return args.fail("--layer goes with --input");
   if (options.size_given && options.input == ViewInput::Image)
     return args.fail("--size applies to --demo and --demo-image (an input image has its own size)");
   if ((options.lights_given || seed_given) && options.input != ViewInput::DemoScene &&

@@ -16,6 +16,7 @@ struct ViewOptions {
   bool help = false;
   ViewInput input = ViewInput::DemoScene;  // --demo (the default), --scene, --demo-image, --input
   std::string input_path, depth_path;       // --input IMG.exr [--depth DEPTH.exr]
+  std::string layer;                        // --layer NAME: the part or layer of --input to read
   std::string scene_path;                   // --scene FILE.obj
   // --lights N: with --demo N more lights, with --scene N lights instead of the demo's 400.
   bool lights_given = false;

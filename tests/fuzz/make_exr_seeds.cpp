@@ -1,6 +1,6 @@
 // Writes the seed corpus of the EXR fuzz target (tests/fuzz/corpus/exr): small valid files that
 // reach every branch of read_exr (half, float, uint, Z, Y, offset windows, tiles and mipmaps,
-// several compressions, two parts). Build it against OpenEXR and run it in that folder:
+// several compressions, two parts, lone channels, layers, luminance/chroma with subsampled chroma). Build it against OpenEXR and run it in that folder:
 //   c++ -std=c++17 make_exr_seeds.cpp $(pkg-config --cflags --libs OpenEXR) -o make_exr_seeds
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -9,6 +9,7 @@
 #include <ImfOutputFile.h>
 #include <ImfOutputPart.h>
 #include <ImfPartType.h>
+#include <ImfRgbaFile.h>
 #include <ImfTiledOutputFile.h>
 #include <ImfTileDescription.h>
 
@@ -98,6 +99,16 @@ void two_parts(const std::string& name) {
   }
 }
 
+// OpenEXR's own luminance/chroma layout: Y full size, RY and BY every second pixel and row.
+void luminance_chroma(const std::string& name) {
+  const int w = 6, h = 4;
+  std::vector<Rgba> pixels;
+  for (int i = 0; i < w * h; ++i) pixels.emplace_back(0.1f * i, 0.5f, 1.0f - 0.04f * i, 1.0f);
+  RgbaOutputFile file(name.c_str(), w, h, WRITE_YCA);
+  file.setFrameBuffer(pixels.data(), 1, w);
+  file.writePixels(h);
+}
+
 }  // namespace
 
 int main() {
@@ -111,6 +122,12 @@ int main() {
            ZIPS_COMPRESSION);
   scanline("tall_b44.exr", {"R", "G", "B"}, HALF, Box2i(V2i(0, 0), V2i(1, 40)), Box2i(V2i(0, 0), V2i(1, 40)),
            B44_COMPRESSION);
+  scanline("z_only_float.exr", {"Z"}, FLOAT, small, small, ZIP_COMPRESSION);
+  scanline("r_only_half.exr", {"R"}, HALF, small, small, NO_COMPRESSION);
+  scanline("g_only_uint.exr", {"G"}, UINT, small, small, RLE_COMPRESSION);
+  scanline("layers.exr", {"diffuse.R", "diffuse.G", "diffuse.B", "N.X", "N.Y", "N.Z", "depth.Z", "specular.R"}, HALF,
+           small, small, PIZ_COMPRESSION);
+  luminance_chroma("yca_subsampled.exr");
   tiled("tiled_mipmap.exr");
   two_parts("two_parts.exr");
   return 0;
