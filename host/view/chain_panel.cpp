@@ -1,9 +1,22 @@
+#include <string>
+
 #include <imgui.h>
 
 #include "panels.hpp"
 #include "param_widgets.hpp"
 
 namespace pfx::app {
+namespace {
+
+// "bloom" while the chain holds one bloom; "bloom#1", "bloom#2" once it holds more, so each
+// instance shows the name --set and presets use for it ("bloom#1" and "bloom" are the same).
+std::string shown_name(const pfx::host::Chain& chain, size_t index) {
+  size_t same = 0;
+  for (size_t i = 0; i < chain.size(); ++i) same += chain.effect_id(i) == chain.effect_id(index);
+  return same > 1 ? chain.effect_id(index) + "#" + std::to_string(chain.instance_number(index)) : chain.effect_id(index);
+}
+
+}  // namespace
 
 void draw_chain_panel(ViewerSession& session) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
@@ -16,7 +29,7 @@ void draw_chain_panel(ViewerSession& session) {
   for (size_t i = 0; i < chain.size(); ++i) {
     ImGui::PushID(int(i));
     bool enabled = chain.enabled(i);
-    if (ImGui::Checkbox(chain.effect_id(i).c_str(), &enabled)) chain.set_enabled(i, enabled);
+    if (ImGui::Checkbox(shown_name(chain, i).c_str(), &enabled)) chain.set_enabled(i, enabled);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("run this effect (off: skipped at no cost)");
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 80);
     if (ImGui::ArrowButton("up", ImGuiDir_Up) && i > 0) action = UP, target = i;
@@ -24,7 +37,9 @@ void draw_chain_panel(ViewerSession& session) {
     if (ImGui::ArrowButton("down", ImGuiDir_Down) && i + 1 < chain.size()) action = DOWN, target = i;
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) action = REMOVE, target = i;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("remove from the chain (its values are kept)");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("remove from the chain (an effect's only instance keeps its values; a second\n"
+                        "one takes its values along and the later ones renumber)");
     ImGui::PopID();
   }
   if (chain.size() == 0) ImGui::TextDisabled("(no effect: the frame is shown as it is)");
@@ -56,12 +71,13 @@ void draw_parameters_panel(ViewerSession& session, UiState& ui) {
     const pfx::host::EffectInfo* info = session.registry().find_effect(chain.effect_id(i));
     if (!info) continue;
     ImGui::PushID(int(i));
-    const std::string title = std::string(info->desc->label ? info->desc->label : info->desc->id) + "  [" +
-                              info->desc->id + "]" + (chain.enabled(i) ? "" : "  (off)");
+    const std::string name = shown_name(chain, i);
+    const std::string title = std::string(info->desc->label ? info->desc->label : info->desc->id) + "  [" + name +
+                              "]" + (chain.enabled(i) ? "" : "  (off)");
     if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
       if (info->desc->description && *info->desc->description && ImGui::IsItemHovered())
         ImGui::SetTooltip("%s\nplugin %s %s", info->desc->description, info->plugin->id.c_str(), info->plugin->version.c_str());
-      draw_effect_parameters(*info->desc, session.params(), &ui.param_problem);
+      draw_effect_parameters(*info->desc, name, session.params(), &ui.param_problem);
     }
     ImGui::PopID();
   }
