@@ -1,19 +1,19 @@
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "panel_names.hpp"
 #include "panels.hpp"
 #include "param_widgets.hpp"
 
 namespace pfx::app {
 namespace {
 
-// "bloom" while the chain holds one bloom; "bloom#1", "bloom#2" once it holds more, so each
-// instance shows the name --set and presets use for it ("bloom#1" and "bloom" are the same).
-std::string shown_name(const pfx::host::Chain& chain, size_t index) {
-  size_t same = 0;
-  for (size_t i = 0; i < chain.size(); ++i) same += chain.effect_id(i) == chain.effect_id(index);
-  return same > 1 ? chain.effect_id(index) + "#" + std::to_string(chain.instance_number(index)) : chain.effect_id(index);
+std::vector<std::string> chain_effect_ids(const pfx::host::Chain& chain) {
+  std::vector<std::string> ids;
+  for (size_t i = 0; i < chain.size(); ++i) ids.push_back(chain.effect_id(i));
+  return ids;
 }
 
 }  // namespace
@@ -26,10 +26,11 @@ void draw_chain_panel(ViewerSession& session) {
   // Changes are applied after the list is drawn, never while it is being walked.
   enum { NONE, UP, DOWN, REMOVE } action = NONE;
   size_t target = 0;
+  const std::vector<std::string> names = panel_names(chain_effect_ids(chain));
   for (size_t i = 0; i < chain.size(); ++i) {
     ImGui::PushID(int(i));
     bool enabled = chain.enabled(i);
-    if (ImGui::Checkbox(shown_name(chain, i).c_str(), &enabled)) chain.set_enabled(i, enabled);
+    if (ImGui::Checkbox(names[i].c_str(), &enabled)) chain.set_enabled(i, enabled);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("run this effect (off: skipped at no cost)");
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 80);
     if (ImGui::ArrowButton("up", ImGuiDir_Up) && i > 0) action = UP, target = i;
@@ -38,8 +39,8 @@ void draw_chain_panel(ViewerSession& session) {
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) action = REMOVE, target = i;
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("remove from the chain (an effect's only instance keeps its values; a second\n"
-                        "one takes its values along and the later ones renumber)");
+      ImGui::SetTooltip("remove from the chain (its values leave with it and later instances of its\n"
+                        "effect renumber; an effect's only instance leaves its values behind)");
     ImGui::PopID();
   }
   if (chain.size() == 0) ImGui::TextDisabled("(no effect: the frame is shown as it is)");
@@ -67,11 +68,12 @@ void draw_parameters_panel(ViewerSession& session, UiState& ui) {
   // Widgets take a bit over half the width, so labels such as "Automatic minimum size" fit.
   ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.5f);
   pfx::host::Chain& chain = session.chain();
+  const std::vector<std::string> names = panel_names(chain_effect_ids(chain));
   for (size_t i = 0; i < chain.size(); ++i) {
     const pfx::host::EffectInfo* info = session.registry().find_effect(chain.effect_id(i));
     if (!info) continue;
     ImGui::PushID(int(i));
-    const std::string name = shown_name(chain, i);
+    const std::string& name = names[i];
     const std::string title = std::string(info->desc->label ? info->desc->label : info->desc->id) + "  [" + name +
                               "]" + (chain.enabled(i) ? "" : "  (off)");
     if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
