@@ -36,6 +36,7 @@ std::string bench_usage() {
       "  --suite FILE      rows to run, one per line: EFFECT [param=value ...] ('#' comments);\n"
       "                    default: the built-in suite; loaded effects it does not name run at defaults\n"
       "  --set E.P=V       set parameter P of effect E in every row, before the row's own settings\n"
+      "                    (a row runs one instance of its effect: E#1 is E, E#2 does not exist)\n"
       "  --input FRAME.exr measure on this frame (repeatable; replaces --sizes), read as pfx-render\n"
       "                    --input reads it (R, G, B, A; Y; a lone channel as grey; the only layer\n"
       "                    with colour), its Z channel as linear depth (m)\n"

@@ -131,14 +131,6 @@ int run(const RenderOptions& options) {
 
   host::ParamStore params;
   for (const auto& effect : registry.effects()) params.add_effect(effect.desc);
-  if (!preset.parameters_json.empty() && !params.from_json(preset.parameters_json, &message))
-    return error_exit(kBadInput, options.preset + ": parameters: " + message);
-  for (const auto& assignment : options.sets) {
-    std::string note;
-    if (!params.set_assignment(assignment, &message, &note)) return error_exit(kUsage, "--set " + message);
-    if (!note.empty()) std::fprintf(stderr, "pfx-render: warning: --set %s: %s\n", assignment.c_str(), note.c_str());
-  }
-
   host::Chain chain(registry, params);
   chain.set_timing(options.timing == "off"      ? host::Timing::OFF
                    : options.timing == "finish" ? host::Timing::FINISH_AND_CLOCK
@@ -152,6 +144,15 @@ int run(const RenderOptions& options) {
   for (const auto& effect : effects) {
     if (!chain.add(effect.id, &message)) return error_exit(kEffectError, message);
     chain.set_enabled(chain.size() - 1, effect.enabled);
+  }
+
+  // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
+  if (!preset.parameters_json.empty() && !params.from_json(preset.parameters_json, &message))
+    return error_exit(kBadInput, options.preset + ": parameters: " + message);
+  for (const auto& assignment : options.sets) {
+    std::string note;
+    if (!params.set_assignment(assignment, &message, &note)) return error_exit(kUsage, "--set " + message);
+    if (!note.empty()) std::fprintf(stderr, "pfx-render: warning: --set %s: %s\n", assignment.c_str(), note.c_str());
   }
 
   // The frame: the demo scene's G-buffer, or an image's colour (and depth).

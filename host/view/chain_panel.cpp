@@ -1,9 +1,22 @@
+#include <string>
+#include <vector>
+
 #include <imgui.h>
 
+#include "panel_names.hpp"
 #include "panels.hpp"
 #include "param_widgets.hpp"
 
 namespace pfx::app {
+namespace {
+
+std::vector<std::string> chain_effect_ids(const pfx::host::Chain& chain) {
+  std::vector<std::string> ids;
+  for (size_t i = 0; i < chain.size(); ++i) ids.push_back(chain.effect_id(i));
+  return ids;
+}
+
+}  // namespace
 
 void draw_chain_panel(ViewerSession& session) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
@@ -13,10 +26,11 @@ void draw_chain_panel(ViewerSession& session) {
   // Changes are applied after the list is drawn, never while it is being walked.
   enum { NONE, UP, DOWN, REMOVE } action = NONE;
   size_t target = 0;
+  const std::vector<std::string> names = panel_names(chain_effect_ids(chain));
   for (size_t i = 0; i < chain.size(); ++i) {
     ImGui::PushID(int(i));
     bool enabled = chain.enabled(i);
-    if (ImGui::Checkbox(chain.effect_id(i).c_str(), &enabled)) chain.set_enabled(i, enabled);
+    if (ImGui::Checkbox(names[i].c_str(), &enabled)) chain.set_enabled(i, enabled);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("run this effect (off: skipped at no cost)");
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 80);
     if (ImGui::ArrowButton("up", ImGuiDir_Up) && i > 0) action = UP, target = i;
@@ -24,7 +38,9 @@ void draw_chain_panel(ViewerSession& session) {
     if (ImGui::ArrowButton("down", ImGuiDir_Down) && i + 1 < chain.size()) action = DOWN, target = i;
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) action = REMOVE, target = i;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("remove from the chain (its values are kept)");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("remove from the chain (its values leave with it and later instances of its\n"
+                        "effect renumber; an effect's only instance leaves its values behind)");
     ImGui::PopID();
   }
   if (chain.size() == 0) ImGui::TextDisabled("(no effect: the frame is shown as it is)");
@@ -52,16 +68,18 @@ void draw_parameters_panel(ViewerSession& session, UiState& ui) {
   // Widgets take a bit over half the width, so labels such as "Automatic minimum size" fit.
   ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.5f);
   pfx::host::Chain& chain = session.chain();
+  const std::vector<std::string> names = panel_names(chain_effect_ids(chain));
   for (size_t i = 0; i < chain.size(); ++i) {
     const pfx::host::EffectInfo* info = session.registry().find_effect(chain.effect_id(i));
     if (!info) continue;
     ImGui::PushID(int(i));
-    const std::string title = std::string(info->desc->label ? info->desc->label : info->desc->id) + "  [" +
-                              info->desc->id + "]" + (chain.enabled(i) ? "" : "  (off)");
+    const std::string& name = names[i];
+    const std::string title = std::string(info->desc->label ? info->desc->label : info->desc->id) + "  [" + name +
+                              "]" + (chain.enabled(i) ? "" : "  (off)");
     if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
       if (info->desc->description && *info->desc->description && ImGui::IsItemHovered())
         ImGui::SetTooltip("%s\nplugin %s %s", info->desc->description, info->plugin->id.c_str(), info->plugin->version.c_str());
-      draw_effect_parameters(*info->desc, session.params(), &ui.param_problem);
+      draw_effect_parameters(*info->desc, name, session.params(), &ui.param_problem);
     }
     ImGui::PopID();
   }

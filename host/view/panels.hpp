@@ -19,7 +19,8 @@ struct UiState {
 
 // Effects in order: on/off, up/down, remove, add.
 void draw_chain_panel(ViewerSession& session);
-// One collapsing header per effect in the chain, its parameters inside.
+// One collapsing header per instance in the chain, its parameters inside; the title names the
+// instance ("bloom#2") when the chain holds more than one of its effect.
 void draw_parameters_panel(ViewerSession& session, UiState& ui);
 // Per-pass times, frame time, peak target memory, skipped effects, the effects' own figures.
 void draw_timing_panel(ViewerSession& session, UiState& ui);

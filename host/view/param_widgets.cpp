@@ -119,8 +119,9 @@ std::string number_format(const pfx_param_desc& param, bool integer) {
   return format;
 }
 
-bool draw_effect_parameters(const pfx_effect_desc& effect, pfx::host::ParamStore& params, std::string* problem) {
-  const pfx_value* values = params.values(effect.id);
+bool draw_effect_parameters(const pfx_effect_desc& effect, const std::string& instance, pfx::host::ParamStore& params,
+                            std::string* problem) {
+  const pfx_value* values = params.values(instance);
   if (!values) return false;
   if (effect.param_count == 0) ImGui::TextDisabled("(no parameters)");
   // Groups in order of first appearance; parameters without a group first, outside any node.
@@ -137,21 +138,21 @@ bool draw_effect_parameters(const pfx_effect_desc& effect, pfx::host::ParamStore
     for (uint32_t i = 0; i < effect.param_count; ++i) {
       const pfx_param_desc& d = effect.params[i];
       if (group != (d.group ? d.group : "")) continue;
-      const std::string key = std::string(effect.id) + "." + d.id;
+      const std::string key = instance + "." + d.id;
       ImGui::PushID(key.c_str());
       pfx_value value = values[i];
       if (edit_value(d, &value)) {
         std::string error;
-        if (params.set_value(effect.id, d.id, value, &error)) problem->clear(), changed = true;
+        if (params.set_value(instance, d.id, value, &error)) problem->clear(), changed = true;
         else *problem = error;
-        values = params.values(effect.id);
+        values = params.values(instance);
       }
       show_tooltip(key, d);
       if (!same_value(values[i], d.default_value, d.type)) {
         ImGui::SameLine();
         if (ImGui::SmallButton("reset")) {
-          params.reset(effect.id, d.id);
-          values = params.values(effect.id);
+          params.reset(instance, d.id);
+          values = params.values(instance);
           changed = true;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the default, %s", default_value_text(d).c_str());

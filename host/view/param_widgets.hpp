@@ -11,8 +11,10 @@
 
 namespace pfx::app {
 
-// Returns true when a value changed. A refused change leaves *problem set (else it is cleared).
-bool draw_effect_parameters(const pfx_effect_desc& effect, pfx::host::ParamStore& params, std::string* problem);
+// The values of one instance of the effect ("bloom", "bloom#2": ParamStore's names). Returns true
+// when a value changed. A refused change leaves *problem set (else it is cleared).
+bool draw_effect_parameters(const pfx_effect_desc& effect, const std::string& instance, pfx::host::ParamStore& params,
+                            std::string* problem);
 
 // The ImGui format for a number with its unit: "%.3f px" (a '%' in the unit doubled).
 std::string number_format(const pfx_param_desc& param, bool integer);

@@ -1,8 +1,10 @@
 #include "viewer_session.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <map>
 
 #include <pfx/host/hot_reload.hpp>
 
@@ -49,13 +51,6 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   Preset preset;
   std::string message;
   if (!options.preset.empty() && !read_preset(options.preset, &preset, &message)) return fail(3, message);
-  if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
-    return fail(3, options.preset + ": parameters: " + message);
-  for (const auto& assignment : options.sets) {
-    std::string note;
-    if (!self->params_.set_assignment(assignment, &message, &note)) return fail(2, "--set " + message);
-    if (!note.empty()) self->info("--set " + assignment + ": " + note);
-  }
 
   self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
   std::vector<PresetEffect> effects;
@@ -64,6 +59,15 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   else
     effects = *preset.chain;
   if (!self->build_chain(effects, &message)) return fail(4, message);
+
+  // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
+  if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
+    return fail(3, options.preset + ": parameters: " + message);
+  for (const auto& assignment : options.sets) {
+    std::string note;
+    if (!self->params_.set_assignment(assignment, &message, &note)) return fail(2, "--set " + message);
+    if (!note.empty()) self->info("--set " + assignment + ": " + note);
+  }
 
   bool bad_input = false;
   self->source_ = FrameSource::create(options, *self->registry_, &message, &bad_input);
@@ -112,10 +116,9 @@ uint64_t ViewerSession::state_stamp(int width, int height) const {
   mix(&h, reload_count_);
   mix(&h, uint64_t(chain_->size()));
   for (size_t i = 0; i < chain_->size(); ++i) {
-    const std::string id = chain_->effect_id(i);
-    mix(&h, std::hash<std::string>{}(id));
+    mix(&h, std::hash<std::string>{}(chain_->effect_id(i)));
     mix(&h, uint64_t(chain_->enabled(i)));
-    mix(&h, params_.revision(id));
+    mix(&h, params_.revision(chain_->instance_name(i)));
   }
   const Camera& c = source_->camera();
   for (double v : {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y,
@@ -197,7 +200,17 @@ bool ViewerSession::apply_preset(const Preset& preset, std::string* error) {
         *error = "chain: effect '" + effect.id + "' is not loaded";
         return false;
       }
+  // The values are checked against a store shaped like the preset's chain ("bloom#2" needs a
+  // second bloom) before anything changes.
   pfx::host::ParamStore values = params_;
+  std::map<std::string, size_t> counts;
+  if (preset.chain)
+    for (const auto& effect : *preset.chain) ++counts[effect.id];
+  for (const auto& effect : registry_->effects()) {
+    // An effect that came with a reloaded plugin is not in the store until the chain adds it.
+    if (!values.has_effect(effect.desc->id)) values.add_effect(effect.desc);
+    if (preset.chain) values.set_instance_count(effect.desc->id, std::max<size_t>(1, counts[effect.desc->id]));
+  }
   if (!preset.parameters_json.empty() && !values.from_json(preset.parameters_json, error)) {
     *error = "parameters: " + *error;
     return false;
@@ -209,8 +222,10 @@ bool ViewerSession::apply_preset(const Preset& preset, std::string* error) {
     *error = "camera: far must be greater than near";
     return false;
   }
-  params_ = values;
+  // The chain first: rebuilding it drops the values of instances it removes, which the new ones
+  // then get from `values` (shaped alike, so the chain and the store agree).
   if (preset.chain && !build_chain(*preset.chain, error)) return false;
+  params_ = values;
   source_->camera() = camera;
   if (preset.exposure_ev) tone_.exposure_ev = *preset.exposure_ev;
   if (preset.tone) tone_.curve = *preset.tone;

@@ -48,6 +48,32 @@ TEST_CASE("quick bench measures the copy unit and every fixture effect", "[bench
   fs::remove_all(out);
 }
 
+TEST_CASE("bench --set takes gain#1 for gain and skips a row for an instance it does not run", "[bench][instances]") {
+  const fs::path out = fs::temp_directory_path() / ("pfx-bench-instances-" + std::to_string(::getpid()));
+  auto bench = [&](const std::string& set) {
+    std::string command = std::string(PFX_BENCH) + " --quick --plugins " PFX_TEST_PLUGIN_DIR " --effects gain --set " +
+                          set + " --out " + out.string() + " > /dev/null 2>&1";
+    int status = std::system(command.c_str());
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 0);
+    std::ifstream in(out / "bench.json");
+    REQUIRE(in);
+    return nlohmann::json::parse(in);
+  };
+  // gain 2 is no longer a no-op: the row's one instance got the value.
+  auto json = bench("gain#1.gain=2");
+  REQUIRE(json["rows"].size() == 1);
+  CHECK(json["rows"][0]["pass_count"] == 1);
+  // A row runs one instance of its effect: a second one does not exist, and the note says so.
+  json = bench("gain#2.gain=2");
+  CHECK(json["rows"].empty());
+  bool said = false;
+  for (const auto& note : json["notes"])
+    said |= note.get<std::string>().find("there is no gain#2, effect 'gain' has 1 instance") != std::string::npos;
+  CHECK(said);
+  fs::remove_all(out);
+}
+
 TEST_CASE("suite rows parse and malformed rows name their line", "[bench]") {
   std::vector<pfx::bench::SuiteRow> rows;
   std::string error;

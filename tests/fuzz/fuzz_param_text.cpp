@@ -42,8 +42,8 @@ pfx_effect_desc effect(const char* id, const pfx_param_desc* params, uint32_t co
   return e;
 }
 
-void check_valid(const pfx::host::ParamStore& store, const pfx_effect_desc& e) {
-  const pfx_value* values = store.values(e.id);
+void check_valid(const pfx::host::ParamStore& store, const pfx_effect_desc& e, size_t instance = 1) {
+  const pfx_value* values = store.values(e.id, instance);
   if (!values) __builtin_trap();
   for (uint32_t i = 0; i < e.param_count; ++i) {
     const pfx_param_desc& d = e.params[i];
@@ -69,9 +69,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
 
+  // Two instances of bloom, as a chain "bloom,strict,bloom" holds them: "bloom#2" is reachable.
   pfx::host::ParamStore store;
   store.add_effect(&kEffect);
   store.add_effect(&kStrictEffect);
+  store.set_instance_count("bloom", 2);
   const std::string before = store.to_text();
   std::string error, note;
   bool ok = false;
@@ -82,6 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   if (!ok && (error.empty() || store.to_text() != before)) __builtin_trap();  // refused: unchanged, and said why
   check_valid(store, kEffect);
+  check_valid(store, kEffect, 2);
   check_valid(store, kStrictEffect);
 
   // Both saved forms read back to exactly the same values.
@@ -90,6 +93,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (pfx::host::ParamStore* copy : {&from_text, &from_json}) {
     copy->add_effect(&kEffect);
     copy->add_effect(&kStrictEffect);
+    copy->set_instance_count("bloom", 2);
   }
   if (!from_text.from_text(saved_text, &error) || from_text.to_text() != saved_text) __builtin_trap();
   if (!from_json.from_json(saved_json, &error) || from_json.to_text() != saved_text) __builtin_trap();

@@ -1,22 +1,12 @@
-// Runs pfx-render as a user does, for the tests in this folder: its exit code and what it
-// printed, and a scratch folder for its files.
+// Running pfx-render as a user does, for the pfx-render tests: its exit code, stdout and stderr,
+// and a scratch folder for the files it writes.
 #pragma once
 
-#include <catch2/catch.hpp>
-
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <algorithm>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
-namespace pfx_test {
-
-namespace fs = std::filesystem;
+namespace pfx::test {
 
 struct Result {
   int exit_code = -1;
@@ -24,40 +14,21 @@ struct Result {
   std::string err;
 };
 
-// Runs pfx-render with the fixture plugins (never the default folder) and returns its exit code
-// and output. A death by signal is reported as 128 + signal, which no test accepts.
-inline Result pfx_render(const std::string& args, bool with_plugins = true) {
-  static int counter = 0;
-  const fs::path err_file = fs::temp_directory_path() / ("pfx-render-test-" + std::to_string(::getpid()) + "-" +
-                                                         std::to_string(counter++) + ".err");
-  std::string command = std::string(PFX_RENDER) + (with_plugins ? " --plugins " PFX_TEST_PLUGIN_DIR : "") + " " +
-                        args + " 2>" + err_file.string();
-  Result result;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[4096];
-  size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
-  int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  std::ifstream in(err_file);
-  result.err.assign(std::istreambuf_iterator<char>(in), {});
-  fs::remove(err_file);
-  return result;
-}
+// Runs pfx-render with `args` (a shell command line's tail) and, with_plugins, the fixture plugins
+// first (never the default folder). A death by signal is reported as 128 + signal, which no test
+// accepts.
+Result pfx_render(const std::string& args, bool with_plugins = true);
 
+// A folder of its own for one test case, removed with everything in it at the end.
 struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("pfx-render-files-" + std::to_string(::getpid()));
-  Scratch() { fs::create_directories(dir); }
-  ~Scratch() { fs::remove_all(dir); }
+  std::filesystem::path dir;
+  Scratch();
+  ~Scratch();
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
   std::string operator/(const std::string& name) const { return (dir / name).string(); }
   // Only the named files: nothing left under a temporary name.
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& item : fs::directory_iterator(dir)) names.push_back(item.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
+  std::vector<std::string> files() const;
 };
 
-}  // namespace pfx_test
+}  // namespace pfx::test

@@ -1,15 +1,17 @@
 // pfx-render as a user runs it: exit codes, --help, --list, --json, the files it writes.
 #include <catch2/catch.hpp>
 
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "exr_io.hpp"
 #include "png_io.hpp"
 #include "render_process.hpp"
 
-using pfx_test::pfx_render;
-using pfx_test::Result;
-using pfx_test::Scratch;
+using pfx::test::pfx_render;
+using pfx::test::Result;
+using pfx::test::Scratch;
 
 TEST_CASE("help documents every option and exit code", "[render]") {
   Result r = pfx_render("--help", false);

@@ -9,9 +9,9 @@
 #include "input_image.hpp"
 #include "render_process.hpp"
 
-using pfx_test::pfx_render;
-using pfx_test::Result;
-using pfx_test::Scratch;
+using pfx::test::pfx_render;
+using pfx::test::Result;
+using pfx::test::Scratch;
 
 namespace {
 

@@ -5,60 +5,13 @@
 #include <cmath>
 #include <limits>
 
-#include <pfx/host/param_store.hpp>
+#include "param_fixture.hpp"
 
-using pfx::host::ParamStore;
-
-namespace {
-
-pfx_param_desc make_param(const char* id, pfx_param_type type, double lo, double hi, double def) {
-  pfx_param_desc p{};
-  p.struct_size = sizeof p;
-  p.id = id;
-  p.label = id;
-  p.tooltip = "";
-  p.unit = "";
-  p.group = "";
-  p.type = type;
-  p.hard_min = lo;
-  p.hard_max = hi;
-  p.display_min = lo;
-  p.display_max = hi;
-  p.step = 1;
-  for (double& v : p.default_value.v) v = 0;
-  p.default_value.v[0] = def;
-  return p;
-}
-
-const pfx_enum_item kModes[] = {{"chain", "Chain"}, {"chain13", "13-tap chain"}, {"gaussian", "Gaussian"}};
-
-struct Fixture {
-  pfx_param_desc params[6];
-  pfx_effect_desc effect{};
-  ParamStore store;
-  Fixture() {
-    params[0] = make_param("threshold", PFX_PARAM_FLOAT, 0, 100, 1);
-    params[1] = make_param("levels", PFX_PARAM_INT, 0, 16, 6);
-    params[1].flags = PFX_PARAM_REJECT_OUT_OF_RANGE;
-    params[2] = make_param("mode", PFX_PARAM_ENUM, 0, 2, 0);
-    params[2].items = kModes;
-    params[2].item_count = 3;
-    params[3] = make_param("tint", PFX_PARAM_COLOR, 0, 1000, 1);
-    params[3].default_value.v[1] = params[3].default_value.v[2] = 1;
-    params[4] = make_param("karis", PFX_PARAM_BOOL, 0, 1, 1);
-    params[5] = make_param("focus", PFX_PARAM_FLOAT, 0.01, std::numeric_limits<double>::infinity(), 10);
-    effect.struct_size = sizeof effect;
-    effect.id = "bloom";
-    effect.params = params;
-    effect.param_count = 6;
-    store.add_effect(&effect);
-  }
-};
-
-}  // namespace
+using pfx::test::make_param;
+using pfx::test::ParamFixture;
 
 TEST_CASE("values start at their defaults and parse in every text form", "[params]") {
-  Fixture f;
+  ParamFixture f;
   const pfx_value* v = f.store.values("bloom");
   REQUIRE(v);
   CHECK(v[0].v[0] == 1);
@@ -82,7 +35,7 @@ TEST_CASE("values start at their defaults and parse in every text form", "[param
 }
 
 TEST_CASE("NaN is always refused and leaves the value alone", "[params][hard]") {
-  Fixture f;
+  ParamFixture f;
   std::string error;
   for (const char* text : {"nan", "NaN", "-nan"}) {
     CHECK_FALSE(f.store.set("bloom.threshold", text, &error));
@@ -95,7 +48,7 @@ TEST_CASE("NaN is always refused and leaves the value alone", "[params][hard]") 
 }
 
 TEST_CASE("out-of-range values are clamped or refused as the descriptor says", "[params]") {
-  Fixture f;
+  ParamFixture f;
   std::string error, note;
   CHECK(f.store.set("bloom.threshold", "1e9", &error, &note));
   CHECK(f.store.values("bloom")[0].v[0] == 100);
@@ -115,7 +68,7 @@ TEST_CASE("out-of-range values are clamped or refused as the descriptor says", "
 }
 
 TEST_CASE("unknown keys name what exists", "[params]") {
-  Fixture f;
+  ParamFixture f;
   std::string error;
   CHECK_FALSE(f.store.set("glare.threshold", "1", &error));
   CHECK(error == "unknown effect 'glare' in 'glare.threshold'");
@@ -125,7 +78,7 @@ TEST_CASE("unknown keys name what exists", "[params]") {
 }
 
 TEST_CASE("text and JSON round trips reproduce every value exactly", "[params]") {
-  Fixture f;
+  ParamFixture f;
   std::string error;
   REQUIRE(f.store.set("bloom.threshold", "0.1", &error));
   REQUIRE(f.store.set("bloom.mode", "gaussian", &error));
@@ -135,9 +88,9 @@ TEST_CASE("text and JSON round trips reproduce every value exactly", "[params]")
   CHECK(text.find("bloom.threshold=0.1\n") != std::string::npos);
   CHECK(text.find("bloom.mode=gaussian\n") != std::string::npos);
 
-  Fixture g;
+  ParamFixture g;
   REQUIRE(g.store.from_text("# a preset\n\n" + text, &error));
-  Fixture h;
+  ParamFixture h;
   REQUIRE(h.store.from_json(f.store.to_json(), &error));
   for (int i = 0; i < 6; ++i)
     for (int c = 0; c < 4; ++c) {
@@ -148,7 +101,7 @@ TEST_CASE("text and JSON round trips reproduce every value exactly", "[params]")
 }
 
 TEST_CASE("a bad line or member changes nothing", "[params]") {
-  Fixture f;
+  ParamFixture f;
   std::string error;
   CHECK_FALSE(f.store.from_text("bloom.threshold=3\nbloom.levels=99\n", &error));
   CHECK(error == "line 2: bloom.levels: 99 is outside [0, 16]");
@@ -161,7 +114,7 @@ TEST_CASE("a bad line or member changes nothing", "[params]") {
 }
 
 TEST_CASE("re-registering a reloaded effect keeps values by id and type", "[params]") {
-  Fixture f;
+  ParamFixture f;
   std::string error;
   REQUIRE(f.store.set("bloom.threshold", "7", &error));
   REQUIRE(f.store.set("bloom.levels", "3", &error));

@@ -116,6 +116,26 @@ TEST_CASE("a rebuilt plugin replaces the running one and keeps the parameter val
   CHECK(rig.render(2.0f) == Approx(6.25f));
 }
 
+TEST_CASE("a rebuilt plugin keeps the values of each instance apart", "[reload][instances]") {
+  PluginFolder folder("v1");
+  Rig rig(folder.plugin);
+  std::string error;
+  REQUIRE(rig.chain->add("tint", &error));
+  REQUIRE(rig.chain->add("tint", &error));
+  REQUIRE(rig.params.set_assignment("tint.strength=2", &error));
+  REQUIRE(rig.params.set_assignment("tint#2.strength=3", &error));
+  CHECK(rig.render(1.0f) == Approx(6.0f));  // v1: 1 * 2 * 3
+
+  folder.install("v2");
+  INFO(error);
+  REQUIRE(rig.reload(nullptr, &error));
+  CHECK(rig.params.instance_count("tint") == 2);
+  CHECK(rig.params.get_text("tint.strength") == "2");
+  CHECK(rig.params.get_text("tint#2.strength") == "3");
+  // v2 adds the offset (0.25) after each: (1 * 2 + 0.25) * 3 + 0.25.
+  CHECK(rig.render(1.0f) == Approx(7.0f));
+}
+
 TEST_CASE("a rebuilt plugin the loader refuses leaves the old version running", "[reload][errors]") {
   PluginFolder folder("v2");
   Rig rig(folder.plugin);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 
 #include <glad/gl.h>
 
@@ -17,6 +18,9 @@ struct Chain::Instance {
   bool enabled = true;
   Declaration declaration;
   bool has_declaration = false;
+  // Which instance of its effect this is (from 1, in chain order) and its name, "bloom#2".
+  size_t number = 1;
+  std::string name;
 };
 
 struct Chain::GlResources {
@@ -87,26 +91,50 @@ bool Chain::add(const std::string& effect_id, std::string* error) {
   instance->info = *info;
   instance->handle = handle;
   instances_.push_back(std::move(instance));
+  renumber();
+  const size_t number = instances_.back()->number;
+  if (params_.instance_count(effect_id) < number) params_.set_instance_count(effect_id, number);
   plan_valid_ = false;
   return true;
 }
 
+void Chain::renumber() {
+  for (size_t i = 0; i < instances_.size(); ++i) {
+    Instance& instance = *instances_[i];
+    instance.number = 1;
+    for (size_t j = 0; j < i; ++j)
+      if (std::strcmp(instances_[j]->info.desc->id, instance.info.desc->id) == 0) ++instance.number;
+    instance.name = ParamStore::instance_name(instance.info.desc->id, instance.number);
+  }
+}
+
 size_t Chain::size() const { return instances_.size(); }
 std::string Chain::effect_id(size_t index) const { return instances_.at(index)->info.desc->id; }
+size_t Chain::instance_number(size_t index) const { return instances_.at(index)->number; }
+std::string Chain::instance_name(size_t index) const { return instances_.at(index)->name; }
 void Chain::set_enabled(size_t index, bool enabled) {
   instances_.at(index)->enabled = enabled;
   plan_valid_ = false;
 }
 bool Chain::enabled(size_t index) const { return instances_.at(index)->enabled; }
 void Chain::remove(size_t index) {
-  instances_.at(index)->info.desc->destroy(instances_[index]->handle);
+  const std::string id = instances_.at(index)->info.desc->id;
+  const size_t number = instances_[index]->number;
+  instances_[index]->info.desc->destroy(instances_[index]->handle);
   instances_.erase(instances_.begin() + static_cast<long>(index));
+  renumber();
+  params_.remove_instance(id, number);
   plan_valid_ = false;
 }
 void Chain::move(size_t from, size_t to) {
   auto instance = std::move(instances_.at(from));
+  const size_t old_number = instance->number;
+  Instance& moved = *instance;
   instances_.erase(instances_.begin() + static_cast<long>(from));
   instances_.insert(instances_.begin() + static_cast<long>(std::min(to, instances_.size())), std::move(instance));
+  renumber();
+  // Passing another instance of the same effect changes its number: its values go with it.
+  if (moved.number != old_number) params_.move_instance(moved.info.desc->id, old_number, moved.number);
   plan_valid_ = false;
 }
 
@@ -156,7 +184,7 @@ bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::s
   report_.effects_run.clear();
   for (size_t i = 0; i < instances_.size(); ++i) {
     Instance& instance = *instances_[i];
-    const char* id = instance.info.desc->id;
+    const std::string& id = instance.name;
     if (!instance.enabled) {
       report_.effects_skipped.push_back(id);
       continue;
@@ -164,15 +192,21 @@ bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::s
     // declare is cheap by contract, so it runs every frame; only a changed answer re-plans.
     pfx_declaration raw{};
     raw.struct_size = sizeof raw;
-    pfx_status status = instance.info.desc->declare(instance.handle, &frame, params_.values(id), &raw);
+    const pfx_value* values = params_.values(instance.info.desc->id, instance.number);
+    if (!values) {
+      // The store was changed behind the chain (set_instance_count, remove_effect, assignment).
+      *error = "effect '" + id + "': the parameter store has no values for it";
+      return false;
+    }
+    pfx_status status = instance.info.desc->declare(instance.handle, &frame, values, &raw);
     if (status != PFX_OK) {
-      *error = std::string("effect '") + id + "': declare failed (status " + std::to_string(status) + ")";
+      *error = "effect '" + id + "': declare failed (status " + std::to_string(status) + ")";
       return false;
     }
     Declaration declaration;
     std::string message;
     if (!copy_declaration(raw, frame.width, frame.height, &declaration, &message)) {
-      *error = std::string("effect '") + id + "': " + message;
+      *error = "effect '" + id + "': " + message;
       return false;
     }
     if (!instance.has_declaration || !(declaration == instance.declaration)) {
@@ -207,7 +241,7 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
   if (!declare_all(frame, &active, &message)) return fail(message);
   if (!plan_valid_ || active != planned_active_) {
     std::vector<PlanInput> inputs;
-    for (int index : active) inputs.push_back({instances_[index]->info.desc->id, &instances_[index]->declaration});
+    for (int index : active) inputs.push_back({instances_[index]->name, &instances_[index]->declaration});
     FramePlan plan;
     if (!plan_frame(inputs, frame.width, frame.height, frame.inputs, &plan, &message)) return fail(message);
     plan_ = std::move(plan);
@@ -217,7 +251,11 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
   }
   report_.peak_target_bytes = plan_.peak_target_bytes;
   report_.unpooled_target_bytes = plan_.unpooled_target_bytes;
-  return execute(frame, textures, output_texture, active, error);
+  if (!execute(frame, textures, output_texture, active, error)) return false;
+  // Passes are reported by instance: "bloom#2" tells the second bloom's passes from the first's.
+  for (size_t p = 0; p < report_.passes.size() && p < plan_.passes.size(); ++p)
+    report_.passes[p].effect = instances_[active[plan_.passes[p].effect]]->name;
+  return true;
 }
 
 bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
@@ -293,7 +331,7 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     context.pass_index = static_cast<uint32_t>(planned.pass);
     context.user_tag = pass.user_tag;
     context.frame = &frame;
-    context.params = params_.values(effect_id);
+    context.params = params_.values(effect_id, instance.number);
 
     if (planned.output.kind != ResourceRef::NONE) {
       context.output_texture =
@@ -367,7 +405,7 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     Instance& instance = *instances_[index];
     if (!instance.info.desc->report_json) continue;
     const char* figures = instance.info.desc->report_json(instance.handle);
-    if (figures && *figures) report_.effect_reports.emplace_back(instance.info.desc->id, figures);
+    if (figures && *figures) report_.effect_reports.emplace_back(instance.name, figures);
   }
   return true;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -11,26 +12,58 @@
 
 namespace pfx::host {
 
+namespace {
+
+std::string count_text(size_t count) {
+  return std::to_string(count) + (count == 1 ? " instance" : " instances");
+}
+
+nlohmann::ordered_json json_value(const pfx_param_desc& desc, const pfx_value& value) {
+  switch (desc.type) {
+    case PFX_PARAM_BOOL: return value.v[0] != 0;
+    case PFX_PARAM_ENUM: return format_param_text(desc, value);
+    case PFX_PARAM_INT: return static_cast<long long>(value.v[0]);
+    case PFX_PARAM_FLOAT: return value.v[0];
+    default: {
+      auto array = nlohmann::ordered_json::array();
+      for (int c = 0; c < param_component_count(desc.type); ++c) array.push_back(value.v[c]);
+      return array;
+    }
+  }
+}
+
+}  // namespace
+
+ParamStore::Block ParamStore::defaults(const pfx_effect_desc* desc) {
+  Block block;
+  for (uint32_t i = 0; i < desc->param_count; ++i) block.values.push_back(desc->params[i].default_value);
+  block.revision = ++last_revision_;
+  return block;
+}
+
 void ParamStore::add_effect(const pfx_effect_desc* desc) {
   EffectParams fresh;
   fresh.desc = desc;
-  for (uint32_t i = 0; i < desc->param_count; ++i) fresh.values.push_back(desc->params[i].default_value);
   auto existing = effects_.find(desc->id);
   if (existing == effects_.end()) {
     order_.push_back(desc->id);
+    fresh.instances.push_back(defaults(desc));
   } else {
-    // Carry values over by id and type: a reload that adds, removes or retypes a parameter keeps
-    // the rest of the user's settings.
+    // Carry values over by id and type, instance by instance: a reload that adds, removes or
+    // retypes a parameter keeps the rest of the user's settings.
     const EffectParams& old = existing->second;
-    for (uint32_t i = 0; i < desc->param_count; ++i)
-      for (uint32_t j = 0; j < old.desc->param_count; ++j)
-        if (std::strcmp(desc->params[i].id, old.desc->params[j].id) == 0 &&
-            desc->params[i].type == old.desc->params[j].type) {
-          pfx_value value = old.values[j];
-          std::string ignored;
-          if (validate_param_value(desc->params[i], &value, &ignored, nullptr)) fresh.values[i] = value;
-        }
-    fresh.revision = old.revision + 1;
+    for (const Block& old_block : old.instances) {
+      Block block = defaults(desc);
+      for (uint32_t i = 0; i < desc->param_count; ++i)
+        for (uint32_t j = 0; j < old.desc->param_count; ++j)
+          if (std::strcmp(desc->params[i].id, old.desc->params[j].id) == 0 &&
+              desc->params[i].type == old.desc->params[j].type) {
+            pfx_value value = old_block.values[j];
+            std::string ignored;
+            if (validate_param_value(desc->params[i], &value, &ignored, nullptr)) block.values[i] = value;
+          }
+      fresh.instances.push_back(std::move(block));
+    }
   }
   effects_[desc->id] = std::move(fresh);
 }
@@ -45,28 +78,103 @@ const pfx_effect_desc* ParamStore::effect_descriptor(const std::string& effect) 
   return it == effects_.end() ? nullptr : it->second.desc;
 }
 
-bool ParamStore::find(const std::string& key, EffectParams** effect, uint32_t* index, std::string* error) {
-  size_t dot = key.find('.');
-  if (dot == std::string::npos) {
-    *error = "'" + key + "' is not of the form effect.param";
-    return false;
-  }
-  std::string effect_id = key.substr(0, dot), param_id = key.substr(dot + 1);
+size_t ParamStore::instance_count(const std::string& effect) const {
+  auto it = effects_.find(effect);
+  return it == effects_.end() ? 0 : it->second.instances.size();
+}
+
+bool ParamStore::set_instance_count(const std::string& effect, size_t count) {
+  auto it = effects_.find(effect);
+  if (it == effects_.end() || count == 0) return false;
+  std::vector<Block>& instances = it->second.instances;
+  if (count < instances.size()) instances.resize(count);
+  while (instances.size() < count) instances.push_back(defaults(it->second.desc));
+  return true;
+}
+
+void ParamStore::remove_instance(const std::string& effect, size_t number) {
+  auto it = effects_.find(effect);
+  if (it == effects_.end()) return;
+  std::vector<Block>& instances = it->second.instances;
+  if (instances.size() < 2 || number < 1 || number > instances.size()) return;
+  instances.erase(instances.begin() + static_cast<long>(number - 1));
+  // The numbers from `number` on now hold other values.
+  for (size_t i = number - 1; i < instances.size(); ++i) instances[i].revision = ++last_revision_;
+}
+
+void ParamStore::move_instance(const std::string& effect, size_t from, size_t to) {
+  auto it = effects_.find(effect);
+  if (it == effects_.end()) return;
+  std::vector<Block>& instances = it->second.instances;
+  if (from < 1 || from > instances.size() || to < 1 || to > instances.size() || from == to) return;
+  Block moved = std::move(instances[from - 1]);
+  instances.erase(instances.begin() + static_cast<long>(from - 1));
+  instances.insert(instances.begin() + static_cast<long>(to - 1), std::move(moved));
+  for (size_t i = std::min(from, to) - 1; i < std::max(from, to); ++i) instances[i].revision = ++last_revision_;
+}
+
+std::string ParamStore::instance_name(const std::string& effect, size_t number) {
+  return number <= 1 ? effect : effect + "#" + std::to_string(number);
+}
+
+bool ParamStore::resolve(const std::string& instance, const std::string& key, const EffectParams** effect,
+                         size_t* index, std::string* error) const {
+  const size_t hash = instance.find('#');
+  const std::string effect_id = instance.substr(0, hash);
   auto it = effects_.find(effect_id);
   if (it == effects_.end()) {
     *error = "unknown effect '" + effect_id + "' in '" + key + "'";
     return false;
   }
-  const pfx_effect_desc* desc = it->second.desc;
+  const size_t count = it->second.instances.size();
+  size_t number = 1;
+  if (hash != std::string::npos) {
+    const std::string digits = instance.substr(hash + 1);
+    const std::string has = "effect '" + effect_id + "' has " + count_text(count);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) {
+      *error = "'" + key + "': '" + digits + "' is not an instance number (" + has + ", " + effect_id + "#1 to " +
+               effect_id + "#" + std::to_string(count) + ")";
+      return false;
+    }
+    // More digits than any chain could hold instances: no such instance, without overflowing.
+    number = digits.size() > 9 ? size_t(-1) : std::stoul(digits);
+    if (number == 0) {
+      *error = "'" + key + "': instances are numbered from 1 (" + has + ")";
+      return false;
+    }
+    if (number > count) {
+      *error = "'" + key + "': there is no " + effect_id + "#" + digits + ", " + has;
+      return false;
+    }
+  }
+  *effect = &it->second;
+  *index = number - 1;
+  return true;
+}
+
+bool ParamStore::find(const std::string& key, EffectParams** effect, Block** block, uint32_t* param,
+                      std::string* error) {
+  size_t dot = key.find('.');
+  if (dot == std::string::npos) {
+    *error = "'" + key + "' is not of the form effect.param";
+    return false;
+  }
+  std::string instance = key.substr(0, dot), param_id = key.substr(dot + 1);
+  const EffectParams* found = nullptr;
+  size_t index = 0;
+  if (!resolve(instance, key, &found, &index, error)) return false;
+  EffectParams& params = effects_.at(found->desc->id);
+  const pfx_effect_desc* desc = params.desc;
   for (uint32_t i = 0; i < desc->param_count; ++i)
     if (param_id == desc->params[i].id) {
-      *effect = &it->second;
-      *index = i;
+      *effect = &params;
+      *block = &params.instances[index];
+      *param = i;
       return true;
     }
   std::string known;
   for (uint32_t i = 0; i < desc->param_count; ++i) known += (i ? ", " : "") + std::string(desc->params[i].id);
-  *error = "effect '" + effect_id + "' has no parameter '" + param_id + "'" +
+  *error = "effect '" + std::string(desc->id) + "' has no parameter '" + param_id + "'" +
            (known.empty() ? " (it has none)" : " (it has: " + known + ")");
   return false;
 }
@@ -74,8 +182,9 @@ bool ParamStore::find(const std::string& key, EffectParams** effect, uint32_t* i
 bool ParamStore::set(const std::string& key, const std::string& text, std::string* error, std::string* note) {
   std::string message;
   EffectParams* effect = nullptr;
+  Block* block = nullptr;
   uint32_t index = 0;
-  if (!find(key, &effect, &index, &message)) {
+  if (!find(key, &effect, &block, &index, &message)) {
     if (error) *error = message;
     return false;
   }
@@ -85,8 +194,8 @@ bool ParamStore::set(const std::string& key, const std::string& text, std::strin
     if (error) *error = key + ": " + message;
     return false;
   }
-  effect->values[index] = value;
-  ++effect->revision;
+  block->values[index] = value;
+  block->revision = ++last_revision_;
   return true;
 }
 
@@ -101,13 +210,14 @@ bool ParamStore::set_assignment(const std::string& assignment, std::string* erro
   return set(key, assignment.substr(equals + 1), error, note);
 }
 
-bool ParamStore::set_value(const std::string& effect_id, const std::string& param, const pfx_value& input,
+bool ParamStore::set_value(const std::string& instance, const std::string& param, const pfx_value& input,
                            std::string* error, std::string* note) {
   std::string message;
   EffectParams* effect = nullptr;
+  Block* block = nullptr;
   uint32_t index = 0;
-  std::string key = effect_id + "." + param;
-  if (!find(key, &effect, &index, &message)) {
+  std::string key = instance + "." + param;
+  if (!find(key, &effect, &block, &index, &message)) {
     if (error) *error = message;
     return false;
   }
@@ -116,50 +226,66 @@ bool ParamStore::set_value(const std::string& effect_id, const std::string& para
     if (error) *error = key + ": " + message;
     return false;
   }
-  effect->values[index] = value;
-  ++effect->revision;
+  block->values[index] = value;
+  block->revision = ++last_revision_;
   return true;
 }
 
-void ParamStore::reset(const std::string& effect_id, const std::string& param) {
+void ParamStore::reset(const std::string& instance, const std::string& param) {
   EffectParams* effect = nullptr;
+  Block* block = nullptr;
   uint32_t index = 0;
   std::string ignored;
-  if (!find(effect_id + "." + param, &effect, &index, &ignored)) return;
-  effect->values[index] = effect->desc->params[index].default_value;
-  ++effect->revision;
+  if (!find(instance + "." + param, &effect, &block, &index, &ignored)) return;
+  block->values[index] = effect->desc->params[index].default_value;
+  block->revision = ++last_revision_;
 }
 
-const pfx_value* ParamStore::values(const std::string& effect) const {
+const pfx_value* ParamStore::values(const std::string& effect, size_t number) const {
   auto it = effects_.find(effect);
-  if (it == effects_.end()) return nullptr;
+  if (it == effects_.end() || number < 1 || number > it->second.instances.size()) return nullptr;
   // An effect without parameters still gets a valid (never dereferenced) pointer.
   static const pfx_value none{};
-  return it->second.values.empty() ? &none : it->second.values.data();
+  const std::vector<pfx_value>& values = it->second.instances[number - 1].values;
+  return values.empty() ? &none : values.data();
 }
 
-const pfx_param_desc* ParamStore::descriptor(const std::string& effect, const std::string& param) const {
-  auto it = effects_.find(effect);
-  if (it == effects_.end()) return nullptr;
-  for (uint32_t i = 0; i < it->second.desc->param_count; ++i)
-    if (param == it->second.desc->params[i].id) return &it->second.desc->params[i];
+const pfx_value* ParamStore::values(const std::string& instance) const {
+  const EffectParams* effect = nullptr;
+  size_t index = 0;
+  std::string ignored;
+  if (!resolve(instance, instance, &effect, &index, &ignored)) return nullptr;
+  return values(effect->desc->id, index + 1);
+}
+
+const pfx_param_desc* ParamStore::descriptor(const std::string& instance, const std::string& param) const {
+  const EffectParams* effect = nullptr;
+  size_t index = 0;
+  std::string ignored;
+  if (!resolve(instance, instance, &effect, &index, &ignored)) return nullptr;
+  for (uint32_t i = 0; i < effect->desc->param_count; ++i)
+    if (param == effect->desc->params[i].id) return &effect->desc->params[i];
   return nullptr;
 }
 
-uint64_t ParamStore::revision(const std::string& effect) const {
-  auto it = effects_.find(effect);
-  return it == effects_.end() ? 0 : it->second.revision;
+uint64_t ParamStore::revision(const std::string& instance) const {
+  const EffectParams* effect = nullptr;
+  size_t index = 0;
+  std::string ignored;
+  return resolve(instance, instance, &effect, &index, &ignored) ? effect->instances[index].revision : 0;
 }
 
 std::string ParamStore::get_text(const std::string& key) const {
   size_t dot = key.find('.');
   if (dot == std::string::npos) return "";
-  auto it = effects_.find(key.substr(0, dot));
-  if (it == effects_.end()) return "";
-  const pfx_effect_desc* desc = it->second.desc;
+  const EffectParams* effect = nullptr;
+  size_t index = 0;
+  std::string ignored;
+  if (!resolve(key.substr(0, dot), key, &effect, &index, &ignored)) return "";
+  const pfx_effect_desc* desc = effect->desc;
   for (uint32_t i = 0; i < desc->param_count; ++i)
     if (key.compare(dot + 1, std::string::npos, desc->params[i].id) == 0)
-      return format_param_text(desc->params[i], it->second.values[i]);
+      return format_param_text(desc->params[i], effect->instances[index].values[i]);
   return "";
 }
 
@@ -167,8 +293,12 @@ std::string ParamStore::to_text() const {
   std::string text;
   for (const auto& id : order_) {
     const EffectParams& effect = effects_.at(id);
-    for (uint32_t i = 0; i < effect.desc->param_count; ++i)
-      text += id + "." + effect.desc->params[i].id + "=" + format_param_text(effect.desc->params[i], effect.values[i]) + "\n";
+    for (size_t n = 0; n < effect.instances.size(); ++n) {
+      const std::string name = instance_name(id, n + 1);
+      for (uint32_t i = 0; i < effect.desc->param_count; ++i)
+        text += name + "." + effect.desc->params[i].id + "=" +
+                format_param_text(effect.desc->params[i], effect.instances[n].values[i]) + "\n";
+    }
   }
   return text;
 }
@@ -197,23 +327,12 @@ std::string ParamStore::to_json() const {
   nlohmann::ordered_json root = nlohmann::ordered_json::object();
   for (const auto& id : order_) {
     const EffectParams& effect = effects_.at(id);
-    nlohmann::ordered_json params = nlohmann::ordered_json::object();
-    for (uint32_t i = 0; i < effect.desc->param_count; ++i) {
-      const pfx_param_desc& desc = effect.desc->params[i];
-      const pfx_value& value = effect.values[i];
-      switch (desc.type) {
-        case PFX_PARAM_BOOL: params[desc.id] = value.v[0] != 0; break;
-        case PFX_PARAM_ENUM: params[desc.id] = format_param_text(desc, value); break;
-        case PFX_PARAM_INT: params[desc.id] = static_cast<long long>(value.v[0]); break;
-        case PFX_PARAM_FLOAT: params[desc.id] = value.v[0]; break;
-        default: {
-          auto array = nlohmann::ordered_json::array();
-          for (int c = 0; c < param_component_count(desc.type); ++c) array.push_back(value.v[c]);
-          params[desc.id] = array;
-        }
-      }
+    for (size_t n = 0; n < effect.instances.size(); ++n) {
+      nlohmann::ordered_json params = nlohmann::ordered_json::object();
+      for (uint32_t i = 0; i < effect.desc->param_count; ++i)
+        params[effect.desc->params[i].id] = json_value(effect.desc->params[i], effect.instances[n].values[i]);
+      root[instance_name(id, n + 1)] = params;
     }
-    root[id] = params;
   }
   return root.dump(2);
 }
@@ -231,10 +350,18 @@ bool ParamStore::from_json(const std::string& json, std::string* error) {
   }
   if (!root.is_object()) return fail("parameters JSON must be an object of effects");
   ParamStore copy = *this;
-  for (const auto& [effect_id, params] : root.items()) {
-    if (!params.is_object()) return fail("'" + effect_id + "' must map to an object of parameters");
+  // "bloom" and "bloom#1" are one instance: a file naming it twice is ambiguous.
+  std::map<std::pair<std::string, size_t>, std::string> named;
+  for (const auto& [instance, params] : root.items()) {
+    if (!params.is_object()) return fail("'" + instance + "' must map to an object of parameters");
+    const EffectParams* effect = nullptr;
+    size_t index = 0;
+    std::string message;
+    if (!resolve(instance, instance, &effect, &index, &message)) return fail(message);
+    auto [other, fresh] = named.emplace(std::make_pair(std::string(effect->desc->id), index), instance);
+    if (!fresh) return fail("'" + other->second + "' and '" + instance + "' name the same instance");
     for (const auto& [param_id, value] : params.items()) {
-      std::string key = effect_id + "." + param_id;
+      std::string key = instance + "." + param_id;
       std::string text;
       // Reuse the text path so JSON and --set accept exactly the same values.
       if (value.is_string()) text = value.get<std::string>();
@@ -248,7 +375,6 @@ bool ParamStore::from_json(const std::string& json, std::string* error) {
       } else {
         return fail(key + ": unsupported JSON value " + value.dump());
       }
-      std::string message;
       if (!copy.set(key, text, &message)) return fail(message);
     }
   }

@@ -36,6 +36,8 @@ enum class Timing {
   FINISH_AND_CLOCK
 };
 
+// Effects are named by instance, as the parameter store names them: "bloom" for the first
+// instance of an effect in the chain, "bloom#2" for the second.
 struct PassTime {
   std::string effect, pass;
   double ms = 0;
@@ -62,14 +64,23 @@ class PFX_HOST_API Chain {
   Chain& operator=(const Chain&) = delete;
 
   // Appends an instance of an effect (created now, so its programs compile now) and registers its
-  // parameters in the store if they are not there yet. False with *error on an unknown id or a
-  // failing create.
+  // parameters in the store if they are not there yet. The N-th instance of an effect in the
+  // chain uses the store's values of "effect#N" (the store gets a block at the defaults when it
+  // has fewer). False with *error on an unknown id or a failing create.
   bool add(const std::string& effect_id, std::string* error);
   size_t size() const;
   std::string effect_id(size_t index) const;
+  // Which instance of its effect the one at `index` is, counting from 1 in chain order (disabled
+  // ones count), and its name in the store: "bloom" for the first, "bloom#2" for the second.
+  size_t instance_number(size_t index) const;
+  std::string instance_name(size_t index) const;
   void set_enabled(size_t index, bool enabled);
   bool enabled(size_t index) const;
+  // Removes the instance and its values from the store (the others of its effect renumber), but
+  // an effect's last instance leaves its values in the store, so a chain rebuilt from scratch
+  // finds them again.
   void remove(size_t index);
+  // Values travel with the instance: the store's blocks are reordered with it.
   void move(size_t from, size_t to);
 
   // After PluginRegistry::reload (use reload_plugin() in hot_reload.hpp, which also moves the
@@ -100,6 +111,7 @@ class PFX_HOST_API Chain {
  private:
   struct Instance;
   struct GlResources;
+  void renumber();
   bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
   bool execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
                const std::vector<int>& active, std::string* error);

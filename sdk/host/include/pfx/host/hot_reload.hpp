@@ -22,8 +22,9 @@ struct ReloadResult {
   std::vector<std::string> effects_dropped;
 };
 
-// Reloads plugin `plugin_id` from its file. Parameters keep every value whose effect, id and type
-// are unchanged (ParamStore::add_effect); new parameters start at their defaults. On failure
+// Reloads plugin `plugin_id` from its file. Parameters keep, in every instance, each value whose
+// effect, id and type are unchanged (ParamStore::add_effect); new parameters start at their
+// defaults. On failure
 // returns false with *error "PATH: reason" and changes nothing.
 PFX_HOST_API bool reload_plugin(PluginRegistry& registry, ParamStore& params, Chain& chain,
                                 const std::string& plugin_id, ReloadResult* result, std::string* error);

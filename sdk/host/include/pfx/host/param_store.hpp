@@ -1,5 +1,12 @@
-// The parameter store: values keyed "effect.param", validated against the plugins' descriptors,
-// readable and writable as text ("bloom.threshold=1.5") and JSON ({"bloom": {"threshold": 1.5}}).
+// The parameter store: values per effect instance, validated against the plugins' descriptors,
+// readable and writable as text ("bloom.threshold=1.5", "bloom#2.threshold=3") and JSON
+// ({"bloom": {"threshold": 1.5}, "bloom#2": {"threshold": 3}}).
+//
+// Every registered effect has one block of values per instance, numbered from 1: "bloom#2" is
+// the second bloom in chain order, and plain "bloom" is the same as "bloom#1". A Chain keeps the
+// blocks in step with its instances (one per instance; values travel with an instance when it
+// moves and leave with it when it is removed). Text and JSON written here name the first instance
+// "bloom" and the others "bloom#2", "bloom#3", so with one instance per effect nothing changes.
 #pragma once
 
 #include <cstdint>
@@ -16,52 +23,83 @@ namespace pfx::host {
 
 class PFX_HOST_API ParamStore {
  public:
-  // Registers an effect's parameters at their defaults. Registering an id again (a reloaded
-  // plugin) keeps the value of every parameter whose id and type are unchanged.
+  // Registers an effect's parameters at their defaults, with one instance. Registering an id
+  // again (a reloaded plugin) keeps its instances and, in each, the value of every parameter whose
+  // id and type are unchanged.
   void add_effect(const pfx_effect_desc* desc);
   bool has_effect(const std::string& effect) const { return effects_.count(effect) != 0; }
-  // Forgets an effect and its values (its plugin was reloaded without it).
+  // Forgets an effect and the values of all its instances (its plugin was reloaded without it).
   void remove_effect(const std::string& effect);
   // The descriptor the effect's values were registered with; null for an unknown effect.
   const pfx_effect_desc* effect_descriptor(const std::string& effect) const;
+
+  // Instances of a registered effect (0 for an unknown one). A Chain calls these as it adds,
+  // removes and moves instances; call set_instance_count yourself only to give values to
+  // instances before the chain that will hold them exists (a preset applied first).
+  size_t instance_count(const std::string& effect) const;
+  // Grows with blocks at the defaults or drops the last blocks; at least 1. False for an unknown
+  // effect or a count of 0.
+  bool set_instance_count(const std::string& effect, size_t count);
+  // Drops instance `number`'s values; later instances move down one number. The effect's only
+  // instance is kept (its values stay the effect's), so a chain rebuilt from scratch keeps them.
+  void remove_instance(const std::string& effect, size_t number);
+  // Moves instance `from`'s values to number `to`, the others shifting as in a list.
+  void move_instance(const std::string& effect, size_t from, size_t to);
+  // "bloom" for number 1, "bloom#2" for number 2: the name text and JSON use.
+  static std::string instance_name(const std::string& effect, size_t number);
+
+  // In what follows, `instance` is an effect id ("bloom", its first instance) or an instance
+  // name ("bloom#1", "bloom#2"), and a key is "instance.param". An instance that does not exist
+  // is an error naming the key and how many instances the effect has.
 
   // Parses and sets one value. Text forms: float/int "1.5" "3"; bool true/false/1/0/on/off/yes/no;
   // enum: the item id (or its index); colour and vectors: "r,g,b". NaN is always refused; a value
   // outside the hard range is clamped (and *note says so) unless the descriptor asks for rejection.
   // On error returns false, sets *error to a sentence naming the key, and changes nothing.
   bool set(const std::string& key, const std::string& text, std::string* error, std::string* note = nullptr);
-  // "effect.param=value", as given to --set.
+  // "instance.param=value", as given to --set.
   bool set_assignment(const std::string& assignment, std::string* error, std::string* note = nullptr);
-  bool set_value(const std::string& effect, const std::string& param, const pfx_value& value,
+  bool set_value(const std::string& instance, const std::string& param, const pfx_value& value,
                  std::string* error, std::string* note = nullptr);
-  void reset(const std::string& effect, const std::string& param);
+  void reset(const std::string& instance, const std::string& param);
 
-  // One value per descriptor of the effect, in descriptor order; null for an unknown effect.
-  const pfx_value* values(const std::string& effect) const;
-  const pfx_param_desc* descriptor(const std::string& effect, const std::string& param) const;
-  // Bumped by every change to the effect's values: the chain re-declares when it moves.
-  uint64_t revision(const std::string& effect) const;
+  // One value per descriptor of the effect, in descriptor order; null for an unknown instance.
+  const pfx_value* values(const std::string& instance) const;
+  const pfx_value* values(const std::string& effect, size_t number) const;
+  const pfx_param_desc* descriptor(const std::string& instance, const std::string& param) const;
+  // Changes whenever the instance's values do (a set, a reset, a reload, a move or removal that
+  // gives its number other values), to a number it never had before.
+  uint64_t revision(const std::string& instance) const;
 
   // The text form of one value ("chain13", "1.5", "1,0.5,0.25"); empty for an unknown key.
   std::string get_text(const std::string& key) const;
-  // Every value as "effect.param=value" lines, effects and parameters in registration order.
+  // Every value as "instance.param=value" lines: effects in registration order, each effect's
+  // instances in order, parameters in descriptor order.
   std::string to_text() const;
-  // Lines of "effect.param=value"; blank lines and '#' comments ignored. All or nothing.
+  // Lines of "instance.param=value"; blank lines and '#' comments ignored. All or nothing.
   bool from_text(const std::string& text, std::string* error);
   std::string to_json() const;
-  // {"effect": {"param": value}}; numbers, booleans, enum item ids, arrays for vectors. Effects
-  // not registered here are an error. All or nothing.
+  // {"instance": {"param": value}}; numbers, booleans, enum item ids, arrays for vectors. Effects
+  // or instances not registered here are an error. All or nothing.
   bool from_json(const std::string& json, std::string* error);
 
  private:
-  struct EffectParams {
-    const pfx_effect_desc* desc = nullptr;
+  struct Block {
     std::vector<pfx_value> values;
     uint64_t revision = 0;
   };
-  bool find(const std::string& key, EffectParams** effect, uint32_t* index, std::string* error);
+  struct EffectParams {
+    const pfx_effect_desc* desc = nullptr;
+    std::vector<Block> instances;  // at least one
+  };
+  Block defaults(const pfx_effect_desc* desc);
+  // Resolves "bloom" / "bloom#N"; `key` is what error messages name.
+  bool resolve(const std::string& instance, const std::string& key, const EffectParams** effect, size_t* index,
+               std::string* error) const;
+  bool find(const std::string& key, EffectParams** effect, Block** block, uint32_t* param, std::string* error);
   std::map<std::string, EffectParams> effects_;
   std::vector<std::string> order_;
+  uint64_t last_revision_ = 0;
 };
 
 }  // namespace pfx::host
