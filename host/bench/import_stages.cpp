@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include <pfx/host/thread_pool.hpp>
+
 #include "bench_timing.hpp"
 #include "import_measure.hpp"
 #include "obj_import.hpp"
@@ -33,7 +35,10 @@ double StageBreakdown::serial_seconds() const {
 }
 
 int print_stages(const std::string& path, unsigned threads) {
+  // The pool a host would offer, of exactly `threads` (the importer starts no thread of its own).
+  pfx::host::ThreadPool pool(std::max(1u, threads));
   pfx_obj::ImportOptions options;
+  options.pool = pool.service();
   options.threads = threads;
   pfx_obj::ObjMesh mesh;
   std::string error;

@@ -17,7 +17,7 @@ std::string import_usage() {
       "  --json            one JSON object on stdout instead of the text summary:\n"
       "                    {\"file\", \"vertices\", \"triangles\", \"submeshes\", \"materials\", \"bounds\",\n"
       "                     \"lines\", \"points\", \"warnings\", \"warnings_total\", \"ms\"}\n"
-      "  --threads N       worker threads (default 0: every hardware thread)\n"
+      "  --threads N       most threads the import uses at once, from libpfxhost's pool (default 0: every hardware thread)\n"
       "  --progress MODE   a progress line on stderr: auto (default: when stderr is a terminal), on, off\n"
       "  --plugins DIR     plugin folder (repeatable; default: the one next to this program's folder;\n"
       "                    PFX_PLUGIN_PATH adds more)\n"

@@ -44,7 +44,7 @@ void RenderRig::problem_once(const std::string& text) {
   if (reported_.insert(text).second) report_.problem(text);
 }
 
-bool RenderRig::open(const std::string& plugin_path) {
+bool RenderRig::open_context() {
   report_.step("creating a headless OpenGL 4.5 context");
   std::string error;
   context_ = pfx::app::HeadlessContext::create(&error);
@@ -52,12 +52,23 @@ bool RenderRig::open(const std::string& plugin_path) {
     report_.problem(error);
     return false;
   }
+  return true;
+}
+
+void RenderRig::unload() {
+  chain_.reset();
+  registry_.reset();
+}
+
+bool RenderRig::load(const std::string& plugin_path, const pfx_thread_pool* pool) {
+  std::string error;
   pfx::host::LogSink sink = [this](pfx_log_level level, const std::string& source, const std::string& message) {
     if (level >= PFX_LOG_WARNING) plugin_log_.push_back(source + ": " + message);
   };
   registry_ = std::make_unique<pfx::host::PluginRegistry>(
       [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); }, sink,
       "pfx-validate");
+  if (pool) registry_->set_thread_pool(pool);
   report_.step("loading the plugin through libpfxhost");
   if (!registry_->load(plugin_path, &error)) {
     report_.problem("the host runtime refuses the plugin: " + error);

@@ -25,7 +25,13 @@ class RenderRig {
   RenderRig& operator=(const RenderRig&) = delete;
 
   // Makes the context and loads the plugin (alone). False after reporting the problem.
-  bool open(const std::string& plugin_path);
+  bool open(const std::string& plugin_path) { return open_context() && load(plugin_path); }
+  // The two halves of open. `pool`: the thread pool offered to the plugin instead of the
+  // registry's own.
+  bool open_context();
+  bool load(const std::string& plugin_path, const pfx_thread_pool* pool = nullptr);
+  // Destroys the chain and the registry: the plugin's deinit, and its library closed.
+  void unload();
   // Appends an instance of the effect (its create runs now). Checks create for GL errors and
   // GL state changes. False after reporting.
   bool add_effect(const std::string& effect_id);
@@ -37,6 +43,7 @@ class RenderRig {
   bool render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output = nullptr);
 
   pfx::host::ParamStore& params() { return params_; }
+  pfx::host::PluginRegistry* registry() { return registry_.get(); }
   const pfx_effect_desc* effect() const { return effect_; }
 
  private:

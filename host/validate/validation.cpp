@@ -6,6 +6,7 @@
 
 #include "child_process.hpp"
 #include "plugin_checks.hpp"
+#include "process_state_check.hpp"
 #include "render_checks.hpp"
 
 namespace pfx::validate {
@@ -74,7 +75,8 @@ bool PluginResult::passed() const {
 }
 
 const std::vector<std::string>& plugin_check_names() {
-  static const std::vector<std::string> names = {"load", "entry", "init/deinit", "factories", "unique ids"};
+  static const std::vector<std::string> names = {"load", "entry", "init/deinit", "factories", "process state",
+                                                 "unique ids"};
   return names;
 }
 
@@ -90,7 +92,7 @@ PluginResult validate_plugin(const std::string& path, const ValidationSettings& 
 
   plugin.checks.push_back(run_check("load", "", [&](CheckReporter& r) { check_load(path, r); }, settings));
   if (plugin.checks.back().status != Status::Pass) {
-    for (const char* check : {"entry", "init/deinit", "factories"})
+    for (const char* check : {"entry", "init/deinit", "factories", "process state"})
       plugin.checks.push_back(skipped(check, "", "the plugin does not load"));
     return plugin;
   }
@@ -102,6 +104,8 @@ PluginResult validate_plugin(const std::string& path, const ValidationSettings& 
   plugin.checks.push_back(run_check("factories", "", [&](CheckReporter& r) { check_factories(path, r); }, settings, &raw));
   for (const auto& [key, value] : raw.facts)
     if (key == "effect") plugin.effects.push_back(value);
+  plugin.checks.push_back(
+      run_check("process state", "", [&](CheckReporter& r) { check_process_state(path, r); }, settings));
 
   for (const std::string& effect : plugin.effects) {
     plugin.checks.push_back(

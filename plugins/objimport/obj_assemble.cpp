@@ -160,7 +160,7 @@ void Importer::number_and_triangulate(StageClock* clock) {
     std::vector<BigVector<VertexKey>> chunk_keys(chunks_.size());
     clock->time("dedup chunks, triangles", true, [&] {
       std::vector<std::unique_ptr<VertexNumbering>> worker_numbering(threads_);
-      run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned worker) {
+      run_parallel(options_.pool, threads_, chunks_.size(), [&](size_t c, unsigned worker) {
         if (!worker_numbering[worker]) worker_numbering[worker] = std::make_unique<VertexNumbering>(totals_[0], largest_chunk);
         VertexNumbering& numbering = *worker_numbering[worker];
         triangulate_chunk(c, &numbering);
@@ -172,7 +172,7 @@ void Importer::number_and_triangulate(StageClock* clock) {
     std::vector<BigVector<uint32_t>> to_file;
     clock->time("dedup merge", false, [&] { merge_chunk_keys(&chunk_keys, totals_[0], &keys_, &to_file); });
     clock->time("dedup renumber", true, [&] {
-      run_parallel(threads_, chunks_.size(), [&](size_t c, unsigned) {
+      run_parallel(options_.pool, threads_, chunks_.size(), [&](size_t c, unsigned) {
         uint32_t* indices = out_->indices.data();
         const uint32_t* map = to_file[c].data();
         for (size_t s = 0; s < write_at_[c].size(); ++s) {
@@ -209,7 +209,7 @@ void Importer::fill_vertices() {
   constexpr size_t kBlock = size_t{1} << 15;
   const size_t blocks = (count + kBlock - 1) / kBlock;
   std::vector<std::array<float, 6>> block_bounds(blocks);
-  run_parallel(threads_, blocks, [&](size_t b, unsigned) {
+  run_parallel(options_.pool, threads_, blocks, [&](size_t b, unsigned) {
     const size_t lo = b * kBlock, hi = std::min(count, lo + kBlock);
     ChunkedElements::Reader positions(all_positions_), colors(all_colors_), texcoords(all_texcoords_),
         normals(all_normals_);

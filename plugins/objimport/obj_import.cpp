@@ -37,7 +37,7 @@ bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
 void Importer::assemble(StageClock* clock) {
   report(0.85f);
   clock->time("vertices, bounds", true, [&] { fill_vertices(); });
-  clock->time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, threads_, &out_->normals); });
+  clock->time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, options_.pool, threads_, &out_->normals); });
   clock->time("warnings", false, [&] { finish(); });
   report(1.0f);
 }
@@ -62,7 +62,7 @@ void Importer::parse(std::string_view text) {
   std::atomic<size_t> bytes_done{0};
   const double total = std::max<size_t>(1, text.size());
   run_parallel(
-      threads_, texts_.size(),
+      options_.pool, threads_, texts_.size(),
       [&](size_t c, unsigned) {
         parse_one(c, 0);
         bytes_done += texts_[c].size();

@@ -10,8 +10,9 @@
 #include <functional>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <vector>
+
+#include <pfx/services.h>
 
 #include "obj_buffer.hpp"
 #include "obj_mtl.hpp"
@@ -44,7 +45,11 @@ struct ObjMesh {
 constexpr size_t kMaxWarnings = 100;
 
 struct ImportOptions {
-  unsigned threads = 0;                  // 0: std::thread::hardware_concurrency() (worker_count)
+  // The host's thread pool (pfx/services.h), on which every parallel stage runs; null: the import
+  // runs on the calling thread alone. The importer starts no thread of its own.
+  const pfx_thread_pool* pool = nullptr;
+  unsigned threads = 0;                  // at most this many tasks at once; 0: the pool's concurrency
+
   std::function<void(float)> progress;   // 0..1, on the calling thread
   size_t chunk_bytes = 0;                // 0: chosen from the size and thread count (tests set it)
   bool plain_lines = true;               // the fast readers for common lines; tests compare with false
@@ -52,9 +57,12 @@ struct ImportOptions {
                                          // false, the staged pipeline (also where a file needs it)
 };
 
-// The threads an import (and the plugin's release of its result) runs on, for options.threads.
-inline unsigned worker_count(unsigned requested) {
-  return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+// How many tasks of an import (and of the plugin's release of its result) run at once: the
+// request's bound within what the pool offers, and 1 without a pool.
+inline unsigned worker_count(const pfx_thread_pool* pool, unsigned requested) {
+  if (!pool) return 1;
+  const unsigned offered = std::max(1u, pool->concurrency(pool->pool_data));
+  return requested ? std::min(requested, offered) : offered;
 }
 
 // name: the file name in messages. directory: where mtllib files are looked for; empty means

@@ -22,7 +22,6 @@
 #include <map>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -75,7 +74,7 @@ class Importer {
   Importer(const std::string& name, const std::string& directory, const ImportOptions& options,
            bool text_is_file_mapping)
       : name_(name), directory_(directory), options_(options), release_text_(text_is_file_mapping) {
-    threads_ = worker_count(options.threads);
+    threads_ = worker_count(options.pool, options.threads);
   }
 
   // The staged pipeline, on any number of threads.

@@ -9,7 +9,8 @@
 namespace pfx_obj {
 
 void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& positions,
-                      const BigVector<uint32_t>& indices, unsigned threads, BigVector<float>* normals) {
+                      const BigVector<uint32_t>& indices, const pfx_thread_pool* pool, unsigned threads,
+                      BigVector<float>* normals) {
   const size_t count = keys.size();
   const unsigned workers = threads < 1 ? 1 : threads;
   BigVector<float>& n = *normals;
@@ -19,7 +20,7 @@ void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& 
   constexpr size_t kBlock = size_t{1} << 16;
   const size_t blocks = (count + kBlock - 1) / kBlock;
   std::vector<uint8_t> block_any(blocks, 0), block_texcoords(blocks, 0);
-  run_parallel(workers, blocks, [&](size_t b, unsigned) {
+  run_parallel(pool, workers, blocks, [&](size_t b, unsigned) {
     for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
       generated[i] = keys[i].vn == kNoIndex;
       if (!generated[i]) continue;
@@ -34,7 +35,7 @@ void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& 
 
   // Each worker owns a range of vertices and adds every triangle's normal to the ones it owns, in
   // index order: no two workers write one vertex, and the order of each sum is fixed.
-  run_on_each_worker(workers, [&](unsigned w) {
+  run_on_each_worker(pool, workers, [&](unsigned w) {
     const uint64_t lo = count * w / workers, hi = count * (w + 1) / workers;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
       const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
@@ -77,7 +78,7 @@ void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& 
         for (int k = 0; k < 3; ++k) n[3 * i + k] = n[3 * size_t{representative[i]} + k];
   }
 
-  run_parallel(workers, workers, [&](size_t w, unsigned) {
+  run_parallel(pool, workers, workers, [&](size_t w, unsigned) {
     const uint64_t lo = count * w / workers, hi = count * (w + 1) / workers;
     for (uint64_t i = lo; i < hi; ++i) {
       if (!generated[i]) continue;

@@ -7,13 +7,17 @@
 #include <cstdint>
 #include <vector>
 
+#include <pfx/services.h>
+
 #include "obj_dedup.hpp"
 
 namespace pfx_obj {
 
 // normals: 3 per vertex; those of vertices with keys[i].vn == kNoIndex are overwritten.
-// Deterministic: every sum runs in index order whatever the thread count.
+// Deterministic: every sum runs in index order whatever the thread count. On at most `threads`
+// workers of `pool` (null: on the calling thread).
 void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& positions,
-                      const BigVector<uint32_t>& indices, unsigned threads, BigVector<float>* normals);
+                      const BigVector<uint32_t>& indices, const pfx_thread_pool* pool, unsigned threads,
+                      BigVector<float>* normals);
 
 }  // namespace pfx_obj

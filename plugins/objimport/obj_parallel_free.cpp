@@ -24,8 +24,8 @@ void add_mapped(const BigVector<T>& array, std::vector<ByteRange>* ranges) {
 
 }  // namespace
 
-void drop_pages_in_parallel(unsigned threads, const std::vector<ByteRange>& ranges) {
-  if (threads < 2) return;
+void drop_pages_in_parallel(const pfx_thread_pool* pool, unsigned threads, const std::vector<ByteRange>& ranges) {
+  if (!pool || threads < 2) return;
   std::vector<ByteRange> whole;  // each range's whole pages
   size_t total = 0;
   for (const ByteRange& range : ranges) {
@@ -43,20 +43,20 @@ void drop_pages_in_parallel(unsigned threads, const std::vector<ByteRange>& rang
   for (const ByteRange& range : whole)
     for (size_t at = 0; at < range.bytes; at += piece)
       pieces.push_back(ByteRange{static_cast<const char*>(range.begin) + at, std::min(piece, range.bytes - at)});
-  run_parallel(threads, pieces.size(), [&](size_t i, unsigned) {
+  run_parallel(pool, threads, pieces.size(), [&](size_t i, unsigned) {
     // Best effort: where it fails, the munmap that follows frees the pages all the same.
     ::madvise(const_cast<void*>(pieces[i].begin), pieces[i].bytes, MADV_DONTNEED);
   });
 }
 
-void free_mesh_in_parallel(unsigned threads, ObjMesh* mesh) {
+void free_mesh_in_parallel(const pfx_thread_pool* pool, unsigned threads, ObjMesh* mesh) {
   std::vector<ByteRange> ranges;
   add_mapped(mesh->positions, &ranges);
   add_mapped(mesh->normals, &ranges);
   add_mapped(mesh->texcoords, &ranges);
   add_mapped(mesh->colors, &ranges);
   add_mapped(mesh->indices, &ranges);
-  drop_pages_in_parallel(threads, ranges);
+  drop_pages_in_parallel(pool, threads, ranges);
   free_array(&mesh->positions);
   free_array(&mesh->normals);
   free_array(&mesh->texcoords);

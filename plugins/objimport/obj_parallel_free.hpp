@@ -10,21 +10,25 @@
 #include <cstddef>
 #include <vector>
 
+#include <pfx/services.h>
+
 #include "obj_import.hpp"
 #include "obj_pages.hpp"
 
 namespace pfx_obj {
 
-// Drops the whole pages inside the ranges on `threads` workers (their contents read as zero
-// after). The ranges must be the caller's own mappings, about to be unmapped; a page only partly
-// inside is left alone. Nothing at all on one thread, or below kMinParallelFreeBytes.
-void drop_pages_in_parallel(unsigned threads, const std::vector<ByteRange>& ranges);
+// Drops the whole pages inside the ranges on at most `threads` workers of the host's pool (their
+// contents read as zero after). The ranges must be the caller's own mappings, about to be
+// unmapped; a page only partly inside is left alone. Nothing at all without a pool, on one
+// thread, or below kMinParallelFreeBytes.
+void drop_pages_in_parallel(const pfx_thread_pool* pool, unsigned threads, const std::vector<ByteRange>& ranges);
 
-// Below this, the thread started costs about as much as it saves (0.05-0.15 ms to start; freeing
-// 8 MB on one thread takes about 0.7 ms).
+// Below this, handing the work to other threads costs about as much as it saves (measured when the
+// importer started its own: 0.05-0.15 ms to start a thread; freeing 8 MB on one thread takes about
+// 0.7 ms).
 constexpr size_t kMinParallelFreeBytes = size_t{8} << 20;
 
 // Frees the mesh's vertex and index arrays, their pages dropped on `threads` workers first.
-void free_mesh_in_parallel(unsigned threads, ObjMesh* mesh);
+void free_mesh_in_parallel(const pfx_thread_pool* pool, unsigned threads, ObjMesh* mesh);
 
 }  // namespace pfx_obj

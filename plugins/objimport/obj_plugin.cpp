@@ -27,8 +27,12 @@ struct ResultStorage {
   std::vector<pfx_import_submesh> submeshes;
   std::vector<pfx_import_material> materials;
   std::vector<const char*> warnings;
-  unsigned threads = 1;  // the import's, which release frees the arrays on too
+  unsigned threads = 1;  // the import's bound on tasks at once, which release frees the arrays with too
 };
+
+// The host's thread pool, looked up in init (null: the host offers none, and imports run on the
+// calling thread alone). The plugin starts no thread of its own.
+const pfx_thread_pool* g_pool = nullptr;
 
 // Results handed out and not yet released: release ignores any other pointer.
 std::mutex g_results_mutex;
@@ -89,8 +93,9 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
       storage->error = "import request: give either path or bytes";
     } else {
       ImportOptions options;
+      options.pool = g_pool;
       options.threads = request->threads;
-      storage->threads = worker_count(request->threads);
+      storage->threads = worker_count(g_pool, request->threads);
       if (request->progress) {
         pfx_import_progress_fn progress = request->progress;
         void* user = request->progress_user;
@@ -144,7 +149,7 @@ void release(pfx_import_result* result) {
     storage = it->second;
     g_results.erase(it);
   }
-  free_mesh_in_parallel(storage->threads, &storage->mesh);
+  free_mesh_in_parallel(g_pool, storage->threads, &storage->mesh);
   delete storage;
 }
 
@@ -158,10 +163,11 @@ const pfx_importer_factory kFactory = {sizeof(pfx_importer_factory), importer_co
 
 pfx_status plugin_init(const pfx_host* host) {
   if (!host || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  g_pool = pfx::plugin::host_thread_pool(host);
   return PFX_OK;
 }
 
-void plugin_deinit() {}
+void plugin_deinit() { g_pool = nullptr; }
 
 const void* plugin_get_factory(const char* factory_id) {
   return pfx::plugin::factory_for(factory_id, nullptr, nullptr, &kFactory);

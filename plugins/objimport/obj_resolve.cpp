@@ -11,7 +11,7 @@ namespace pfx_obj {
 void Importer::resolve_all(unsigned threads) {
   faces_.assign(chunks_.size(), ChunkFaces{});
   const size_t slots = out_->materials.size() + 1;  // the last slot: no material
-  run_parallel(threads, chunks_.size(), [&](size_t c, unsigned) { resolve(c, slots); });
+  run_parallel(options_.pool, threads, chunks_.size(), [&](size_t c, unsigned) { resolve(c, slots); });
 }
 
 void Importer::resolve(size_t c, size_t slots) {

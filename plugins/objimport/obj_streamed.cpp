@@ -104,7 +104,7 @@ Importer::Outcome Importer::run_streamed(std::string_view text, ObjMesh* out, st
   // One stage: the numbering runs in file order on one thread at a time, beside the parse of
   // later chunks on the others.
   clock.time("parse and numbering", true, [&] {
-    run_ordered_jobs(threads_, chunk_total, window, parse_job, number_job, [&] {
+    run_ordered_jobs(options_.pool, threads_, chunk_total, window, parse_job, number_job, [&] {
       report(static_cast<float>(0.7 * static_cast<double>(bytes_numbered.load()) / std::max<double>(1.0, text.size())));
     });
   });

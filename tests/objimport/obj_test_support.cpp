@@ -2,14 +2,30 @@
 
 #include <catch2/catch.hpp>
 
+#include <map>
+#include <memory>
+#include <mutex>
 #include <random>
 
+#include <pfx/host/thread_pool.hpp>
+
 namespace pfx_obj_test {
+
+const pfx_thread_pool* test_pool(unsigned threads) {
+  if (threads <= 1) return nullptr;
+  static std::mutex mutex;
+  static std::map<unsigned, std::unique_ptr<pfx::host::ThreadPool>> pools;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& pool = pools[threads];
+  if (!pool) pool = std::make_unique<pfx::host::ThreadPool>(threads);
+  return pool->service();
+}
 
 Imported import_text(const std::string& text, unsigned threads, size_t chunk_bytes, const std::string& directory,
                      bool plain_lines, bool streamed) {
   Imported result;
   pfx_obj::ImportOptions options;
+  options.pool = test_pool(threads);
   options.threads = threads;
   options.chunk_bytes = chunk_bytes;
   options.plain_lines = plain_lines;

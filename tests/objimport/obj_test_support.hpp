@@ -18,8 +18,13 @@ struct Imported {
   std::string error;
 };
 
+// A thread pool of `threads` (libpfxhost's, as a host offers it), kept for the whole test run;
+// null for one thread: the importer then runs without a pool, as under a host that offers none.
+const pfx_thread_pool* test_pool(unsigned threads);
+
 // Imports `text` as the file "test.obj" (no material libraries read) or, with `directory`, as a
-// file in that folder. plain_lines = false: the general grammar reads every line (no fast readers).
+// file in that folder, on test_pool(threads). plain_lines = false: the general grammar reads every
+// line (no fast readers).
 Imported import_text(const std::string& text, unsigned threads = 1, size_t chunk_bytes = 0,
                      const std::string& directory = "", bool plain_lines = true, bool streamed = true);
 

@@ -8,7 +8,6 @@
 #include <fstream>
 #include <string>
 
-#include <sched.h>
 #include <unistd.h>
 
 #include <pfx/host/plugin_registry.hpp>
@@ -151,8 +150,8 @@ TEST_CASE("obj plugin: bytes in memory, errors and release", "[objimport][plugin
 
 TEST_CASE("obj plugin: a large result, imported and released on two threads, gives its memory back", "[objimport][plugin][memory]") {
   // A 450 x 450 grid with v, vt, vn and v/vt/vn triangles: 202,500 vertices (32 bytes each) and
-  // 403,202 triangles (12 bytes): 11.3 MB of arrays, enough that release frees them on the
-  // import's two threads (obj_parallel_free.hpp).
+  // 403,202 triangles (12 bytes): 11.3 MB of arrays, enough that release frees them on two
+  // workers of the host's pool (obj_parallel_free.hpp) where the machine has two hardware threads.
   constexpr int n = 450;
   std::string text;
   char line[256];
@@ -176,8 +175,6 @@ TEST_CASE("obj plugin: a large result, imported and released on two threads, giv
   request.bytes = text.data();
   request.byte_count = text.size();
   request.threads = 2;
-  cpu_set_t affinity_before, affinity_after;
-  REQUIRE(::sched_getaffinity(0, sizeof affinity_before, &affinity_before) == 0);
   const uint64_t before = resident_bytes();
   REQUIRE(before > 0);
   pfx_import_result* result = nullptr;
@@ -200,7 +197,4 @@ TEST_CASE("obj plugin: a large result, imported and released on two threads, giv
   // ... and given back by release, all but a little bookkeeping (heap the allocator keeps).
   importer->release(result);
   CHECK(resident_bytes() < before + arrays / 4);
-  // The import and the release pin the calling thread while their parallel runs last, no longer.
-  REQUIRE(::sched_getaffinity(0, sizeof affinity_after, &affinity_after) == 0);
-  CHECK(CPU_EQUAL(&affinity_before, &affinity_after));
 }

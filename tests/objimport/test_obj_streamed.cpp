@@ -27,6 +27,7 @@ struct Run {
 
 Run import_cut(const std::string& text, size_t chunk_bytes, bool streamed, unsigned threads = 1) {
   pfx_obj::ImportOptions options;
+  options.pool = pfx_obj_test::test_pool(threads);
   options.threads = threads;
   options.chunk_bytes = chunk_bytes;
   options.streamed = streamed;
@@ -150,6 +151,7 @@ TEST_CASE("obj streamed: a file's pages dropped once parsed are read again when 
     for (unsigned threads : {1u, 2u, 3u}) {
       INFO("threads " << threads << ", forward face " << (text != varied));
       pfx_obj::ImportOptions options;
+      options.pool = pfx_obj_test::test_pool(threads);
       options.threads = threads;
       options.chunk_bytes = 16384;  // chunks of several pages
       Run run;

@@ -1,18 +1,29 @@
 // The parallel parse gives the same bytes for any thread count and any chunk size: a generated
 // file using every statement (relative indices across chunk boundaries, material and smoothing
-// changes, colours, polygons, line continuations, CRLF) is imported many ways and compared. And the
-// workers' placement (obj_helper_thread.hpp) leaves the caller's CPU affinity as it found it.
+// changes, colours, polygons, line continuations, CRLF) is imported many ways and compared, on
+// pools that run fewer tasks at once than they offer too. And the importer works on the host's
+// threads alone: it starts none and changes no thread's affinity, scheduling or signal mask.
+#include <dirent.h>
+#include <pthread.h>
 #include <sched.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
+#include <mutex>
+#include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
-#include "obj_parallel.hpp"
+#include <pfx/host/plugin_registry.hpp>
+#include <pfx/host/thread_pool.hpp>
+
 #include "obj_test_support.hpp"
 
 using pfx_obj_test::check_same;
@@ -70,67 +81,200 @@ TEST_CASE("obj threads: a relative index reaching exactly one chunk back (found 
 
 namespace {
 
-cpu_set_t affinity_now() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  REQUIRE(sched_getaffinity(0, sizeof set, &set) == 0);
-  return set;
-}
+// A pool that offers four tasks at once but runs a run's tasks one after another on the calling
+// thread (the contract allows it, as it allows a nested run to run serially): an importer whose
+// tasks waited for each other would hang here.
+struct SerialPool {
+  pfx_thread_pool service{sizeof(pfx_thread_pool), nullptr, [](void*) -> uint32_t { return 4; },
+                          [](void*, pfx_task_fn task, void* user, uint32_t count, uint32_t) {
+                            for (uint32_t i = 0; i < count; ++i) task(user, i);
+                          }};
+};
 
-// Each worker's CPU affinity during one run_parallel of `threads` workers. Jobs are handed out as
-// workers ask, so each job waits until every one has started: no worker takes two. The workers
-// call sched_getaffinity themselves, not affinity_now: Catch's assertions are for the test's own
-// thread only.
-std::vector<cpu_set_t> affinity_of_each_worker(unsigned threads) {
-  std::vector<cpu_set_t> seen(threads);
-  std::vector<char> ran(threads, 0);
-  std::atomic<unsigned> started{0};
-  pfx_obj::run_parallel(threads, threads, [&](size_t, unsigned worker) {
-    CPU_ZERO(&seen[worker]);
-    sched_getaffinity(0, sizeof seen[worker], &seen[worker]);
-    ran[worker] = 1;
-    ++started;
-    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-    while (started.load() < threads && std::chrono::steady_clock::now() < give_up) std::this_thread::yield();
-  });
-  REQUIRE(std::count(ran.begin(), ran.end(), 1) == static_cast<long>(threads));
-  return seen;
-}
+// A pool that offers four tasks at once but has two: a run of four tasks gets two at a time.
+struct NarrowPool {
+  pfx::host::ThreadPool inner{2};
+  pfx_thread_pool service{sizeof(pfx_thread_pool), &inner, [](void*) -> uint32_t { return 4; },
+                          [](void* data, pfx_task_fn task, void* user, uint32_t count, uint32_t max_parallel) {
+                            static_cast<pfx::host::ThreadPool*>(data)->run(task, user, count, max_parallel);
+                          }};
+};
 
 }  // namespace
 
-TEST_CASE("obj threads: workers pinned to distinct CPUs only while a run lasts", "[objimport][threads]") {
-  const cpu_set_t before = affinity_now();
-  const unsigned cpus = static_cast<unsigned>(CPU_COUNT(&before));
-  if (cpus >= 2) {
-    // As many workers as allowed CPUs (at most 4): each pinned to a CPU of its own during the run.
-    const unsigned workers = std::min(cpus, 4u);
-    const std::vector<cpu_set_t> seen = affinity_of_each_worker(workers);
-    for (unsigned w = 0; w < workers; ++w) {
-      INFO("worker " << w << " of " << workers);
-      REQUIRE(CPU_COUNT(&seen[w]) == 1);
-      cpu_set_t inside;
-      CPU_AND(&inside, &seen[w], &before);
-      CHECK(CPU_COUNT(&inside) == 1);  // within the caller's allowed set
-      for (unsigned other = 0; other < w; ++other) CHECK_FALSE(CPU_EQUAL(&seen[w], &seen[other]));
-    }
+TEST_CASE("obj threads: the same output on a pool that runs fewer tasks at once than it offers", "[objimport][threads]") {
+  const std::string text = varied_file(6000, 17);
+  auto reference = import_text(text, 1, size_t{1} << 30);
+  REQUIRE(reference.ok);
+  SerialPool serial;
+  NarrowPool narrow;
+  for (const pfx_thread_pool* pool : {&serial.service, &narrow.service})
+    for (bool streamed : {true, false})
+      for (size_t chunk : {size_t{0}, size_t{97}, size_t{4096}}) {
+        INFO((pool == &serial.service ? "serial" : "narrow") << (streamed ? ", streamed" : ", staged") << ", chunk bytes " << chunk);
+        pfx_obj::ImportOptions options;
+        options.pool = pool;
+        options.threads = 0;  // all four the pool offers
+        options.chunk_bytes = chunk;
+        options.streamed = streamed;
+        pfx_obj::ObjMesh mesh;
+        std::string error;
+        REQUIRE(pfx_obj::import_obj_text(text, "test.obj", "", options, &mesh, &error));
+        check_same(reference.mesh, mesh);
+      }
+}
+
+namespace {
+
+int threads_in_process() {
+  int n = 0;
+  DIR* tasks = opendir("/proc/self/task");
+  if (!tasks) return -1;
+  while (dirent* entry = readdir(tasks))
+    if (entry->d_name[0] != '.') ++n;
+  closedir(tasks);
+  return n;
+}
+
+// What a thread's owner decides and a guest must leave alone.
+struct ThreadState {
+  cpu_set_t affinity;
+  int policy = 0, priority = 0, nice = 0;
+  sigset_t blocked;
+  static ThreadState now() {
+    ThreadState s;
+    CPU_ZERO(&s.affinity);
+    sched_getaffinity(0, sizeof s.affinity, &s.affinity);
+    sched_param param{};
+    pthread_getschedparam(pthread_self(), &s.policy, &param);
+    s.priority = param.sched_priority;
+    s.nice = getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
+    sigemptyset(&s.blocked);
+    pthread_sigmask(SIG_BLOCK, nullptr, &s.blocked);
+    return s;
   }
-  // One worker, or more workers than CPUs: none pinned (helpers allow themselves every CPU of the
-  // caller's set once started).
-  for (unsigned threads : {1u, cpus + 1}) {
-    const std::vector<cpu_set_t> seen = affinity_of_each_worker(threads);
-    for (unsigned w = 0; w < threads; ++w) {
-      INFO("worker " << w << " of " << threads);
-      CHECK(CPU_EQUAL(&seen[w], &before));
-    }
+  bool operator==(const ThreadState& o) const {
+    if (!CPU_EQUAL(&affinity, &o.affinity) || policy != o.policy || priority != o.priority || nice != o.nice) return false;
+    for (int sig = 1; sig < NSIG; ++sig)
+      if (sigismember(&blocked, sig) != sigismember(&o.blocked, sig)) return false;
+    return true;
   }
-  // The caller's affinity comes back after every run, an import that fails included.
-  const cpu_set_t between = affinity_now();
-  CHECK(CPU_EQUAL(&before, &between));
-  auto failed = import_text("v 0 0 0\nf 1 2 3 4 5\n", 2, 4);
-  CHECK_FALSE(failed.ok);
-  auto fine = import_text(varied_file(2000, 3), 2, 4096);
-  CHECK(fine.ok);
-  const cpu_set_t after = affinity_now();
-  CHECK(CPU_EQUAL(&before, &after));
+};
+
+// The host's pool as a plugin gets it, with every task checked: the thread it ran on is in the
+// same state after the task as before.
+struct CheckingPool {
+  pfx::host::ThreadPool inner{3};
+  std::atomic<int> runs{0}, tasks{0}, changed{0};
+  std::mutex mutex;
+  std::set<std::thread::id> threads;
+  pfx_thread_pool service{sizeof(pfx_thread_pool), this,
+                          [](void* data) -> uint32_t { return static_cast<CheckingPool*>(data)->inner.concurrency(); },
+                          [](void* data, pfx_task_fn task, void* user, uint32_t count, uint32_t max_parallel) {
+                            static_cast<CheckingPool*>(data)->run(task, user, count, max_parallel);
+                          }};
+  struct Wrapped {
+    CheckingPool* pool;
+    pfx_task_fn task;
+    void* user;
+  };
+  void run(pfx_task_fn task, void* user, uint32_t count, uint32_t max_parallel) {
+    ++runs;
+    Wrapped wrapped{this, task, user};
+    inner.run([](void* w, uint32_t index) {
+      auto* self = static_cast<Wrapped*>(w);
+      const ThreadState before = ThreadState::now();
+      self->task(self->user, index);
+      if (!(ThreadState::now() == before)) ++self->pool->changed;
+      ++self->pool->tasks;
+      std::lock_guard<std::mutex> lock(self->pool->mutex);
+      self->pool->threads.insert(std::this_thread::get_id());
+    }, &wrapped, count, max_parallel);
+  }
+};
+
+// The progress callback runs on the calling thread in the middle of the import: where an importer
+// that pinned its caller or started threads would show it.
+struct Watch {
+  ThreadState caller;
+  int threads = 0;
+  std::atomic<int> calls{0}, caller_changed{0}, threads_changed{0};
+  static void progress(void* user, float) {
+    auto* watch = static_cast<Watch*>(user);
+    ++watch->calls;
+    if (!(ThreadState::now() == watch->caller)) ++watch->caller_changed;
+    if (threads_in_process() != watch->threads) ++watch->threads_changed;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("obj threads: the plugin works on the host's threads alone and changes none of them", "[objimport][threads]") {
+  CheckingPool pool;
+  pool.inner.start();  // the host's threads exist before the import: any new one is the importer's
+  auto registry = std::make_unique<pfx::host::PluginRegistry>([](const char*) { return pfx_gl_proc{nullptr}; }, nullptr,
+                                                              "test_obj_threads");
+  registry->set_thread_pool(&pool.service);
+  std::string error;
+  REQUIRE(registry->load(PFX_TEST_OBJ_PLUGIN, &error));
+  const pfx_importer_desc* importer = registry->find_importer("obj")->desc;
+  const std::string text = varied_file(60000, 23);  // 2 MB: several chunks per worker
+  pfx_import_request request{};
+  request.struct_size = sizeof request;
+  request.bytes = text.data();
+  request.byte_count = text.size();
+  request.progress = Watch::progress;
+  for (uint32_t threads : {0u, 2u, 1u}) {
+    INFO("request.threads " << threads);
+    Watch watch;
+    watch.caller = ThreadState::now();
+    watch.threads = threads_in_process();
+    pool.runs = 0;
+    pool.tasks = 0;
+    request.threads = threads;
+    request.progress_user = &watch;
+    pfx_import_result* result = nullptr;
+    CHECK(importer->import(&request, &result) == PFX_OK);
+    importer->release(result);
+    CHECK(watch.calls > 0);
+    CHECK(watch.caller_changed == 0);
+    CHECK(watch.threads_changed == 0);
+    CHECK(ThreadState::now() == watch.caller);
+    CHECK(threads_in_process() == watch.threads);
+    // The parallel stages ran on the host's pool (with one task at a time: serially, without it).
+    if (threads == 1) CHECK(pool.runs == 0);
+    else CHECK(pool.tasks > 0);
+    CHECK(pool.changed == 0);
+  }
+  request.progress = nullptr;
+  request.threads = 0;
+  pfx_import_result* pooled = nullptr;
+  REQUIRE(importer->import(&request, &pooled) == PFX_OK);
+
+  // A host that offers no pool: the same mesh, on the calling thread, no thread started. (Loaded
+  // after the pooled import: both registries share the one library, which init tells of its host.)
+  auto bare = std::make_unique<pfx::host::PluginRegistry>([](const char*) { return pfx_gl_proc{nullptr}; }, nullptr,
+                                                          "test_obj_threads");
+  bare->set_thread_pool(nullptr);
+  REQUIRE(bare->load(PFX_TEST_OBJ_PLUGIN, &error));
+  const pfx_importer_desc* serial = bare->find_importer("obj")->desc;
+  Watch watch;
+  watch.caller = ThreadState::now();
+  watch.threads = threads_in_process();
+  request.progress = Watch::progress;
+  request.progress_user = &watch;
+  pool.runs = 0;
+  pfx_import_result* alone = nullptr;
+  REQUIRE(serial->import(&request, &alone) == PFX_OK);
+  CHECK(watch.calls > 0);
+  CHECK(watch.threads_changed == 0);
+  CHECK(watch.caller_changed == 0);
+  CHECK(pool.runs == 0);
+  REQUIRE(alone->index_count == pooled->index_count);
+  REQUIRE(alone->vertex_count == pooled->vertex_count);
+  CHECK(std::equal(alone->indices, alone->indices + alone->index_count, pooled->indices));
+  CHECK(std::equal(alone->positions, alone->positions + 3 * size_t{alone->vertex_count}, pooled->positions));
+  CHECK(std::equal(alone->normals, alone->normals + 3 * size_t{alone->vertex_count}, pooled->normals));
+  serial->release(alone);
+  importer->release(pooled);
 }

@@ -2,10 +2,13 @@
 // with the message that says what went wrong, and the working example passes everything.
 #include <catch2/catch.hpp>
 
+#include <sched.h>
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -62,7 +65,7 @@ bool any_problem_contains(const nlohmann::json& check, const std::string& text) 
 TEST_CASE("help lists every check and the exit codes", "[validate]") {
   const Result r = pfx_validate("--help");
   CHECK(r.exit_code == 0);
-  for (const char* text : {"load", "entry", "init/deinit", "factories", "unique ids", "descriptors", "create/destroy",
+  for (const char* text : {"load", "entry", "init/deinit", "factories", "process state", "unique ids", "descriptors", "create/destroy",
                            "defaults", "random params", "resize", "--json", "--seed", "--runs", "--timeout",
                            "exit codes: 0 every check passed, 1 a check failed, 2 usage"})
     CHECK(r.out.find(text) != std::string::npos);
@@ -80,13 +83,13 @@ TEST_CASE("the minimal example plugin passes every check, as a table and as JSON
   CHECK(text.exit_code == 0);
   CHECK(text.out.find("check           plugin   gain     boxblur") != std::string::npos);
   CHECK(text.out.find("defaults        -        pass     pass") != std::string::npos);
-  CHECK(text.out.find("0 of 15 checks failed (seed 1, 3 random parameter sets per effect)") != std::string::npos);
+  CHECK(text.out.find("0 of 16 checks failed (seed 1, 3 random parameter sets per effect)") != std::string::npos);
 
   const nlohmann::json plugin = validate_json(PFX_TEST_MINIMAL_PLUGIN, "", 0);
   CHECK(plugin["id"] == "org.pfx.test.minimal");
   CHECK(plugin["effects"] == nlohmann::json::array({"gain", "boxblur"}));
   CHECK(plugin["passed"] == true);
-  CHECK(plugin["checks"].size() == 15);
+  CHECK(plugin["checks"].size() == 16);
   for (const auto& c : plugin["checks"]) CHECK(c["status"] == "pass");
 }
 
@@ -175,4 +178,62 @@ TEST_CASE("a seed names the same random parameter sets every run, another seed o
   CHECK(first.size() == 2);
   CHECK(first.dump() == sets("12345").dump());
   CHECK(first.dump() != sets("12346").dump());
+}
+
+TEST_CASE("process state: each fixture that rearranges its host fails the check, naming the call and the change", "[validate][fixtures]") {
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  REQUIRE(sched_getaffinity(0, sizeof allowed, &allowed) == 0);
+  const bool can_pin = CPU_COUNT(&allowed) >= 2;  // pinning to one CPU changes nothing on one
+  // What the report must say for each fixture (misbehaving.cpp says what each does, and where).
+  const std::map<std::string, std::vector<std::string>> expected = {
+      {"broken_changes_locale", {"init: the C locale changed from 'C' to 'C.UTF-8'"}},
+      {"broken_changes_environment", {"init: the environment gained 'PFX_BROKEN_FIXTURE=was here'"}},
+      {"broken_installs_signal_handler",
+       {"create of 'broken_installs_signal_handler': the handler of SIGUSR1 (10) changed from SIG_DFL to a handler at 0x"}},
+      {"broken_leaves_thread", {"create of 'broken_leaves_thread': 1 thread(s) left running"}},
+      {"broken_blocks_signals",
+       {"declare and the passes of 'broken_blocks_signals': the calling thread's signal mask changed from [none] to [SIGUSR2 (12)]"}},
+      {"broken_changes_fpu",
+       {"declare and the passes of 'broken_changes_fpu': the floating-point rounding mode changed from to nearest to toward zero"
+#if defined(__x86_64__) || defined(__i386__)
+        ,
+        "declare and the passes of 'broken_changes_fpu': MXCSR changed from 0x1f80 to 0xff80, flush-to-zero turned on"
+#endif
+       }},
+      {"broken_changes_scheduling", {"declare and the passes of 'broken_changes_scheduling': the calling thread's nice value changed from"}},
+      {"broken_changes_working_directory", {"destroy of 'broken_changes_working_directory': the working directory changed from"}},
+      {"broken_changes_umask", {"deinit and unloading: the umask changed from"}},
+      {"broken_changes_thread_in_import",
+       {"import of 'broken_changes_thread_in_import', in the middle of the call (seen from its progress callback): "
+        "the calling thread's signal mask changed from [none] to [SIGUSR1 (10)]"}},
+  };
+  std::string files;
+  for (const auto& [name, problems] : expected) files += misbehaving(name) + " ";
+  const Result r = pfx_validate(files + "--json --runs 0");
+  REQUIRE(r.exit_code == 1);
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  REQUIRE(json["plugins"].size() == expected.size());
+  for (const auto& plugin : json["plugins"]) {
+    const std::string name = plugin["id"].get<std::string>().substr(std::string("org.pfx.test.").size());
+    INFO(name);
+    REQUIRE(expected.count(name) == 1);
+    const auto& state = check(plugin, "process state");
+    CHECK(state["status"] == "FAIL");
+    for (const std::string& text : expected.at(name)) CHECK(any_problem_contains(state, text));
+    if (can_pin && name == "broken_changes_scheduling")
+      CHECK(any_problem_contains(state, "the calling thread's CPU affinity changed from"));
+    if (can_pin && name == "broken_changes_thread_in_import")
+      CHECK(any_problem_contains(state, "the calling thread's CPU affinity changed from"));
+    // The rest of the plugin is a working effect: only this check fails (the thread left running
+    // and the changed directory included, which no other check looks for).
+    for (const auto& c : plugin["checks"])
+      if (c["check"] != "process state") CHECK(c["status"] == "pass");
+  }
+}
+
+TEST_CASE("process state: the example plugin changes nothing", "[validate]") {
+  const nlohmann::json plugin = validate_json(PFX_TEST_MINIMAL_PLUGIN, "", 0);
+  CHECK(check(plugin, "process state")["status"] == "pass");
+  CHECK(check(plugin, "process state")["problems"].empty());
 }

@@ -33,6 +33,8 @@ struct PluginRegistry::Record {
   const pfx_entry* entry = nullptr;
   bool initialised = false;
   pfx_host host{};
+  // The thread pool this plugin is offered, fixed when it is loaded (null: none).
+  const pfx_thread_pool* thread_pool = nullptr;
 };
 
 namespace {
@@ -49,8 +51,13 @@ pfx_gl_proc host_get_proc_address(void* host_data, const char* name) {
   return record->registry->gl_loader()(name);
 }
 
-// The services libpfxhost offers its plugins (pfx/services.h); none yet.
-const void* host_get_service(void* /*host_data*/, const char* /*service_id*/) { return nullptr; }
+// The services libpfxhost offers its plugins (pfx/services.h): the thread pool.
+const void* host_get_service(void* host_data, const char* service_id) {
+  auto* record = static_cast<PluginRegistry::Record*>(host_data);
+  if (!record || !service_id) return nullptr;
+  if (std::strcmp(service_id, PFX_SERVICE_THREAD_POOL) == 0) return record->thread_pool;
+  return nullptr;
+}
 
 bool is_elf_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -82,7 +89,11 @@ void unload(PluginRegistry::Record& record) {
 }  // namespace
 
 PluginRegistry::PluginRegistry(GlProcLoader gl_loader, LogSink log, std::string host_name)
-    : gl_loader_(std::move(gl_loader)), log_(std::move(log)), host_name_(std::move(host_name)) {
+    : gl_loader_(std::move(gl_loader)),
+      log_(std::move(log)),
+      host_name_(std::move(host_name)),
+      own_thread_pool_(std::make_unique<ThreadPool>()),
+      thread_pool_(own_thread_pool_->service()) {
   if (!log_) log_ = [](pfx_log_level, const std::string&, const std::string&) {};
 }
 
@@ -105,6 +116,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
 
   auto record = std::make_unique<Record>();
   record->registry = this;
+  record->thread_pool = thread_pool_;
   // RTLD_LOCAL: two plugins never bind each other's symbols. RTLD_NOW: a missing symbol is an
   // error now, not a crash in the middle of a frame.
   void* library = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);

@@ -7,9 +7,11 @@
  * release function — the only way to free it.
  *
  * Threading: import and release run on any thread, make no GL call, and may be called
- * concurrently (each call has its own result). An importer may start worker threads inside
- * import and release (as many as pfx_import_request.threads); they are joined before the call
- * returns. */
+ * concurrently (each call has its own result). An importer starts no thread of its own: its
+ * parallel work runs on the host's thread pool (pfx/services.h), at most
+ * pfx_import_request.threads tasks at once, or serially on the calling thread when the host
+ * offers no pool. Like every plugin it leaves the calling thread's affinity, scheduling and
+ * signal mask, and the process's state, as it found them. */
 #ifndef PFX_IMPORTER_H
 #define PFX_IMPORTER_H
 
@@ -103,7 +105,7 @@ typedef struct pfx_import_request {
   /* With bytes: the name used in messages and whose folder resolves relative paths (mtllib).
    * NULL: "<memory>", and material libraries are not read (a warning says so). */
   const char* name;
-  uint32_t threads;          /* worker threads; 0 = as many as the machine has */
+  uint32_t threads;          /* most tasks at once on the host's pool; 0 = what the pool offers, 1 = serial */
   pfx_import_progress_fn progress;  /* optional */
   void* progress_user;
 } pfx_import_request;

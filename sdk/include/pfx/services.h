@@ -28,9 +28,16 @@ typedef struct pfx_thread_pool {
   uint32_t (*concurrency)(void* pool_data);
   /* Runs task(user, i) once for every i in [0, count), on the pool's threads and the calling
    * thread, and returns when every task has returned. At most max_parallel tasks run at once
-   * (0: as many as concurrency()). Tasks may run in any order and on any of those threads, so a
-   * task must never wait for another task of the same run. Thread-safe: several threads may call
-   * run at once; a task may call run (the nested run may execute serially). */
+   * (0: as many as concurrency()). Thread-safe: several threads may call run at once; a task may
+   * call run (the nested run may execute serially).
+   * The pool's promise: run completes even when none of the pool's threads is free, because the
+   * calling thread takes every task no other thread has taken; it never waits for a task that no
+   * thread has started. (A pool that queues the tasks and blocks the caller deadlocks as soon as a
+   * task calls run while every thread is busy.)
+   * The task's promise: tasks may run in any order, on any of those threads, or all one after
+   * another on the calling thread, so a task must never wait for another task of the same run to
+   * start or to reach a point. It may wait for work another task has already begun (a lock held,
+   * an item being processed): that work finishes without any further thread. */
   void (*run)(void* pool_data, pfx_task_fn task, void* user, uint32_t count, uint32_t max_parallel);
 } pfx_thread_pool;
 #define PFX_THREAD_POOL_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_thread_pool, run)

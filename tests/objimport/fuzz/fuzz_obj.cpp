@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include <pfx/host/thread_pool.hpp>
+
 #include "obj_import.hpp"
 #include "obj_mtl.hpp"
 
@@ -45,6 +47,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (unsigned threads : {1u, 3u})
     for (bool streamed : {true, false}) {
       pfx_obj::ImportOptions cut = sequential;
+      static pfx::host::ThreadPool three(3);  // the pool a host offers, as libpfxhost makes it
+      cut.pool = threads > 1 ? three.service() : nullptr;
       cut.threads = threads;
       cut.chunk_bytes = 1 + size % (threads == 1 ? 37 : 61);
       cut.streamed = streamed;

@@ -1,6 +1,7 @@
 // Header-only pieces of a plugin's entry point that every plugin writes the same way: the check
 // of the host in init, the check of a CPU reference request, the wall that keeps C++ exceptions
-// from crossing the C ABI, and get_factory over the factories the plugin offers.
+// from crossing the C ABI, get_factory over the factories the plugin offers, and the lookup of the
+// host's thread pool.
 #pragma once
 
 #include <cstddef>
@@ -59,6 +60,16 @@ inline const void* factory_for(const char* factory_id, const pfx_effect_factory*
   if (references && std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return references;
   if (importers && std::strcmp(factory_id, PFX_IMPORTERS_FACTORY_ID) == 0) return importers;
   return nullptr;
+}
+
+// The host's thread pool ("pfx.thread_pool/1", pfx/services.h), or nullptr when the host offers
+// none: a host older than ABI 1.2 (no get_service), one without the service, or a pool struct too
+// small or incomplete. Without it a plugin runs its work serially on the calling thread.
+inline const pfx_thread_pool* host_thread_pool(const pfx_host* host) {
+  if (!host || !PFX_STRUCT_HAS(host, pfx_host, get_service) || !host->get_service) return nullptr;
+  const auto* pool = static_cast<const pfx_thread_pool*>(host->get_service(host->host_data, PFX_SERVICE_THREAD_POOL));
+  if (!pool || pool->struct_size < PFX_THREAD_POOL_MIN_SIZE || !pool->concurrency || !pool->run) return nullptr;
+  return pool;
 }
 
 }  // namespace pfx::plugin

@@ -13,6 +13,7 @@
 
 #include "pfx/host/api.hpp"
 #include "pfx/host/log.hpp"
+#include "pfx/host/thread_pool.hpp"
 
 namespace pfx::host {
 
@@ -93,6 +94,14 @@ class PFX_HOST_API PluginRegistry {
   // ("Model.OBJ" -> "obj"); null when none does.
   const ImporterInfo* find_importer_for_path(const std::string& path) const;
 
+  // The thread pool offered to plugins as "pfx.thread_pool/1" (pfx/services.h): the registry's
+  // own (sized to the machine's hardware threads, its threads started at the first parallel run
+  // and joined when the registry dies), unless the host offers one of its own here. Applies to the
+  // plugins loaded (or reloaded) afterwards, so call it before loading. nullptr: offer no pool, and
+  // plugins run their work serially. The host's pool must outlive the registry.
+  void set_thread_pool(const pfx_thread_pool* pool) { thread_pool_ = pool; }
+  const pfx_thread_pool* thread_pool() const { return thread_pool_; }
+
   const LogSink& log() const { return log_; }
   const GlProcLoader& gl_loader() const { return gl_loader_; }
 
@@ -111,6 +120,8 @@ class PFX_HOST_API PluginRegistry {
   GlProcLoader gl_loader_;
   LogSink log_;
   std::string host_name_;
+  std::unique_ptr<ThreadPool> own_thread_pool_;  // joined after every plugin is unloaded
+  const pfx_thread_pool* thread_pool_ = nullptr;
   std::vector<std::unique_ptr<Plugin>> plugins_;
   std::vector<std::unique_ptr<Record>> records_;  // parallel to plugins_
   std::vector<EffectInfo> effect_index_;
