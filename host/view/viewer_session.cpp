@@ -11,6 +11,7 @@
 #include "frame_files.hpp"
 #include "image_texture.hpp"
 #include "plugin_directory.hpp"
+#include "timing_choice.hpp"
 
 namespace pfx::app {
 namespace {
@@ -58,6 +59,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   }
 
   self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
+  self->chain_->set_timing(default_timing(renderer));
   std::vector<PresetEffect> effects;
   if (options.chain_given || !preset.chain)
     for (const auto& id : options.chain_given ? options.chain : default_chain(*self->registry_)) effects.push_back({id, true});
