@@ -11,15 +11,10 @@
 #include "camera_options.hpp"
 #include "halo_width.hpp"
 #include "image_texture.hpp"
+#include "timing_choice.hpp"
 
 namespace pfx::bench {
 namespace {
-
-pfx::host::Timing timing_of(const std::string& name) {
-  if (name == "gpu") return pfx::host::Timing::GPU_QUERIES;
-  if (name == "finish") return pfx::host::Timing::FINISH_AND_CLOCK;
-  return pfx::host::Timing::AUTO;
-}
 
 std::vector<float> read_back(uint32_t texture, int w, int h) {
   return pfx::app::flip_rows(pfx::app::download_color_texture(texture, w, h).rgba, w, h, 4);
@@ -65,11 +60,9 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
     textures.color = color;
     textures.depth = depth;
 
-    // The unit: resolve the timing method once through a chain, so both use the same one.
-    pfx::host::ParamStore unit_params;
-    pfx::host::Chain probe(registry, unit_params);
-    probe.set_timing(timing_of(options.timing));
-    const pfx::host::Timing timing = probe.timing();
+    // The unit and the chains are timed the same way.
+    pfx::host::Timing timing = pfx::host::Timing::GPU_QUERIES;
+    pfx::app::parse_timing(options.timing, renderer, &timing);  // the name was checked with the options
     results.timing = timing == pfx::host::Timing::GPU_QUERIES ? "gpu-timestamps" : "finish+clock";
     CopyPass copy;
     {
@@ -126,8 +119,10 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
           break;
         }
         if (i < options.warmup) continue;
+        // The frame's own times: a benchmark may wait for them, as the copy pass's timing does.
+        chain.wait_for_timings();
         const auto& report = chain.report();
-        totals.push_back(report.total_ms);
+        totals.push_back(report.times.total_ms);
         per_pass.resize(report.passes.size());
         for (size_t p = 0; p < report.passes.size(); ++p) per_pass[p].push_back(report.passes[p].ms);
       }

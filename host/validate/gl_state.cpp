@@ -16,9 +16,11 @@ struct Entry {
 };
 
 #define PFX_GL_ENTRY(pname, kind) {#pname, pname, Kind::kind}
-// The contract's list: framebuffer and vertex-array bindings, the viewport, the colour mask of
-// draw buffer 0, blend equation and function, and the enables. The contract says "any other
-// enable you touch" too, so every capability a post pass could plausibly switch is here.
+// The contract's "leave as found" list: framebuffer, vertex-array, pipeline, transform feedback
+// and pixel/query buffer bindings, the viewport, the colour mask of draw buffer 0, blend equation
+// and function, the raster, depth and stencil settings the host sets once per frame, the pixel
+// store, and the enables. The contract says "any other enable you touch" too, so every
+// capability a post pass could plausibly switch is here.
 const Entry kEntries[] = {
     PFX_GL_ENTRY(GL_DRAW_FRAMEBUFFER_BINDING, Integer),
     PFX_GL_ENTRY(GL_READ_FRAMEBUFFER_BINDING, Integer),
@@ -50,6 +52,48 @@ const Entry kEntries[] = {
     PFX_GL_ENTRY(GL_PROGRAM_POINT_SIZE, Enable),
     PFX_GL_ENTRY(GL_DITHER, Enable),
     PFX_GL_ENTRY(GL_CLIP_DISTANCE0, Enable),
+    PFX_GL_ENTRY(GL_SAMPLE_ALPHA_TO_ONE, Enable),
+    PFX_GL_ENTRY(GL_SAMPLE_MASK, Enable),
+    PFX_GL_ENTRY(GL_POLYGON_OFFSET_LINE, Enable),
+    PFX_GL_ENTRY(GL_POLYGON_OFFSET_POINT, Enable),
+    PFX_GL_ENTRY(GL_POLYGON_SMOOTH, Enable),
+    PFX_GL_ENTRY(GL_LINE_SMOOTH, Enable),
+    PFX_GL_ENTRY(GL_TEXTURE_CUBE_MAP_SEAMLESS, Enable),
+    PFX_GL_ENTRY(GL_PROGRAM_PIPELINE_BINDING, Integer),
+    PFX_GL_ENTRY(GL_TRANSFORM_FEEDBACK_BINDING, Integer),
+    PFX_GL_ENTRY(GL_PIXEL_PACK_BUFFER_BINDING, Integer),
+    PFX_GL_ENTRY(GL_PIXEL_UNPACK_BUFFER_BINDING, Integer),
+    PFX_GL_ENTRY(GL_QUERY_BUFFER_BINDING, Integer),
+    PFX_GL_ENTRY(GL_POLYGON_MODE, Enum),
+    PFX_GL_ENTRY(GL_CLIP_ORIGIN, Enum),
+    PFX_GL_ENTRY(GL_CLIP_DEPTH_MODE, Enum),
+    PFX_GL_ENTRY(GL_PROVOKING_VERTEX, Enum),
+    PFX_GL_ENTRY(GL_CULL_FACE_MODE, Enum),
+    PFX_GL_ENTRY(GL_FRONT_FACE, Enum),
+    PFX_GL_ENTRY(GL_DEPTH_FUNC, Enum),
+    PFX_GL_ENTRY(GL_DEPTH_WRITEMASK, Integer),
+    PFX_GL_ENTRY(GL_STENCIL_FUNC, Enum),
+    PFX_GL_ENTRY(GL_STENCIL_FAIL, Enum),
+    PFX_GL_ENTRY(GL_STENCIL_PASS_DEPTH_FAIL, Enum),
+    PFX_GL_ENTRY(GL_STENCIL_PASS_DEPTH_PASS, Enum),
+    PFX_GL_ENTRY(GL_STENCIL_WRITEMASK, Integer),
+    PFX_GL_ENTRY(GL_CLAMP_READ_COLOR, Enum),
+    PFX_GL_ENTRY(GL_FRAGMENT_SHADER_DERIVATIVE_HINT, Enum),
+    PFX_GL_ENTRY(GL_PATCH_VERTICES, Integer),
+    PFX_GL_ENTRY(GL_UNPACK_ALIGNMENT, Integer),
+    PFX_GL_ENTRY(GL_UNPACK_ROW_LENGTH, Integer),
+    PFX_GL_ENTRY(GL_UNPACK_IMAGE_HEIGHT, Integer),
+    PFX_GL_ENTRY(GL_UNPACK_SKIP_PIXELS, Integer),
+    PFX_GL_ENTRY(GL_UNPACK_SKIP_ROWS, Integer),
+    PFX_GL_ENTRY(GL_UNPACK_SKIP_IMAGES, Integer),
+    PFX_GL_ENTRY(GL_UNPACK_SWAP_BYTES, Integer),
+    PFX_GL_ENTRY(GL_PACK_ALIGNMENT, Integer),
+    PFX_GL_ENTRY(GL_PACK_ROW_LENGTH, Integer),
+    PFX_GL_ENTRY(GL_PACK_IMAGE_HEIGHT, Integer),
+    PFX_GL_ENTRY(GL_PACK_SKIP_PIXELS, Integer),
+    PFX_GL_ENTRY(GL_PACK_SKIP_ROWS, Integer),
+    PFX_GL_ENTRY(GL_PACK_SKIP_IMAGES, Integer),
+    PFX_GL_ENTRY(GL_PACK_SWAP_BYTES, Integer),
 };
 #undef PFX_GL_ENTRY
 
@@ -68,6 +112,11 @@ std::string enum_text(long value) {
     case GL_FUNC_REVERSE_SUBTRACT: return "GL_FUNC_REVERSE_SUBTRACT";
     case GL_MIN: return "GL_MIN";
     case GL_MAX: return "GL_MAX";
+    case GL_FILL: return "GL_FILL";
+    case GL_LINE: return "GL_LINE";
+    case GL_POINT: return "GL_POINT";
+    case GL_LOWER_LEFT: return "GL_LOWER_LEFT";
+    case GL_UPPER_LEFT: return "GL_UPPER_LEFT";
     default: {
       char buffer[24];
       std::snprintf(buffer, sizeof buffer, "0x%04lx", static_cast<unsigned long>(value));
@@ -96,9 +145,9 @@ GlStateSnapshot snapshot_gl_state() {
         break;
       case Kind::Integer:
       case Kind::Enum: {
-        GLint v = 0;
-        glGetIntegerv(entry.pname, &v);
-        value.values = {static_cast<long>(v)};
+        GLint v[4] = {0, 0, 0, 0};  // GL_POLYGON_MODE writes two
+        glGetIntegerv(entry.pname, v);
+        value.values = {static_cast<long>(v[0])};
         break;
       }
       case Kind::Integer4: {

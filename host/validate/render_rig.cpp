@@ -154,7 +154,9 @@ bool RenderRig::render(const pfx::app::Image& input, const std::string& label, p
   report_.step("rendering " + label);
   plugin_log_.clear();
   std::string error;
+  if (before_chain_) before_chain_();
   const bool rendered = chain_->render(frame, textures, out, &error);
+  if (after_chain_) after_chain_();
   pfx::app::Image result, seen;
   if (rendered) {
     result = pfx::app::download_color_texture(out, w, h);

@@ -4,9 +4,11 @@
 // state as it found it, and the output is finite wherever the input colour was.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 
 #include <pfx/host/chain.hpp>
 
@@ -42,6 +44,13 @@ class RenderRig {
   // output is returned in *output when given. False when the render failed or a check did.
   bool render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output = nullptr);
 
+  // Called right before and right after the chain renders (after the inputs are uploaded,
+  // before the output is read back): to run the chain under an engine's state.
+  void set_around_chain(std::function<void()> before, std::function<void()> after) {
+    before_chain_ = std::move(before);
+    after_chain_ = std::move(after);
+  }
+
   pfx::host::ParamStore& params() { return params_; }
   pfx::host::PluginRegistry* registry() { return registry_.get(); }
   const pfx_effect_desc* effect() const { return effect_; }
@@ -60,6 +69,7 @@ class RenderRig {
   std::vector<std::string> plugin_log_;
   GlStateSnapshot before_pass_;
   std::set<std::string> reported_;
+  std::function<void()> before_chain_, after_chain_;
 };
 
 }  // namespace pfx::validate

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "child_process.hpp"
+#include "dirty_state_check.hpp"
 #include "plugin_checks.hpp"
 #include "process_state_check.hpp"
 #include "render_checks.hpp"
@@ -81,7 +82,8 @@ const std::vector<std::string>& plugin_check_names() {
 }
 
 const std::vector<std::string>& effect_check_names() {
-  static const std::vector<std::string> names = {"descriptors", "create/destroy", "defaults", "random params", "resize"};
+  static const std::vector<std::string> names = {"descriptors", "create/destroy", "defaults", "random params", "resize",
+                                                    "dirty state"};
   return names;
 }
 
@@ -118,6 +120,8 @@ PluginResult validate_plugin(const std::string& path, const ValidationSettings& 
         "random params", effect, [&](CheckReporter& r) { check_random(path, effect, settings.seed, settings.runs, r); },
         settings));
     plugin.checks.push_back(run_check("resize", effect, [&](CheckReporter& r) { check_resize(path, effect, r); }, settings));
+    plugin.checks.push_back(
+        run_check("dirty state", effect, [&](CheckReporter& r) { check_dirty_state(path, effect, r); }, settings));
   }
   return plugin;
 }

@@ -37,13 +37,19 @@ void draw_timing_panel(ViewerSession& session, UiState& ui) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("off: a frame is rendered only when something changes, so the times below are\n"
                       "those of the last change; on: every frame, for live times (costs a full core)");
-  ImGui::Text("pass times: %s", report.timing.c_str());
+  // GPU timestamps arrive frames later: say which frame the times below were measured in.
+  const pfx::host::FrameTimes& times = report.times;
+  if (times.frame == 0) ImGui::Text("pass times: %s, none complete yet", report.timing.c_str());
+  else if (times.frame == report.frame) ImGui::Text("pass times: %s, this frame", report.timing.c_str());
+  else
+    ImGui::Text("pass times: %s, %llu frame(s) ago", report.timing.c_str(),
+                static_cast<unsigned long long>(report.frame - times.frame));
   if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     ImGui::TableSetupColumn("effect");
     ImGui::TableSetupColumn("pass");
     ImGui::TableSetupColumn("ms");
     ImGui::TableHeadersRow();
-    for (const auto& pass : report.passes) {
+    for (const auto& pass : times.passes) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(pass.effect.c_str());
@@ -54,7 +60,7 @@ void draw_timing_panel(ViewerSession& session, UiState& ui) {
     }
     ImGui::EndTable();
   }
-  ImGui::Text("total %.3f ms over %zu passes", report.total_ms, report.passes.size());
+  ImGui::Text("total %.3f ms over %zu passes", times.total_ms, times.passes.size());
   ImGui::Text("peak target memory %llu bytes (%.2f MiB)", static_cast<unsigned long long>(report.peak_target_bytes),
               double(report.peak_target_bytes) / (1024.0 * 1024.0));
   ImGui::TextDisabled("without pooling %llu bytes", static_cast<unsigned long long>(report.unpooled_target_bytes));

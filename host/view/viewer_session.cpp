@@ -13,6 +13,7 @@
 #include "frame_files.hpp"
 #include "image_texture.hpp"
 #include "plugin_directory.hpp"
+#include "timing_choice.hpp"
 
 namespace pfx::app {
 namespace {
@@ -53,6 +54,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   if (!options.preset.empty() && !read_preset(options.preset, &preset, &message)) return fail(3, message);
 
   self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
+  self->chain_->set_timing(default_timing(renderer));
   std::vector<PresetEffect> effects;
   if (options.chain_given || !preset.chain)
     for (const auto& id : options.chain_given ? options.chain : default_chain(*self->registry_)) effects.push_back({id, true});

@@ -66,7 +66,7 @@ TEST_CASE("help lists every check and the exit codes", "[validate]") {
   const Result r = pfx_validate("--help");
   CHECK(r.exit_code == 0);
   for (const char* text : {"load", "entry", "init/deinit", "factories", "process state", "unique ids", "descriptors", "create/destroy",
-                           "defaults", "random params", "resize", "--json", "--seed", "--runs", "--timeout",
+                           "defaults", "random params", "resize", "dirty state", "--json", "--seed", "--runs", "--timeout",
                            "exit codes: 0 every check passed, 1 a check failed, 2 usage"})
     CHECK(r.out.find(text) != std::string::npos);
 }
@@ -83,13 +83,13 @@ TEST_CASE("the minimal example plugin passes every check, as a table and as JSON
   CHECK(text.exit_code == 0);
   CHECK(text.out.find("check           plugin   gain     boxblur") != std::string::npos);
   CHECK(text.out.find("defaults        -        pass     pass") != std::string::npos);
-  CHECK(text.out.find("0 of 16 checks failed (seed 1, 3 random parameter sets per effect)") != std::string::npos);
+  CHECK(text.out.find("0 of 18 checks failed (seed 1, 3 random parameter sets per effect)") != std::string::npos);
 
   const nlohmann::json plugin = validate_json(PFX_TEST_MINIMAL_PLUGIN, "", 0);
   CHECK(plugin["id"] == "org.pfx.test.minimal");
   CHECK(plugin["effects"] == nlohmann::json::array({"gain", "boxblur"}));
   CHECK(plugin["passed"] == true);
-  CHECK(plugin["checks"].size() == 16);
+  CHECK(plugin["checks"].size() == 18);
   for (const auto& c : plugin["checks"]) CHECK(c["status"] == "pass");
 }
 
@@ -113,6 +113,18 @@ TEST_CASE("broken_leaks_gl_state: every render check names the pass and the stat
     CHECK(any_problem_contains(c, "GL state not restored by broken_leaks_gl_state pass 'copy': GL_SCISSOR_TEST enabled (was disabled)"));
   }
   CHECK(check(plugin, "descriptors", "broken_leaks_gl_state")["status"] == "pass");
+}
+
+TEST_CASE("broken_assumes_clean_state: the dirty state check names the pixel store it relies on", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_assumes_clean_state"));
+  const auto& dirty = check(plugin, "dirty state", "broken_assumes_clean_state");
+  CHECK(dirty["status"] == "FAIL");
+  CHECK(any_problem_contains(dirty, "the output under an engine's leftover GL state differs from a clean context's"));
+  CHECK(any_problem_contains(dirty, "GL_UNPACK_ALIGNMENT 8"));
+  CHECK(any_problem_contains(dirty, "unpack row length 7"));
+  // Its create runs in a clean context everywhere else: the other checks pass.
+  for (const char* name : {"create/destroy", "defaults", "random params", "resize"})
+    CHECK(check(plugin, name, "broken_assumes_clean_state")["status"] == "pass");
 }
 
 TEST_CASE("broken_writes_nan: the output is not finite where the input was", "[validate][fixtures]") {

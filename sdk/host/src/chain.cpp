@@ -8,6 +8,8 @@
 #include <glad/gl.h>
 
 #include "gl_pool.hpp"
+#include "gl_state_scope.hpp"
+#include "gpu_timer.hpp"
 
 namespace pfx::host {
 
@@ -25,6 +27,8 @@ struct Chain::Instance {
 
 struct Chain::GlResources {
   GlPool pool;
+  GlLimits limits = GlLimits::query();
+  GpuTimer timer;
 };
 
 namespace {
@@ -49,17 +53,32 @@ Chain::Chain(const PluginRegistry& registry, ParamStore& params) : registry_(reg
                GLAD_GL_VERSION_4_5;
   if (!gl_loaded_) return;
   gl_ = std::make_unique<GlResources>();
-  set_timing(Timing::AUTO);
 }
 
 void Chain::set_timing(Timing timing) {
-  if (timing == Timing::AUTO && gl_loaded_) {
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    std::string name = renderer ? renderer : "";
-    bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
-    timing = software ? Timing::FINISH_AND_CLOCK : Timing::GPU_QUERIES;
-  }
+  if (timing == timing_) return;
   timing_ = timing;
+  if (gl_) gl_->timer.clear();
+  times_ = FrameTimes{};
+  last_timed_frame_ = 0;
+  report_.times = times_;
+}
+
+bool Chain::wait_for_timings() {
+  if (!gl_loaded_ || timing_ == Timing::OFF || last_timed_frame_ == 0) return false;
+  if (timing_ == Timing::GPU_QUERIES && times_.frame != last_timed_frame_) {
+    // A query buffer the engine left bound would receive the results instead of us.
+    GLint query_buffer = 0;
+    glGetIntegerv(GL_QUERY_BUFFER_BINDING, &query_buffer);
+    glBindBuffer(GL_QUERY_BUFFER, 0);
+    FrameTimes times;
+    const bool waited = gl_->timer.wait_newest(&times);
+    glBindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(query_buffer));
+    if (waited) times_ = std::move(times);
+  }
+  report_.times = times_;
+  if (times_.frame == report_.frame) report_.passes = times_.passes;
+  return times_.frame == last_timed_frame_;
 }
 
 Chain::~Chain() {
@@ -231,6 +250,7 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
     if (error) *error = text;
     return false;
   };
+  report_.frame = ++frames_;
   if (!gl_loaded_) return fail("no OpenGL 4.5 context was current when the chain was made");
   if (frame.struct_size < PFX_FRAME_MIN_SIZE) return fail("pfx_frame struct too small");
   if (frame.width < 1 || frame.height < 1) return fail("frame size must be at least 1x1");
@@ -251,19 +271,15 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
   }
   report_.peak_target_bytes = plan_.peak_target_bytes;
   report_.unpooled_target_bytes = plan_.unpooled_target_bytes;
-  if (!execute(frame, textures, output_texture, active, error)) return false;
-  // Passes are reported by instance: "bloom#2" tells the second bloom's passes from the first's.
-  for (size_t p = 0; p < report_.passes.size() && p < plan_.passes.size(); ++p)
-    report_.passes[p].effect = instances_[active[plan_.passes[p].effect]]->name;
-  return true;
+  return execute(frame, textures, output_texture, active, error);
 }
 
 bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
                     const std::vector<int>& active, std::string* error) {
   report_.passes.clear();
   report_.effect_reports.clear();
-  report_.total_ms = 0;
   report_.timing = timing_ == Timing::GPU_QUERIES ? "gpu-timestamps" : timing_ == Timing::FINISH_AND_CLOCK ? "finish+clock" : "off";
+  report_.times = times_;
   GlPool& pool = gl_->pool;
 
   while (glGetError() != GL_NO_ERROR) {
@@ -280,15 +296,16 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     }
     return true;
   }
+  GLboolean feedback_active = GL_FALSE, feedback_paused = GL_FALSE;
+  glGetBooleanv(GL_TRANSFORM_FEEDBACK_ACTIVE, &feedback_active);
+  glGetBooleanv(GL_TRANSFORM_FEEDBACK_PAUSED, &feedback_paused);
+  if (feedback_active && !feedback_paused) {
+    if (error) *error = "transform feedback is active: end or pause it before render()";
+    return false;
+  }
 
-  // The state every pass starts from (docs/sdk.md, "GL state").
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_SCISSOR_TEST);
-  glDisable(GL_CULL_FACE);
-  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glBlendEquation(GL_FUNC_ADD);
-  glBlendFunc(GL_ONE, GL_ONE);
+  // The state every pass starts from (docs/sdk.md §1.5), and the engine's back on every return.
+  GlStateScope state_scope(gl_->limits);
 
   auto frame_input_texture = [&](const std::string& name) -> GLuint {
     if (name == PFX_INPUT_NAME_COLOR) return textures.color;
@@ -316,8 +333,17 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
 
   using Clock = std::chrono::steady_clock;
   std::vector<double> cpu_ms;
-  if (timing_ == Timing::GPU_QUERIES) glQueryCounter(pool.query(0), GL_TIMESTAMP);
+  GpuTimer& timer = gl_->timer;
+  if (timing_ == Timing::GPU_QUERIES) timer.begin_frame(report_.frame);
   if (timing_ == Timing::FINISH_AND_CLOCK) glFinish();
+  // A frame that fails part way leaves no half-stamped query set in flight.
+  struct AbandonOnFailure {
+    GpuTimer& timer;
+    bool done = false;
+    ~AbandonOnFailure() {
+      if (!done) timer.abandon_frame();
+    }
+  } abandon_on_failure{timer};
 
   std::vector<pfx_bound_texture> bound;
   for (size_t p = 0; p < plan_.passes.size(); ++p) {
@@ -362,12 +388,14 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     context.inputs = bound.data();
     context.input_count = static_cast<uint32_t>(bound.size());
     glBindVertexArray(pool.empty_vertex_array());
+    glActiveTexture(GL_TEXTURE0);
 
     if (pass_hook_) pass_hook_(effect_id, pass.name, false);
     Clock::time_point start = Clock::now();
     pfx_status status = instance.info.desc->run_pass(instance.handle, &context);
     if (pass_hook_) pass_hook_(effect_id, pass.name, true);
-    if (timing_ == Timing::GPU_QUERIES) glQueryCounter(pool.query(p + 1), GL_TIMESTAMP);
+    // Passes are reported by instance: "bloom#2" tells the second bloom's passes from the first's.
+    if (timing_ == Timing::GPU_QUERIES) timer.end_pass(instance.name, pass.name);
     if (timing_ == Timing::FINISH_AND_CLOCK) {
       glFinish();
       cpu_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
@@ -384,22 +412,26 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
       if (error) *error = label + " raised GL error " + gl_error_text(gl_error);
       return false;
     }
-    report_.passes.push_back({effect_id, pass.name, 0.0});
+    report_.passes.push_back({instance.name, pass.name, 0.0});
   }
 
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glBindVertexArray(0);
-  glDisable(GL_BLEND);
-  glUseProgram(0);
-
+  abandon_on_failure.done = true;
+  if (timing_ != Timing::OFF) last_timed_frame_ = report_.frame;
   if (timing_ == Timing::GPU_QUERIES) {
-    std::vector<GLuint64> stamps(plan_.passes.size() + 1);
-    for (size_t i = 0; i < stamps.size(); ++i) glGetQueryObjectui64v(pool.query(i), GL_QUERY_RESULT, &stamps[i]);
-    for (size_t i = 0; i < report_.passes.size(); ++i) report_.passes[i].ms = double(stamps[i + 1] - stamps[i]) * 1e-6;
+    timer.end_frame();
+    // Earlier frames only, and only those whose queries have landed: never a wait.
+    if (timer.poll(report_.frame, &times_)) report_.times = times_;
   } else if (timing_ == Timing::FINISH_AND_CLOCK) {
-    for (size_t i = 0; i < report_.passes.size(); ++i) report_.passes[i].ms = cpu_ms[i];
+    FrameTimes times;
+    times.frame = report_.frame;
+    for (size_t i = 0; i < report_.passes.size(); ++i) {
+      report_.passes[i].ms = cpu_ms[i];
+      times.total_ms += cpu_ms[i];
+    }
+    times.passes = report_.passes;
+    times_ = std::move(times);
+    report_.times = times_;
   }
-  for (const auto& pass : report_.passes) report_.total_ms += pass.ms;
 
   for (int index : active) {
     Instance& instance = *instances_[index];

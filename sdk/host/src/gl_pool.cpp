@@ -21,7 +21,6 @@ GlPool::~GlPool() {
   for (auto& slot : slots_) free_slot(slot);
   for (auto& [texture, framebuffer] : external_framebuffers_) glDeleteFramebuffers(1, &framebuffer);
   for (auto& [key, sampler] : samplers_) glDeleteSamplers(1, &sampler);
-  if (!queries_.empty()) glDeleteQueries(static_cast<GLsizei>(queries_.size()), queries_.data());
   glDeleteVertexArrays(1, &vertex_array_);
 }
 
@@ -92,15 +91,6 @@ GLuint GlPool::sampler(pfx_filter filter, pfx_wrap wrap) {
   glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, transparent_black);
   samplers_[key] = sampler;
   return sampler;
-}
-
-GLuint GlPool::query(size_t index) {
-  while (queries_.size() <= index) {
-    GLuint query = 0;
-    glGenQueries(1, &query);
-    queries_.push_back(query);
-  }
-  return queries_[index];
 }
 
 }  // namespace pfx::host

@@ -1,5 +1,5 @@
 // The GL objects behind a frame plan: one texture and framebuffer per pool slot, samplers per
-// (filter, wrap), the empty vertex array full-screen passes draw with, timer queries. Kept across
+// (filter, wrap), the empty vertex array full-screen passes draw with. Kept across
 // frames; rebuilt only when the plan's slots change.
 #pragma once
 
@@ -30,8 +30,6 @@ class GlPool {
   GLuint framebuffer_for(GLuint texture);
   GLuint sampler(pfx_filter filter, pfx_wrap wrap);
   GLuint empty_vertex_array() const { return vertex_array_; }
-  // Timestamp queries, grown on demand.
-  GLuint query(size_t index);
 
  private:
   struct Slot {
@@ -43,7 +41,6 @@ class GlPool {
   std::vector<Slot> slots_;
   std::map<GLuint, GLuint> external_framebuffers_;
   std::map<uint32_t, GLuint> samplers_;
-  std::vector<GLuint> queries_;
   GLuint vertex_array_ = 0;
 };
 

@@ -24,15 +24,17 @@ struct FrameTextures {
   uint32_t color = 0, depth = 0, normal = 0, albedo = 0, emissive = 0;
 };
 
+// How render() times passes; the embedding program chooses (Chain::set_timing), libpfxhost never
+// guesses from the renderer.
 enum class Timing {
-  // FINISH_AND_CLOCK on a software renderer (llvmpipe, softpipe: their timestamp queries are taken
-  // when commands are queued, not when the deferred rasteriser runs them), GPU_QUERIES elsewhere.
-  AUTO,
+  // No queries, no waiting, no times (the default).
   OFF,
-  // GL timestamp queries around every pass; read back at the end of the frame.
+  // A GL timestamp query around every pass, read back one or more frames later without waiting:
+  // report().times holds the newest frame whose queries have landed.
   GPU_QUERIES,
-  // glFinish before and after every pass, CPU clock: serialises the GPU but measures what a
-  // deferred software renderer (llvmpipe) really spends on each pass.
+  // glFinish before and after every pass and a CPU clock: serialises the GPU, but measures what a
+  // deferred software renderer (Mesa's llvmpipe, whose timestamps are taken when commands are
+  // queued, not when they run) really spends on each pass. The times are this frame's.
   FINISH_AND_CLOCK
 };
 
@@ -43,11 +45,23 @@ struct PassTime {
   double ms = 0;
 };
 
+// The times of one frame's passes.
+struct FrameTimes {
+  uint64_t frame = 0;            // the FrameReport::frame they were measured in; 0: none yet
+  std::vector<PassTime> passes;  // that frame's passes, in order, with their times
+  double total_ms = 0;
+};
+
 struct FrameReport {
+  uint64_t frame = 0;                        // which render() this is: 1 for the chain's first
   std::vector<std::string> effects_run;      // enabled effects that declared passes, in order
   std::vector<std::string> effects_skipped;  // disabled, or no-op with their settings
-  std::vector<PassTime> passes;              // every pass that ran (ms = 0 with Timing::OFF)
-  double total_ms = 0;
+  // Every pass that ran this frame, in order. ms is this frame's time where it is known when
+  // render() returns (FINISH_AND_CLOCK) or after wait_for_timings(); 0 otherwise.
+  std::vector<PassTime> passes;
+  // The newest frame whose times are complete: this frame with FINISH_AND_CLOCK, an earlier one
+  // (or none: frame 0) with GPU_QUERIES until wait_for_timings(), none with OFF.
+  FrameTimes times;
   std::string timing;                        // "gpu-timestamps", "finish+clock" or "off"
   uint64_t peak_target_bytes = 0;            // pooled targets alive during the frame
   uint64_t unpooled_target_bytes = 0;        // what they would cost without pooling
@@ -90,8 +104,15 @@ class PFX_HOST_API Chain {
   // fails the old ones stay and *error names the effect. The old version must still be loaded.
   bool refresh(std::vector<std::string>* dropped, std::string* error);
 
+  // Changing the scheme drops the times of frames still in flight.
   void set_timing(Timing timing);
   Timing timing() const { return timing_; }
+  // Waits for the GPU to finish the last render() that ran passes and puts its times in
+  // report().times (and report().passes when it was this report's frame). With GPU_QUERIES
+  // this blocks (GL_QUERY_RESULT): for a program that renders one frame and exits, or a
+  // benchmark; render() itself never waits. True when report().times now holds the last frame
+  // that ran passes; false with timing OFF or before any frame ran a pass.
+  bool wait_for_timings();
 
   // Called around every plugin pass: with after == false once the host has set the pass's GL
   // state (docs/sdk.md §1.5), just before run_pass; with after == true as soon as run_pass
@@ -124,7 +145,10 @@ class PFX_HOST_API Chain {
   std::vector<int> planned_active_;  // the instances plan_ was made for
   bool plan_valid_ = false;
   bool gl_loaded_ = false;
-  Timing timing_ = Timing::AUTO;
+  Timing timing_ = Timing::OFF;
+  uint64_t frames_ = 0;             // render() calls so far
+  uint64_t last_timed_frame_ = 0;   // the last frame that ran passes under a timing scheme
+  FrameTimes times_;                // the newest complete times, kept across frames
   FrameReport report_;
   PassHook pass_hook_;
 };

@@ -1,0 +1,278 @@
+#include "gl_state_scope.hpp"
+
+#include <algorithm>
+
+namespace pfx::host {
+namespace {
+
+// Capabilities and the value every chain starts from: GL's initial value, except dithering, which
+// is off so that 8-bit targets get the same bits on every implementation.
+struct Capability {
+  GLenum cap;
+  GLboolean chain_value;
+};
+const Capability kCapabilities[] = {
+    {GL_DEPTH_TEST, GL_FALSE},
+    {GL_STENCIL_TEST, GL_FALSE},
+    {GL_CULL_FACE, GL_FALSE},
+    {GL_RASTERIZER_DISCARD, GL_FALSE},
+    {GL_COLOR_LOGIC_OP, GL_FALSE},
+    {GL_FRAMEBUFFER_SRGB, GL_FALSE},
+    {GL_MULTISAMPLE, GL_TRUE},
+    {GL_SAMPLE_ALPHA_TO_COVERAGE, GL_FALSE},
+    {GL_SAMPLE_ALPHA_TO_ONE, GL_FALSE},
+    {GL_SAMPLE_COVERAGE, GL_FALSE},
+    {GL_SAMPLE_MASK, GL_FALSE},
+    {GL_SAMPLE_SHADING, GL_FALSE},
+    {GL_PRIMITIVE_RESTART, GL_FALSE},
+    {GL_PRIMITIVE_RESTART_FIXED_INDEX, GL_FALSE},
+    {GL_DEPTH_CLAMP, GL_FALSE},
+    {GL_POLYGON_OFFSET_FILL, GL_FALSE},
+    {GL_POLYGON_OFFSET_LINE, GL_FALSE},
+    {GL_POLYGON_OFFSET_POINT, GL_FALSE},
+    {GL_POLYGON_SMOOTH, GL_FALSE},
+    {GL_LINE_SMOOTH, GL_FALSE},
+    {GL_PROGRAM_POINT_SIZE, GL_FALSE},
+    {GL_DITHER, GL_FALSE},
+    {GL_TEXTURE_CUBE_MAP_SEAMLESS, GL_FALSE},
+};
+
+// Single integer values, each with its initial value and the call that sets it.
+struct IntegerState {
+  GLenum pname;
+  GLint chain_value;
+};
+const IntegerState kIntegers[] = {
+    {GL_CULL_FACE_MODE, GL_BACK},
+    {GL_FRONT_FACE, GL_CCW},
+    {GL_PROVOKING_VERTEX, GL_LAST_VERTEX_CONVENTION},
+    {GL_CLIP_ORIGIN, GL_LOWER_LEFT},
+    {GL_CLIP_DEPTH_MODE, GL_NEGATIVE_ONE_TO_ONE},
+    {GL_DEPTH_FUNC, GL_LESS},
+    {GL_DEPTH_WRITEMASK, GL_TRUE},
+    {GL_STENCIL_CLEAR_VALUE, 0},
+    {GL_CLAMP_READ_COLOR, GL_FIXED_ONLY},
+    {GL_FRAGMENT_SHADER_DERIVATIVE_HINT, GL_DONT_CARE},
+    {GL_PATCH_VERTICES, 3},
+    {GL_POINT_SPRITE_COORD_ORIGIN, GL_UPPER_LEFT},
+    // The pixel store, for plugins that upload or read back from client memory.
+    {GL_UNPACK_SWAP_BYTES, GL_FALSE},
+    {GL_UNPACK_LSB_FIRST, GL_FALSE},
+    {GL_UNPACK_ROW_LENGTH, 0},
+    {GL_UNPACK_IMAGE_HEIGHT, 0},
+    {GL_UNPACK_SKIP_ROWS, 0},
+    {GL_UNPACK_SKIP_PIXELS, 0},
+    {GL_UNPACK_SKIP_IMAGES, 0},
+    {GL_UNPACK_ALIGNMENT, 4},
+    {GL_UNPACK_COMPRESSED_BLOCK_WIDTH, 0},
+    {GL_UNPACK_COMPRESSED_BLOCK_HEIGHT, 0},
+    {GL_UNPACK_COMPRESSED_BLOCK_DEPTH, 0},
+    {GL_UNPACK_COMPRESSED_BLOCK_SIZE, 0},
+    {GL_PACK_SWAP_BYTES, GL_FALSE},
+    {GL_PACK_LSB_FIRST, GL_FALSE},
+    {GL_PACK_ROW_LENGTH, 0},
+    {GL_PACK_IMAGE_HEIGHT, 0},
+    {GL_PACK_SKIP_ROWS, 0},
+    {GL_PACK_SKIP_PIXELS, 0},
+    {GL_PACK_SKIP_IMAGES, 0},
+    {GL_PACK_ALIGNMENT, 4},
+    {GL_PACK_COMPRESSED_BLOCK_WIDTH, 0},
+    {GL_PACK_COMPRESSED_BLOCK_HEIGHT, 0},
+    {GL_PACK_COMPRESSED_BLOCK_DEPTH, 0},
+    {GL_PACK_COMPRESSED_BLOCK_SIZE, 0},
+};
+constexpr size_t kIntegerCount = sizeof kIntegers / sizeof kIntegers[0];
+
+struct FloatState {
+  GLenum pname;
+  GLfloat chain_value;
+};
+const FloatState kFloats[] = {
+    {GL_POINT_SIZE, 1.0f},
+    {GL_LINE_WIDTH, 1.0f},
+    {GL_POINT_FADE_THRESHOLD_SIZE, 1.0f},
+};
+
+// Clip origin and depth mode are set together; every other integer by its own call.
+void set_integers(const GLint* values) {
+  for (size_t i = 0; i < kIntegerCount; ++i) {
+    const GLenum pname = kIntegers[i].pname;
+    const GLint v = values[i];
+    switch (pname) {
+      case GL_CULL_FACE_MODE: glCullFace(static_cast<GLenum>(v)); break;
+      case GL_FRONT_FACE: glFrontFace(static_cast<GLenum>(v)); break;
+      case GL_PROVOKING_VERTEX: glProvokingVertex(static_cast<GLenum>(v)); break;
+      case GL_CLIP_ORIGIN: glClipControl(static_cast<GLenum>(v), static_cast<GLenum>(values[i + 1])); break;
+      case GL_CLIP_DEPTH_MODE: break;
+      case GL_DEPTH_FUNC: glDepthFunc(static_cast<GLenum>(v)); break;
+      case GL_DEPTH_WRITEMASK: glDepthMask(v ? GL_TRUE : GL_FALSE); break;
+      case GL_STENCIL_CLEAR_VALUE: glClearStencil(v); break;
+      case GL_CLAMP_READ_COLOR: glClampColor(GL_CLAMP_READ_COLOR, static_cast<GLenum>(v)); break;
+      case GL_FRAGMENT_SHADER_DERIVATIVE_HINT: glHint(pname, static_cast<GLenum>(v)); break;
+      case GL_PATCH_VERTICES: glPatchParameteri(GL_PATCH_VERTICES, v); break;
+      case GL_POINT_SPRITE_COORD_ORIGIN: glPointParameteri(pname, v); break;
+      default: glPixelStorei(pname, v); break;  // the rest of the list is the pixel store
+    }
+  }
+}
+
+void set_floats(const GLfloat* values) {
+  glPointSize(values[0]);
+  glLineWidth(values[1]);
+  glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, values[2]);
+}
+
+void set_capability(GLenum cap, GLboolean on) {
+  if (on) glEnable(cap);
+  else glDisable(cap);
+}
+
+void set_capability(GLenum cap, GLuint index, GLboolean on) {
+  if (on) glEnablei(cap, index);
+  else glDisablei(cap, index);
+}
+
+}  // namespace
+
+GlLimits GlLimits::query() {
+  GlLimits limits;
+  auto get = [](GLenum pname) {
+    GLint v = 0;
+    glGetIntegerv(pname, &v);
+    return v;
+  };
+  limits.viewports = std::max(1, get(GL_MAX_VIEWPORTS));
+  limits.draw_buffers = std::max(1, get(GL_MAX_DRAW_BUFFERS));
+  limits.clip_distances = get(GL_MAX_CLIP_DISTANCES);
+  limits.texture_units = std::min(kFreeTextureUnits, get(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS));
+  limits.image_units = std::min(kFreeImageUnits, get(GL_MAX_IMAGE_UNITS));
+  limits.uniform_buffers = std::min(kFreeUniformBuffers, get(GL_MAX_UNIFORM_BUFFER_BINDINGS));
+  limits.storage_buffers = std::min(kFreeStorageBuffers, get(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS));
+  limits.atomic_buffers = std::min(kFreeAtomicBuffers, get(GL_MAX_ATOMIC_COUNTER_BUFFER_BINDINGS));
+  limits.feedback_buffers = get(GL_MAX_TRANSFORM_FEEDBACK_BUFFERS);
+  return limits;
+}
+
+GlStateScope::GlStateScope(const GlLimits& limits) : limits_(limits) {
+  save();
+  set_chain_state();
+}
+
+GlStateScope::~GlStateScope() { restore(); }
+
+void GlStateScope::save() {
+  for (const Capability& c : kCapabilities) enables_.push_back(glIsEnabled(c.cap));
+  for (GLint i = 0; i < limits_.clip_distances; ++i)
+    clip_distances_.push_back(glIsEnabled(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i)));
+  for (GLint i = 0; i < limits_.draw_buffers; ++i) {
+    const GLuint b = static_cast<GLuint>(i);
+    blend_enabled_.push_back(glIsEnabledi(GL_BLEND, b));
+    std::array<GLint, 6> blend{};
+    glGetIntegeri_v(GL_BLEND_EQUATION_RGB, b, &blend[0]);
+    glGetIntegeri_v(GL_BLEND_EQUATION_ALPHA, b, &blend[1]);
+    glGetIntegeri_v(GL_BLEND_SRC_RGB, b, &blend[2]);
+    glGetIntegeri_v(GL_BLEND_DST_RGB, b, &blend[3]);
+    glGetIntegeri_v(GL_BLEND_SRC_ALPHA, b, &blend[4]);
+    glGetIntegeri_v(GL_BLEND_DST_ALPHA, b, &blend[5]);
+    blend_.push_back(blend);
+    std::array<GLboolean, 4> mask{};
+    glGetBooleani_v(GL_COLOR_WRITEMASK, b, mask.data());
+    color_masks_.push_back(mask);
+  }
+  for (GLint i = 0; i < limits_.viewports; ++i) {
+    const GLuint v = static_cast<GLuint>(i);
+    scissor_enabled_.push_back(glIsEnabledi(GL_SCISSOR_TEST, v));
+    std::array<GLfloat, 4> viewport{};
+    glGetFloati_v(GL_VIEWPORT, v, viewport.data());
+    viewports_.push_back(viewport);
+    std::array<GLdouble, 2> range{};
+    glGetDoublei_v(GL_DEPTH_RANGE, v, range.data());
+    depth_ranges_.push_back(range);
+  }
+  for (const IntegerState& s : kIntegers) {
+    GLint v[4] = {0, 0, 0, 0};
+    glGetIntegerv(s.pname, v);
+    integers_.push_back(v[0]);
+  }
+  for (const FloatState& s : kFloats) {
+    GLfloat v[4] = {0, 0, 0, 0};
+    glGetFloatv(s.pname, v);
+    floats_.push_back(v[0]);
+  }
+  glGetIntegerv(GL_POLYGON_MODE, polygon_mode_);
+  const GLenum stencil_names[2][7] = {
+      {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
+       GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK},
+      {GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF, GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL,
+       GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS, GL_STENCIL_BACK_WRITEMASK}};
+  for (int face = 0; face < 2; ++face)
+    for (int i = 0; i < 7; ++i) glGetIntegerv(stencil_names[face][i], &stencil_[face][i]);
+  glGetFloatv(GL_BLEND_COLOR, blend_color_);
+  glGetFloatv(GL_COLOR_CLEAR_VALUE, clear_color_);
+  glGetDoublev(GL_DEPTH_CLEAR_VALUE, &clear_depth_);
+  bindings_.save(limits_);
+}
+
+void GlStateScope::set_chain_state() const {
+  for (const Capability& c : kCapabilities) set_capability(c.cap, c.chain_value);
+  for (GLint i = 0; i < limits_.clip_distances; ++i) glDisable(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
+  // The unindexed calls set every draw buffer and every viewport.
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthRange(0.0, 1.0);
+  GLint integers[kIntegerCount];
+  for (size_t i = 0; i < kIntegerCount; ++i) integers[i] = kIntegers[i].chain_value;
+  set_integers(integers);
+  GLfloat floats[3];
+  for (size_t i = 0; i < 3; ++i) floats[i] = kFloats[i].chain_value;
+  set_floats(floats);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glStencilFunc(GL_ALWAYS, 0, ~0u);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(~0u);
+  glBlendColor(0, 0, 0, 0);
+  glClearColor(0, 0, 0, 0);
+  glClearDepth(1.0);
+  bindings_.set_clean(limits_);
+}
+
+void GlStateScope::restore() const {
+  bindings_.restore();
+  for (size_t i = 0; i < enables_.size(); ++i) set_capability(kCapabilities[i].cap, enables_[i]);
+  for (size_t i = 0; i < clip_distances_.size(); ++i)
+    set_capability(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i), clip_distances_[i]);
+  for (size_t i = 0; i < blend_.size(); ++i) {
+    const GLuint b = static_cast<GLuint>(i);
+    const auto& e = blend_[i];
+    set_capability(GL_BLEND, b, blend_enabled_[i]);
+    glBlendEquationSeparatei(b, static_cast<GLenum>(e[0]), static_cast<GLenum>(e[1]));
+    glBlendFuncSeparatei(b, static_cast<GLenum>(e[2]), static_cast<GLenum>(e[3]), static_cast<GLenum>(e[4]),
+                         static_cast<GLenum>(e[5]));
+    const auto& m = color_masks_[i];
+    glColorMaski(b, m[0], m[1], m[2], m[3]);
+  }
+  for (size_t i = 0; i < viewports_.size(); ++i) {
+    const GLuint v = static_cast<GLuint>(i);
+    set_capability(GL_SCISSOR_TEST, v, scissor_enabled_[i]);
+    glViewportIndexedfv(v, viewports_[i].data());
+    glDepthRangeIndexed(v, depth_ranges_[i][0], depth_ranges_[i][1]);
+  }
+  set_integers(integers_.data());
+  set_floats(floats_.data());
+  glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+  for (int face = 0; face < 2; ++face) {
+    const GLenum which = face == 0 ? GL_FRONT : GL_BACK;
+    const GLint* s = stencil_[face];
+    glStencilFuncSeparate(which, static_cast<GLenum>(s[0]), s[1], static_cast<GLuint>(s[2]));
+    glStencilOpSeparate(which, static_cast<GLenum>(s[3]), static_cast<GLenum>(s[4]), static_cast<GLenum>(s[5]));
+    glStencilMaskSeparate(which, static_cast<GLuint>(s[6]));
+  }
+  glBlendColor(blend_color_[0], blend_color_[1], blend_color_[2], blend_color_[3]);
+  glClearColor(clear_color_[0], clear_color_[1], clear_color_[2], clear_color_[3]);
+  glClearDepth(clear_depth_);
+}
+
+}  // namespace pfx::host

@@ -1,0 +1,91 @@
+// The GL state a chain runs under (docs/sdk.md §1.5): the engine's values are saved, the chain's
+// starting values set, and the engine's put back when the scope ends, so that render() neither
+// depends on nor disturbs what the embedding engine left in its context.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include <glad/gl.h>
+
+namespace pfx::host {
+
+// How many indexed items of each kind are saved, set and restored: the implementation's maximum
+// for those GL keeps per viewport or draw buffer, and the contract's numbers (docs/sdk.md §1.5)
+// for the binding points a plugin may use freely. Queried once per chain.
+struct GlLimits {
+  GLint viewports = 1, draw_buffers = 1, clip_distances = 0;
+  GLint texture_units = 0, image_units = 0, uniform_buffers = 0, storage_buffers = 0, atomic_buffers = 0,
+        feedback_buffers = 0;
+  static GlLimits query();
+};
+
+// The contract's binding points a plugin may use without restoring them (clamped to what the
+// implementation has). GL 4.5 guarantees at least these many of each.
+constexpr GLint kFreeTextureUnits = 16;
+constexpr GLint kFreeImageUnits = 8;
+constexpr GLint kFreeUniformBuffers = 16;
+constexpr GLint kFreeStorageBuffers = 8;
+constexpr GLint kFreeAtomicBuffers = 1;
+
+// Every binding the chain or a plugin may change: framebuffers, vertex array, program, texture
+// and sampler units, image units, indexed and generic buffer bindings, transform feedback.
+class GlBindings {
+ public:
+  void save(const GlLimits& limits);
+  // Unbinds what could reach a plugin by accident (textures, samplers, images and buffers of the
+  // free binding points, pixel and query buffers) and binds the default transform feedback.
+  void set_clean(const GlLimits& limits) const;
+  void restore() const;
+
+ private:
+  struct IndexedBuffer {
+    GLint name = 0;
+    GLint64 start = 0, size = 0;
+  };
+  struct ImageUnit {
+    GLint name = 0, level = 0, layered = 0, layer = 0, access = GL_READ_ONLY, format = GL_R8;
+  };
+  static constexpr int kTargetsPerUnit = 11;
+  GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
+  GLint vertex_array_ = 0, program_ = 0, pipeline_ = 0, active_texture_ = GL_TEXTURE0;
+  GLint transform_feedback_ = 0;
+  std::vector<std::array<GLint, kTargetsPerUnit>> textures_;  // per unit, per target
+  std::vector<GLint> samplers_;
+  std::vector<ImageUnit> images_;
+  std::vector<IndexedBuffer> uniform_buffers_, storage_buffers_, atomic_buffers_, feedback_buffers_;
+  std::vector<GLint> generic_buffers_;  // per target in kGenericBufferTargets
+};
+
+// Raster, per-fragment and pixel-store state, and the bindings, for the life of one render().
+class GlStateScope {
+ public:
+  explicit GlStateScope(const GlLimits& limits);
+  ~GlStateScope();
+  GlStateScope(const GlStateScope&) = delete;
+  GlStateScope& operator=(const GlStateScope&) = delete;
+
+ private:
+  void save();
+  void set_chain_state() const;
+  void restore() const;
+
+  const GlLimits& limits_;
+  std::vector<GLboolean> enables_;            // per capability in the fixed list
+  std::vector<GLboolean> clip_distances_;
+  std::vector<GLboolean> blend_enabled_, scissor_enabled_;
+  std::vector<std::array<GLint, 6>> blend_;   // per draw buffer: equations rgb, alpha; src/dst rgb, alpha
+  std::vector<std::array<GLboolean, 4>> color_masks_;
+  std::vector<std::array<GLfloat, 4>> viewports_;
+  std::vector<std::array<GLdouble, 2>> depth_ranges_;
+  std::vector<GLint> integers_;               // per value in the integer list
+  std::vector<GLfloat> floats_;               // per value in the float list
+  GLint polygon_mode_[2] = {GL_FILL, GL_FILL};
+  GLint stencil_[2][7] = {};                  // front, back: func, ref, value mask, fail, depth fail, pass, write mask
+  GLfloat blend_color_[4] = {}, clear_color_[4] = {};
+  GLdouble clear_depth_ = 1;
+  GlBindings bindings_;
+};
+
+}  // namespace pfx::host
