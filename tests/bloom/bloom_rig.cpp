@@ -150,6 +150,25 @@ Rendered Rig::render(const Picture& picture) {
   return r;
 }
 
+Picture Rig::render_output(const Picture& picture) {
+  const int w = picture.width, h = picture.height;
+  pfx::app::Image img;
+  img.width = w;
+  img.height = h;
+  img.rgba = pfx::app::flip_rows(picture.rgba, w, h, 4);
+  pfx::host::FrameTextures textures;
+  textures.color = pfx::app::upload_color_texture(img);
+  const uint32_t output = pfx::app::create_color_texture(w, h);
+  std::string error;
+  const bool ok = chain_->render(pfx::test::make_frame(w, h), textures, output, &error);
+  INFO(error);
+  REQUIRE(ok);
+  Picture out = from_image(pfx::app::download_color_texture(output, w, h));
+  pfx::app::delete_texture(textures.color);
+  pfx::app::delete_texture(output);
+  return out;
+}
+
 // The tolerance, per pixel and channel:
 //
 //   |gpu - model| <= V * (S * 2^-10 + 2^-7) + |model| * 2^-10

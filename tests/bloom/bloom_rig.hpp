@@ -46,8 +46,12 @@ class Rig {
   // "param=value" for this rig's effect, or a full "effect.param=value".
   void set(const std::string& assignment);
   Rendered render(const Picture& picture);
+  // The chain's output alone (no model, no read-back of the input): for sweeps of many frames.
+  Picture render_output(const Picture& picture);
   pfx::host::Chain& chain() { return *chain_; }
   const std::string& effect() const { return effect_; }
+  // The effect's current parameter values, as the plugin receives them.
+  const pfx_value* values() const { return params_->values(effect_); }
 
  private:
   std::string effect_;

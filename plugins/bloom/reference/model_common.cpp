@@ -65,14 +65,13 @@ void bright_part(const Settings& s, int measure, double c[3]) {
   for (int i = 0; i < 3; ++i) c[i] *= ratio;
 }
 
-Plane box_bright(const Settings& s, int measure, const Plane& frame, int w, int h, int block, const double gain[3],
-                 double cap) {
+Plane box_bright(const Settings& s, int measure, const Plane& frame, int w, int h, int block, int pad_x, int pad_y,
+                 const double gain[3], double cap) {
   Plane out(w, h);
   const double count = static_cast<double>(block) * block;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const int x0 = static_cast<int>(static_cast<long long>(x) * frame.w / w);
-      const int y0 = static_cast<int>(static_cast<long long>(y) * frame.h / h);
+      const int x0 = x * block - pad_x, y0 = y * block - pad_y;
       double sum[3] = {0, 0, 0};
       for (int j = 0; j < block; ++j)
         for (int i = 0; i < block; ++i) {

@@ -49,9 +49,13 @@ double soft_part(const Settings& s, double b);
 void bright_part(const Settings& s, int measure, double c[3]);
 
 // A w x h buffer whose texel (x, y) is the mean bright part of the block x block pixels of the frame
-// from floor((x, y) * frame / (w, h)), black outside the frame, times gain, at most cap.
-Plane box_bright(const Settings& s, int measure, const Plane& frame, int w, int h, int block, const double gain[3],
-                 double cap);
+// from (x, y) * block - (pad_x, pad_y), black outside the frame, times gain, at most cap.
+Plane box_bright(const Settings& s, int measure, const Plane& frame, int w, int h, int block, int pad_x, int pad_y,
+                 const double gain[3], double cap);
+
+// Where the centre of frame pixel (x, y) lies on a grid of texels `scale` frame pixels wide whose
+// texel 0 starts `pad` pixels before the frame, in texels.
+inline double on_grid(int x, int pad, int scale) { return (x + pad + 0.5) / scale; }
 
 // NaN -> 0, +-Inf and beyond -> +-65504: the frame as the composite passes it on.
 double finite_signed(float v);
