@@ -8,7 +8,7 @@
 //
 // mgf (seed 004), buffers of blocks of 4, 8 ... pixels; each Gaussian has deviation 2.5 texels of
 // its buffer and the next buffer is made from the previous blurred one, as in the seed:
-//   bright      color -> blur0              (block average of 4x4 bright parts)
+//   bright      color -> blur0              (block average of 4x4 bright parts; with karis Karis-weighted)
 //   blur_x i    blur i (i = 0) or gauss i-1 (each tap the 2x2 texels it covers) -> blur_tmp i
 //   blur_y i    blur_tmp i -> gauss i
 //   composite   color + sum of w_i * bilinear(gauss i) -> output
@@ -92,6 +92,7 @@ void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& p
                          static_cast<float>(s.strength * s.tint[2]));
       glProgramUniform1f(program, 6, static_cast<float>(kLevelSumMax));
       glProgramUniform2i(program, 7, plan.pad_x, plan.pad_y);
+      glProgramUniform1i(program, 8, mgf && s.karis ? 1 : 0);
       break;
     }
     case PASS_BLUR_X:
@@ -107,6 +108,7 @@ void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& p
     }
     case PASS_GAUSSIAN_COMPOSITE:
       program = programs[PROGRAM_GAUSSIAN_COMPOSITE];
+      set_nonfinite_uniform(program, s);
       glProgramUniform1f(program, 4, static_cast<float>(s.tone_scale));
       glProgramUniform1i(program, 5, context.input_count > 1 ? 1 : 0);
       glProgramUniform1f(program, 6, static_cast<float>(plan.block));
@@ -114,6 +116,7 @@ void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& p
       break;
     case PASS_MGF_COMPOSITE: {
       program = programs[PROGRAM_MGF_COMPOSITE];
+      set_nonfinite_uniform(program, s);
       double weights[kMaxLevels];
       level_weights(s, plan.count, weights);
       float as_float[kMaxLevels];

@@ -118,6 +118,7 @@ pfx_status run_pass(void* self, const pfx_pass_context* context) {
       glProgramUniform3f(program, 5, 1.0f, 1.0f, 1.0f);
       glProgramUniform1f(program, 6, static_cast<float>(kLevelSumMax));
       glProgramUniform2i(program, 7, padding(context->frame->width, g.downscale), padding(context->frame->height, g.downscale));
+      glProgramUniform1i(program, 8, 0);  // plain block averages
       break;
     case GLARE_PASS_STREAK: {
       program = inst->programs[GLARE_PROGRAM_STREAK];
@@ -135,6 +136,7 @@ pfx_status run_pass(void* self, const pfx_pass_context* context) {
     }
     case GLARE_PASS_COMPOSITE:
       program = inst->programs[GLARE_PROGRAM_COMPOSITE];
+      set_nonfinite_uniform(program, g.bright);
       glProgramUniform3f(program, 4, static_cast<float>(g.strength * g.tint[0]), static_cast<float>(g.strength * g.tint[1]),
                          static_cast<float>(g.strength * g.tint[2]));
       glProgramUniform1f(program, 5, static_cast<float>(g.downscale));

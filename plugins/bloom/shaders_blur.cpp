@@ -9,6 +9,7 @@ namespace pfx_bloom::shaders {
 // averaged: the average keeps the light, and no texel is filtered before it is made safe. Block
 // (x, y) starts at pixel (x, y) * block - pad: the buffer is rounded up and the frame centred on it
 // (bloom_levels.hpp), so the blocks tile the frame exactly at any size, the padding reading black.
+// With u_karis (mgf) every pixel is weighted by its Karis weight and the sum divided by the weights'.
 std::string box_bright() {
   return std::string(kHeader) + kBrightCommon + R"glsl(
 layout(binding = 0) uniform sampler2D u_color;
@@ -16,14 +17,21 @@ layout(location = 4) uniform int u_block;
 layout(location = 5) uniform vec3 u_gain;
 layout(location = 6) uniform float u_cap;
 layout(location = 7) uniform ivec2 u_pad;
+layout(location = 8) uniform int u_karis;
 
 void main() {
   ivec2 size = textureSize(u_color, 0);
   ivec2 start = ivec2(gl_FragCoord.xy) * u_block - u_pad;
   vec3 sum = vec3(0.0);
+  float weights = 0.0;
   for (int y = 0; y < u_block; ++y)
-    for (int x = 0; x < u_block; ++x) sum += bright_part(safe_texel(u_color, start + ivec2(x, y), size));
-  o_color = vec4(min(sum / float(u_block * u_block) * u_gain, vec3(u_cap)), 0.0);
+    for (int x = 0; x < u_block; ++x) {
+      vec3 p = bright_part(safe_texel(u_color, start + ivec2(x, y), size));
+      float w = u_karis != 0 ? karis_weight(p) : 1.0;
+      sum += w * p;
+      weights += w;
+    }
+  o_color = vec4(min(sum / weights * u_gain, vec3(u_cap)), 0.0);
 }
 )glsl";
 }

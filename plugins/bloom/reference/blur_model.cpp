@@ -46,7 +46,7 @@ void evaluate_gaussian_model(const Settings& s, uint32_t width, uint32_t height,
                              ModelTrace& trace) {
   const int W = static_cast<int>(width), H = static_cast<int>(height);
   if (s.adds_nothing()) {
-    model::composite(color, W, H, s.tone_scale, output, [](int, int, double add[3]) { add[0] = add[1] = add[2] = 0; });
+    model::composite(color, W, H, s.tone_scale, s.nonfinite, output, [](int, int, double add[3]) { add[0] = add[1] = add[2] = 0; });
     trace.stores = 1;
     return;
   }
@@ -54,14 +54,14 @@ void evaluate_gaussian_model(const Settings& s, uint32_t width, uint32_t height,
   const int w = plan.width[0], h = plan.height[0];
   double gain[3];
   gain_of(s, gain);
-  const Plane bright = model::box_bright(s, model::kMeasurePerChannel, model::safe_frame(color, W, H, s.firefly_clamp),
+  const Plane bright = model::box_bright(s, model::kMeasurePerChannel, model::safe_frame(color, W, H, s.firefly_clamp, s.nonfinite),
                                          w, h, plan.block, plan.pad_x, plan.pad_y, gain, kLevelSumMax);
   const double deviation = gaussian_mode_deviation(s);
   const Plane vertical = blur(bright, w, h, false, deviation, s.half_taps);
   const Plane bloom = blur(vertical, w, h, true, deviation, s.half_taps);
   trace.largest_stored = std::max({model::largest(bright), model::largest(vertical), model::largest(bloom)});
   trace.stores = 4;  // bright, vertical, horizontal, output
-  model::composite(color, W, H, s.tone_scale, output, [&](int x, int y, double add[3]) {
+  model::composite(color, W, H, s.tone_scale, s.nonfinite, output, [&](int x, int y, double add[3]) {
     bilinear(bloom, model::on_grid(x, plan.pad_x, plan.block), model::on_grid(y, plan.pad_y, plan.block), Wrap::Edge,
              add);
   });
@@ -76,8 +76,8 @@ void evaluate_mgf_model(const Settings& s, uint32_t width, uint32_t height, cons
   level_weights(s, plan.count, weights);
   std::vector<Plane> gauss;
   gauss.reserve(plan.count);
-  Plane source = model::box_bright(s, s.measure, model::safe_frame(color, W, H, s.firefly_clamp), plan.width[0],
-                                   plan.height[0], plan.block, plan.pad_x, plan.pad_y, gain, kLevelSumMax);
+  Plane source = model::box_bright(s, s.measure, model::safe_frame(color, W, H, s.firefly_clamp, s.nonfinite), plan.width[0],
+                                   plan.height[0], plan.block, plan.pad_x, plan.pad_y, gain, kLevelSumMax, s.karis);
   for (int i = 0; i < plan.count; ++i) {
     const Plane& from = i == 0 ? source : gauss[i - 1];
     const Plane across = blur(from, plan.width[i], plan.height[i], true, kMgfDeviation, kMgfTaps / 2, i == 0 ? 1.0 : 2.0);
@@ -86,7 +86,7 @@ void evaluate_mgf_model(const Settings& s, uint32_t width, uint32_t height, cons
                                      model::largest(gauss.back())});
   }
   trace.stores = 2 * plan.count + 2;  // bright, two blurs per buffer, output
-  model::composite(color, W, H, 1.0, output, [&](int x, int y, double add[3]) {
+  model::composite(color, W, H, 1.0, s.nonfinite, output, [&](int x, int y, double add[3]) {
     add[0] = add[1] = add[2] = 0;
     for (int i = 0; i < plan.count; ++i) {
       double tap[3];
