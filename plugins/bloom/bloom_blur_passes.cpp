@@ -1,15 +1,15 @@
 // The Gaussian modes as declared passes.
 //
-// gaussian (seed 002), one buffer of frame / downscale:
+// gaussian (seed 002), one buffer of ceil(frame / downscale) blocks (bloom_levels.hpp):
 //   bright      color -> blur0              (block average of each pixel's max(c - threshold, 0))
 //   blur_y0     blur0 -> blur_tmp0          (vertical Gaussian, as the seed: vertical first)
 //   blur_x0     blur_tmp0 -> blur0_out      (horizontal)
 //   composite   color * tone_scale + bilinear(blur0_out) -> output
 //
-// mgf (seed 004), buffers of frame / 4, / 8 ...; each Gaussian has deviation 2.5 texels of its
-// buffer and the next buffer is made from the previous blurred one, as in the seed:
-//   bright      color -> blur0              (block average of 4x4 bright parts)
-//   blur_x i    blur i (i = 0) or gauss i-1 (read at half size: each tap a 2x2 average) -> blur_tmp i
+// mgf (seed 004), buffers of blocks of 4, 8 ... pixels; each Gaussian has deviation 2.5 texels of
+// its buffer and the next buffer is made from the previous blurred one, as in the seed:
+//   bright      color -> blur0              (block average of 4x4 bright parts; with karis Karis-weighted)
+//   blur_x i    blur i (i = 0) or gauss i-1 (each tap the 2x2 texels it covers) -> blur_tmp i
 //   blur_y i    blur_tmp i -> gauss i
 //   composite   color + sum of w_i * bilinear(gauss i) -> output
 #include "bloom_passes.hpp"
@@ -31,7 +31,7 @@ void declare_bright(DeclarationBuilder& out, const LevelPlan& plan) {
   out.pass("bright", kBlurNames[0], {frame_texels()}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, pass_tag(PASS_BOX_BRIGHT, 0));
 }
 
-void set_blur_uniforms(GLuint program, double deviation, int half_taps, bool horizontal) {
+void set_blur_uniforms(GLuint program, double deviation, int half_taps, bool horizontal, bool finer_source) {
   double weights[kMaxHalfTaps + 1];
   gaussian_weights(deviation, half_taps, weights);
   float as_float[kMaxHalfTaps + 1];
@@ -39,6 +39,7 @@ void set_blur_uniforms(GLuint program, double deviation, int half_taps, bool hor
   glProgramUniform2i(program, 4, horizontal ? 1 : 0, horizontal ? 0 : 1);
   glProgramUniform1i(program, 5, half_taps);
   glProgramUniform1fv(program, 6, half_taps + 1, as_float);
+  glProgramUniform1i(program, 520, finer_source ? 1 : 0);
 }
 
 }  // namespace
@@ -86,10 +87,12 @@ void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& p
       // seed 002 thresholds every channel on its own; the mgf's seed leaves the bright pass open,
       // so it takes the bloom's own (the chain's, with its measure).
       set_bright_uniforms(program, s, mgf ? -1 : 2);
-      glProgramUniform1i(program, 4, mgf ? 4 : s.downscale);
+      glProgramUniform1i(program, 4, plan.block);
       glProgramUniform3f(program, 5, static_cast<float>(s.strength * s.tint[0]), static_cast<float>(s.strength * s.tint[1]),
                          static_cast<float>(s.strength * s.tint[2]));
       glProgramUniform1f(program, 6, static_cast<float>(kLevelSumMax));
+      glProgramUniform2i(program, 7, plan.pad_x, plan.pad_y);
+      glProgramUniform1i(program, 8, mgf && s.karis ? 1 : 0);
       break;
     }
     case PASS_BLUR_X:
@@ -98,22 +101,29 @@ void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& p
       const bool x = tag_kind(context.user_tag) == PASS_BLUR_X;
       const double deviation = mgf ? kMgfDeviation : gaussian_mode_deviation(s);
       const int half_taps = mgf ? kMgfTaps / 2 : s.half_taps;
-      set_blur_uniforms(program, deviation, half_taps, x);
+      // mgf's buffer i > 0 is made by its first (horizontal) blur, from the finer buffer i - 1.
+      const bool finer_source = mgf && x && tag_index(context.user_tag) > 0;
+      set_blur_uniforms(program, deviation, half_taps, x, finer_source);
       break;
     }
     case PASS_GAUSSIAN_COMPOSITE:
       program = programs[PROGRAM_GAUSSIAN_COMPOSITE];
+      set_nonfinite_uniform(program, s);
       glProgramUniform1f(program, 4, static_cast<float>(s.tone_scale));
       glProgramUniform1i(program, 5, context.input_count > 1 ? 1 : 0);
+      glProgramUniform1f(program, 6, static_cast<float>(plan.block));
+      glProgramUniform2f(program, 7, static_cast<float>(plan.pad_x), static_cast<float>(plan.pad_y));
       break;
     case PASS_MGF_COMPOSITE: {
       program = programs[PROGRAM_MGF_COMPOSITE];
+      set_nonfinite_uniform(program, s);
       double weights[kMaxLevels];
       level_weights(s, plan.count, weights);
       float as_float[kMaxLevels];
       for (int i = 0; i < plan.count; ++i) as_float[i] = static_cast<float>(weights[i]);
       glProgramUniform1i(program, 4, plan.count);
       glProgramUniform1fv(program, 5, plan.count, as_float);
+      glProgramUniform2f(program, 20, static_cast<float>(plan.pad_x), static_cast<float>(plan.pad_y));
       break;
     }
     default: return;

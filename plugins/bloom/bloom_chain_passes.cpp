@@ -1,6 +1,7 @@
 // The pyramid modes as declared passes (chain: seed 000; chain13: Jimenez's 13 taps).
 //
-//   bright      color   -> level0            (5 taps, or 13 with a Karis average, x strength/levels)
+//   bright      color   -> level0            (5 taps, or 13 with a Karis average, x strength/levels;
+//                                              chain with karis: the 5 taps Karis-weighted)
 //   down i      level i-1 -> level i          (16 or 13 bilinear taps, clamp-to-border)   i = 1..L-1
 //   up i        level i+1 -> level i, added   (3x3 tent from 4 taps, clamp-to-edge)       i = L-2..0
 //   composite   color + tent(level0) -> output
@@ -44,11 +45,15 @@ void run_chain_pass(const GLuint* programs, const Settings& s, const LevelPlan& 
       glProgramUniform3f(program, 4, static_cast<float>(per_level * s.tint[0]), static_cast<float>(per_level * s.tint[1]),
                          static_cast<float>(per_level * s.tint[2]));
       glProgramUniform1f(program, 5, static_cast<float>(kLevelSumMax / plan.count));
+      if (!thirteen) glProgramUniform1i(program, 6, s.karis ? 1 : 0);
       break;
     }
     case PASS_DOWN: program = programs[thirteen ? PROGRAM_DOWN13 : PROGRAM_DOWN]; break;
     case PASS_UP: program = programs[PROGRAM_UP]; break;
-    case PASS_COMPOSITE: program = programs[PROGRAM_COMPOSITE]; break;
+    case PASS_COMPOSITE:
+      program = programs[PROGRAM_COMPOSITE];
+      set_nonfinite_uniform(program, s);
+      break;
     default: return;
   }
   glProgramUniform2f(program, 0, static_cast<float>(context.output_width), static_cast<float>(context.output_height));

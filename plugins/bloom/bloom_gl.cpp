@@ -44,7 +44,10 @@ void set_bright_uniforms(GLuint program, const Settings& s, int measure_override
   glProgramUniform2f(program, 1, static_cast<float>(s.threshold), static_cast<float>(s.knee));
   glProgramUniform1i(program, 2, measure_override >= 0 ? measure_override : s.measure);
   glProgramUniform1f(program, 3, static_cast<float>(s.firefly_clamp));
+  set_nonfinite_uniform(program, s);
 }
+
+void set_nonfinite_uniform(GLuint program, const Settings& s) { glProgramUniform1i(program, 600, s.nonfinite); }
 
 void draw_fullscreen(GLuint program) {
   glUseProgram(program);

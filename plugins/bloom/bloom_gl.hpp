@@ -29,7 +29,11 @@ struct ProgramSpec {
 // ones built so far left in out for the caller to delete. Never throws.
 bool build_programs(const pfx_host* host, const ProgramSpec* specs, int count, GLuint* out);
 
-// The bright programs' shared uniforms (locations 1-3, shaders_common.cpp); measure_override
+// Every program that reads the frame: what a non-finite pixel counts as (location 600, past the
+// blur program's 512 weights; shaders_common.cpp).
+void set_nonfinite_uniform(GLuint program, const Settings& s);
+
+// The bright programs' shared uniforms (locations 1-3 and 600, shaders_common.cpp); measure_override
 // >= 0 replaces the settings' measure (2: every channel on its own, as seed 002).
 void set_bright_uniforms(GLuint program, const Settings& s, int measure_override = -1);
 

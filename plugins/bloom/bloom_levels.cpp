@@ -10,7 +10,24 @@ namespace {
 
 int fraction_of(int size, int divisor) { return std::max(1, size / divisor); }
 
+void set_block_grid(LevelPlan& plan, uint32_t frame_width, uint32_t frame_height, int block) {
+  const int w = static_cast<int>(frame_width), h = static_cast<int>(frame_height);
+  plan.block = block;
+  plan.pad_x = padding_before(w, block);
+  plan.pad_y = padding_before(h, block);
+  plan.width[0] = blocks_covering(w, block);
+  plan.height[0] = blocks_covering(h, block);
+  for (int i = 1; i < plan.count; ++i) {
+    plan.width[i] = blocks_covering(plan.width[i - 1], 2);
+    plan.height[i] = blocks_covering(plan.height[i - 1], 2);
+  }
+}
+
 }  // namespace
+
+int blocks_covering(int frame, int block) { return std::max(1, (frame + block - 1) / block); }
+
+int padding_before(int frame, int block) { return (blocks_covering(frame, block) * block - frame) / 2; }
 
 int max_levels(uint32_t frame_width, uint32_t frame_height, int first_divisor) {
   int w = fraction_of(static_cast<int>(frame_width), first_divisor);
@@ -53,21 +70,23 @@ LevelPlan plan_for(const Settings& s, uint32_t frame_width, uint32_t frame_heigh
   if (s.mode == MODE_GAUSSIAN) {
     LevelPlan plan;
     plan.count = 1;
-    plan.width[0] = fraction_of(static_cast<int>(frame_width), s.downscale);
-    plan.height[0] = fraction_of(static_cast<int>(frame_height), s.downscale);
+    set_block_grid(plan, frame_width, frame_height, s.downscale);
     return plan;
   }
-  LevelPlan plan = plan_levels(frame_width, frame_height, s.levels, s.auto_min_size, s.mode == MODE_MGF ? 4 : 2);
-  if (s.levels > 0 || s.auto_min_share <= 0) return plan;
-  // The share rule: stop before the first level whose own share would fall below the minimum.
-  for (int n = 2; n <= plan.count; ++n) {
-    double weights[kMaxLevels];
-    level_weights(s, n, weights);
-    if (weights[n - 1] < s.auto_min_share) {
-      plan.count = n - 1;
-      break;
+  const bool mgf = s.mode == MODE_MGF;
+  LevelPlan plan = plan_levels(frame_width, frame_height, s.levels, s.auto_min_size, mgf ? 4 : 2);
+  if (s.levels <= 0 && s.auto_min_share > 0) {
+    // The share rule: stop before the first level whose own share would fall below the minimum.
+    for (int n = 2; n <= plan.count; ++n) {
+      double weights[kMaxLevels];
+      level_weights(s, n, weights);
+      if (weights[n - 1] < s.auto_min_share) {
+        plan.count = n - 1;
+        break;
+      }
     }
   }
+  if (mgf) set_block_grid(plan, frame_width, frame_height, 4);
   return plan;
 }
 

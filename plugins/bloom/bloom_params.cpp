@@ -75,6 +75,12 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
          "(Kawase's kernel e^-(0.25r)^2 + 2e^-(0.5r)^2 + 4e^-r^2 ...: 2). The weights are normalised "
          "so all buffers together carry strength x the light above the threshold.",
          "", "Multi-Gaussian", PFX_PARAM_FLOAT, 0.1, 10, 0.5, 4, 0.1, {{2.0}}),
+    nonfinite_param(),
+    pfx::desc::param("karis", "Karis average",
+         "chain and mgf: weight every tap of the first downsample by 1 / (1 + its luminance) (Karis), as "
+         "chain13 does, so a lone very bright pixel (a firefly) cannot outshine its neighbours. Takes "
+         "light from small bright details; off keeps the seeds' plain averages.",
+         "", "Bright pass", PFX_PARAM_BOOL, 0, 1, 0, 1, 1, {{0.0}}),
 };
 
 bool Settings::adds_nothing() const {
@@ -102,6 +108,8 @@ Settings settings_from(const pfx_value* values) {
   s.downscale = static_cast<int>(values[PARAM_DOWNSCALE].v[0]);
   s.tone_scale = values[PARAM_TONE_SCALE].v[0];
   s.mgf_ratio = values[PARAM_MGF_RATIO].v[0];
+  s.nonfinite = static_cast<int>(values[PARAM_NONFINITE].v[0]);
+  s.karis = values[PARAM_KARIS].v[0] != 0;
   return s;
 }
 

@@ -25,11 +25,17 @@ enum Param : uint32_t {
   PARAM_DOWNSCALE,
   PARAM_TONE_SCALE,
   PARAM_MGF_RATIO,
+  PARAM_NONFINITE,
+  PARAM_KARIS,
   PARAM_COUNT
 };
 
 enum Mode : int { MODE_CHAIN = 0, MODE_CHAIN13 = 1, MODE_GAUSSIAN = 2, MODE_MGF = 3, MODE_COUNT = 4 };
 enum Measure : int { MEASURE_MAX_RGB = 0, MEASURE_LUMINANCE = 1 };
+// What a pixel holding NaN or +-Inf in R, G or B counts as, before any filtering. zero: black, the
+// whole pixel (a renderer's failed sample carries no light; its alpha, if not finite, becomes 0 on
+// its own). clamp: NaN -> 0 and +-Inf -> +-65504 per channel, so +Inf blooms as the firefly clamp.
+enum Nonfinite : int { NONFINITE_ZERO = 0, NONFINITE_CLAMP = 1 };
 
 // The mode names, as the enum items spell them (for messages and reports).
 const char* mode_name(int mode);
@@ -67,6 +73,8 @@ struct Settings {
   int downscale = 4;       // gaussian
   double tone_scale = 1.0; // gaussian
   double mgf_ratio = 2.0;  // mgf: each coarser buffer's light over the finer one's
+  int nonfinite = NONFINITE_ZERO;
+  bool karis = false;      // chain, mgf: the first downsample Karis-weighted (chain13 always is)
 
   // Strength 0, a black tint or a zero clamp: no light is added.
   bool adds_nothing() const;

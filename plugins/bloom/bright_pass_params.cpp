@@ -9,6 +9,9 @@ namespace {
 
 const pfx_enum_item kMeasureItems[] = {{"max_rgb", "Largest of R, G, B (the seed's)"},
                                        {"luminance", "Rec. 709 luminance"}};
+const pfx_enum_item kNonfiniteItems[] = {
+    {"zero", "A pixel with NaN or +-Inf in R, G or B is black: it adds no light and shows black"},
+    {"clamp", "NaN -> 0, +-Inf -> +-65504 per channel: +Inf blooms as the firefly clamp"}};
 
 }  // namespace
 
@@ -36,9 +39,20 @@ pfx_param_desc measure_param(const char* tooltip) {
 
 pfx_param_desc firefly_clamp_param() {
   return pfx::desc::param("firefly_clamp", "Firefly clamp",
-                          "Every colour channel is clamped to this before the bright pass, so single very bright (or "
-                          "infinite) pixels cannot dominate. Not-a-number pixels count as black.",
+                          "Every colour channel is clamped to this before the bright pass, so single very bright "
+                          "pixels cannot dominate (with nonfinite=clamp, infinite ones too).",
                           "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 1, kHalfMax, 1, {{65472.0}});
+}
+
+pfx_param_desc nonfinite_param() {
+  return pfx::desc::with_items(
+      pfx::desc::param("nonfinite", "Non-finite pixels",
+                       "What a pixel holding NaN or +-Inf (a renderer's failed sample) counts as, before any "
+                       "filtering. zero: the whole pixel is black, in the light it spreads and in the output. "
+                       "clamp: NaN counts as 0 and +-Inf as +-65504 channel by channel, so +Inf blooms as the "
+                       "brightest light the firefly clamp allows.",
+                       "", "Bright pass", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{NONFINITE_ZERO}}),
+      kNonfiniteItems, 2);
 }
 
 }  // namespace pfx_bloom

@@ -12,5 +12,6 @@ pfx_param_desc knee_param();
 // tooltip: the effect's own (which modes use the measure differs).
 pfx_param_desc measure_param(const char* tooltip);
 pfx_param_desc firefly_clamp_param();
+pfx_param_desc nonfinite_param();
 
 }  // namespace pfx_bloom

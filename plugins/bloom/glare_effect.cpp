@@ -1,6 +1,7 @@
 // The "glare" effect on the GPU: seed 004's star streaks as declared passes.
 //
-//   bright        color -> bright            (block average of the bloom's bright part, frame / 1, 2, 4)
+//   bright        color -> bright            (block average of the bloom's bright part: blocks of 1, 2 or
+//                                              4 pixels covering the frame, rounded up, bloom_levels.hpp)
 //   streak j.i    bright or streak_tmp -> ... (16 taps b*s texels along direction j, b = 4^i, i = 0..2;
 //                                              pass 2 adds into streaks)          j = 0..streaks-1
 //   composite     color + strength * tint * bilinear(streaks) -> output
@@ -17,6 +18,7 @@
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "bloom_gl.hpp"
+#include "bloom_levels.hpp"
 #include "bloom_shaders.hpp"
 #include "declaration_builder.hpp"
 #include "glare_params.hpp"
@@ -64,10 +66,8 @@ pfx_status create(const pfx_host* host, void** out) {
   return PFX_OK;
 }
 
-int buffer_side(uint32_t frame_side, int downscale) {
-  const int side = static_cast<int>(frame_side) / downscale;
-  return side > 0 ? side : 1;
-}
+int buffer_side(uint32_t frame_side, int downscale) { return blocks_covering(static_cast<int>(frame_side), downscale); }
+int padding(uint32_t frame_side, int downscale) { return padding_before(static_cast<int>(frame_side), downscale); }
 
 pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   Instance* inst = static_cast<Instance*>(self);
@@ -117,6 +117,8 @@ pfx_status run_pass(void* self, const pfx_pass_context* context) {
       glProgramUniform1i(program, 4, g.downscale);
       glProgramUniform3f(program, 5, 1.0f, 1.0f, 1.0f);
       glProgramUniform1f(program, 6, static_cast<float>(kLevelSumMax));
+      glProgramUniform2i(program, 7, padding(context->frame->width, g.downscale), padding(context->frame->height, g.downscale));
+      glProgramUniform1i(program, 8, 0);  // plain block averages
       break;
     case GLARE_PASS_STREAK: {
       program = inst->programs[GLARE_PROGRAM_STREAK];
@@ -134,8 +136,12 @@ pfx_status run_pass(void* self, const pfx_pass_context* context) {
     }
     case GLARE_PASS_COMPOSITE:
       program = inst->programs[GLARE_PROGRAM_COMPOSITE];
+      set_nonfinite_uniform(program, g.bright);
       glProgramUniform3f(program, 4, static_cast<float>(g.strength * g.tint[0]), static_cast<float>(g.strength * g.tint[1]),
                          static_cast<float>(g.strength * g.tint[2]));
+      glProgramUniform1f(program, 5, static_cast<float>(g.downscale));
+      glProgramUniform2f(program, 6, static_cast<float>(padding(context->frame->width, g.downscale)),
+                         static_cast<float>(padding(context->frame->height, g.downscale)));
       break;
     default: return PFX_INVALID_ARGUMENT;
   }

@@ -44,6 +44,7 @@ const pfx_param_desc kGlareParams[GLARE_PARAM_COUNT] = {
                     "Resolution the streaks are drawn at: lower is faster and softer across the streak.",
                     "", "Glare", PFX_PARAM_ENUM, 0, 2, 0, 2, 1, {{0}}),
                kResolutionItems, 3),
+    nonfinite_param(),
 };
 
 void GlareSettings::direction(int j, double* dx, double* dy) const {
@@ -65,6 +66,7 @@ GlareSettings glare_settings_from(const pfx_value* v) {
   g.bright.knee = v[GLARE_KNEE].v[0] < g.bright.threshold ? v[GLARE_KNEE].v[0] : g.bright.threshold;
   g.bright.measure = static_cast<int>(v[GLARE_MEASURE].v[0]);
   g.bright.firefly_clamp = v[GLARE_FIREFLY_CLAMP].v[0];
+  g.bright.nonfinite = static_cast<int>(v[GLARE_NONFINITE].v[0]);
   g.strength = v[GLARE_STRENGTH].v[0];
   for (int c = 0; c < 3; ++c) g.tint[c] = v[GLARE_TINT].v[c];
   g.streaks = 4 + 2 * static_cast<int>(v[GLARE_STREAKS].v[0]);

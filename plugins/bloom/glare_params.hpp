@@ -22,6 +22,7 @@ enum GlareParam : uint32_t {
   GLARE_ANGLE,
   GLARE_ATTENUATION,
   GLARE_RESOLUTION,
+  GLARE_NONFINITE,
   GLARE_PARAM_COUNT
 };
 
@@ -33,7 +34,7 @@ constexpr int kMaxStreaks = 8;
 extern const pfx_param_desc kGlareParams[GLARE_PARAM_COUNT];
 
 struct GlareSettings {
-  Settings bright;          // threshold, knee, measure, firefly_clamp (its other fields are unused)
+  Settings bright;          // threshold, knee, measure, firefly_clamp, nonfinite (its other fields are unused)
   double strength = 1.0;
   double tint[3] = {1.0, 1.0, 1.0};
   int streaks = 4;          // 4, 6 or 8

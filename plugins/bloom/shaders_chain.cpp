@@ -45,19 +45,26 @@ vec3 tent(sampler2D s) {
 }  // namespace
 
 // The seed's five taps: the centre (weight 4) and one texel off along each diagonal (weight 1),
-// each tap's bright part, / 8.
+// each tap's bright part, / 8. With u_karis each weight is also multiplied by the tap's Karis
+// weight and the sum divided by the weights' sum.
 std::string bright() {
   return std::string(kHeader) + "#define N 4\n" + kBrightCommon + kTexelSquare + R"glsl(
+layout(location = 6) uniform int u_karis;
+
 void main() {
   vec3 t[N][N];
   vec2 f;
   fetch_square(t, f);
-  vec3 sum = 4.0 * bright_part(tap(t, 1, 1, f));
-  sum += bright_part(tap(t, 0, 2, f));
-  sum += bright_part(tap(t, 2, 2, f));
-  sum += bright_part(tap(t, 0, 0, f));
-  sum += bright_part(tap(t, 2, 0, f));
-  o_color = vec4(min(sum * (1.0 / 8.0) * u_gain, vec3(u_cap)), 0.0);
+  const ivec2 at[5] = ivec2[5](ivec2(1, 1), ivec2(0, 2), ivec2(2, 2), ivec2(0, 0), ivec2(2, 0));
+  vec3 sum = vec3(0.0);
+  float weights = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    vec3 p = bright_part(tap(t, at[i].x, at[i].y, f));
+    float w = (i == 0 ? 4.0 : 1.0) * (u_karis != 0 ? karis_weight(p) : 1.0);
+    sum += w * p;
+    weights += w;
+  }
+  o_color = vec4(min(sum / weights * u_gain, vec3(u_cap)), 0.0);
 }
 )glsl";
 }
@@ -109,9 +116,7 @@ void main() {
 std::string bright13() {
   return std::string(kHeader) + "#define N 6\n" + kBrightCommon + kTexelSquare + R"glsl(
 vec3 karis(vec3 a, vec3 b, vec3 c, vec3 d) {
-  const vec3 luma = vec3(0.2126, 0.7152, 0.0722);
-  float wa = 1.0 / (1.0 + dot(a, luma)), wb = 1.0 / (1.0 + dot(b, luma));
-  float wc = 1.0 / (1.0 + dot(c, luma)), wd = 1.0 / (1.0 + dot(d, luma));
+  float wa = karis_weight(a), wb = karis_weight(b), wc = karis_weight(c), wd = karis_weight(d);
   return (a * wa + b * wb + c * wc + d * wd) / (wa + wb + wc + wd);
 }
 

@@ -21,16 +21,20 @@ void main() {
 )glsl";
 }
 
-// The streaks upsampled with one bilinear tap (clamp-to-edge), times strength x tint, on the frame.
+// The streaks upsampled with one bilinear tap (clamp-to-edge) at the pixel's place on the block
+// grid, times strength x tint, on the frame.
 std::string glare_composite() {
   return std::string(kHeader) + kFiniteFrame + R"glsl(
 layout(binding = 0) uniform sampler2D u_color;
 layout(binding = 1) uniform sampler2D u_streaks;
 layout(location = 4) uniform vec3 u_gain;
+layout(location = 5) uniform float u_block;
+layout(location = 6) uniform vec2 u_pad;
 
 void main() {
   vec4 c = finite_frame(texelFetch(u_color, ivec2(gl_FragCoord.xy), 0));
-  vec3 add = u_gain * texture(u_streaks, gl_FragCoord.xy / u_out_size).rgb;
+  vec2 uv = (gl_FragCoord.xy + u_pad) / (u_block * vec2(textureSize(u_streaks, 0)));
+  vec3 add = u_gain * texture(u_streaks, uv).rgb;
   o_color = vec4(min(c.rgb + add, vec3(65504.0)), c.a);
 }
 )glsl";

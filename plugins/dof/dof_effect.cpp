@@ -205,6 +205,7 @@ void set_common_uniforms(GLuint program, const pfx_frame& frame, const Settings&
   glProgramUniform2f(program, 1, frame.camera.near_plane, infinite ? 0.0f : frame.camera.far_plane);
   glProgramUniform1i(program, 2, infinite ? 1 : 0);
   glProgramUniform1f(program, 3, static_cast<float>(s.max_coc));
+  glProgramUniform1i(program, 30, s.nonfinite);
 }
 
 void set_lens_uniforms(GLuint program, const pfx_frame& frame, const Settings& s) {

@@ -13,6 +13,10 @@ const pfx_enum_item kAutofocusItems[] = {
     {"off", "Focus at the focus distance"},
     {"point", "Focus at the depth under the focus point"}};
 
+const pfx_enum_item kNonfiniteItems[] = {
+    {"zero", "A pixel with NaN or +-Inf in R, G or B is black: it spreads no colour and shows black"},
+    {"clamp", "NaN -> 0, +-Inf -> +-65504 per channel: +Inf spreads as the brightest colour"}};
+
 const pfx_enum_item kResolutionItems[] = {
     {"half", "Gather at half resolution, composite at full"},
     {"full", "Gather at full resolution"}};
@@ -71,6 +75,14 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                          "half-size copy.",
                          "", "Quality", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{RESOLUTION_HALF}}),
         kResolutionItems, 2),
+    pfx::desc::with_items(
+        pfx::desc::param("nonfinite", "Non-finite pixels",
+                         "What a pixel holding NaN or +-Inf (a renderer's failed sample) counts as, before any "
+                         "filtering. zero: the whole pixel is black, in what the blur spreads and in the output. "
+                         "clamp: NaN counts as 0 and +-Inf as +-65504 channel by channel, so a +Inf pixel spreads "
+                         "over its whole circle of confusion at that brightness.",
+                         "", "Quality", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{NONFINITE_ZERO}}),
+        kNonfiniteItems, 2),
 };
 
 Settings settings_from(const pfx_value* values) {
@@ -85,6 +97,7 @@ Settings settings_from(const pfx_value* values) {
   s.max_coc = values[PARAM_MAX_COC].v[0];
   s.samples = static_cast<int>(values[PARAM_SAMPLES].v[0]);
   s.resolution = static_cast<int>(values[PARAM_RESOLUTION].v[0]);
+  s.nonfinite = static_cast<int>(values[PARAM_NONFINITE].v[0]);
   return s;
 }
 

@@ -19,12 +19,17 @@ enum Param : uint32_t {
   PARAM_MAX_COC,
   PARAM_SAMPLES,
   PARAM_RESOLUTION,
+  PARAM_NONFINITE,
   PARAM_COUNT
 };
 
 enum Mode : int { MODE_SEED = 0, MODE_GATHER = 1 };
 enum Autofocus : int { AUTOFOCUS_OFF = 0, AUTOFOCUS_POINT = 1 };
 enum Resolution : int { RESOLUTION_HALF = 0, RESOLUTION_FULL = 1 };
+// What a pixel holding NaN or +-Inf in R, G or B counts as, as the bloom plugin's parameter of the
+// same name: zero: black, the whole pixel (a non-finite alpha 0 on its own); clamp: NaN -> 0 and
+// +-Inf -> +-65504 channel by channel.
+enum Nonfinite : int { NONFINITE_ZERO = 0, NONFINITE_CLAMP = 1 };
 
 // Hard limits, shared by the descriptors and the tests that probe them.
 constexpr double kMinFocusDistance = 0.001;  // m: 1 mm, closer than any lens focuses
@@ -47,6 +52,7 @@ struct Settings {
   double max_coc = 32.0;       // px, a diameter at the frame's resolution
   int samples = 32;
   int resolution = RESOLUTION_HALF;
+  int nonfinite = NONFINITE_ZERO;
 };
 
 Settings settings_from(const pfx_value* values);

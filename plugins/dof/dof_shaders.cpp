@@ -13,6 +13,7 @@ layout(location = 0) uniform int u_encoding;
 layout(location = 1) uniform vec2 u_planes;
 layout(location = 2) uniform int u_far_infinite;
 layout(location = 3) uniform float u_max_coc;
+layout(location = 30) uniform int u_nonfinite;  // Nonfinite (dof_params.hpp)
 layout(location = 0) out vec4 o_color;
 
 const float k_half_max = 65504.0;
@@ -21,8 +22,15 @@ bool is_nan(float v) { return (floatBitsToUint(v) & 0x7fffffffu) > 0x7f800000u; 
 bool is_inf(float v) { return (floatBitsToUint(v) & 0x7fffffffu) == 0x7f800000u; }
 float infinity() { return uintBitsToFloat(0x7f800000u); }
 
+// nonfinite zero: a pixel with NaN or +-Inf in R, G or B is black and a non-finite alpha 0 (alone);
+// clamp: NaN -> 0 per channel, +-Inf to +-65504 by the clamp.
 vec4 safe_color(vec4 c) {
-  bvec4 nan = greaterThan(floatBitsToUint(c) & uvec4(0x7fffffffu), uvec4(0x7f800000u));
+  uvec4 bits = floatBitsToUint(c) & uvec4(0x7fffffffu);
+  if (u_nonfinite == 0) {
+    if (any(greaterThanEqual(bits.rgb, uvec3(0x7f800000u)))) c.rgb = vec3(0.0);
+    if (bits.a >= 0x7f800000u) c.a = 0.0;
+  }
+  bvec4 nan = greaterThan(bits, uvec4(0x7f800000u));
   return clamp(mix(c, vec4(0.0), nan), vec4(-k_half_max), vec4(k_half_max));
 }
 

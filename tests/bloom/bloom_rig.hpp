@@ -36,6 +36,7 @@ struct Rendered {
   std::string mode;  // the bloom mode, or "glare"
   double frame_scale = 1;  // the gaussian mode's tone scale
   int levels = 0;  // levels the pyramid used (0 when no pass ran)
+  int nonfinite = pfx_bloom::NONFINITE_ZERO;  // what a non-finite pixel counted as
   size_t passes = 0;
 };
 
@@ -46,8 +47,12 @@ class Rig {
   // "param=value" for this rig's effect, or a full "effect.param=value".
   void set(const std::string& assignment);
   Rendered render(const Picture& picture);
+  // The chain's output alone (no model, no read-back of the input): for sweeps of many frames.
+  Picture render_output(const Picture& picture);
   pfx::host::Chain& chain() { return *chain_; }
   const std::string& effect() const { return effect_; }
+  // The effect's current parameter values, as the plugin receives them.
+  const pfx_value* values() const { return params_->values(effect_); }
 
  private:
   std::string effect_;
@@ -65,7 +70,8 @@ void require_matches_model(const Rendered& r);
 double worst_error_ratio(const Picture& output, const Picture& model, const pfx_bloom::ModelTrace& trace);
 // rms(gpu - model) over its allowed value (S * 2^-10 + 2^-7) * rms(bloom) (<= 1 passes).
 double rms_error_ratio(const Picture& output, const Picture& model, const Picture& input,
-                       const pfx_bloom::ModelTrace& trace, double frame_scale);
+                       const pfx_bloom::ModelTrace& trace, double frame_scale,
+                       int nonfinite = pfx_bloom::NONFINITE_ZERO);
 
 // Every mode of the bloom effect, as the mode parameter spells them.
 inline const char* const kModes[] = {"chain", "chain13", "gaussian", "mgf"};

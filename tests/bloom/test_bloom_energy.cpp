@@ -22,7 +22,7 @@ constexpr int kW = 640, kH = 360;
 
 // strength x the light above the threshold, pixel by pixel, under the mode's measure.
 double thresholded_light(const pfx_bloom::Settings& s, int measure, const std::vector<float>& frame) {
-  const pfx_bloom::model::Plane safe = pfx_bloom::model::safe_frame(frame.data(), kW, kH, s.firefly_clamp);
+  const pfx_bloom::model::Plane safe = pfx_bloom::model::safe_frame(frame.data(), kW, kH, s.firefly_clamp, s.nonfinite);
   double sum = 0;
   for (size_t i = 0; i < safe.rgb.size(); i += 3) {
     double c[3] = {safe.rgb[i], safe.rgb[i + 1], safe.rgb[i + 2]};

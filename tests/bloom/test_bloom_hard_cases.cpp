@@ -93,10 +93,13 @@ TEST_CASE("a single NaN pixel does not spread beyond the kernel's reach", "[bloo
   }
 }
 
-TEST_CASE("a +Inf pixel is clamped before any target is written and reaches no further than the kernel", "[bloom][hard]") {
+TEST_CASE("nonfinite=clamp: a +Inf pixel is clamped before any target is written and reaches no further than the kernel",
+          "[bloom][hard][nonfinite]") {
+  // The behaviour before the nonfinite parameter, kept as its clamp setting.
   for (const char* mode : kVariants) {
     INFO(mode);
     Rig rig = rig_for(mode);
+    rig.set("nonfinite=clamp");
     if (rig.effect() == "bloom") rig.set("levels=2");
     const Picture base = scene(160, 120);
     const std::vector<bool> reach = reach_of(rig, base, 100, 70);
@@ -113,10 +116,26 @@ TEST_CASE("a +Inf pixel is clamped before any target is written and reaches no f
   }
 }
 
-TEST_CASE("a -Inf pixel becomes -65504 there and adds no light", "[bloom][hard]") {
+TEST_CASE("a +Inf pixel is black by default: the output is that of the pixel zeroed, everywhere", "[bloom][hard][nonfinite]") {
   for (const char* mode : kVariants) {
     INFO(mode);
     Rig rig = rig_for(mode);
+    Picture zeroed = scene(40, 30), with_inf = zeroed;
+    // One channel is enough: a renderer's sample with an infinite channel is dropped whole.
+    with_inf.at(20, 15)[1] = kInf;
+    for (int c = 0; c < 3; ++c) zeroed.at(20, 15)[c] = 0.0f;
+    const Rendered a = rig.render(with_inf), b = rig.render(zeroed);
+    REQUIRE(std::isinf(a.input.at(20, 15)[1]));
+    require_matches_model(a);
+    for (size_t i = 0; i < a.output.rgba.size(); ++i) REQUIRE(a.output.rgba[i] == b.output.rgba[i]);
+  }
+}
+
+TEST_CASE("nonfinite=clamp: a -Inf pixel becomes -65504 there and adds no light", "[bloom][hard][nonfinite]") {
+  for (const char* mode : kVariants) {
+    INFO(mode);
+    Rig rig = rig_for(mode);
+    rig.set("nonfinite=clamp");
     Picture zeroed = scene(24, 16), with_inf = zeroed;
     for (int c = 0; c < 3; ++c) zeroed.at(5, 5)[c] = 0.0f, with_inf.at(5, 5)[c] = -kInf;
     const Rendered a = rig.render(with_inf), b = rig.render(zeroed);
@@ -130,6 +149,19 @@ TEST_CASE("a -Inf pixel becomes -65504 there and adds no light", "[bloom][hard]"
         }
     // -65504 plus the neighbours' bloom, rounded to half (32 apart there).
     CHECK(a.output.at(5, 5)[0] == Approx(-65504.0f + b.output.at(5, 5)[0]).margin(32));
+  }
+}
+
+TEST_CASE("a -Inf pixel is black by default, in the output too", "[bloom][hard][nonfinite]") {
+  for (const char* mode : kVariants) {
+    INFO(mode);
+    Rig rig = rig_for(mode);
+    Picture zeroed = scene(24, 16), with_inf = zeroed;
+    with_inf.at(5, 5)[2] = -kInf;
+    for (int c = 0; c < 3; ++c) zeroed.at(5, 5)[c] = 0.0f;
+    const Rendered a = rig.render(with_inf), b = rig.render(zeroed);
+    require_matches_model(a);
+    for (size_t i = 0; i < a.output.rgba.size(); ++i) REQUIRE(a.output.rgba[i] == b.output.rgba[i]);
   }
 }
 

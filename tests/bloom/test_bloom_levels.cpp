@@ -56,17 +56,29 @@ pfx_bloom::Settings with(int mode, int levels = 0) {
 }  // namespace
 
 TEST_CASE("mgf buffers start at a quarter of the frame, gaussian has one buffer at its downscale", "[bloom][levels]") {
+  // Both round up, so that every pixel is read: ceil(size / d) blocks with the frame centred on them.
   const auto mgf = pfx_bloom::plan_for(with(pfx_bloom::MODE_MGF), 1920, 1080);
-  REQUIRE(mgf.count == 5);  // 480x270 ... 30x16; 15x8 is below the automatic minimum of 16
+  REQUIRE(mgf.count == 5);  // the seed's 480x270 ... 30x16; 15x8 is below the automatic minimum of 16
   CHECK((mgf.width[0] == 480 && mgf.height[0] == 270));
-  CHECK((mgf.width[4] == 30 && mgf.height[4] == 16));
+  CHECK((mgf.width[4] == 30 && mgf.height[4] == 17));  // 135 is odd: 68, 34, 17 cover it
   CHECK(pfx_bloom::max_levels(1917, 1079, 4) == 9);
+  // The seed's count, counted on the rounded-down sizes (479x269 ... 1x1), with buffers that cover
+  // the frame: 1917 = 480 * 4 - 3 (1 pixel of padding before, 2 after), 1079 = 270 * 4 - 1.
+  const auto odd = pfx_bloom::plan_for(with(pfx_bloom::MODE_MGF, 16), 1917, 1079);
+  REQUIRE(odd.count == 9);
+  CHECK((odd.width[0] == 480 && odd.height[0] == 270 && odd.block == 4 && odd.pad_x == 1 && odd.pad_y == 0));
+  CHECK((odd.width[2] == 120 && odd.height[2] == 68));  // 135 texels -> 68, the last half black
+  CHECK((odd.width[8] == 2 && odd.height[8] == 2));
   CHECK(pfx_bloom::plan_for(with(pfx_bloom::MODE_MGF, 16), 3, 3).count == 1);
   pfx_bloom::Settings g = with(pfx_bloom::MODE_GAUSSIAN, 5);
   g.downscale = 3;
   const auto one = pfx_bloom::plan_for(g, 1920, 1081);
   REQUIRE(one.count == 1);
-  CHECK((one.width[0] == 640 && one.height[0] == 360));
+  CHECK((one.width[0] == 640 && one.height[0] == 361));  // 1081 = 361 * 3 - 2: one row of padding on each side
+  CHECK((one.block == 3 && one.pad_x == 0 && one.pad_y == 1));
+  CHECK(pfx_bloom::blocks_covering(2, 4) == 1);
+  CHECK(pfx_bloom::padding_before(2, 4) == 1);  // 1 before, 1 after
+  CHECK(pfx_bloom::padding_before(19, 4) == 0);  // 20 - 19: the one row after
   CHECK(pfx_bloom::plan_for(with(pfx_bloom::MODE_CHAIN13), 1920, 1080).count == 6);
 }
 

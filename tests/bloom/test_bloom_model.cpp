@@ -132,7 +132,10 @@ TEST_CASE("the model treats bad values as the shaders do", "[bloom][model]") {
   bad.at(9, 9)[2] = -4.0f;
   bad.at(9, 9)[3] = nan;
   zeroed.at(9, 9)[0] = zeroed.at(9, 9)[1] = zeroed.at(9, 9)[2] = 0.0f;
-  const std::vector<float> a = run(s, bad), b = run(s, zeroed);
+  // nonfinite=clamp (the behaviour before the parameter existed): channel by channel, NaN -> 0 and
+  // -Inf -> -65504, which adds no light but stays in the output.
+  s.nonfinite = pfx_bloom::NONFINITE_CLAMP;
+  std::vector<float> a = run(s, bad), b = run(s, zeroed);
   for (size_t i = 0; i < a.size(); ++i) {
     REQUIRE(std::isfinite(a[i]));
     if (i / 4 != size_t(9 * 32 + 9)) REQUIRE(a[i] == b[i]);
@@ -140,10 +143,23 @@ TEST_CASE("the model treats bad values as the shaders do", "[bloom][model]") {
   CHECK(a[(9 * 32 + 9) * 4 + 1] == Approx(-65504.0 + b[(9 * 32 + 9) * 4 + 1]));
   CHECK(a[(9 * 32 + 9) * 4 + 3] == 0.0f);
 
+  // nonfinite=zero, the default: the whole pixel is black (its finite -4 too), alpha 0 since it is NaN.
+  s.nonfinite = pfx_bloom::NONFINITE_ZERO;
+  zeroed.at(9, 9)[3] = 0.0f;
+  a = run(s, bad);
+  b = run(s, zeroed);
+  for (size_t i = 0; i < a.size(); ++i) REQUIRE(a[i] == b[i]);
+
   Frame hot(32, 32, 0.0f);
   hot.at(16, 16)[0] = inf;
   s.strength = 100;
-  for (float v : run(s, hot)) REQUIRE(v <= 65504.0f);
+  s.nonfinite = pfx_bloom::NONFINITE_CLAMP;
+  const std::vector<float> clamped = run(s, hot);
+  for (float v : clamped) REQUIRE(v <= 65504.0f);
+  CHECK(clamped[(16 * 32 + 17) * 4] > 1000.0f);  // +Inf blooms as the firefly clamp
+  s.nonfinite = pfx_bloom::NONFINITE_ZERO;
+  const std::vector<float> dropped = run(s, hot);
+  for (size_t i = 0; i < dropped.size(); ++i) REQUIRE(dropped[i] == (i % 4 == 3 ? 1.0f : 0.0f));  // no light at all
 }
 
 TEST_CASE("gaussian and mgf keep the light: a lone pixel adds exactly strength x its bright part", "[bloom][model]") {

@@ -150,7 +150,7 @@ Rig& shared_rig(const std::string& mode) {
   if (!rig) rig = new Rig;
   for (const char* assignment : {"dof.focus_distance=5", "dof.f_number=0.1", "dof.max_coc=32", "dof.autofocus=off",
                                  "dof.focus_point=0.5,0.5", "dof.sensor_width=36", "dof.samples=32",
-                                 "dof.resolution=half"})
+                                 "dof.resolution=half", "dof.nonfinite=zero"})
     rig->set(assignment);
   rig->set("dof.mode=" + mode);
   return *rig;

@@ -67,7 +67,8 @@ class Rig {
 
 // One rig for the test process (its programs are compiled once), reset to the tests' common
 // settings: focus 5 m, f/0.1 (small frames need a wide aperture to blur visibly), max CoC 32 px,
-// autofocus off at the centre, 32 samples at half resolution, 36 mm sensor; then `mode`.
+// autofocus off at the centre, 32 samples at half resolution, 36 mm sensor, non-finite pixels black
+// (the default); then `mode`.
 Rig& shared_rig(const std::string& mode);
 
 // The reference of `kind` for a frame and the rig's current settings; REQUIREs that it succeeds.

@@ -37,20 +37,73 @@ void require_finite_and_close(const Rendered& r) {
 }  // namespace
 
 TEST_CASE("NaN, infinite, too-bright and negative colours give a finite image", "[dof][hard]") {
+  // With either policy for non-finite pixels: zero (the default: such a pixel is black) and clamp
+  // (the behaviour before the parameter: NaN -> 0, +-Inf -> +-65504 per channel).
+  for (const char* policy : {"dof.nonfinite=zero", "dof.nonfinite=clamp"})
+    for (const char* mode : kModes) {
+      Rig& rig = rig_for(mode);
+      rig.set(policy);
+      Frame f = scene(48, 32);
+      const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+      const float bad[] = {nan, inf, -inf, 70000.0f, -3.0f};
+      for (int i = 0; i < 5; ++i) {
+        float* c = f.at(6 + 8 * i, 16);  // in the near square and the backdrop, where the blur spreads them
+        c[0] = c[1] = c[2] = bad[i];
+        c = f.at(6 + 8 * i, 5);
+        c[0] = bad[i];
+      }
+      INFO("mode " << mode << ", " << policy);
+      const Rendered r = rig.render(f);
+      require_finite_and_close(r);
+    }
+}
+
+namespace {
+
+// Pixels whose RGB differs by more than the half-float rounding of a value of that size.
+int changed_pixels(const std::vector<float>& a, const std::vector<float>& b) {
+  int changed = 0;
+  for (size_t i = 0; i < a.size(); i += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::fabs(a[i + c] - b[i + c]) > std::ldexp(std::fmax(std::fabs(a[i + c]), 1.0), -9)) {
+        ++changed;
+        break;
+      }
+  return changed;
+}
+
+}  // namespace
+
+// With nonfinite=zero the documented neighbourhood of a bad pixel is nothing: the output is that of
+// the frame with those pixels black (to the half-float rounding of the values, since the half-size
+// pass averages a block holding a bad pixel texel by texel and a clean one with one filtered tap).
+// With clamp, four +Inf pixels in the blurred backdrop spread 65504 over their circles of confusion.
+TEST_CASE("4 +Inf, NaN or -Inf pixels change nothing but themselves with nonfinite=zero", "[dof][hard][nonfinite]") {
+  const int bad_at[4][2] = {{5, 5}, {40, 8}, {20, 25}, {60, 40}};
+  Frame base = scene(72, 48), black = base;
+  for (const auto& p : bad_at)
+    for (int c = 0; c < 3; ++c) black.at(p[0], p[1])[c] = 0.0f;
   for (const char* mode : kModes) {
     Rig& rig = rig_for(mode);
-    Frame f = scene(48, 32);
-    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    const float bad[] = {nan, inf, -inf, 70000.0f, -3.0f};
-    for (int i = 0; i < 5; ++i) {
-      float* c = f.at(6 + 8 * i, 16);  // in the near square and the backdrop, where the blur spreads them
-      c[0] = c[1] = c[2] = bad[i];
-      c = f.at(6 + 8 * i, 5);
-      c[0] = bad[i];
+    const Rendered reference = rig.render(black);
+    for (float bad : {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+                      -std::numeric_limits<float>::infinity()}) {
+      Frame f = base;
+      for (const auto& p : bad_at)
+        for (int c = 0; c < 3; ++c) f.at(p[0], p[1])[c] = bad;
+      INFO("mode " << mode << " with " << bad);
+      const Rendered r = rig.render(f);
+      require_finite_and_close(r);
+      CHECK(changed_pixels(r.output, reference.output) == 0);
     }
-    INFO("mode " << mode);
+    rig.set("dof.nonfinite=clamp");
+    Frame f = base;
+    for (const auto& p : bad_at)
+      for (int c = 0; c < 3; ++c) f.at(p[0], p[1])[c] = std::numeric_limits<float>::infinity();
+    INFO("mode " << mode << " with +Inf, nonfinite=clamp");
     const Rendered r = rig.render(f);
-    require_finite_and_close(r);
+    REQUIRE(all_finite(r.output));
+    CHECK(changed_pixels(r.output, reference.output) > 4);  // the +Inf spreads
   }
 }
 

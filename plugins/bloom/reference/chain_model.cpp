@@ -20,16 +20,23 @@ void bright_tap(const Settings& s, const Plane& frame, double px, double py, dou
   model::bright_part(s, s.measure, out);
 }
 
-// The seed's five taps: the centre weighted 4, the four diagonal neighbours 1, / 8.
+// The seed's five taps: the centre weighted 4, the four diagonal neighbours 1, / 8. With karis each
+// weight is multiplied by the tap's Karis weight and the sum divided by the weights' sum.
 void bright5(const Settings& s, const Plane& frame, double px, double py, double out[3]) {
-  double tap[3];
-  bright_tap(s, frame, px, py, 0, 0, tap);
-  for (int c = 0; c < 3; ++c) out[c] = 4.0 * tap[c];
-  for (const auto& d : {std::pair{-1, 1}, std::pair{1, 1}, std::pair{-1, -1}, std::pair{1, -1}}) {
-    bright_tap(s, frame, px, py, d.first, d.second, tap);
-    for (int c = 0; c < 3; ++c) out[c] += tap[c];
+  const struct {
+    int dx, dy;
+    double weight;
+  } taps[5] = {{0, 0, 4.0}, {-1, 1, 1.0}, {1, 1, 1.0}, {-1, -1, 1.0}, {1, -1, 1.0}};
+  double weights = 0;
+  out[0] = out[1] = out[2] = 0.0;
+  for (const auto& t : taps) {
+    double tap[3];
+    bright_tap(s, frame, px, py, t.dx, t.dy, tap);
+    const double weight = t.weight * (s.karis ? model::karis_weight(tap) : 1.0);
+    for (int c = 0; c < 3; ++c) out[c] += weight * tap[c];
+    weights += weight;
   }
-  for (int c = 0; c < 3; ++c) out[c] /= 8.0;
+  for (int c = 0; c < 3; ++c) out[c] /= weights;
 }
 
 // The Karis average of four taps: each weighted 1 / (1 + Rec. 709 luma).
@@ -37,7 +44,7 @@ void karis(const double* const taps[4], double out[3]) {
   double weight_sum = 0;
   out[0] = out[1] = out[2] = 0;
   for (int t = 0; t < 4; ++t) {
-    const double w = 1.0 / (1.0 + 0.2126 * taps[t][0] + 0.7152 * taps[t][1] + 0.0722 * taps[t][2]);
+    const double w = model::karis_weight(taps[t]);
     weight_sum += w;
     for (int c = 0; c < 3; ++c) out[c] += w * taps[t][c];
   }
@@ -141,7 +148,7 @@ void evaluate_chain_model(const Settings& s, uint32_t width, uint32_t height, co
   const std::vector<Tap> taps = down_taps(s.mode);
   std::vector<Plane> levels;
   levels.reserve(plan.count);
-  levels.push_back(bright_pass(s, model::safe_frame(color, W, H, s.firefly_clamp), plan.width[0], plan.height[0], plan.count));
+  levels.push_back(bright_pass(s, model::safe_frame(color, W, H, s.firefly_clamp, s.nonfinite), plan.width[0], plan.height[0], plan.count));
   for (int i = 1; i < plan.count; ++i) levels.push_back(downsample(levels[i - 1], plan.width[i], plan.height[i], taps));
   for (const Plane& level : levels) trace.largest_stored = std::max(trace.largest_stored, model::largest(level));
   for (int i = plan.count - 2; i >= 0; --i) {
@@ -156,7 +163,7 @@ void evaluate_chain_model(const Settings& s, uint32_t width, uint32_t height, co
   }
   // bright, L - 1 downsamples, L - 1 blended upsamples, the output.
   trace.stores = 2 * plan.count;
-  model::composite(color, W, H, 1.0, output, [&](int x, int y, double add[3]) { tent(levels[0], x, y, W, H, add); });
+  model::composite(color, W, H, 1.0, s.nonfinite, output, [&](int x, int y, double add[3]) { tent(levels[0], x, y, W, H, add); });
 }
 
 }  // namespace pfx_bloom

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bloom_levels.hpp"
 #include "reference/glare_model.hpp"
 #include "reference/model_common.hpp"
 
@@ -37,10 +38,11 @@ void evaluate_glare_model(const GlareSettings& g, uint32_t width, uint32_t heigh
     std::copy(color, color + static_cast<size_t>(W) * H * 4, output);
     return;
   }
-  const int w = std::max(1, W / g.downscale), h = std::max(1, H / g.downscale);
+  const int d = g.downscale;
+  const int w = blocks_covering(W, d), h = blocks_covering(H, d), pad_x = padding_before(W, d), pad_y = padding_before(H, d);
   const double unit[3] = {1.0, 1.0, 1.0};
-  const Plane bright = model::box_bright(g.bright, g.bright.measure, model::safe_frame(color, W, H, g.bright.firefly_clamp),
-                                         w, h, g.downscale, unit, kLevelSumMax);
+  const Plane bright = model::box_bright(g.bright, g.bright.measure, model::safe_frame(color, W, H, g.bright.firefly_clamp, g.bright.nonfinite),
+                                         w, h, d, pad_x, pad_y, unit, kLevelSumMax);
   Plane sum(w, h);
   t.largest_stored = model::largest(bright);
   for (int j = 0; j < g.streaks; ++j) {
@@ -59,8 +61,8 @@ void evaluate_glare_model(const GlareSettings& g, uint32_t width, uint32_t heigh
     t.largest_stored = std::max(t.largest_stored, model::largest(sum));
   }
   t.stores = 1 + kGlarePasses + g.streaks;  // bright, two passes, the sum's n blends, the output
-  model::composite(color, W, H, 1.0, output, [&](int x, int y, double add[3]) {
-    model::bilinear(sum, model::centre_x(x, W, sum), model::centre_y(y, H, sum), model::Wrap::Edge, add);
+  model::composite(color, W, H, 1.0, g.bright.nonfinite, output, [&](int x, int y, double add[3]) {
+    model::bilinear(sum, model::on_grid(x, pad_x, d), model::on_grid(y, pad_y, d), model::Wrap::Edge, add);
     for (int c = 0; c < 3; ++c) add[c] *= g.strength * g.tint[c];
   });
 }

@@ -34,14 +34,16 @@ void bilinear(const Plane& p, double px, double py, Wrap wrap, double out[3]) {
     out[c] = (1 - b) * ((1 - a) * t00[c] + a * t10[c]) + b * ((1 - a) * t01[c] + a * t11[c]);
 }
 
-Plane safe_frame(const float* color, int w, int h, double clamp_to) {
+bool not_finite(float v) { return !std::isfinite(v); }
+
+Plane safe_frame(const float* color, int w, int h, double clamp_to, int nonfinite) {
   Plane p(w, h);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const float v = color[(static_cast<size_t>(y) * w + x) * 4 + c];
-        p.at(x, y)[c] = std::isnan(v) ? 0.0 : std::clamp(static_cast<double>(v), 0.0, clamp_to);
-      }
+    for (int x = 0; x < w; ++x) {
+      const float* v = color + (static_cast<size_t>(y) * w + x) * 4;
+      if (nonfinite == NONFINITE_ZERO && (not_finite(v[0]) || not_finite(v[1]) || not_finite(v[2]))) continue;
+      for (int c = 0; c < 3; ++c) p.at(x, y)[c] = std::isnan(v[c]) ? 0.0 : std::clamp(static_cast<double>(v[c]), 0.0, clamp_to);
+    }
   return p;
 }
 
@@ -65,27 +67,36 @@ void bright_part(const Settings& s, int measure, double c[3]) {
   for (int i = 0; i < 3; ++i) c[i] *= ratio;
 }
 
-Plane box_bright(const Settings& s, int measure, const Plane& frame, int w, int h, int block, const double gain[3],
-                 double cap) {
+double karis_weight(const double c[3]) { return 1.0 / (1.0 + 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]); }
+
+Plane box_bright(const Settings& s, int measure, const Plane& frame, int w, int h, int block, int pad_x, int pad_y,
+                 const double gain[3], double cap, bool karis) {
   Plane out(w, h);
-  const double count = static_cast<double>(block) * block;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const int x0 = static_cast<int>(static_cast<long long>(x) * frame.w / w);
-      const int y0 = static_cast<int>(static_cast<long long>(y) * frame.h / h);
-      double sum[3] = {0, 0, 0};
+      const int x0 = x * block - pad_x, y0 = y * block - pad_y;
+      double sum[3] = {0, 0, 0}, weights = 0;
       for (int j = 0; j < block; ++j)
         for (int i = 0; i < block; ++i) {
           double t[3];
           texel(frame, x0 + i, y0 + j, Wrap::Border, t);
           bright_part(s, measure, t);
-          for (int c = 0; c < 3; ++c) sum[c] += t[c];
+          const double weight = karis ? karis_weight(t) : 1.0;
+          for (int c = 0; c < 3; ++c) sum[c] += weight * t[c];
+          weights += weight;
         }
-      for (int c = 0; c < 3; ++c) out.at(x, y)[c] = std::min(sum[c] / count * gain[c], cap);
+      for (int c = 0; c < 3; ++c) out.at(x, y)[c] = std::min(sum[c] / weights * gain[c], cap);
     }
   return out;
 }
 
 double finite_signed(float v) { return std::isnan(v) ? 0.0 : std::clamp(static_cast<double>(v), -kHalfMax, kHalfMax); }
+
+void finite_pixel(const float* rgba, int nonfinite, double out[4]) {
+  for (int c = 0; c < 4; ++c) out[c] = finite_signed(rgba[c]);
+  if (nonfinite != NONFINITE_ZERO) return;
+  if (not_finite(rgba[0]) || not_finite(rgba[1]) || not_finite(rgba[2])) out[0] = out[1] = out[2] = 0.0;
+  if (not_finite(rgba[3])) out[3] = 0.0;
+}
 
 }  // namespace pfx_bloom::model

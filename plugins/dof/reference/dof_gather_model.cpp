@@ -124,7 +124,7 @@ void evaluate_gather_model(const Settings& settings, const pfx_frame& frame, con
                            float* output) {
   const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
   const GatherPlan plan = plan_gather(frame.width, frame.height, settings);
-  const Texture sharp = safe_color(frame, color);
+  const Texture sharp = safe_color(frame, color, settings.nonfinite);
   const std::vector<double> coc = coc_image(frame, frame_lens(frame, settings, depth), depth);
   const Texture work = prepare(plan, sharp, coc, settings.max_coc);
   const Texture dilated = dilated_tiles(plan, work);

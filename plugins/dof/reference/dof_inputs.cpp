@@ -1,5 +1,7 @@
 #include "reference/dof_inputs.hpp"
 
+#include <cmath>
+
 #include "reference/half_float.hpp"
 
 namespace pfx_dof {
@@ -9,10 +11,15 @@ void store_half(Texture* t) {
     for (double& v : texel) v = to_half(v);
 }
 
-Texture safe_color(const pfx_frame& frame, const float* color) {
+Texture safe_color(const pfx_frame& frame, const float* color, int nonfinite) {
   Texture t(static_cast<int>(frame.width), static_cast<int>(frame.height));
-  for (size_t i = 0; i < t.texels.size(); ++i)
-    for (int k = 0; k < 4; ++k) t.texels[i][k] = safe_value(color[i * 4 + k]);
+  for (size_t i = 0; i < t.texels.size(); ++i) {
+    const float* c = color + i * 4;
+    for (int k = 0; k < 4; ++k) t.texels[i][k] = safe_value(c[k]);
+    if (nonfinite != NONFINITE_ZERO) continue;
+    if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) t.texels[i][0] = t.texels[i][1] = t.texels[i][2] = 0.0;
+    if (!std::isfinite(c[3])) t.texels[i][3] = 0.0;
+  }
   return t;
 }
 

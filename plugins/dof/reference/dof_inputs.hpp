@@ -1,5 +1,6 @@
 // What every CPU reference of "dof" reads first, exactly as the GPU passes read it: the colour made
-// safe (NaN -> 0, magnitudes clamped to the largest half float, so +-Inf and > 65504 stay finite),
+// safe (nonfinite zero: a pixel with NaN or +-Inf in R, G or B black, a non-finite alpha 0; clamp:
+// NaN -> 0 per channel; both: magnitudes clamped to the largest half float),
 // the lens (with autofocus resolved against the depth), and each pixel's signed CoC.
 #pragma once
 
@@ -17,8 +18,8 @@ constexpr double kHalfMax = 65504.0;
 
 inline double safe_value(double v) { return std::isnan(v) ? 0.0 : std::clamp(v, -kHalfMax, kHalfMax); }
 
-// color: width * height RGBA, rows bottom first.
-Texture safe_color(const pfx_frame& frame, const float* color);
+// color: width * height RGBA, rows bottom first; nonfinite: Nonfinite (dof_params.hpp).
+Texture safe_color(const pfx_frame& frame, const float* color, int nonfinite);
 
 // The lens the passes use for this frame (autofocus read from depth).
 Lens frame_lens(const pfx_frame& frame, const Settings& settings, const float* depth);

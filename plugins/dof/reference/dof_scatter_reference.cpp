@@ -49,7 +49,7 @@ struct Contribution {
 void evaluate_scatter_reference(const Settings& settings, const pfx_frame& frame, const float* color,
                                 const float* depth, float* output) {
   const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
-  const Texture sharp = safe_color(frame, color);
+  const Texture sharp = safe_color(frame, color, settings.nonfinite);
   const std::vector<double> coc = coc_image(frame, frame_lens(frame, settings, depth), depth);
   const size_t n = static_cast<size_t>(w) * h;
   std::vector<double> radius(n), order(n);

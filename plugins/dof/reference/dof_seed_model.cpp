@@ -11,7 +11,7 @@ namespace pfx_dof {
 void evaluate_seed_model(const Settings& settings, const pfx_frame& frame, const float* color, const float* depth,
                          float* output) {
   const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
-  const Texture sharp = safe_color(frame, color);
+  const Texture sharp = safe_color(frame, color, settings.nonfinite);
   // The half-size copy: one bilinear tap at each half texel's centre (the 2x2 average on even sides).
   Texture half(half_size(w), half_size(h));
   for (int y = 0; y < half.height; ++y)
