@@ -20,6 +20,7 @@
 #include "headless_context.hpp"
 #include "image_texture.hpp"
 #include "light_field_scene.hpp"
+#include "light_reach.hpp"
 #include "lights_bench_report.hpp"
 #include "plugin_directory.hpp"
 
@@ -365,6 +366,9 @@ void run_dense(const LightsOptions& o, const pfx::host::PluginRegistry& registry
         warmup = 0;
         fill_cell(&cell, frames > 1 ? stage.measure(frames, 0) : one);
         brute_total = cell.total_ms;
+        std::vector<float> depth4 = read_texture(stage.renderer().textures().depth, w, h, GL_RGBA), depth(size_t(w) * h);
+        for (size_t i = 0; i < depth.size(); ++i) depth[i] = depth4[i * 4];
+        cell.reach_mean = mean_lights_reaching(stage.frame(), depth, 0.05);  // the default cutoff
       } else {
         fill_cell(&cell, stage.measure(frames, warmup));
       }

@@ -54,7 +54,7 @@ nlohmann::ordered_json cell_json(const LightsCell& c) {
           {"total_ms", c.total_ms}, {"ratio_to_copy", c.ratio_to_copy}, {"speedup", c.speedup},
           {"speedup_estimated", c.speedup_estimated}, {"lights_in_view", c.lights_in_view}, {"lists", c.lists},
           {"list_mean", c.list_mean}, {"list_max", c.list_max}, {"list_entries", c.list_entries},
-          {"ssbo_bytes", c.ssbo_bytes}};
+          {"ssbo_bytes", c.ssbo_bytes}, {"reach_mean", c.reach_mean}};
 }
 
 }  // namespace
@@ -102,6 +102,12 @@ std::string lights_markdown(const LightsResults& r) {
     for (const auto& c : r.dense_cells)
       if (c.mode != "brute" && c.speedup > 0 && (!best_dense[c.lights] || c.speedup > best_dense[c.lights]->speedup))
         best_dense[c.lights] = &c;
+    for (const auto& c : r.dense_cells)
+      if (c.mode == "brute" && c.reach_mean > 0)
+        md += "- 400 + " + std::to_string(c.lights) + " lights: a pixel with geometry is reached by " +
+              format("%.1f", c.reach_mean) + " of the " + std::to_string(c.lights_in_view) +
+              " lights on average, so no exact method, whatever its lists, can be more than " +
+              format("%.1f", double(c.lights_in_view) / c.reach_mean) + "x faster than brute force here\n";
     for (const auto& [lights, b] : best_dense)
       md += "- dense, 400 + " + std::to_string(lights) + " lights: best mode " + b->mode + ", " +
             format("%.1f", b->speedup) + "x brute force measured in this run (target >= 20x): " +

@@ -85,6 +85,9 @@ TEST_CASE("lights bench quick run: speed-ups, brute force predicted past its lim
   CHECK(dense["brute"]["ran"] == true);
   CHECK(dense["brute"]["frames"] == 1);
   CHECK(dense["brute"]["lights_in_view"] == 1400);  // the demo's 400 and the 1000 more all reach something
+  // The lights that really reach a pixel: some, not all (the floor is 44 m wide, the ranges 2..9 m).
+  CHECK(dense["brute"]["reach_mean"].get<double>() > 10);
+  CHECK(dense["brute"]["reach_mean"].get<double>() < 700);
   for (const char* mode : {"cpu8x4", "tiled", "clustered"}) {
     INFO("dense " << mode);
     const auto& c = dense[mode];
