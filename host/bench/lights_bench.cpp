@@ -13,12 +13,14 @@
 #include <pfx/host/chain.hpp>
 
 #include "arg_reader.hpp"
+#include "demo_scene.hpp"
 #include "bench_timing.hpp"
 #include "cli_text.hpp"
 #include "gbuffer.hpp"
 #include "headless_context.hpp"
 #include "image_texture.hpp"
 #include "light_field_scene.hpp"
+#include "light_reach.hpp"
 #include "lights_bench_report.hpp"
 #include "plugin_directory.hpp"
 #include "timing_choice.hpp"
@@ -38,6 +40,9 @@ struct LightsOptions {
   std::string error_mode = "tiled";
   std::vector<double> cutoffs = {0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002};
   uint64_t seed = 1;
+  std::pair<int, int> dense_size = {320, 180};
+  std::vector<int> dense_counts = {10000, 100000};
+  uint64_t dense_seed = 7;
   std::string out_dir = "out/bench";
   std::vector<std::string> plugin_dirs;
 };
@@ -45,7 +50,8 @@ struct LightsOptions {
 std::string usage() {
   return "usage: pfx-bench --lights [--sizes WxH,...] [--counts N,...] [--modes m,...] [--frames N]\n"
          "                          [--warmup N] [--brute-limit S] [--error-size WxH] [--error-lights N]\n"
-         "                          [--error-mode M] [--cutoffs c,...] [--seed S] [--out DIR]\n"
+         "                          [--error-mode M] [--cutoffs c,...] [--seed S] [--dense-size WxH]\n"
+         "                          [--dense-counts N,...] [--dense-seed S] [--out DIR]\n"
          "                          [--plugins DIR]... [--quick]\n"
          "\n"
          "Measures the tiledlights effect against its light count on the light-field scene: the demo's\n"
@@ -53,12 +59,14 @@ std::string usage() {
          "from 20 m (from 1,000 lights on, the floor fills the view, which takes in about 560 lights:\n"
          "more lights are more lights outside it). For every size, count and mode: median cull and shade\n"
          "time, total, ratio to a plain copy pass, speed-up over brute force, lights in view, list\n"
-         "length (mean, max), overflowed lists, shader storage bytes. Brute force runs only where one\n"
+         "length (mean, max), indices in all lists, shader storage bytes. Brute force runs only where one\n"
          "frame is predicted (from the smaller count, linearly) to finish within --brute-limit seconds,\n"
          "timing as many frames as fit (at least one, warm-up dropped first); elsewhere its time is that\n"
          "prediction, marked estimated. Then, at --error-size with --error-lights lights and\n"
          "--error-mode, time and error against the un-windowed sum (the plugin's ideal reference) for\n"
-         "every cutoff and for seed 003's range rule.\n"
+         "every cutoff and for seed 003's range rule. Last, the dense case: the demo scene with N more\n"
+         "lights in the same room (pfx-render --demo --lights N --seed S), every mode, brute force always\n"
+         "measured (at least one frame), and each culled mode's speed-up over it.\n"
          "\n"
          "  --sizes      default 1280x720,1920x1080\n"
          "  --counts     default 100,1000,10000,100000\n"
@@ -67,8 +75,11 @@ std::string usage() {
          "  --brute-limit  seconds (default 60)\n"
          "  --error-size default 640x360; --error-lights default 1000; --error-mode default tiled\n"
          "  --cutoffs    default 0.5,0.2,0.1,0.05,0.02,0.01,0.005,0.002\n"
+         "  --dense-size default 320x180; --dense-counts default 10000,100000 (0: no dense case);\n"
+         "  --dense-seed default 7\n"
          "  --out DIR    writes lights.json, lights.md, lights_time.png, lights_error.png (default out/bench)\n"
-         "  --quick      a smoke run: 64x36, 100 and 1000 lights, 1 frame, no warm-up, two cutoffs\n"
+         "  --quick      a smoke run: 64x36, 100 and 1000 lights, 1 frame, no warm-up, two cutoffs,\n"
+         "               the dense case at 64x36 with 1000 more lights\n"
          "\n"
          "exit codes: 0 ok, 1 internal error (no GL 4.5, an output not written), 2 usage,\n"
          "            4 the tiledlights plugin is not loaded\n";
@@ -101,6 +112,8 @@ bool parse_options(const std::vector<std::string>& list, LightsOptions* out, std
       o.error_size = {64, 36};
       o.error_lights = 400;
       o.cutoffs = {0.1, 0.05};
+      o.dense_size = {64, 36};
+      o.dense_counts = {1000};
     } else if (arg == "--sizes") {
       if (!args.value(&text)) return false;
       o.sizes.clear();
@@ -109,18 +122,27 @@ bool parse_options(const std::vector<std::string>& list, LightsOptions* out, std
         if (!pfx::app::parse_frame_size("--sizes", item, &w, &h, error)) return false;
         o.sizes.push_back({w, h});
       }
-    } else if (arg == "--counts" || arg == "--cutoffs") {
+    } else if (arg == "--dense-size") {
+      if (!args.value(&text) ||
+          !pfx::app::parse_frame_size("--dense-size", text, &o.dense_size.first, &o.dense_size.second, error))
+        return false;
+    } else if (arg == "--counts" || arg == "--cutoffs" || arg == "--dense-counts") {
       if (!args.value(&text)) return false;
       std::vector<double> numbers;
       for (const auto& item : pfx::app::split_list(text)) {
-        if (!parse_number(item, &number) || (arg == "--counts" ? !whole(number, 0, 1e7) : !(number > 0)))
+        const bool count = arg != "--cutoffs";
+        if (!parse_number(item, &number) || (count ? !whole(number, 0, 1e7) : !(number > 0)))
           return args.fail(arg + " " + text + ": '" + item + "' is not " +
-                           (arg == "--counts" ? "a light count from 0 to 10000000" : "a positive cutoff"));
+                           (count ? "a light count from 0 to 10000000" : "a positive cutoff"));
         numbers.push_back(number);
       }
       if (arg == "--counts") {
         o.counts.clear();
         for (double n : numbers) o.counts.push_back(static_cast<int>(n));
+      } else if (arg == "--dense-counts") {
+        o.dense_counts.clear();
+        for (double n : numbers)
+          if (n > 0) o.dense_counts.push_back(static_cast<int>(n));
       } else {
         o.cutoffs = numbers;
       }
@@ -135,7 +157,7 @@ bool parse_options(const std::vector<std::string>& list, LightsOptions* out, std
       o.error_mode = text;
       if (!is_mode(text)) return args.fail("--error-mode: unknown mode '" + text + "' (brute, cpu8x4, tiled, clustered)");
     } else if (arg == "--frames" || arg == "--warmup" || arg == "--error-lights" || arg == "--brute-limit" ||
-               arg == "--seed") {
+               arg == "--seed" || arg == "--dense-seed") {
       if (!args.value(&text)) return false;
       const bool ok = parse_number(text, &number) &&
                       (arg == "--brute-limit" ? number >= 0 : whole(number, arg == "--frames" ? 1 : 0, 1e7));
@@ -145,6 +167,7 @@ bool parse_options(const std::vector<std::string>& list, LightsOptions* out, std
       if (arg == "--error-lights") o.error_lights = int(number);
       if (arg == "--brute-limit") o.brute_limit_s = number;
       if (arg == "--seed") o.seed = uint64_t(number);
+      if (arg == "--dense-seed") o.dense_seed = uint64_t(number);
     } else if (arg == "--error-size") {
       if (!args.value(&text) || !pfx::app::parse_frame_size("--error-size", text, &o.error_size.first, &o.error_size.second, error))
         return false;
@@ -265,7 +288,7 @@ void fill_cell(LightsCell* cell, const Stage::Measured& m) {
   cell->lists = r.value("lists", uint64_t(0));
   cell->list_mean = r.value("list_mean", 0.0);
   cell->list_max = r.value("list_max", uint64_t(0));
-  cell->overflowed = r.value("overflowed_lists", uint64_t(0));
+  cell->list_entries = r.value("list_entries", uint64_t(0));
   cell->ssbo_bytes = r.value("ssbo_bytes", uint64_t(0));
 }
 
@@ -321,6 +344,52 @@ void run_sweep(const LightsOptions& o, const pfx::host::PluginRegistry& registry
           cell.speedup = brute_total / cell.total_ms;
           cell.speedup_estimated = brute_estimated;
         }
+    }
+  }
+}
+
+// The dense case: the same room with ever more lights, so each pixel is reached by more of them.
+// Brute force is always measured, so every speed-up is against a brute-force frame of this run.
+void run_dense(const LightsOptions& o, const pfx::host::PluginRegistry& registry, LightsResults* results) {
+  const auto [w, h] = o.dense_size;
+  results->dense_seed = o.dense_seed;
+  const double unit = copy_ms(w, h, std::max(o.frames, 3));
+  for (int count : o.dense_counts) {
+    const pfx::app::Scene scene = pfx::app::make_demo_scene({count, o.dense_seed});
+    double brute_total = 0;
+    const size_t first = results->dense_cells.size();
+    for (const auto& mode : o.modes) {
+      LightsCell cell;
+      cell.width = w;
+      cell.height = h;
+      cell.lights = count;
+      cell.mode = mode;
+      Stage stage(registry, scene, w, h);
+      stage.set("mode=" + mode);
+      int frames = o.frames, warmup = o.warmup;
+      if (mode == "brute") {
+        // One untimed frame costs as much as a timed one: time one, then as many as fit the limit.
+        const Stage::Measured one = stage.measure(1, 0);
+        frames = std::clamp(int(o.brute_limit_s * 1000 / std::max(one.total_ms, 1.0)), 1, o.frames);
+        warmup = 0;
+        fill_cell(&cell, frames > 1 ? stage.measure(frames, 0) : one);
+        brute_total = cell.total_ms;
+        std::vector<float> depth4 = read_texture(stage.renderer().textures().depth, w, h, GL_RGBA), depth(size_t(w) * h);
+        for (size_t i = 0; i < depth.size(); ++i) depth[i] = depth4[i * 4];
+        cell.reach_mean = mean_lights_reaching(stage.frame(), depth, 0.05);  // the default cutoff
+      } else {
+        fill_cell(&cell, stage.measure(frames, warmup));
+      }
+      cell.frames = frames;
+      cell.warmup = warmup;
+      cell.ratio_to_copy = unit > 0 ? cell.total_ms / unit : 0;
+      std::fprintf(stderr, "pfx-bench --lights: dense %dx%d %6d more lights %-9s cull %9.3f shade %9.3f total %9.3f ms\n",
+                   w, h, count, mode.c_str(), cell.cull_ms, cell.shade_ms, cell.total_ms);
+      results->dense_cells.push_back(cell);
+    }
+    for (size_t i = first; i < results->dense_cells.size(); ++i) {
+      LightsCell& cell = results->dense_cells[i];
+      if (brute_total > 0 && cell.total_ms > 0) cell.speedup = brute_total / cell.total_ms;
     }
   }
 }
@@ -418,6 +487,7 @@ int lights_bench_main(const std::vector<std::string>& args) {
   try {
     run_sweep(options, registry, &results);
     run_cutoffs(options, registry, &results);
+    run_dense(options, registry, &results);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pfx-bench --lights: %s\n", e.what());
     return 1;

@@ -30,6 +30,33 @@ const LightsCell* best(const LightsResults& r, int width, int height, int lights
   return found;
 }
 
+const char* kTableHeader =
+    "| size | lights | mode | frames | in view | cull ms | shade ms | total ms | x copy | speed-up | lists | "
+    "list mean | list max | list entries | SSBO bytes |\n"
+    "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+
+std::string table_row(const LightsCell& c, const std::string& lights) {
+  std::string md = "| " + size_of(c) + " | " + lights + " | " + c.mode + " | ";
+  if (!c.ran)
+    return md + "0 | | | | *" + format("%.0f", c.total_ms) + " estimated* | *" + format("%.1f", c.ratio_to_copy) +
+           "* | 1 | | | | | |\n";
+  return md + std::to_string(c.frames) + (c.warmup ? "+" + std::to_string(c.warmup) : "") + " | " +
+         std::to_string(c.lights_in_view) + " | " + format("%.2f", c.cull_ms) + " | " + format("%.2f", c.shade_ms) +
+         " | " + format("%.2f", c.total_ms) + " | " + format("%.1f", c.ratio_to_copy) + " | " +
+         (c.speedup > 0 ? format("%.1f", c.speedup) + (c.speedup_estimated ? " *est*" : "") : "") + " | " +
+         std::to_string(c.lists) + " | " + format("%.1f", c.list_mean) + " | " + std::to_string(c.list_max) + " | " +
+         std::to_string(c.list_entries) + " | " + std::to_string(c.ssbo_bytes) + " |\n";
+}
+
+nlohmann::ordered_json cell_json(const LightsCell& c) {
+  return {{"width", c.width}, {"height", c.height}, {"lights", c.lights}, {"mode", c.mode}, {"ran", c.ran},
+          {"frames", c.frames}, {"warmup", c.warmup}, {"cull_ms", c.cull_ms}, {"shade_ms", c.shade_ms},
+          {"total_ms", c.total_ms}, {"ratio_to_copy", c.ratio_to_copy}, {"speedup", c.speedup},
+          {"speedup_estimated", c.speedup_estimated}, {"lights_in_view", c.lights_in_view}, {"lists", c.lists},
+          {"list_mean", c.list_mean}, {"list_max", c.list_max}, {"list_entries", c.list_entries},
+          {"ssbo_bytes", c.ssbo_bytes}, {"reach_mean", c.reach_mean}};
+}
+
 }  // namespace
 
 std::string lights_markdown(const LightsResults& r) {
@@ -42,23 +69,8 @@ std::string lights_markdown(const LightsResults& r) {
         " s, timing as many frames as fit; *estimated* cells are its linear prediction from the last count that "
         "ran, and speed-ups against them are marked *est*.\n\n";
   for (const auto& [size, ms] : r.copy_ms) md += "- copy pass at " + size + ": " + format("%.3f", ms) + " ms\n";
-  md += "\n| size | lights | mode | frames | in view | cull ms | shade ms | total ms | x copy | speed-up | lists | "
-        "list mean | list max | overflowed | SSBO bytes |\n";
-  md += "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const auto& c : r.cells) {
-    md += "| " + size_of(c) + " | " + std::to_string(c.lights) + " | " + c.mode + " | ";
-    if (!c.ran) {
-      md += "0 | | | | *" + format("%.0f", c.total_ms) + " estimated* | *" + format("%.1f", c.ratio_to_copy) +
-            "* | 1 | | | | | |\n";
-      continue;
-    }
-    md += std::to_string(c.frames) + (c.warmup ? "+" + std::to_string(c.warmup) : "") + " | " +
-          std::to_string(c.lights_in_view) + " | " + format("%.2f", c.cull_ms) + " | " + format("%.2f", c.shade_ms) +
-          " | " + format("%.2f", c.total_ms) + " | " + format("%.1f", c.ratio_to_copy) + " | " +
-          (c.speedup > 0 ? format("%.1f", c.speedup) + (c.speedup_estimated ? " *est*" : "") : "") + " | " +
-          std::to_string(c.lists) + " | " + format("%.1f", c.list_mean) + " | " + std::to_string(c.list_max) +
-          " | " + std::to_string(c.overflowed) + " | " + std::to_string(c.ssbo_bytes) + " |\n";
-  }
+  md += "\n" + std::string(kTableHeader);
+  for (const auto& c : r.cells) md += table_row(c, std::to_string(c.lights));
   // The two targets, read off the table.
   md += "\n### Targets\n\n";
   std::map<std::string, std::pair<int, int>> sizes;
@@ -78,6 +90,28 @@ std::string lights_markdown(const LightsResults& r) {
       md += "- " + name + ", shading of " + many->mode + " from 1,000 to 100,000 lights: x" + format("%.2f", growth) +
             " (target <= 2): " + (growth <= 2 ? "met" : "not met") + "\n";
     }
+  }
+  if (!r.dense_cells.empty()) {
+    md += "\n### Dense: the demo scene with more lights in the same room\n\n";
+    md += "pfx-render --demo --lights N --seed " + std::to_string(r.dense_seed) +
+          ": the demo's 400 lights plus N more inside the floor's box, from 0.2 to 4 m up; brute force measured "
+          "in this run (frames column), every speed-up against it.\n\n" + kTableHeader;
+    for (const auto& c : r.dense_cells) md += table_row(c, "400 + " + std::to_string(c.lights));
+    md += "\n";
+    std::map<int, const LightsCell*> best_dense;
+    for (const auto& c : r.dense_cells)
+      if (c.mode != "brute" && c.speedup > 0 && (!best_dense[c.lights] || c.speedup > best_dense[c.lights]->speedup))
+        best_dense[c.lights] = &c;
+    for (const auto& c : r.dense_cells)
+      if (c.mode == "brute" && c.reach_mean > 0)
+        md += "- 400 + " + std::to_string(c.lights) + " lights: a pixel with geometry is reached by " +
+              format("%.1f", c.reach_mean) + " of the " + std::to_string(c.lights_in_view) +
+              " lights on average, so no exact method, whatever its lists, can be more than " +
+              format("%.1f", double(c.lights_in_view) / c.reach_mean) + "x faster than brute force here\n";
+    for (const auto& [lights, b] : best_dense)
+      md += "- dense, 400 + " + std::to_string(lights) + " lights: best mode " + b->mode + ", " +
+            format("%.1f", b->speedup) + "x brute force measured in this run (target >= 20x): " +
+            (b->speedup >= 20 ? "met" : "not met") + "\n";
   }
   if (!r.cutoffs.empty()) {
     md += "\n### Error against the un-windowed sum as the cutoff varies\n\n";
@@ -108,13 +142,9 @@ bool write_lights_reports(LightsResults& r, const std::string& dir, std::string*
   root["brute_limit_s"] = r.brute_limit_s;
   for (const auto& [size, ms] : r.copy_ms) root["copy_ms"][size] = ms;
   root["cells"] = nlohmann::ordered_json::array();
-  for (const auto& c : r.cells)
-    root["cells"].push_back({{"width", c.width}, {"height", c.height}, {"lights", c.lights}, {"mode", c.mode},
-                             {"ran", c.ran}, {"frames", c.frames}, {"warmup", c.warmup}, {"cull_ms", c.cull_ms}, {"shade_ms", c.shade_ms},
-                             {"total_ms", c.total_ms}, {"ratio_to_copy", c.ratio_to_copy}, {"speedup", c.speedup},
-                             {"speedup_estimated", c.speedup_estimated}, {"lights_in_view", c.lights_in_view},
-                             {"lists", c.lists}, {"list_mean", c.list_mean}, {"list_max", c.list_max},
-                             {"overflowed_lists", c.overflowed}, {"ssbo_bytes", c.ssbo_bytes}});
+  for (const auto& c : r.cells) root["cells"].push_back(cell_json(c));
+  root["dense"] = {{"seed", r.dense_seed}, {"cells", nlohmann::ordered_json::array()}};
+  for (const auto& c : r.dense_cells) root["dense"]["cells"].push_back(cell_json(c));
   root["error"] = {{"width", r.error_width}, {"height", r.error_height}, {"lights", r.error_lights},
                    {"mode", r.error_mode}, {"points", nlohmann::ordered_json::array()}};
   for (const auto& p : r.cutoffs)

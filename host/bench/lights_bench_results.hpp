@@ -21,7 +21,10 @@ struct LightsCell {
   uint64_t lights_in_view = 0;
   uint64_t lists = 0;
   double list_mean = 0;
-  uint64_t list_max = 0, overflowed = 0, ssbo_bytes = 0;
+  uint64_t list_max = 0, list_entries = 0, ssbo_bytes = 0;
+  // Dense brute-force cells: the mean, over pixels with geometry, of the lights that really reach
+  // the pixel (light_reach.hpp); 0 elsewhere.
+  double reach_mean = 0;
 };
 
 struct CutoffPoint {
@@ -38,6 +41,10 @@ struct LightsResults {
   double brute_limit_s = 0;
   std::vector<std::pair<std::string, double>> copy_ms;  // "WxH" -> the copy pass
   std::vector<LightsCell> cells;
+  // The dense case: the demo scene (pfx-render --demo --lights N --seed S) with more lights in the
+  // same room, brute force always measured.
+  std::vector<LightsCell> dense_cells;
+  uint64_t dense_seed = 0;
   int error_width = 0, error_height = 0, error_lights = 0;
   std::string error_mode;
   std::vector<CutoffPoint> cutoffs;

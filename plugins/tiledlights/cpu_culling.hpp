@@ -16,7 +16,7 @@ struct ListStats {
   uint64_t lists = 0;         // tiles or clusters
   uint64_t entries = 0;       // indices over all lists
   uint32_t max_length = 0;
-  uint32_t overflowed = 0;    // lists longer than their capacity (shaded with every light instead)
+  uint32_t inconsistent = 0;  // GPU lists whose fill disagreed with their count (never, short of a bug)
   double mean_length() const { return lists ? double(entries) / double(lists) : 0.0; }
 };
 

@@ -3,14 +3,15 @@
 //   brute      shade (uploads every light that reaches anything; every light at every pixel)
 //   cpu8x4     cull  (CPU: lights in view, seed 003's sub-frustum grid, lists into the upload ring)
 //              shade (each pixel reads its tile's list)
-//   tiled      cull  (CPU: lights in view; GPU compute: per-tile lists with the tile's depth bounds)
+//   tiled      cull  (CPU: lights in view; GPU compute: per-tile lists with the tile's depth bounds,
+//                     counted, placed by a prefix sum, filled: gpu_lists.hpp)
 //              shade
-//   clustered  cull  (CPU: lights in view; GPU compute: per-cluster lists, tiles x depth slices)
+//   clustered  cull  (CPU: lights in view; GPU compute: per-cluster lists, tiles x depth slices, the same way)
 //              shade
 //
 // Every list is in increasing light order and holds every light whose (slightly widened) sphere
-// reaches its tile or cluster, and the window is exactly 0 past a light's range, so every mode
-// sums the same non-zero terms in the same order as brute force.
+// reaches its tile or cluster, however many, and the window is exactly 0 past a light's range, so
+// every mode sums the same non-zero terms in the same order as brute force.
 #include "tiledlights_effect.hpp"
 
 #include <pfx/cpp/descriptors.hpp>
@@ -25,7 +26,9 @@
 #include <string>
 
 #include "cpu_culling.hpp"
+#include "gpu_lists.hpp"
 #include "light_set.hpp"
+#include "list_bound.hpp"
 #include "tiledlights_params.hpp"
 #include "tiledlights_shaders.hpp"
 #include "upload_ring.hpp"
@@ -40,14 +43,12 @@ enum PassTag : uint32_t { TAG_PREPARE = 1u, TAG_CULL = 2u, TAG_SHADE = 4u };
 
 struct Instance {
   const pfx_host* host = nullptr;
-  GLuint shade = 0, tiled = 0, clustered = 0;
+  GLuint shade = 0;
   UploadRing ring;
-  // GPU-built lists (heads, then indices), one buffer per ring slot: llvmpipe runs a compute
-  // dispatch at once but defers the draws before it, so the next frame's culling would overwrite
-  // lists a queued draw has yet to read; the ring's fence keeps the slot's buffer until then.
-  GLuint lists[UploadRing::kSlots] = {};
-  size_t lists_bytes[UploadRing::kSlots] = {};
-  GLuint stats = 0;  // the culling pass's counters
+  // GPU-built lists, in buffers per ring slot: llvmpipe runs a compute dispatch at once but defers
+  // the draws before it, so the next frame's culling would overwrite lists a queued draw has yet
+  // to read; the ring's fence keeps the slot's buffers until then.
+  GpuLists gpu_lists;
   GLint ssbo_alignment = 256;
   GLint64 max_block_bytes = 1 << 24;
   // Mesa's llvmpipe ends a shader invocation's loops after 65535 turns in all. The shaders sum 16
@@ -67,12 +68,12 @@ struct Instance {
   GridLists grid;
   int list_mode = sh::LIST_ALL;
   int tiles_x = 0, tiles_y = 0, tile_size = 1;
-  uint32_t capacity = 0xffffffffu;
   size_t lights_offset = 0, lights_bytes = 0, heads_offset = 0, heads_bytes = 0, indices_offset = 0,
          indices_bytes = 0;
   ListStats list_stats;
+  uint64_t list_bound = 0, index_capacity = 0;
   bool gpu_stats = false;
-  char report[640] = "";
+  char report[768] = "";
 };
 
 void log_error(const Instance* inst, const std::string& message) {
@@ -85,10 +86,6 @@ void destroy(void* self) {
   Instance* inst = static_cast<Instance*>(self);
   if (!inst) return;
   glDeleteProgram(inst->shade);
-  glDeleteProgram(inst->tiled);
-  glDeleteProgram(inst->clustered);
-  glDeleteBuffers(UploadRing::kSlots, inst->lists);
-  glDeleteBuffers(1, &inst->stats);
   delete inst;
 }
 
@@ -99,23 +96,13 @@ pfx_status create(const pfx_host* host, void** out) {
   if (!inst) return PFX_OUT_OF_MEMORY;
   inst->host = host;
   try {
-    struct Program {
-      GLuint* target;
-      const char* name;
-      std::string source;
-      bool compute;
-    } programs[3] = {{&inst->shade, "shade", sh::shade_fragment(), false},
-                     {&inst->tiled, "tiled", sh::tiled_compute(), true},
-                     {&inst->clustered, "clustered", sh::clustered_compute(), true}};
-    for (Program& p : programs) {
-      std::string error;
-      *p.target = p.compute ? pfx::gl::build_compute_program(p.source.c_str(), &error)
-                            : pfx::gl::build_fullscreen_program(p.source.c_str(), &error);
-      if (!*p.target) {
-        log_error(inst, std::string("shader '") + p.name + "': " + error);
-        destroy(inst);
-        return PFX_GL_ERROR;
-      }
+    std::string error;
+    inst->shade = pfx::gl::build_fullscreen_program(sh::shade_fragment().c_str(), &error);
+    if (!inst->shade) error = "shader 'shade': " + error;
+    if (!inst->shade || !inst->gpu_lists.create(&error)) {
+      log_error(inst, error);
+      destroy(inst);
+      return PFX_GL_ERROR;
     }
   } catch (...) {  // std::bad_alloc from a string; nothing may cross the ABI
     destroy(inst);
@@ -125,8 +112,6 @@ pfx_status create(const pfx_host* host, void** out) {
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (renderer && std::strstr(renderer, "llvmpipe")) inst->loop_guard_lights = 900000;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &inst->max_block_bytes);
-  glCreateBuffers(1, &inst->stats);
-  glNamedBufferStorage(inst->stats, 16, nullptr, GL_DYNAMIC_STORAGE_BIT);
   inst->shade_inputs[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
   inst->shade_inputs[1] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
   inst->shade_inputs[2] = {PFX_INPUT_NAME_NORMAL, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
@@ -194,7 +179,6 @@ void set_frame_uniforms(GLuint program, const pfx_frame& frame, const Perspectiv
   glProgramUniform2i(program, sh::U_FRAME_SIZE, static_cast<GLint>(frame.width), static_cast<GLint>(frame.height));
   glProgramUniform2i(program, sh::U_TILE_SIZE, inst.tile_size, inst.tile_size);
   glProgramUniform2i(program, sh::U_TILES, inst.tiles_x, inst.tiles_y);
-  glProgramUniform1ui(program, sh::U_CAPACITY, inst.capacity);
   // Exponential slices from the near plane to the far plane (1000 x near for an infinite one).
   const double near_depth = frame.camera.near_plane;
   const double far_depth = std::isfinite(frame.camera.far_plane) ? double(frame.camera.far_plane) : 1000.0 * near_depth;
@@ -219,8 +203,8 @@ pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
       inst->visible = lights_in_view(inst->set, perspective, w, h, frame.camera.near_plane, frame.camera.far_plane);
     }
     inst->list_mode = sh::LIST_ALL;
-    inst->capacity = 0xffffffffu;
     inst->list_stats = ListStats{};
+    inst->list_bound = inst->index_capacity = 0;
     inst->gpu_stats = false;
     inst->heads_bytes = inst->indices_bytes = 0;
     if (s.mode == MODE_CPU8X4) {
@@ -232,6 +216,7 @@ pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
         return PFX_OUT_OF_MEMORY;
       }
       inst->list_stats = inst->grid.stats;
+      inst->list_bound = inst->index_capacity = inst->grid.stats.entries;
       inst->heads_bytes = inst->grid.heads.size() * 4;
       inst->indices_bytes = std::max<size_t>(4, inst->grid.indices.size() * 4);
     }
@@ -276,36 +261,37 @@ pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
     inst->tiles_x = (w + inst->tile_size - 1) / inst->tile_size;
     inst->tiles_y = (h + inst->tile_size - 1) / inst->tile_size;
     inst->list_mode = clustered ? sh::LIST_CLUSTERS : sh::LIST_TILES_BY_SIZE;
-    const uint64_t lists = uint64_t(inst->tiles_x) * inst->tiles_y * (clustered ? s.slices : 1);
-    // A list that does not fit is never cut short: the shading pass then uses every light.
-    const uint64_t fits = uint64_t(inst->max_block_bytes) / (4 * lists);
-    inst->capacity = static_cast<uint32_t>(std::max<uint64_t>(1, std::min<uint64_t>(s.list_capacity, fits)));
-    inst->heads_bytes = lists * 8;
-    inst->indices_bytes = lists * inst->capacity * 4;
-    const size_t indices_offset = align_up(inst->heads_bytes, alignment);
-    const size_t needed = indices_offset + inst->indices_bytes;
-    const int slot = inst->ring.slot();
-    if (needed > inst->lists_bytes[slot]) {
-      glDeleteBuffers(1, &inst->lists[slot]);
-      glCreateBuffers(1, &inst->lists[slot]);
-      glNamedBufferStorage(inst->lists[slot], static_cast<GLsizeiptr>(needed), nullptr, 0);
-      inst->lists_bytes[slot] = needed;
+    ListShape shape;
+    shape.clustered = clustered;
+    shape.tiles_x = inst->tiles_x;
+    shape.tiles_y = inst->tiles_y;
+    shape.slices = s.slices;
+    const uint64_t lists = shape.lists();
+    if (static_cast<GLint64>(lists * 8) > inst->max_block_bytes) {
+      log_error(inst, std::to_string(lists) + " lists need more than this GL's shader storage block limit of " +
+                          std::to_string(inst->max_block_bytes) + " bytes: use larger tiles or fewer slices");
+      return PFX_OUT_OF_MEMORY;
     }
-    const GLuint lists_buffer = inst->lists[slot];
-    inst->indices_offset = indices_offset;
-    const GLuint zero = 0;
-    glClearNamedBufferData(inst->stats, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_HEADS, lists_buffer, 0,
-                      static_cast<GLsizeiptr>(inst->heads_bytes));
-    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_INDICES, lists_buffer,
-                      static_cast<GLintptr>(inst->indices_offset), static_cast<GLsizeiptr>(inst->indices_bytes));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, sh::SSBO_STATS, inst->stats);
-    const GLuint program = clustered ? inst->clustered : inst->tiled;
+    ListGrid grid;
+    grid.width = w;
+    grid.height = h;
+    grid.tile_size = inst->tile_size;
+    grid.slices = clustered ? s.slices : 0;
+    grid.slice_near = frame.camera.near_plane;
+    grid.slice_far = std::isfinite(frame.camera.far_plane) ? double(frame.camera.far_plane)
+                                                            : 1000.0 * frame.camera.near_plane;
+    inst->list_bound = list_entries_bound(inst->set, inst->visible, perspective, grid);
+    // The index buffer is one shader storage block: its size limit, and the user's budget.
+    uint64_t budget = std::min<uint64_t>(uint64_t(inst->max_block_bytes) / 4, 0xffffffffull);
+    if (s.max_list_indices >= 1) budget = std::min<uint64_t>(budget, uint64_t(s.max_list_indices));
+    const GLuint program = inst->gpu_lists.program(clustered);
     set_frame_uniforms(program, frame, perspective, static_cast<uint32_t>(inst->visible.size()), *inst);
-    glUseProgram(program);
-    glDispatchCompute(static_cast<GLuint>(inst->tiles_x), static_cast<GLuint>(inst->tiles_y), 1);
-    glUseProgram(0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    std::string error;
+    if (!inst->gpu_lists.build(inst->ring.slot(), shape, inst->list_bound, budget, &error)) {
+      log_error(inst, error);
+      return PFX_OUT_OF_MEMORY;
+    }
+    inst->index_capacity = inst->gpu_lists.index_capacity(inst->ring.slot());
     inst->list_stats.lists = lists;
     inst->gpu_stats = true;
   }
@@ -333,6 +319,7 @@ pfx_status shade(Instance* inst, const pfx_pass_context* context) {
   glProgramUniformMatrix4fv(program, sh::U_INVERSE_VIEW, 1, GL_FALSE, inverse_f);
   glProgramUniform1i(program, sh::U_BASE, inst->settings.base);
   glProgramUniform1i(program, sh::U_SHOW, inst->settings.show);
+  glProgramUniform1i(program, sh::U_NONFINITE, inst->settings.nonfinite);
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_LIGHTS, inst->ring.buffer(),
                     static_cast<GLintptr>(inst->lights_offset), static_cast<GLsizeiptr>(inst->lights_bytes));
   if (inst->list_mode == sh::LIST_TILES_BY_GRID) {
@@ -340,6 +327,8 @@ pfx_status shade(Instance* inst, const pfx_pass_context* context) {
                       static_cast<GLintptr>(inst->heads_offset), static_cast<GLsizeiptr>(inst->heads_bytes));
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_INDICES, inst->ring.buffer(),
                       static_cast<GLintptr>(inst->indices_offset), static_cast<GLsizeiptr>(inst->indices_bytes));
+  } else if (inst->list_mode != sh::LIST_ALL) {
+    inst->gpu_lists.bind_for_shading(inst->ring.slot());
   }
   glUseProgram(program);
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -365,25 +354,29 @@ const char* report_json(void* self) {
   Instance* inst = static_cast<Instance*>(self);
   ListStats& stats = inst->list_stats;
   if (inst->gpu_stats) {
-    // Waits for the culling pass: the counters are only known once it ran.
-    GLuint counters[4] = {};
-    glGetNamedBufferSubData(inst->stats, 0, sizeof counters, counters);
-    stats.overflowed = counters[0];
-    stats.entries = counters[1];
-    stats.max_length = counters[2];
+    // Waits for the list building: the counts are only known once it ran.
+    const GpuLists::Stats gpu = inst->gpu_lists.read_stats();
+    stats.entries = gpu.entries;
+    stats.max_length = gpu.longest;
+    stats.inconsistent = gpu.inconsistent;
+    // Cannot happen while the count and fill phases agree; if it did, a list would be wrong.
+    if (gpu.inconsistent)
+      log_error(inst, std::to_string(gpu.inconsistent) + " light lists came out a different length than counted");
     inst->gpu_stats = false;
   }
-  uint64_t ssbo_bytes = inst->ring.bytes() + 16;
-  for (size_t bytes : inst->lists_bytes) ssbo_bytes += bytes;
+  const uint64_t ssbo_bytes = inst->ring.bytes() + inst->gpu_lists.bytes();
   std::snprintf(inst->report, sizeof inst->report,
                 "\"mode\": \"%s\", \"lights\": %u, \"lights_reaching\": %zu, \"lights_uploaded\": %zu, "
-                "\"lists\": %llu, \"list_mean\": %.3f, \"list_max\": %u, \"list_capacity\": %u, "
-                "\"overflowed_lists\": %u, \"ssbo_bytes\": %llu, \"ring_waits\": %llu",
+                "\"lists\": %llu, \"list_entries\": %llu, \"list_mean\": %.3f, \"list_max\": %u, "
+                "\"list_bound\": %llu, \"index_capacity\": %llu, \"inconsistent_lists\": %u, "
+                "\"list_readbacks\": %llu, \"ssbo_bytes\": %llu, \"ring_waits\": %llu",
                 kModeNames[std::min(std::max(inst->settings.mode, 0), MODE_COUNT - 1)], inst->set.frame_lights,
                 inst->set.lights.size(), inst->visible.size(), static_cast<unsigned long long>(stats.lists),
-                stats.mean_length(), stats.max_length, inst->capacity == 0xffffffffu ? 0u : inst->capacity,
-                stats.overflowed, static_cast<unsigned long long>(ssbo_bytes),
-                static_cast<unsigned long long>(inst->ring.waits()));
+                static_cast<unsigned long long>(stats.entries), stats.mean_length(), stats.max_length,
+                static_cast<unsigned long long>(inst->list_bound),
+                static_cast<unsigned long long>(inst->index_capacity), stats.inconsistent,
+                static_cast<unsigned long long>(inst->gpu_lists.readbacks()),
+                static_cast<unsigned long long>(ssbo_bytes), static_cast<unsigned long long>(inst->ring.waits()));
   return inst->report;
 }
 

@@ -23,6 +23,9 @@ const pfx_enum_item kBaseItems[] = {{"color", "Add to the incoming colour"},
 const pfx_enum_item kShowItems[] = {{"light", "The lit image"},
                                     {"list_heat", "Heat colour of the lights each pixel sums"}};
 
+const pfx_enum_item kNonfiniteItems[] = {{"zero", "A non-finite sample is read as 0"},
+                                         {"clamp", "NaN is read as 0, +-Inf as +-65504"}};
+
 }  // namespace
 
 const char* const kModeNames[MODE_COUNT] = {"brute", "cpu8x4", "tiled", "clustered"};
@@ -63,16 +66,24 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
           "clustered: depth slices between the near and the far plane, exponentially spaced (a far plane "
           "at infinity slices up to 1000 x near).",
           "", "Culling", PFX_PARAM_INT, 1, 64, 1, 64, 1, {{16}}),
-    param("list_capacity", "List capacity",
-          "tiled, clustered: light indices one list holds. A tile or cluster with more lights is shaded "
-          "with every light instead (the same image, slower) and counted as overflowed in the report.",
-          "", "Culling", PFX_PARAM_INT, 1, 1 << 20, 16, 4096, 1, {{512}}),
+    param("max_list_indices", "Most list indices",
+          "tiled, clustered: the most light indices all lists of a frame may hold together (a memory budget; "
+          "4 bytes each, per buffered frame). 0: as many as the GL's shader storage block size allows. Each "
+          "list holds every light of its tile or cluster; a frame that needs more than this is refused with "
+          "an error, never cut short.",
+          "", "Culling", PFX_PARAM_INT, 0, 1073741823, 0, 16777216, 1, {{0}}),
     with_items(param("show", "Show",
                      "light: the lit image. list_heat: instead of the light, a heat colour of how many lights "
                      "each pixel with geometry sums (its tile's or cluster's list; every light for brute "
                      "force), on a log scale: black 0, blue 4, green 31, yellow 180, red 1023 or more.",
                      "", "Debug", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{SHOW_LIGHT}}),
                kShowItems, 2),
+    with_items(param("nonfinite", "Non-finite input",
+                     "How a NaN or infinite sample of the colour, emissive or albedo input is read, before "
+                     "anything else. zero: every non-finite channel is 0; clamp: NaN is 0, +-Inf is +-65504 "
+                     "(the largest half float). A non-finite normal lights nothing either way.",
+                     "", "Input", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{NONFINITE_ZERO}}),
+               kNonfiniteItems, 2),
 };
 
 Settings settings_from(const pfx_value* values) {
@@ -86,8 +97,9 @@ Settings settings_from(const pfx_value* values) {
   s.cpu_tiles_y = static_cast<int>(values[PARAM_CPU_TILES_Y].v[0]);
   s.cluster_tile_size = static_cast<int>(values[PARAM_CLUSTER_TILE_SIZE].v[0]);
   s.slices = static_cast<int>(values[PARAM_SLICES].v[0]);
-  s.list_capacity = static_cast<int>(values[PARAM_LIST_CAPACITY].v[0]);
+  s.max_list_indices = values[PARAM_MAX_LIST_INDICES].v[0];
   s.show = static_cast<int>(values[PARAM_SHOW].v[0]);
+  s.nonfinite = static_cast<int>(values[PARAM_NONFINITE].v[0]);
   return s;
 }
 

@@ -19,8 +19,9 @@ enum Param : uint32_t {
   PARAM_CPU_TILES_Y,
   PARAM_CLUSTER_TILE_SIZE,
   PARAM_SLICES,
-  PARAM_LIST_CAPACITY,
+  PARAM_MAX_LIST_INDICES,
   PARAM_SHOW,
+  PARAM_NONFINITE,
   PARAM_COUNT
 };
 
@@ -30,8 +31,11 @@ enum RangeRule : int { RANGE_CUTOFF = 0, RANGE_SEED = 1 };
 // lighting pass) or the emissive input alone.
 enum Base : int { BASE_COLOR = 0, BASE_EMISSIVE = 1 };
 // What the output shows: the lit image, or a heat colour of how many lights each pixel sums (its
-// list's length; every light for brute force or an overflowed list): where the cost goes.
+// list's length; every light for brute force): where the cost goes.
 enum Show : int { SHOW_LIGHT = 0, SHOW_LIST_HEAT = 1 };
+// How a non-finite sample of the colour, emissive or albedo input is read: zero: as 0 (every
+// non-finite channel); clamp: NaN as 0, +-Inf as +-65504 (the largest half float).
+enum Nonfinite : int { NONFINITE_ZERO = 0, NONFINITE_CLAMP = 1 };
 
 extern const pfx_param_desc kParams[PARAM_COUNT];
 extern const char* const kModeNames[MODE_COUNT];
@@ -46,8 +50,9 @@ struct Settings {
   int cpu_tiles_y = 4;
   int cluster_tile_size = 64;  // clustered: pixels per side of a cluster's screen tile
   int slices = 16;             // clustered: exponential depth slices
-  int list_capacity = 512;     // tiled and clustered: indices a GPU-built list holds
+  double max_list_indices = 0; // tiled and clustered: the most indices all lists may hold (0: the GL's limit)
   int show = SHOW_LIGHT;
+  int nonfinite = NONFINITE_ZERO;
 };
 
 Settings settings_from(const pfx_value* values);

@@ -66,11 +66,29 @@ layout(std430, binding = 2) readonly buffer Indices { uint indices[]; };
 layout(location = 5) uniform int list_mode;
 layout(location = 6) uniform ivec2 tile_size;
 layout(location = 7) uniform ivec2 tiles;
-layout(location = 8) uniform uint capacity;
 layout(location = 11) uniform mat4 inverse_view;
 layout(location = 12) uniform int base_mode;
 layout(location = 13) uniform int show;
+layout(location = 14) uniform int nonfinite;  // 0 zero, 1 clamp
 out vec4 result;
+
+// A colour sample as the nonfinite policy reads it. zero: every non-finite channel is 0; clamp:
+// NaN is 0 and +-Inf the largest half float, +-65504. Finite channels are unchanged. Tested on the
+// bits: a compiler may assume floats are finite and fold isnan() and isinf() away.
+vec4 finite_sample(vec4 c) {
+  uvec4 bits = floatBitsToUint(c);
+  bvec4 bad = equal(bits & 0x7f800000u, uvec4(0x7f800000u));
+  bvec4 nan = bvec4(uvec4(bad) & uvec4(notEqual(bits & 0x007fffffu, uvec4(0u))));
+  vec4 replaced = nonfinite == 1 ? mix(sign(c) * 65504.0, vec4(0.0), nan) : vec4(0.0);
+  return mix(c, replaced, bad);
+}
+
+// A normal with a non-finite component lights nothing (as a zero normal does).
+vec3 usable_normal(vec3 n) {
+  if (any(equal(floatBitsToUint(n) & 0x7f800000u, uvec3(0x7f800000u)))) return vec3(0.0);
+  float n_length = length(n);
+  return n_length > 0.0 ? n / n_length : vec3(0.0);
+}
 
 // show = list_heat: log2(1 + count) / 10 through black, blue, green, yellow, red (1023 and more).
 vec3 list_heat(uint count) {
@@ -95,30 +113,25 @@ vec3 light_term(Light light, vec3 p, vec3 n) {
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 color = texelFetch(color_in, pixel, 0);
+  vec4 color = finite_sample(texelFetch(color_in, pixel, 0));
   float d = view_depth(texelFetch(depth_in, pixel, 0).r);
   if (!has_geometry(d)) {
     result = color;
     return;
   }
   vec3 p = (inverse_view * vec4(ray_slope(gl_FragCoord.xy) * d, -d, 1.0)).xyz;
-  vec3 n = texelFetch(normal_in, pixel, 0).xyz;
-  float n_length = length(n);
-  n = n_length > 0.0 ? n / n_length : vec3(0.0);
+  vec3 n = usable_normal(texelFetch(normal_in, pixel, 0).xyz);
 
+  // Every list holds all the lights of its tile or cluster, however many (one compact index array).
   uint offset = 0u, count = light_count;
-  bool listed = false;
-  if (list_mode != 0) {
+  bool listed = list_mode != 0;
+  if (listed) {
     ivec2 t = list_mode == 2 ? (pixel * tiles) / frame_size : pixel / tile_size;
     int list = t.y * tiles.x + t.x;
     if (list_mode == 3) list += slice_of(d) * tiles.x * tiles.y;
     uvec2 head = heads[list];
-    // A list longer than its capacity was not stored: every light instead, the same sum.
-    if (head.y <= capacity) {
-      offset = head.x;
-      count = head.y;
-      listed = true;
-    }
+    offset = head.x;
+    count = head.y;
   }
   if (show == 1) {
     result = vec4(list_heat(count), color.a);
@@ -140,185 +153,14 @@ void main() {
 #undef TERM
     for (; k < count; ++k) sum += light_term(lights[k], p, n);
   }
-  vec3 base = base_mode == 1 ? texelFetch(emissive_in, pixel, 0).rgb : color.rgb;
-  result = vec4(base + texelFetch(albedo_in, pixel, 0).rgb * sum, color.a);
-}
-)";
-
-// What both list builders share: one work group per screen tile, the tile's depth bounds, its
-// side planes, and an ordered compaction so every list is in increasing light order (the order
-// brute force sums in).
-const char* kCullCommon = R"(
-layout(local_size_x = 256) in;
-layout(binding = 0) uniform sampler2D depth_in;
-layout(std430, binding = 1) writeonly buffer Heads { uvec2 heads[]; };
-layout(std430, binding = 2) writeonly buffer Indices { uint indices[]; };
-layout(std430, binding = 3) buffer Stats { uint overflowed; uint entries; uint longest; uint unused; };
-layout(location = 6) uniform ivec2 tile_size;
-layout(location = 7) uniform ivec2 tiles;
-layout(location = 8) uniform uint capacity;
-
-shared uint depth_min_bits, depth_max_bits;
-shared uint scan[256];
-
-// Bounds of the positive finite depths in the tile (floats >= 0 order like their bits).
-void tile_depth_bounds(ivec2 origin, ivec2 size, out float near_depth, out float far_depth, out bool empty) {
-  uint id = gl_LocalInvocationIndex;
-  if (id == 0u) {
-    depth_min_bits = 0x7f800000u;
-    depth_max_bits = 0u;
-  }
-  barrier();
-  for (int k = int(id); k < size.x * size.y; k += 256) {
-    float d = view_depth(texelFetch(depth_in, origin + ivec2(k % size.x, k / size.x), 0).r);
-    if (has_geometry(d)) {
-      atomicMin(depth_min_bits, floatBitsToUint(d));
-      atomicMax(depth_max_bits, floatBitsToUint(d));
-    }
-  }
-  barrier();
-  near_depth = uintBitsToFloat(depth_min_bits);
-  far_depth = uintBitsToFloat(depth_max_bits);
-  empty = depth_max_bits == 0u;
-}
-
-// Inward unit normals of the side planes of the frustum behind pixels [origin, origin + size).
-void side_planes(ivec2 origin, ivec2 size, out vec3 planes[4]) {
-  vec2 s0 = ray_slope(vec2(origin)), s1 = ray_slope(vec2(origin + size));
-  planes[0] = normalize(vec3(1.0, 0.0, s0.x));
-  planes[1] = normalize(vec3(-1.0, 0.0, -s1.x));
-  planes[2] = normalize(vec3(0.0, 1.0, s0.y));
-  planes[3] = normalize(vec3(0.0, -1.0, -s1.y));
-}
-
-bool sphere_in_tile(vec4 sphere, vec3 planes[4], float near_depth, float far_depth) {
-  float depth = -sphere.z;
-  if (depth + sphere.w < near_depth || depth - sphere.w > far_depth) return false;
-  for (int i = 0; i < 4; ++i)
-    if (dot(planes[i], sphere.xyz) < -sphere.w) return false;
-  return true;
-}
-
-// Rank of this invocation's flag among the set flags of the group (an exclusive prefix sum),
-// and their total. Called by every invocation.
-uint rank_of(bool flag, out uint total) {
-  uint id = gl_LocalInvocationIndex;
-  scan[id] = flag ? 1u : 0u;
-  barrier();
-  for (uint step = 1u; step < 256u; step <<= 1) {
-    uint add = id >= step ? scan[id - step] : 0u;
-    barrier();
-    scan[id] += add;
-    barrier();
-  }
-  total = scan[255];
-  uint rank = scan[id] - (flag ? 1u : 0u);
-  barrier();
-  return rank;
-}
-
-void record(uint list, uint count) {
-  heads[list] = uvec2(list * capacity, count);
-  if (count > capacity) atomicAdd(overflowed, 1u);
-  atomicAdd(entries, count);
-  atomicMax(longest, count);
-}
-)";
-
-const char* kTiled = R"(
-void main() {
-  ivec2 origin = ivec2(gl_WorkGroupID.xy) * tile_size;
-  ivec2 size = min(tile_size, frame_size - origin);
-  float near_depth, far_depth;
-  bool empty;
-  tile_depth_bounds(origin, size, near_depth, far_depth, empty);
-  vec3 planes[4];
-  side_planes(origin, size, planes);
-  uint list = gl_WorkGroupID.y * uint(tiles.x) + gl_WorkGroupID.x;
-  uint first_index = list * capacity;
-  uint count = 0u;
-  if (!empty) {
-    for (uint first = 0u; first < light_count; first += 256u) {
-      uint i = first + gl_LocalInvocationIndex;
-      bool hit = i < light_count && sphere_in_tile(lights[i].view_cull, planes, near_depth, far_depth);
-      uint total;
-      uint rank = rank_of(hit, total);
-      if (hit && count + rank < capacity) indices[first_index + count + rank] = i;
-      count += total;
-    }
-  }
-  if (gl_LocalInvocationIndex == 0u) record(list, count);
-}
-)";
-
-const char* kClustered = R"(
-shared uint candidates[256];
-shared uint slice_count[64];
-
-// The view depths slice s covers, widened by 0.1% so a pixel whose slice index rounds to a
-// neighbour is still inside the list it reads.
-float slice_near(int s) { return s == 0 ? 0.0 : slice_range.x * exp(slice_range.y * float(s) / float(slices)) * 0.999; }
-float slice_far(int s) {
-  return s == slices - 1 ? uintBitsToFloat(0x7f800000u)
-                         : slice_range.x * exp(slice_range.y * float(s + 1) / float(slices)) * 1.001;
-}
-
-// Appends light i to the cluster's list when its sphere reaches the cluster's depths.
-void consider(uint i, float z0, float z1, uint list, inout uint count) {
-  vec4 sphere = lights[i].view_cull;
-  float depth = -sphere.z;
-  if (depth + sphere.w < z0 || depth - sphere.w > z1) return;
-  if (count < capacity) indices[list * capacity + count] = i;
-  ++count;
-}
-
-void main() {
-  ivec2 origin = ivec2(gl_WorkGroupID.xy) * tile_size;
-  ivec2 size = min(tile_size, frame_size - origin);
-  float near_depth, far_depth;
-  bool empty;
-  tile_depth_bounds(origin, size, near_depth, far_depth, empty);
-  vec3 planes[4];
-  side_planes(origin, size, planes);
-  int s = int(gl_LocalInvocationIndex);
-  // The slices this tile's pixels fall in; the others stay empty.
-  bool mine = s < slices && !empty && s >= slice_of(near_depth * 0.999) && s <= slice_of(far_depth * 1.001);
-  float z0 = mine ? max(slice_near(s), near_depth) : 0.0;
-  float z1 = mine ? min(slice_far(s), far_depth) : 0.0;
-  uint tile = gl_WorkGroupID.y * uint(tiles.x) + gl_WorkGroupID.x;
-  uint list = uint(s) * uint(tiles.x * tiles.y) + tile;
-  if (s < slices) slice_count[s] = 0u;
-  barrier();
-  if (!empty) {
-    for (uint first = 0u; first < light_count; first += 256u) {
-      uint i = first + gl_LocalInvocationIndex;
-      bool hit = i < light_count && sphere_in_tile(lights[i].view_cull, planes, near_depth, far_depth);
-      uint total;
-      uint rank = rank_of(hit, total);
-      if (hit) candidates[rank] = i;
-      barrier();
-      // One invocation per slice walks the tile's candidates in order: its list stays sorted.
-      if (mine) {
-        uint count = slice_count[s];
-        uint k = 0u;
-        // Sixteen candidates a turn, for llvmpipe's loop guard (see the shading pass).
-#define TERM(j) consider(candidates[k + j], z0, z1, list, count);
-        for (; k + 16u <= total; k += 16u) { SIXTEEN_TERMS }
-#undef TERM
-        for (; k < total; ++k) consider(candidates[k], z0, z1, list, count);
-        slice_count[s] = count;
-      }
-      barrier();
-    }
-  }
-  if (s < slices) record(list, slice_count[s]);
+  vec3 base = base_mode == 1 ? finite_sample(texelFetch(emissive_in, pixel, 0)).rgb : color.rgb;
+  result = vec4(base + finite_sample(texelFetch(albedo_in, pixel, 0)).rgb * sum, color.a);
 }
 )";
 
 }  // namespace
 
+std::string common_source() { return kCommon; }
 std::string shade_fragment() { return std::string(kCommon) + kShade; }
-std::string tiled_compute() { return std::string(kCommon) + kCullCommon + kTiled; }
-std::string clustered_compute() { return std::string(kCommon) + kCullCommon + kClustered; }
 
 }  // namespace pfx_tiledlights::shaders

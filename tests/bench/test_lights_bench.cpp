@@ -1,7 +1,8 @@
 // pfx-bench --lights --quick: the tiledlights benchmark's table is consistent with itself (speed-ups
 // are brute force's time over the mode's, brute force beyond the limit is its linear prediction),
-// the light-field scene's lights are all counted, and the error against the un-windowed sum falls
-// as the cutoff falls.
+// the light-field scene's lights are all counted, the error against the un-windowed sum falls as
+// the cutoff falls, and the dense case measures brute force (even past the limit) and every
+// culled mode's speed-up against it.
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -75,7 +76,32 @@ TEST_CASE("lights bench quick run: speed-ups, brute force predicted past its lim
   CHECK(at_005 < at_01);
   CHECK(at_01 < 1);
   CHECK(points[1]["list_mean"].get<double>() > points[0]["list_mean"].get<double>());
-  CHECK(fs::exists(out / "lights.md"));
+
+  // The dense case: the demo scene with 1000 more lights, brute force measured despite the 0 s limit.
+  std::map<std::string, nlohmann::json> dense;
+  for (const auto& c : json["dense"]["cells"]) dense[c["mode"].get<std::string>()] = c;
+  REQUIRE(dense.size() == 4);
+  CHECK(json["dense"]["seed"] == 7);
+  CHECK(dense["brute"]["ran"] == true);
+  CHECK(dense["brute"]["frames"] == 1);
+  CHECK(dense["brute"]["lights_in_view"] == 1400);  // the demo's 400 and the 1000 more all reach something
+  // The lights that really reach a pixel: some, not all (the floor is 44 m wide, the ranges 2..9 m).
+  CHECK(dense["brute"]["reach_mean"].get<double>() > 10);
+  CHECK(dense["brute"]["reach_mean"].get<double>() < 700);
+  for (const char* mode : {"cpu8x4", "tiled", "clustered"}) {
+    INFO("dense " << mode);
+    const auto& c = dense[mode];
+    CHECK(c["lights"] == 1000);
+    CHECK(c["speedup"].get<double>() ==
+          Approx(dense["brute"]["total_ms"].get<double>() / c["total_ms"].get<double>()).epsilon(1e-9));
+    CHECK(c["list_entries"].get<double>() >= c["list_max"].get<double>());
+    CHECK(c["list_mean"].get<double>() ==
+          Approx(c["list_entries"].get<double>() / c["lists"].get<double>()).margin(1e-3));
+  }
+  std::ifstream md(out / "lights.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  CHECK(text.find("### Dense: the demo scene") != std::string::npos);
+  CHECK(text.find("- dense, 400 + 1000 lights: best mode ") != std::string::npos);
   fs::remove_all(out);
 }
 
@@ -86,5 +112,7 @@ TEST_CASE("lights bench refuses bad options with exit code 2", "[bench][lights]"
   CHECK(run("--lights --sizes 0x10") == 2);
   CHECK(run("--lights --frames 0") == 2);
   CHECK(run("--lights --error-mode fast") == 2);
+  CHECK(run("--lights --dense-counts 10,x") == 2);
+  CHECK(run("--lights --dense-size 5") == 2);
   CHECK(run("--lights --help") == 0);
 }

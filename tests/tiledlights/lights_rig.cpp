@@ -174,7 +174,6 @@ void require_matches_reference(const Captured& captured, const std::vector<float
 }
 
 std::vector<float> check_modes(Rig& rig, const Captured& captured, bool against_reference) {
-  rig.set("list_capacity=100000");
   rig.set("mode=brute");
   const Rendered brute = rig.render(captured);
   INFO(brute.error << (brute.log.empty() ? "" : "; " + brute.log.back()));
@@ -186,10 +185,25 @@ std::vector<float> check_modes(Rig& rig, const Captured& captured, bool against_
     const Rendered culled = rig.render(captured);
     INFO(culled.error << (culled.log.empty() ? "" : "; " + culled.log.back()));
     REQUIRE(culled.error.empty());
-    CHECK(culled.report["overflowed_lists"] == 0);
+    check_list_figures(culled.report);
     require_identical(culled.output, brute.output, captured.width);
   }
   return brute.output;
+}
+
+void check_list_figures(const nlohmann::json& report) {
+  INFO(report.dump());
+  CHECK(report["inconsistent_lists"] == 0);
+  const uint64_t entries = report["list_entries"], lists = report["lists"], longest = report["list_max"];
+  CHECK(report["list_mean"].get<double>() == Approx(lists ? double(entries) / double(lists) : 0.0).margin(5e-4));  // %.3f
+  CHECK(longest <= entries);
+  CHECK(longest <= report["lights_uploaded"].get<uint64_t>());
+  if (report["mode"] == "tiled" || report["mode"] == "clustered") {
+    // The CPU's bound sized the index buffer; the GPU's count is within it.
+    CHECK(entries <= report["list_bound"].get<uint64_t>());
+    CHECK(entries <= report["index_capacity"].get<uint64_t>());
+    CHECK(report["list_readbacks"] == 0);
+  }
 }
 
 void require_identical(const std::vector<float>& a, const std::vector<float>& b, int width) {

@@ -72,10 +72,14 @@ void require_matches_reference(const Captured& captured, const std::vector<float
                                const std::vector<float>& reference);
 
 // Brute force against the reference, then cpu8x4, tiled and clustered against brute force, bit for
-// bit, with lists long enough never to overflow. Returns the brute-force output. Without
+// bit, and their list figures (check_list_figures). Returns the brute-force output. Without
 // against_reference only the modes are compared (for inputs whose float decoding alone is
 // outside the reference tolerance, e.g. hardware depth far from the near plane).
 std::vector<float> check_modes(Rig& rig, const Captured& captured, bool against_reference = true);
+// The report's list figures agree with each other: the mean is entries / lists, no list is longer
+// than all of them or than the lights uploaded, the GPU's entries fit the CPU's bound and the index
+// buffer without reading the total back, and the fill agreed with the count everywhere.
+void check_list_figures(const nlohmann::json& report);
 // Fails the calling test at the first pixel whose RGBA differs at all.
 void require_identical(const std::vector<float>& a, const std::vector<float>& b, int width);
 

@@ -7,6 +7,7 @@
 
 #include "cpu_culling.hpp"
 #include "light_set.hpp"
+#include "list_bound.hpp"
 #include "reference/light_shading.hpp"
 #include "tiledlights_params.hpp"
 #include "view_frustum.hpp"
@@ -183,7 +184,61 @@ TEST_CASE("the grid culls: at 1280x720 with 8x4 tiles most lights reach few tile
   REQUIRE(cull_grid(set, visible, perspective, 1280, 720, 8, 4, &grid));
   CHECK(grid.stats.lists == 32);
   CHECK(grid.stats.mean_length() < 0.5 * visible.size());
-  CHECK(grid.stats.overflowed == 0);
+  CHECK(grid.stats.entries == uint64_t(grid.indices.size()));
+}
+
+TEST_CASE("the list bound is at least every tile and cluster a light's sphere touches, and not far more",
+          "[tiledlights]") {
+  // Lights in front of, around and behind a 1280x720 camera, of every size.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> across(-30, 30), depth(-80, 5), intensity(0.2, 40);
+  std::vector<pfx_light> lights;
+  for (int i = 0; i < 300; ++i) lights.push_back(light_at(across(random), across(random) / 2, depth(random), float(intensity(random))));
+  const int w = 1280, h = 720, tile = 64, slices = 16;
+  const pfx_frame frame = frame_with(w, h, lights);
+  Settings settings;
+  LightSet set;
+  std::string error;
+  REQUIRE(prepare_lights(frame, settings, &set, &error));
+  Perspective perspective;
+  REQUIRE(perspective_of(frame.camera, &perspective, &error));
+  const auto visible = lights_in_view(set, perspective, w, h, 0.1, 100);
+  REQUIRE(visible.size() > 100);
+  // Independently: every tile's own four planes against each sphere, and the slices of depth
+  // [log-spaced from near 0.1 to far 100] the sphere's depth range meets.
+  uint64_t touched = 0, touched_slices = 0;
+  for (uint32_t index : visible) {
+    const GpuLight& light = set.lights[index];
+    const double c[3] = {light.view[0], light.view[1], light.view[2]};
+    int first = slices, last = -1;
+    for (int s = 0; s < slices; ++s) {
+      const double z0 = 0.1 * std::pow(1000.0, double(s) / slices), z1 = 0.1 * std::pow(1000.0, double(s + 1) / slices);
+      if (-c[2] + light.cull_radius >= (s == 0 ? 0.0 : z0) && -c[2] - light.cull_radius <= (s == slices - 1 ? 1e30 : z1)) {
+        first = std::min(first, s);
+        last = s;
+      }
+    }
+    for (int y = 0; y < h; y += tile)
+      for (int x = 0; x < w; x += tile)
+        if (sphere_touches(side_planes(perspective, w, h, x, std::min(x + tile, w), y, std::min(y + tile, h)), c,
+                           light.cull_radius)) {
+          ++touched;
+          touched_slices += uint64_t(std::max(0, last - first + 1));
+        }
+  }
+  ListGrid grid;
+  grid.width = w;
+  grid.height = h;
+  grid.tile_size = tile;
+  const uint64_t tiles_bound = list_entries_bound(set, visible, perspective, grid);
+  CHECK(tiles_bound >= touched);
+  CHECK(tiles_bound <= touched + touched / 4);  // the margin adds a few edge tiles, no more
+  grid.slices = slices;
+  grid.slice_near = 0.1;
+  grid.slice_far = 100;
+  const uint64_t clusters_bound = list_entries_bound(set, visible, perspective, grid);
+  CHECK(clusters_bound >= touched_slices);
+  CHECK(clusters_bound <= 4 * touched_slices);  // a slice either side, at most
 }
 
 TEST_CASE("references: one light at a known point, the window, and the ideal sum", "[tiledlights]") {

@@ -1,6 +1,6 @@
-// The named hard cases of issue 5: zero lights, lights behind the camera, through the near plane,
-// around the camera, covering the whole view, zero intensity, bad light values, lists that
-// overflow, odd sizes and 1x1, other depth encodings, the seed's range rule, the emissive base.
+// The named hard cases: zero lights, lights behind the camera, through the near plane, around the
+// camera, covering the whole view, zero intensity, bad light values, odd sizes and 1x1, other depth
+// encodings, the seed's range rule, the emissive base. Crowded lists: test_tiledlights_dense.cpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -125,30 +125,6 @@ TEST_CASE("a NaN light position is refused with an error naming the light", "[ti
   CHECK(log_mentions(rig.render(broken), "light 0: range must be finite"));
   // And a good frame renders again afterwards.
   CHECK(rig.render(captured).error.empty());
-}
-
-TEST_CASE("full lists fall back to every light: the same image, counted as overflow", "[tiledlights][gl][hard]") {
-  Rig rig;
-  const Captured captured = capture(pfx::app::make_demo_scene(), 64, 36);
-  rig.set("mode=brute");
-  const Rendered brute = rig.render(captured);
-  REQUIRE(brute.error.empty());
-  for (const char* mode : {"tiled", "clustered"}) {
-    INFO(mode);
-    rig.set(std::string("mode=") + mode);
-    rig.set("list_capacity=3");
-    const Rendered r = rig.render(captured);
-    REQUIRE(r.error.empty());
-    CHECK(r.report["list_capacity"] == 3);
-    CHECK(r.report["overflowed_lists"].get<int>() > 0);
-    CHECK(r.report["list_max"].get<int>() > 3);  // the real length, not the stored one
-    require_identical(r.output, brute.output, captured.width);
-  }
-  // The CPU lists have no fixed size: nothing overflows.
-  rig.set("mode=cpu8x4");
-  const Rendered cpu = rig.render(captured);
-  CHECK(cpu.report["overflowed_lists"] == 0);
-  CHECK(cpu.report["list_max"].get<int>() > 100);
 }
 
 TEST_CASE("any size: 1x1, odd sizes not divisible by the tiles, thin frames", "[tiledlights][gl][hard]") {

@@ -18,6 +18,13 @@ struct Light {
   double range;  // windowed only
 };
 
+// A colour channel as the nonfinite setting reads it (the shading pass's finite_sample).
+float finite_sample(float v, int nonfinite) {
+  if (std::isfinite(v)) return v;
+  if (nonfinite == NONFINITE_CLAMP && std::isinf(v)) return v > 0 ? 65504.0f : -65504.0f;
+  return 0.0f;
+}
+
 double smoothstep(double edge0, double edge1, double x) {
   const double t = std::min(std::max((x - edge0) / (edge1 - edge0), 0.0), 1.0);
   return t * t * (3 - 2 * t);
@@ -57,7 +64,12 @@ bool shade_reference(const pfx_frame& frame, const Settings& settings, const GBu
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
-      const float* color = images.color + i * 4;
+      float color[4], albedo[3], emissive[3] = {0, 0, 0};
+      for (int c = 0; c < 4; ++c) color[c] = finite_sample(images.color[i * 4 + c], settings.nonfinite);
+      for (int c = 0; c < 3; ++c) {
+        albedo[c] = finite_sample(images.albedo[i * 4 + c], settings.nonfinite);
+        if (images.emissive) emissive[c] = finite_sample(images.emissive[i * 4 + c], settings.nonfinite);
+      }
       float* out = output + i * 4;
       const double depth = pfx_view_depth(images.depth[i], frame.depth_encoding, frame.camera.near_plane,
                                           frame.camera.far_plane);
@@ -71,6 +83,8 @@ bool shade_reference(const pfx_frame& frame, const Settings& settings, const GBu
       for (int k = 0; k < 3; ++k)
         p[k] = inverse_view[k] * pv[0] + inverse_view[4 + k] * pv[1] + inverse_view[8 + k] * pv[2] + inverse_view[12 + k];
       double n[3] = {images.normal[i * 4], images.normal[i * 4 + 1], images.normal[i * 4 + 2]};
+      // A normal with a non-finite component lights nothing, as a zero normal.
+      if (!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2])) n[0] = n[1] = n[2] = 0;
       const double n_length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       for (double& v : n) v = n_length > 0 ? v / n_length : 0.0;
 
@@ -84,8 +98,8 @@ bool shade_reference(const pfx_frame& frame, const Settings& settings, const GBu
         if (windowed) factor *= 1 - smoothstep(0.75 * light.range, light.range, d);
         for (int k = 0; k < 3; ++k) sum[k] += light.radiance[k] * factor;
       }
-      const float* base = settings.base == BASE_EMISSIVE ? images.emissive + i * 4 : color;
-      for (int k = 0; k < 3; ++k) out[k] = static_cast<float>(base[k] + images.albedo[i * 4 + k] * sum[k]);
+      const float* base = settings.base == BASE_EMISSIVE ? emissive : color;
+      for (int k = 0; k < 3; ++k) out[k] = static_cast<float>(base[k] + albedo[k] * sum[k]);
       out[3] = color[3];
     }
   return true;

@@ -3,7 +3,8 @@
 //          base + albedo * sum_i radiance_i * max(N.L_i, 0) / (1 + d_i^2) * (1 - smoothstep(0.75 r_i, r_i, d_i));
 //   ideal: the same without the window and the range: every light at every pixel, the physical
 //          answer the cutoff approximates.
-// Pixels without geometry (view depth not finite and > 0) keep the incoming colour.
+// Pixels without geometry (view depth not finite and > 0) keep the incoming colour. Colour, emissive
+// and albedo samples are read through the nonfinite setting first.
 #pragma once
 
 #include <string>
