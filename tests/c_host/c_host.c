@@ -195,6 +195,9 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
    * after each pass blames only that pass. */
   while (glGetError() != GL_NO_ERROR) {
   }
+  /* The once-per-frame state of docs/sdk.md §1.5: this context holds GL's initial values, so only
+   * dithering (on in a fresh context) differs. */
+  glDisable(GL_DITHER);
 
   for (p = 0; p < declaration.pass_count; ++p) {
     const pfx_pass_desc* pass = pfx_at(pfx_pass_desc, declaration.passes, p);
@@ -238,7 +241,8 @@ static uint32_t run_effect(const pfx_effect_desc* effect, void* instance, const 
     }
 
     glBindVertexArray(vertex_array);
-    glBindFramebuffer(GL_FRAMEBUFFER, out ? out->framebuffer : 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, out ? out->framebuffer : 0); /* draw and read */
     if (out) glViewport(0, 0, (GLsizei)out->width, (GLsizei)out->height);
     if (pass->blend == PFX_BLEND_ADD) {
       glEnable(GL_BLEND);
