@@ -55,6 +55,8 @@ Chain::Chain(const PluginRegistry& registry, ParamStore& params) : registry_(reg
   gl_ = std::make_unique<GlResources>();
 }
 
+const GlLimits* Chain::gl_limits() const { return gl_ ? &gl_->limits : nullptr; }
+
 void Chain::set_timing(Timing timing) {
   if (timing == timing_) return;
   timing_ = timing;

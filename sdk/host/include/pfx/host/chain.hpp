@@ -18,6 +18,8 @@
 
 namespace pfx::host {
 
+struct GlLimits;  // libpfxhost's own: what GlStateGuard saves per indexed binding
+
 // GL textures of the frame inputs; 0 where the frame has none (frame.inputs must agree).
 // color and the chain's output are RGBA16F textures of the frame's size.
 struct FrameTextures {
@@ -130,8 +132,11 @@ class PFX_HOST_API Chain {
   const FramePlan& plan() const { return plan_; }
 
  private:
+  friend class GlStateGuard;  // saves state with the limits the chain queried
   struct Instance;
   struct GlResources;
+  // The implementation limits queried when the chain was made; null without GL.
+  const GlLimits* gl_limits() const;
   void renumber();
   bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
   bool execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,

@@ -1,0 +1,92 @@
+#include "app_launch.hpp"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+#include "plugin_directory.hpp"
+
+extern char** environ;
+
+namespace pfx::inject {
+
+std::string find_inject_library(std::string* error) {
+  namespace fs = std::filesystem;
+  const fs::path bin = app::executable_directory();
+  // A build tree keeps libraries in build/lib; an install in its LIBDIR (lib/<triplet> on Debian).
+  const fs::path build_tree = bin / ".." / "lib" / "libpfxinject.so";
+  const fs::path installed = bin / PFX_INJECT_BIN_TO_LIB / "libpfxinject.so";
+  std::error_code ec;
+  for (const fs::path& path : {build_tree, installed})
+    if (fs::is_regular_file(path, ec)) return fs::weakly_canonical(path, ec).string();
+  *error = "libpfxinject.so not found at " + installed.string() + " (build it: cmake --build build --target pfxinject)";
+  return "";
+}
+
+std::vector<std::string> child_environment(const InjectSettings& settings, const std::string& library) {
+  std::vector<std::string> environment;
+  std::string preload = library;
+  for (char** entry = environ; *entry; ++entry) {
+    const std::string variable = *entry;
+    if (variable.rfind("PFX_INJECT_", 0) == 0) continue;
+    if (variable.rfind("LD_PRELOAD=", 0) == 0) {
+      const std::string others = variable.substr(std::strlen("LD_PRELOAD="));
+      if (!others.empty()) preload += ":" + others;
+      continue;
+    }
+    environment.push_back(variable);
+  }
+  environment.push_back("LD_PRELOAD=" + preload);
+  InjectSettings complete = settings;
+  if (complete.plugin_dirs.empty()) {
+    const std::string beside = app::default_plugin_directory();
+    if (!beside.empty()) complete.plugin_dirs.push_back(beside);
+  }
+  for (const auto& variable : settings_to_environment(complete)) environment.push_back(variable);
+  return environment;
+}
+
+int run_application(const std::vector<std::string>& command, const std::vector<std::string>& environment,
+                    std::string* error) {
+  std::vector<char*> argv, envp;
+  for (const auto& arg : command) argv.push_back(const_cast<char*>(arg.c_str()));
+  argv.push_back(nullptr);
+  for (const auto& variable : environment) envp.push_back(const_cast<char*>(variable.c_str()));
+  envp.push_back(nullptr);
+  int report[2];
+  if (pipe2(report, O_CLOEXEC) != 0) {
+    *error = std::string("pipe: ") + std::strerror(errno);
+    return 127;
+  }
+  const pid_t child = fork();
+  if (child < 0) {
+    *error = std::string("fork: ") + std::strerror(errno);
+    return 127;
+  }
+  if (child == 0) {
+    close(report[0]);
+    execvpe(argv[0], argv.data(), envp.data());
+    // Only reached when exec failed: tell the parent why through the pipe, which exec would close.
+    const int failure = errno;
+    (void)!write(report[1], &failure, sizeof failure);
+    _exit(127);
+  }
+  close(report[1]);
+  int failure = 0;
+  const bool exec_failed = read(report[0], &failure, sizeof failure) == sizeof failure;
+  close(report[0]);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (exec_failed) {
+    *error = "cannot run " + command[0] + ": " + std::strerror(failure);
+    return 127;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+}  // namespace pfx::inject

@@ -1,0 +1,164 @@
+#include "context_pipeline.hpp"
+
+#include <cstdio>
+
+#include <glad/gl.h>
+#include <pfx/host/gl_state_guard.hpp>
+
+#include "camera_options.hpp"
+#include "frame_capture.hpp"
+#include "legacy_state.hpp"
+
+namespace pfx::inject {
+namespace {
+
+GLADapiproc load_through(void* user, const char* name) {
+  const auto* loader = static_cast<const host::GlProcLoader*>(user);
+  return reinterpret_cast<GLADapiproc>((*loader)(name));
+}
+
+// True for desktop OpenGL 4.5 or later; otherwise *why says what the context is instead.
+bool desktop_gl_45(const host::GlProcLoader& loader, std::string* why) {
+  // glGetString alone first: a full load fails on an ES context or one below 4.5.
+  using GetString = const unsigned char* (*)(GLenum);
+  auto get_string = reinterpret_cast<GetString>(loader("glGetString"));
+  const char* version = get_string ? reinterpret_cast<const char*>(get_string(GL_VERSION)) : nullptr;
+  const std::string text = version ? version : "";
+  if (text.rfind("OpenGL ES", 0) == 0) {
+    *why = "an " + text + " context: pfx needs desktop OpenGL 4.5";
+    return false;
+  }
+  int major = 0, minor = 0;
+  if (std::sscanf(text.c_str(), "%d.%d", &major, &minor) != 2 || major * 10 + minor < 45) {
+    *why = "an OpenGL " + (text.empty() ? std::string("of unknown version") : text) +
+           " context: pfx needs OpenGL 4.5";
+    return false;
+  }
+  return true;
+}
+
+std::unique_ptr<host::ParamStore> make_params(const host::PluginRegistry& registry) {
+  auto params = std::make_unique<host::ParamStore>();
+  for (const auto& effect : registry.effects()) params->add_effect(effect.desc);
+  return params;
+}
+
+std::string gl_error_text(GLenum error) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%04x", error);
+  return text;
+}
+
+}  // namespace
+
+ContextPipeline::ContextPipeline(const host::PluginRegistry& registry, const InjectSettings& settings)
+    : registry_(registry), settings_(settings) {}
+
+std::unique_ptr<ContextPipeline> ContextPipeline::create(const host::PluginRegistry& registry,
+                                                         const InjectSettings& settings, const ChainRecipe& recipe,
+                                                         std::vector<std::string>* notes, std::string* reason) {
+  const host::GlProcLoader& loader = registry.gl_loader();
+  if (!desktop_gl_45(loader, reason)) return nullptr;
+  if (!gladLoadGLUserPtr(load_through, const_cast<host::GlProcLoader*>(&loader)) || !GLAD_GL_VERSION_4_5) {
+    *reason = "the context reports OpenGL 4.5 but its functions could not be loaded";
+    return nullptr;
+  }
+  GLboolean double_buffered = GL_FALSE;
+  glGetBooleanv(GL_DOUBLEBUFFER, &double_buffered);
+  if (!double_buffered) {
+    *reason = "a single-buffered window: there is no back buffer to run the chain over";
+    return nullptr;
+  }
+  std::unique_ptr<ContextPipeline> pipeline(new ContextPipeline(registry, settings));
+  GLint profile = 0;
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  pipeline->compatibility_profile_ = (profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0;
+  if (!pipeline->copy_.create(reason)) return nullptr;
+  if (!pipeline->rebuild(recipe, notes, reason)) return nullptr;
+  return pipeline;
+}
+
+ContextPipeline::~ContextPipeline() {
+  // Instances before the store they read; the copy's objects go with the pipeline.
+  chain_.reset();
+  params_.reset();
+}
+
+bool ContextPipeline::rebuild(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason) {
+  auto params = make_params(registry_);
+  auto chain = std::make_unique<host::Chain>(registry_, *params);
+  {
+    // Effects compile programs and make textures as they are created: the application's
+    // bindings survive that too.
+    host::GlStateGuard guard(*chain);
+    if (!build_chain(recipe, chain.get(), params.get(), reason, notes)) return false;
+  }
+  chain_.reset();
+  params_ = std::move(params);
+  chain_ = std::move(chain);
+  return true;
+}
+
+std::string ContextPipeline::chain_text() const {
+  std::string text;
+  for (size_t i = 0; i < chain_->size(); ++i)
+    text += (text.empty() ? "" : ",") + chain_->instance_name(i) + (chain_->enabled(i) ? "" : " (off)");
+  return text.empty() ? "none (the copy in and out only)" : text;
+}
+
+bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* messages, std::string* reason) {
+  host::GlStateGuard guard(*chain_);
+  LegacyStateScope legacy(compatibility_profile_);
+  copy_.resize(work.width, work.height);
+  if (!depth_said_) {
+    depth_said_ = true;
+    messages->push_back(copy_.has_depth() ? "depth: " + copy_.depth_description() + ", read as hardware depth"
+                                          : "depth: none (" + copy_.depth_description() + ")");
+  }
+  if (!copy_.copy_in(settings_.transfer, reason)) return false;
+
+  pfx_frame frame{};
+  frame.struct_size = sizeof frame;
+  frame.width = static_cast<uint32_t>(work.width);
+  frame.height = static_cast<uint32_t>(work.height);
+  frame.inputs = PFX_INPUT_COLOR;
+  if (copy_.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
+  frame.depth_encoding = copy_.has_depth() ? PFX_DEPTH_HARDWARE : PFX_DEPTH_NONE;
+  app::CameraOptions camera;
+  camera.near_plane = settings_.depth_near;
+  camera.far_plane = settings_.depth_far;
+  frame.camera = app::make_camera(camera, work.width, work.height);
+  frame.time_seconds = work.time_seconds;
+  frame.frame_index = work.frame;
+  frame.light_struct_size = sizeof(pfx_light);
+  host::FrameTextures textures;
+  textures.color = copy_.color();
+  textures.depth = copy_.depth();
+
+  // With every effect off the chain would only copy: the frame goes straight back out.
+  GLuint result = copy_.color();
+  if (any_enabled(*chain_)) {
+    if (!chain_->render(frame, textures, copy_.output(), reason)) return false;
+    result = copy_.output();
+  }
+  for (const auto& prefix : work.captures) {
+    std::string error;
+    if (!write_texture_exr(copy_.color(), work.width, work.height, prefix + ".app.exr", &error) ||
+        !write_texture_exr(result, work.width, work.height, prefix + ".out.exr", &error))
+      messages->push_back("capture: " + error);
+  }
+  if (!settings_.dry_run) copy_.copy_out(result, settings_.transfer);
+  for (const auto& prefix : work.captures) {
+    std::string error;
+    if (!write_presented_png(copy_.read_back_buffer(), prefix + ".png", &error)) messages->push_back("capture: " + error);
+  }
+  if (work.measure_copy_pass) copy_pass_ms_ = copy_.copy_pass_ms(9);
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR) {
+    *reason = "GL error " + gl_error_text(error) + " while copying the frame in or out";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace pfx::inject

@@ -1,0 +1,61 @@
+// The chain in one of the application's GL contexts: its effect instances and parameter values,
+// the copy in and out, and what one present does. Made, used and destroyed on the thread where
+// that context is current.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pfx/host/chain.hpp>
+#include <pfx/host/param_store.hpp>
+#include <pfx/host/plugin_registry.hpp>
+
+#include "chain_recipe.hpp"
+#include "frame_copy.hpp"
+#include "inject_settings.hpp"
+
+namespace pfx::inject {
+
+// What one present asks of the pipeline.
+struct FrameWork {
+  int width = 0, height = 0;          // the surface's size
+  uint64_t frame = 0;                 // which presented frame, from 1
+  double time_seconds = 0;            // since the first present
+  std::vector<std::string> captures;  // prefixes to write this frame
+  bool measure_copy_pass = false;     // time the copy-pass unit this frame (bench)
+};
+
+class ContextPipeline {
+ public:
+  // Checks the current context (desktop OpenGL 4.5 or later, double-buffered) and builds the
+  // chain. Null with *reason, one line for the log, when this context cannot run it.
+  static std::unique_ptr<ContextPipeline> create(const host::PluginRegistry& registry, const InjectSettings& settings,
+                                                 const ChainRecipe& recipe, std::vector<std::string>* notes,
+                                                 std::string* reason);
+  ~ContextPipeline();
+
+  // Replaces the chain and its values (a changed preset). False with *reason, keeping the old.
+  bool rebuild(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason);
+  // Runs the chain over the back buffer and, unless a dry run, encodes the result into it. Every
+  // piece of GL state it touches is put back. False with *reason when it failed: the caller then
+  // leaves this context's frames alone.
+  bool process(const FrameWork& work, std::vector<std::string>* messages, std::string* reason);
+  // The copy-pass unit measured on the last frame that asked (0 before).
+  double copy_pass_ms() const { return copy_pass_ms_; }
+  std::string chain_text() const;
+
+ private:
+  ContextPipeline(const host::PluginRegistry& registry, const InjectSettings& settings);
+  const host::PluginRegistry& registry_;
+  const InjectSettings& settings_;
+  std::unique_ptr<host::ParamStore> params_;
+  std::unique_ptr<host::Chain> chain_;
+  FrameCopy copy_;
+  bool compatibility_profile_ = false;
+  bool depth_said_ = false;
+  double copy_pass_ms_ = 0;
+};
+
+}  // namespace pfx::inject

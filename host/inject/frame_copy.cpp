@@ -1,0 +1,225 @@
+#include "frame_copy.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include <pfx/cpp/gl_program.hpp>
+
+namespace pfx::inject {
+namespace {
+
+// The exact piecewise sRGB curves (IEC 61966-2-1), as host/image/tonemap does on the CPU. In
+// 32-bit float they put every 8-bit code back on itself through the RGBA16F texture between them:
+// a half holds the decoded value to 1/2048 of itself, which moves the code by at most 0.05.
+const char* kDecodeShader = R"(#version 450 core
+layout(binding = 0) uniform sampler2D back_buffer;
+layout(location = 0) uniform int srgb;
+layout(location = 0) out vec4 color;
+void main() {
+  vec4 value = texelFetch(back_buffer, ivec2(gl_FragCoord.xy), 0);
+  vec3 linear = mix(value.rgb / 12.92, pow((value.rgb + 0.055) / 1.055, vec3(2.4)), greaterThan(value.rgb, vec3(0.04045)));
+  color = vec4(srgb != 0 ? linear : value.rgb, value.a);
+}
+)";
+
+// Linear light to 8-bit: clamped to [0, 1] (what an 8-bit buffer can hold; the GL rounds to the
+// nearest code). Not-a-number becomes 0, so a broken pixel shows black, not whatever the
+// conversion makes of it.
+const char* kEncodeShader = R"(#version 450 core
+layout(binding = 0) uniform sampler2D chain_output;
+layout(location = 0) uniform int srgb;
+layout(location = 0) out vec4 color;
+void main() {
+  vec4 value = texelFetch(chain_output, ivec2(gl_FragCoord.xy), 0);
+  value = clamp(mix(value, vec4(0.0), isnan(value)), 0.0, 1.0);
+  vec3 encoded = mix(value.rgb * 12.92, 1.055 * pow(value.rgb, vec3(1.0 / 2.4)) - 0.055, greaterThan(value.rgb, vec3(0.0031308)));
+  color = vec4(srgb != 0 ? encoded : value.rgb, value.a);
+}
+)";
+
+const char* kCopyShader = R"(#version 450 core
+layout(binding = 0) uniform sampler2D source;
+layout(location = 0) out vec4 color;
+void main() { color = texelFetch(source, ivec2(gl_FragCoord.xy), 0); }
+)";
+
+GLuint make_texture(GLenum format, int width, int height) {
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, format, width, height);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+void draw_fullscreen(GLuint program, GLuint texture, int srgb_uniform) {
+  glUseProgram(program);
+  if (srgb_uniform >= 0) glUniform1i(0, srgb_uniform);
+  glBindTextureUnit(0, texture);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace
+
+bool FrameCopy::create(std::string* error) {
+  std::string message;
+  decode_program_ = pfx::gl::build_fullscreen_program(kDecodeShader, &message);
+  if (decode_program_) encode_program_ = pfx::gl::build_fullscreen_program(kEncodeShader, &message);
+  if (encode_program_) copy_program_ = pfx::gl::build_fullscreen_program(kCopyShader, &message);
+  if (!copy_program_) {
+    *error = "the copy programs did not build: " + message;
+    return false;
+  }
+  glCreateVertexArrays(1, &vertex_array_);
+  glCreateFramebuffers(1, &read_framebuffer_);
+  glCreateFramebuffers(1, &decode_framebuffer_);
+  glCreateFramebuffers(1, &scratch_framebuffer_);
+  return true;
+}
+
+FrameCopy::~FrameCopy() {
+  delete_targets();
+  const GLuint framebuffers[] = {read_framebuffer_, decode_framebuffer_, scratch_framebuffer_};
+  glDeleteFramebuffers(3, framebuffers);
+  glDeleteVertexArrays(1, &vertex_array_);
+  for (GLuint program : {decode_program_, encode_program_, copy_program_}) glDeleteProgram(program);
+}
+
+void FrameCopy::delete_targets() {
+  const GLuint textures[] = {back_buffer_copy_, color_, output_, depth_};
+  glDeleteTextures(4, textures);
+  back_buffer_copy_ = color_ = output_ = depth_ = 0;
+}
+
+// A depth blit needs the same format on both sides, so the copy takes the default framebuffer's.
+void FrameCopy::choose_depth_format() {
+  depth_format_ = 0;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  GLint type = GL_NONE, bits = 0, stencil_bits = 0, component = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type != GL_NONE) {
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE,
+                                          &component);
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+                                          &stencil_bits);
+  }
+  if (bits == 0) {
+    depth_description_ = "the default framebuffer has no depth buffer";
+    return;
+  }
+  if (component == GL_FLOAT) depth_format_ = stencil_bits ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
+  else if (bits == 24) depth_format_ = stencil_bits ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
+  else if (bits == 16) depth_format_ = GL_DEPTH_COMPONENT16;
+  else if (bits == 32) depth_format_ = GL_DEPTH_COMPONENT32;
+  depth_description_ = std::to_string(bits) + "-bit " + (component == GL_FLOAT ? "float " : "") + "depth" +
+                       (stencil_bits ? " with " + std::to_string(stencil_bits) + "-bit stencil" : "");
+  if (!depth_format_) depth_description_ += ", a format the copy does not know";
+}
+
+void FrameCopy::resize(int width, int height) {
+  if (width == width_ && height == height_ && back_buffer_copy_) return;
+  delete_targets();
+  width_ = width;
+  height_ = height;
+  back_buffer_copy_ = make_texture(GL_RGBA8, width, height);
+  color_ = make_texture(GL_RGBA16F, width, height);
+  output_ = make_texture(GL_RGBA16F, width, height);
+  choose_depth_format();
+  if (depth_format_) depth_ = make_texture(depth_format_, width, height);
+  glNamedFramebufferTexture(read_framebuffer_, GL_COLOR_ATTACHMENT0, back_buffer_copy_, 0);
+  const bool stencil = depth_format_ == GL_DEPTH24_STENCIL8 || depth_format_ == GL_DEPTH32F_STENCIL8;
+  glNamedFramebufferTexture(read_framebuffer_, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth_, 0);
+  glNamedFramebufferTexture(decode_framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
+}
+
+bool FrameCopy::copy_in(Transfer transfer, std::string* error) {
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  GLint read_buffer = GL_BACK;
+  glGetIntegerv(GL_READ_BUFFER, &read_buffer);
+  glReadBuffer(GL_BACK);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, read_framebuffer_);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  GLenum colour_error = glGetError();
+  if (depth_ && colour_error == GL_NO_ERROR) {
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    if (glGetError() != GL_NO_ERROR) {
+      depth_description_ += ", which the GL would not copy";
+      glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_ATTACHMENT, 0, 0);
+      glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+      glDeleteTextures(1, &depth_);
+      depth_ = 0;
+    }
+  }
+  glReadBuffer(static_cast<GLenum>(read_buffer));
+  if (colour_error != GL_NO_ERROR) {
+    *error = "copying the back buffer failed (GL error " + std::to_string(colour_error) + ")";
+    return false;
+  }
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, decode_framebuffer_);
+  glViewport(0, 0, width_, height_);
+  glBindVertexArray(vertex_array_);
+  draw_fullscreen(decode_program_, back_buffer_copy_, transfer == Transfer::SRGB);
+  return true;
+}
+
+void FrameCopy::copy_out(GLuint texture, Transfer transfer) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  GLint draw_buffer = GL_BACK;
+  glGetIntegerv(GL_DRAW_BUFFER, &draw_buffer);
+  glDrawBuffer(GL_BACK);
+  glViewport(0, 0, width_, height_);
+  glBindVertexArray(vertex_array_);
+  draw_fullscreen(encode_program_, texture, transfer == Transfer::SRGB);
+  glDrawBuffer(static_cast<GLenum>(draw_buffer));
+}
+
+app::DisplayImage FrameCopy::read_back_buffer() const {
+  app::DisplayImage image;
+  image.width = width_;
+  image.height = height_;
+  image.channels = 3;
+  std::vector<std::uint8_t> rgba(static_cast<size_t>(width_) * height_ * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  GLint read_buffer = GL_BACK;
+  glGetIntegerv(GL_READ_BUFFER, &read_buffer);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glReadBuffer(static_cast<GLenum>(read_buffer));
+  // GL's rows start at the bottom; an image's at the top. A window's alpha is not part of what
+  // is seen, so the picture keeps RGB.
+  image.pixels.resize(static_cast<size_t>(width_) * height_ * 3);
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x)
+      for (int c = 0; c < 3; ++c)
+        image.pixels[(static_cast<size_t>(height_ - 1 - y) * width_ + x) * 3 + c] =
+            rgba[(static_cast<size_t>(y) * width_ + x) * 4 + c];
+  return image;
+}
+
+double FrameCopy::copy_pass_ms(int repeats) {
+  GLuint target = make_texture(GL_RGBA16F, width_, height_);
+  glNamedFramebufferTexture(scratch_framebuffer_, GL_COLOR_ATTACHMENT0, target, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scratch_framebuffer_);
+  glViewport(0, 0, width_, height_);
+  glBindVertexArray(vertex_array_);
+  std::vector<double> times;
+  for (int i = 0; i < repeats; ++i) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    draw_fullscreen(copy_program_, color_, -1);
+    glFinish();
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  glNamedFramebufferTexture(scratch_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+  glDeleteTextures(1, &target);
+  std::sort(times.begin(), times.end());
+  return times.empty() ? 0 : times[times.size() / 2];
+}
+
+}  // namespace pfx::inject

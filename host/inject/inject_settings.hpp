@@ -1,0 +1,76 @@
+// What pfx-inject hands to libpfxinject.so: every setting travels in an environment variable, so
+// a user can also preload the library by hand (a game launcher's LD_PRELOAD) and set them there.
+// docs/inject.md lists the variables; this file is their one definition.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pfx::inject {
+
+// How the 8-bit values of the application's back buffer relate to light.
+enum class Transfer {
+  SRGB,    // sRGB-encoded (what almost every application presents): decoded with the exact
+           // piecewise sRGB curve, encoded back with its inverse
+  LINEAR,  // the values are linear light: divided by 255, multiplied back
+};
+
+struct Capture {
+  uint64_t frame = 0;  // the N-th presented frame, from 1; 0 with every_frame
+  bool every_frame = false;
+  std::string prefix;  // with every_frame it holds one "%d", replaced by the frame number
+};
+
+struct InjectSettings {
+  // The effects in order; unset: the preset's chain, else every effect found. "none" on the
+  // command line gives an empty chain (the copy in and out only).
+  std::optional<std::vector<std::string>> chain;
+  std::string preset;                // a pfx-view preset file, watched for changes; empty: none
+  std::vector<std::string> sets;     // "effect.param=value", applied after the preset
+  std::vector<std::string> plugin_dirs;  // empty: the folder beside the library
+  double depth_near = 0.1, depth_far = 1000;  // metres; far may be +infinity
+  Transfer transfer = Transfer::SRGB;
+  std::vector<Capture> captures;
+  uint64_t quit_after = 0;           // 0: never
+  bool dry_run = false;              // run the chain, present the application's own frame
+  bool bypass = false;               // hook the present and count frames, touch no GL (bench)
+  std::string log_file;              // empty: stderr
+  std::string stats_file;            // JSON of frame times written at exit (bench); empty: none
+};
+
+// The variable names, for the launcher, the library and the docs.
+namespace env {
+constexpr const char* kChain = "PFX_INJECT_CHAIN";          // "bloom,dof" or "none"
+constexpr const char* kPreset = "PFX_INJECT_PRESET";
+constexpr const char* kSet = "PFX_INJECT_SET";              // assignments, one per line
+constexpr const char* kPlugins = "PFX_INJECT_PLUGINS";      // folders separated by ':'
+constexpr const char* kDepthNear = "PFX_INJECT_DEPTH_NEAR";
+constexpr const char* kDepthFar = "PFX_INJECT_DEPTH_FAR";   // a number or "inf"
+constexpr const char* kTransfer = "PFX_INJECT_TRANSFER";    // "srgb" or "linear"
+constexpr const char* kCapture = "PFX_INJECT_CAPTURE";      // "N:PREFIX" items, one per line
+constexpr const char* kQuitAfter = "PFX_INJECT_QUIT_AFTER";
+constexpr const char* kDryRun = "PFX_INJECT_DRY_RUN";       // "1"
+constexpr const char* kBypass = "PFX_INJECT_BYPASS";        // "1"
+constexpr const char* kLog = "PFX_INJECT_LOG";
+constexpr const char* kStats = "PFX_INJECT_STATS";
+}  // namespace env
+
+// "12:shot" or "all:shot.%d"; false with *error saying what is wrong.
+bool parse_capture(const std::string& text, Capture* out, std::string* error);
+bool parse_transfer(const std::string& text, Transfer* out, std::string* error);
+// A depth plane: a positive number, or "inf" (far only).
+bool parse_depth_plane(const std::string& text, bool allow_infinity, double* out, std::string* error);
+// Checks near < far once both are known.
+bool check_depth_planes(double near_plane, double far_plane, std::string* error);
+
+// Reads the settings from variables; `lookup` returns the value of one or null (getenv).
+// Values that do not parse are reported in *problems and the default is kept: inside somebody
+// else's application a bad variable must not stop it, only be said once.
+using EnvLookup = const char* (*)(const char* name);
+InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::string>* problems);
+// The variables that give `settings` (those not at their default), as NAME=VALUE strings.
+std::vector<std::string> settings_to_environment(const InjectSettings& settings);
+
+}  // namespace pfx::inject

@@ -1,0 +1,234 @@
+#include "injector.hpp"
+
+#include <dlfcn.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "frame_capture.hpp"
+#include "real_symbols.hpp"
+
+namespace pfx::inject {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* lookup_environment(const char* name) { return std::getenv(name); }
+
+// The plugin folder beside this library, for a user who preloads it by hand without
+// PFX_INJECT_PLUGINS: build/plugins next to build/lib in a build tree, PREFIX/lib/pfx/plugins
+// when installed (LIBDIR is PREFIX/lib or PREFIX/lib/<triplet>).
+std::vector<std::string> plugin_dirs_beside_library() {
+  Dl_info info{};
+  if (!dladdr(reinterpret_cast<void*>(&lookup_environment), &info) || !info.dli_fname) return {};
+  const fs::path library_dir = fs::path(info.dli_fname).parent_path();
+  std::error_code ec;
+  for (const fs::path& candidate :
+       {library_dir / ".." / "plugins", library_dir / "pfx" / "plugins", library_dir / ".." / "pfx" / "plugins"})
+    if (fs::is_directory(candidate, ec)) return {fs::weakly_canonical(candidate, ec).string()};
+  return {};
+}
+
+std::string reach_text(const std::string& via) {
+  return via == "linked" ? "linked directly" : "looked up with " + via;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+}  // namespace
+
+Injector& Injector::instance() {
+  // Never destroyed: see the header.
+  static Injector* const injector = new Injector();
+  return *injector;
+}
+
+Injector::LoadedSettings Injector::load_settings() {
+  LoadedSettings loaded;
+  loaded.settings = settings_from_environment(lookup_environment, &loaded.problems);
+  return loaded;
+}
+
+Injector::Injector() : Injector(load_settings()) {}
+
+Injector::Injector(LoadedSettings loaded)
+    : settings_(std::move(loaded.settings)), log_(settings_.log_file), preset_watch_(settings_.preset) {
+  for (const auto& problem : loaded.problems) log_.line("ignored " + problem);
+}
+
+void Injector::before_present(const PresentCall& call) noexcept {
+  try {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (++presented_ == 1) first_present_ = std::chrono::steady_clock::now();
+    if (settings_.bypass) return;
+    present(call);
+  } catch (const std::exception& e) {
+    log_.once(std::string("exception ") + e.what(), std::string("internal error: ") + e.what() +
+                                                        "; frames pass through untouched from now on");
+  } catch (...) {
+    log_.once("exception", "internal error; frames pass through untouched from now on");
+  }
+}
+
+void Injector::present(const PresentCall& call) {
+  const std::string system = window_system_name(call.system);
+  void* context = current_context(call.system);
+  if (!context) {
+    log_.once("no context " + system, "a present with no current " + system + " context: passed through");
+    return;
+  }
+  if (!presents_current_surface(call)) {
+    log_.once("other surface " + system,
+              "a present of a surface the current context does not draw to: passed through");
+    return;
+  }
+  ContextEntry& entry = entry_for(call, context);
+  if (!entry.pipeline) return;
+  if (entry.recipe_generation != recipe_generation_) {
+    std::vector<std::string> notes;
+    std::string reason;
+    if (entry.pipeline->rebuild(recipe_, &notes, &reason)) log_.line("preset applied: chain " + entry.pipeline->chain_text());
+    else log_.line("the changed preset could not be applied (" + reason + "); the previous chain keeps running");
+    for (const auto& note : notes) log_.line(note);
+    entry.recipe_generation = recipe_generation_;
+  }
+  FrameWork work;
+  if (!surface_size(call, &work.width, &work.height)) {
+    log_.once("no size " + system, "the size of a presented " + system + " surface is unknown: passed through");
+    return;
+  }
+  work.frame = presented_;
+  work.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - first_present_).count();
+  work.captures = capture_prefixes(settings_.captures, presented_);
+  // The unit for --bench, once the JIT and caches are warm.
+  work.measure_copy_pass = !settings_.stats_file.empty() && presented_ == 5;
+  std::vector<std::string> messages;
+  std::string reason;
+  const bool ok = entry.pipeline->process(work, &messages, &reason);
+  for (const auto& message : messages) log_.line(message);
+  if (work.measure_copy_pass) copy_pass_ms_ = entry.pipeline->copy_pass_ms();
+  if (!ok) {
+    log_.line("frame " + std::to_string(presented_) + ": " + reason + "; this context's frames pass through untouched from now on");
+    entry.pipeline.reset();
+  }
+}
+
+void Injector::reread_preset_if_changed() {
+  if (!preset_watch_.changed()) return;
+  ChainRecipe recipe;
+  std::string error;
+  if (!make_recipe(settings_, *registry_, &recipe, &error)) {
+    log_.line("preset changed but not applied: " + error);
+    return;
+  }
+  recipe_ = std::move(recipe);
+  ++recipe_generation_;
+}
+
+bool Injector::load_plugins(WindowSystem system) {
+  if (registry_) return true;
+  if (plugins_refused_) return false;
+  plugins_refused_ = true;  // until it succeeds: one attempt, one message
+  auto loader = [system](const char* name) { return reinterpret_cast<pfx_gl_proc>(gl_proc(system, name)); };
+  auto sink = [this](pfx_log_level level, const std::string& source, const std::string& message) {
+    if (level >= PFX_LOG_WARNING) log_.line(std::string(host::log_level_name(level)) + ": [" + source + "] " + message);
+  };
+  auto registry = std::make_unique<host::PluginRegistry>(loader, sink, "pfx-inject");
+  const std::vector<std::string> dirs = settings_.plugin_dirs.empty() ? plugin_dirs_beside_library() : settings_.plugin_dirs;
+  for (const auto& error : registry->load_search_path(dirs)) log_.line("plugin not loaded: " + error);
+  if (registry->effects().empty()) {
+    log_.line("no effect plugins found (searched: " + (dirs.empty() ? std::string("no folder") : join(dirs)) +
+              ", and PFX_PLUGIN_PATH); frames pass through untouched");
+    return false;
+  }
+  std::string error;
+  if (!make_recipe(settings_, *registry, &recipe_, &error)) {
+    log_.line(error + "; frames pass through untouched");
+    return false;
+  }
+  recipe_generation_ = 1;
+  registry_ = std::move(registry);
+  plugins_refused_ = false;
+  return true;
+}
+
+Injector::ContextEntry& Injector::entry_for(const PresentCall& call, void* context) {
+  const ContextKey key{call.system, context};
+  auto found = contexts_.find(key);
+  if (found != contexts_.end()) {
+    if (found->second.pipeline) reread_preset_if_changed();
+    return found->second;
+  }
+  ContextEntry& entry = contexts_[key];
+  const std::string system = window_system_name(call.system);
+  const std::string present_name = call.system == WindowSystem::GLX ? "glXSwapBuffers" : "eglSwapBuffers";
+  const std::string hooked = "hooked " + present_name + " (" + reach_text(reached_through(present_name.c_str())) + ")";
+  if (!load_plugins(call.system)) return entry;
+  std::string reason;
+  std::vector<std::string> notes;
+  const std::string other_api = other_client_api(call.system);
+  if (!other_api.empty()) reason = "an " + other_api + " context: pfx needs desktop OpenGL 4.5";
+  else entry.pipeline = ContextPipeline::create(*registry_, settings_, recipe_, &notes, &reason);
+  for (const auto& note : notes) log_.line(note);
+  if (!entry.pipeline) {
+    log_.line(hooked + " in " + system + " context " + std::to_string(contexts_.size()) + ": " + reason +
+              "; its frames pass through untouched");
+    return entry;
+  }
+  entry.recipe_generation = recipe_generation_;
+  chain_text_ = entry.pipeline->chain_text();
+  log_.line(hooked + " in " + system + " context " + std::to_string(contexts_.size()) + "; chain: " + chain_text_ +
+            (settings_.dry_run ? " (dry run: the application's own frames are presented)" : ""));
+  return entry;
+}
+
+void Injector::after_present() noexcept {
+  bool quitting = false;
+  try {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!settings_.stats_file.empty()) stats_.presented();
+    quitting = settings_.quit_after && presented_ >= settings_.quit_after;
+    if (quitting) prepare_to_quit();
+  } catch (...) {
+    log_.once("exception after", "internal error after a present");
+  }
+  // Outside the lock: exit runs the application's atexit handlers, which may present or destroy
+  // a context and so come back through our hooks.
+  if (quitting) {
+    std::fflush(nullptr);
+    std::exit(0);
+  }
+}
+
+void Injector::prepare_to_quit() {
+  log_.line("quitting after " + std::to_string(presented_) + " presented frames, as asked");
+  if (!settings_.stats_file.empty()) {
+    std::string error;
+    const std::string mode = settings_.bypass ? "application alone" : chain_text_;
+    if (!stats_.write(settings_.stats_file, copy_pass_ms_, settings_.bypass ? "bypass" : "chain", mode, &error))
+      log_.line("frame times not written: " + error);
+  }
+  // Free what the current context holds while it is current; other contexts' objects go with
+  // the process.
+  for (auto& [key, entry] : contexts_)
+    if (entry.pipeline && current_context(key.first) == key.second) entry.pipeline.reset();
+}
+
+void Injector::context_destroyed(WindowSystem system, void* context) noexcept {
+  try {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto found = contexts_.find({system, context});
+    if (found == contexts_.end()) return;
+    if (found->second.pipeline && current_context(system) != context) orphans_.push_back(std::move(found->second.pipeline));
+    contexts_.erase(found);  // a current context's pipeline frees its objects here
+  } catch (...) {
+    log_.once("exception destroy", "internal error while a context was destroyed");
+  }
+}
+
+}  // namespace pfx::inject

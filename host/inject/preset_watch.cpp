@@ -1,0 +1,40 @@
+#include "preset_watch.hpp"
+
+#include <sys/stat.h>
+
+namespace pfx::inject {
+namespace {
+
+constexpr std::chrono::milliseconds kInterval{250};
+
+void look(const std::string& path, long long* stamp, long long* size) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) {
+    *stamp = *size = -1;
+    return;
+  }
+  *stamp = static_cast<long long>(info.st_mtim.tv_sec) * 1000000000LL + info.st_mtim.tv_nsec;
+  *size = static_cast<long long>(info.st_size);
+}
+
+}  // namespace
+
+PresetWatch::PresetWatch(std::string path) : path_(std::move(path)) {
+  if (!path_.empty()) look(path_, &stamp_, &size_);
+  next_look_ = std::chrono::steady_clock::now() + kInterval;
+}
+
+bool PresetWatch::changed() {
+  if (path_.empty()) return false;
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_look_) return false;
+  next_look_ = now + kInterval;
+  long long stamp = 0, size = 0;
+  look(path_, &stamp, &size);
+  if (stamp == stamp_ && size == size_) return false;
+  stamp_ = stamp;
+  size_ = size;
+  return true;
+}
+
+}  // namespace pfx::inject

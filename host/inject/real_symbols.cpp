@@ -1,0 +1,87 @@
+#include "real_symbols.hpp"
+
+#include <dlfcn.h>
+
+#include <array>
+#include <atomic>
+#include <cstring>
+
+namespace pfx::inject {
+namespace {
+
+using DlsymFunction = void* (*)(void*, const char*);
+
+DlsymFunction find_real_dlsym() {
+  // glibc 2.34 moved dlsym into libc under a new version; older binaries bind the old one. Both
+  // are the same function; dlvsym is not interposed, so it reaches libc directly.
+  for (const char* version : {"GLIBC_2.34", "GLIBC_2.2.5"})
+    if (void* found = dlvsym(RTLD_NEXT, "dlsym", version)) return reinterpret_cast<DlsymFunction>(found);
+  return nullptr;
+}
+
+// Names whose real function an application's lookup found, in a fixed table: lookups happen on
+// any thread, and a remembered pointer never changes meaning.
+struct Remembered {
+  const char* name;
+  std::atomic<Proc> real{nullptr};
+  std::atomic<const char*> via{nullptr};
+};
+std::array<Remembered, 8> remembered = {{{"glXSwapBuffers"},
+                                         {"glXGetProcAddress"},
+                                         {"glXGetProcAddressARB"},
+                                         {"glXDestroyContext"},
+                                         {"eglSwapBuffers"},
+                                         {"eglGetProcAddress"},
+                                         {"eglDestroyContext"},
+                                         {"eglSwapBuffersWithDamageKHR"}}};
+
+Remembered* remembered_slot(const char* name) {
+  for (auto& slot : remembered)
+    if (std::strcmp(slot.name, name) == 0) return &slot;
+  return nullptr;
+}
+
+Proc from_loaded_library(Library library, const char* name) {
+  static const char* const kGlx[] = {"libGL.so.1", "libGLX.so.0", nullptr};
+  static const char* const kEgl[] = {"libEGL.so.1", nullptr};
+  for (const char* const* file_name = library == Library::GLX ? kGlx : kEgl; *file_name; ++file_name) {
+    const char* file = *file_name;
+    // RTLD_NOLOAD: only a library the application loaded; we never bring one into its process.
+    void* handle = dlopen(file, RTLD_LAZY | RTLD_NOLOAD);
+    if (!handle) continue;
+    void* found = real_dlsym(handle, name);
+    dlclose(handle);  // NOLOAD took a reference; the application's own keeps it loaded
+    if (found) return reinterpret_cast<Proc>(found);
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+void* real_dlsym(void* handle, const char* name) {
+  static const DlsymFunction dlsym_function = find_real_dlsym();
+  return dlsym_function ? dlsym_function(handle, name) : nullptr;
+}
+
+void remember(const char* name, Proc real, const char* via) {
+  if (!real) return;
+  if (Remembered* slot = remembered_slot(name)) {
+    slot->real.store(real);
+    slot->via.store(via);
+  }
+}
+
+const char* reached_through(const char* name) {
+  const Remembered* slot = remembered_slot(name);
+  const char* via = slot ? slot->via.load() : nullptr;
+  return via ? via : "linked";
+}
+
+Proc real_proc(Library library, const char* name) {
+  if (Remembered* slot = remembered_slot(name))
+    if (Proc real = slot->real.load()) return real;
+  if (void* next = real_dlsym(RTLD_NEXT, name)) return reinterpret_cast<Proc>(next);
+  return from_loaded_library(library, name);
+}
+
+}  // namespace pfx::inject
