@@ -10,9 +10,37 @@
 
 #include "plugin_directory.hpp"
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <link.h>
+#endif
+
 extern char** environ;
 
 namespace pfx::inject {
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+// A sanitizer build (./run's second test pass) preloads an instrumented libpfxinject.so into an
+// application that is not: AddressSanitizer's runtime must then be the first library of the
+// process, so it goes in front, as this program has it loaded already.
+std::string sanitizer_runtime() {
+  std::string found;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* out) {
+        if (info->dlpi_name && std::strstr(info->dlpi_name, "libasan.so")) {
+          *static_cast<std::string*>(out) = info->dlpi_name;
+          return 1;
+        }
+        return 0;
+      },
+      &found);
+  return found;
+}
+#else
+std::string sanitizer_runtime() { return ""; }
+#endif
+
+}  // namespace
 
 std::string find_inject_library(std::string* error) {
   namespace fs = std::filesystem;
@@ -29,10 +57,17 @@ std::string find_inject_library(std::string* error) {
 
 std::vector<std::string> child_environment(const InjectSettings& settings, const std::string& library) {
   std::vector<std::string> environment;
-  std::string preload = library;
+  const std::string runtime = sanitizer_runtime();
+  std::string preload = runtime.empty() ? library : runtime + ":" + library;
   for (char** entry = environ; *entry; ++entry) {
     const std::string variable = *entry;
     if (variable.rfind("PFX_INJECT_", 0) == 0) continue;
+    if (!runtime.empty() && variable.rfind("ASAN_OPTIONS=", 0) == 0) {
+      // The application's own allocations are not ours to judge, and --quit-after ends it
+      // with its objects alive: leak checking stays with pfx's own processes.
+      environment.push_back(variable + ":detect_leaks=0");
+      continue;
+    }
     if (variable.rfind("LD_PRELOAD=", 0) == 0) {
       const std::string others = variable.substr(std::strlen("LD_PRELOAD="));
       if (!others.empty()) preload += ":" + others;

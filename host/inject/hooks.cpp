@@ -167,10 +167,50 @@ __attribute__((visibility("default"))) unsigned eglDestroyContext(void* display,
 }
 
 // glmark2, GLFW and SDL open libGL or libEGL themselves and look the present call up by name.
-__attribute__((visibility("default"))) void* dlsym(void* __restrict handle, const char* __restrict name) noexcept {
+// dlsym's entry (below) comes here for every handle but RTLD_NEXT, by a jump, so the return
+// address is still the application's.
+__attribute__((visibility("hidden"))) void* pfx_inject_dlsym_hooked(void* handle, const char* name) {
   void* found = pfx::inject::real_dlsym(handle, name);
   if (inside_gl_libraries(__builtin_return_address(0))) return found;
   return reinterpret_cast<void*>(swap_in(name, reinterpret_cast<Proc>(found), "dlsym"));
 }
 
+__attribute__((visibility("hidden"))) void* pfx_inject_real_dlsym = nullptr;
+
+__attribute__((visibility("hidden"))) void* pfx_inject_resolve_real_dlsym() {
+  pfx_inject_real_dlsym = pfx::inject::real_dlsym_function();
+  return pfx_inject_real_dlsym;
+}
+
 }  // extern "C"
+
+// dlsym(RTLD_NEXT, name) means "the next definition after the caller's library", and the C
+// library finds the caller from its return address. Other preloaded libraries (libfaketime,
+// for one) rely on it, so those calls must reach the real dlsym with the caller's return address
+// untouched: a tail jump, which C++ cannot promise, hence these few instructions. Every other
+// handle jumps to pfx_inject_dlsym_hooked.
+#if defined(__x86_64__)
+asm(R"(
+    .text
+    .globl dlsym
+    .type dlsym, @function
+dlsym:
+    cmpq $-1, %rdi
+    jne pfx_inject_dlsym_hooked
+    movq pfx_inject_real_dlsym(%rip), %rax
+    testq %rax, %rax
+    jz 1f
+    jmp *%rax
+1:  pushq %rdi
+    pushq %rsi
+    subq $8, %rsp
+    call pfx_inject_resolve_real_dlsym
+    addq $8, %rsp
+    popq %rsi
+    popq %rdi
+    jmp *%rax
+    .size dlsym, .-dlsym
+)");
+#else
+#error "libpfxinject's dlsym entry is written for x86-64; port its dozen instructions to this architecture"
+#endif

@@ -25,6 +25,8 @@ context or any failure leaves its frames untouched, with one line in the log.
                        received it), PREFIX.out.exr (the chain's output) and PREFIX.png (what was
                        presented); all:PREFIX with %d in PREFIX for every frame (repeatable)
   --quit-after N       end the application after N presented frames
+  --from-frame N       leave the first N-1 presented frames alone: the chain starts at frame N
+                       (a splash screen; or, in tests, a frame drawn with no pfx code ever run)
   --dry-run            run the chain every frame but present the application's own frame
   --log FILE           append the injector's messages to FILE (default: stderr)
   --bench FRAMES       run APP FRAMES frames alone, with an empty chain and with the chain, three
@@ -83,12 +85,13 @@ bool parse_inject_options(const std::vector<std::string>& args, InjectOptions* o
       Capture capture;
       if (!parse_capture(value, &capture, error)) return reader.fail("--capture: " + *error);
       options.settings.captures.push_back(capture);
-    } else if (arg == "--quit-after" || arg == "--bench" || arg == "--bench-runs") {
+    } else if (arg == "--quit-after" || arg == "--from-frame" || arg == "--bench" || arg == "--bench-runs") {
       if (!reader.value(&value)) return false;
       long long count = 0;
       if (!app::parse_count(value, &count) || count < 1 || count > 100000000)
         return reader.fail(arg + " " + value + ": expected a whole number from 1");
       if (arg == "--quit-after") options.settings.quit_after = static_cast<uint64_t>(count);
+      else if (arg == "--from-frame") options.settings.from_frame = static_cast<uint64_t>(count);
       else if (arg == "--bench") options.bench_frames = static_cast<int>(count);
       else options.bench_runs = static_cast<int>(count);
     } else if (arg == "--bench-json") {

@@ -138,6 +138,11 @@ InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::stri
     if (app::parse_count(text(env::kQuitAfter), &count)) settings.quit_after = static_cast<uint64_t>(count);
     else complain(env::kQuitAfter, "'" + text(env::kQuitAfter) + "' is not a frame count");
   }
+  if (!text(env::kFromFrame).empty()) {
+    long long frame = 0;
+    if (app::parse_count(text(env::kFromFrame), &frame) && frame >= 1) settings.from_frame = static_cast<uint64_t>(frame);
+    else complain(env::kFromFrame, "'" + text(env::kFromFrame) + "' is not a frame number from 1");
+  }
   settings.dry_run = text(env::kDryRun) == "1";
   settings.bypass = text(env::kBypass) == "1";
   settings.log_file = text(env::kLog);
@@ -161,6 +166,7 @@ std::vector<std::string> settings_to_environment(const InjectSettings& settings)
     captures.push_back((capture.every_frame ? std::string("all") : std::to_string(capture.frame)) + ":" + capture.prefix);
   if (!captures.empty()) put(env::kCapture, join(captures, "\n"));
   if (settings.quit_after) put(env::kQuitAfter, std::to_string(settings.quit_after));
+  if (settings.from_frame != defaults.from_frame) put(env::kFromFrame, std::to_string(settings.from_frame));
   if (settings.dry_run) put(env::kDryRun, "1");
   if (settings.bypass) put(env::kBypass, "1");
   if (!settings.log_file.empty()) put(env::kLog, settings.log_file);

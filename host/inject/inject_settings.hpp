@@ -34,6 +34,7 @@ struct InjectSettings {
   Transfer transfer = Transfer::SRGB;
   std::vector<Capture> captures;
   uint64_t quit_after = 0;           // 0: never
+  uint64_t from_frame = 1;           // presents before this one pass through, untouched
   bool dry_run = false;              // run the chain, present the application's own frame
   bool bypass = false;               // hook the present and count frames, touch no GL (bench)
   std::string log_file;              // empty: stderr
@@ -51,6 +52,7 @@ constexpr const char* kDepthFar = "PFX_INJECT_DEPTH_FAR";   // a number or "inf"
 constexpr const char* kTransfer = "PFX_INJECT_TRANSFER";    // "srgb" or "linear"
 constexpr const char* kCapture = "PFX_INJECT_CAPTURE";      // "N:PREFIX" items, one per line
 constexpr const char* kQuitAfter = "PFX_INJECT_QUIT_AFTER";
+constexpr const char* kFromFrame = "PFX_INJECT_FROM_FRAME";
 constexpr const char* kDryRun = "PFX_INJECT_DRY_RUN";       // "1"
 constexpr const char* kBypass = "PFX_INJECT_BYPASS";        // "1"
 constexpr const char* kLog = "PFX_INJECT_LOG";

@@ -65,7 +65,7 @@ void Injector::before_present(const PresentCall& call) noexcept {
   try {
     std::lock_guard<std::mutex> lock(mutex_);
     if (++presented_ == 1) first_present_ = std::chrono::steady_clock::now();
-    if (settings_.bypass) return;
+    if (settings_.bypass || presented_ < settings_.from_frame) return;
     present(call);
   } catch (const std::exception& e) {
     log_.once(std::string("exception ") + e.what(), std::string("internal error: ") + e.what() +
@@ -165,7 +165,9 @@ Injector::ContextEntry& Injector::entry_for(const PresentCall& call, void* conte
     return found->second;
   }
   ContextEntry& entry = contexts_[key];
+  entry.number = ++contexts_seen_;
   const std::string system = window_system_name(call.system);
+  const std::string name = system + " context " + std::to_string(entry.number);
   const std::string present_name = call.system == WindowSystem::GLX ? "glXSwapBuffers" : "eglSwapBuffers";
   const std::string hooked = "hooked " + present_name + " (" + reach_text(reached_through(present_name.c_str())) + ")";
   if (!load_plugins(call.system)) return entry;
@@ -176,13 +178,12 @@ Injector::ContextEntry& Injector::entry_for(const PresentCall& call, void* conte
   else entry.pipeline = ContextPipeline::create(*registry_, settings_, recipe_, &notes, &reason);
   for (const auto& note : notes) log_.line(note);
   if (!entry.pipeline) {
-    log_.line(hooked + " in " + system + " context " + std::to_string(contexts_.size()) + ": " + reason +
-              "; its frames pass through untouched");
+    log_.line(hooked + " in " + name + ": " + reason + "; its frames pass through untouched");
     return entry;
   }
   entry.recipe_generation = recipe_generation_;
   chain_text_ = entry.pipeline->chain_text();
-  log_.line(hooked + " in " + system + " context " + std::to_string(contexts_.size()) + "; chain: " + chain_text_ +
+  log_.line(hooked + " in " + name + "; chain: " + chain_text_ +
             (settings_.dry_run ? " (dry run: the application's own frames are presented)" : ""));
   return entry;
 }
@@ -224,7 +225,13 @@ void Injector::context_destroyed(WindowSystem system, void* context) noexcept {
     std::lock_guard<std::mutex> lock(mutex_);
     auto found = contexts_.find({system, context});
     if (found == contexts_.end()) return;
-    if (found->second.pipeline && current_context(system) != context) orphans_.push_back(std::move(found->second.pipeline));
+    const std::string name = std::string(window_system_name(system)) + " context " + std::to_string(found->second.number);
+    if (found->second.pipeline && current_context(system) != context) {
+      orphans_.push_back(std::move(found->second.pipeline));
+      log_.line(name + " destroyed while not current: its chain's GL objects went with it");
+    } else if (found->second.pipeline) {
+      log_.line(name + " destroyed: its chain freed");
+    }
     contexts_.erase(found);  // a current context's pipeline frees its objects here
   } catch (...) {
     log_.once("exception destroy", "internal error while a context was destroyed");

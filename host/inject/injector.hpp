@@ -48,6 +48,7 @@ class Injector {
   struct ContextEntry {
     std::unique_ptr<ContextPipeline> pipeline;  // null: frames of this context pass through
     uint64_t recipe_generation = 0;
+    int number = 0;  // in the order contexts first presented, from 1, for the log
   };
   using ContextKey = std::pair<WindowSystem, void*>;
 
@@ -70,6 +71,7 @@ class Injector {
   // Pipelines of contexts destroyed while not current: their GL objects died with the context,
   // and their instances cannot be destroyed without it, so they are kept, unused.
   std::vector<std::unique_ptr<ContextPipeline>> orphans_;
+  int contexts_seen_ = 0;
   uint64_t presented_ = 0;
   std::chrono::steady_clock::time_point first_present_;
   PresentStats stats_;

@@ -6,6 +6,7 @@ namespace pfx::inject {
 namespace {
 
 constexpr std::chrono::milliseconds kInterval{250};
+constexpr int kPresentsBetweenLooks = 16;
 
 void look(const std::string& path, long long* stamp, long long* size) {
   struct stat info {};
@@ -27,8 +28,9 @@ PresetWatch::PresetWatch(std::string path) : path_(std::move(path)) {
 bool PresetWatch::changed() {
   if (path_.empty()) return false;
   const auto now = std::chrono::steady_clock::now();
-  if (now < next_look_) return false;
+  if (now < next_look_ && ++presents_since_look_ < kPresentsBetweenLooks) return false;
   next_look_ = now + kInterval;
+  presents_since_look_ = 0;
   long long stamp = 0, size = 0;
   look(path_, &stamp, &size);
   if (stamp == stamp_ && size == size_) return false;

@@ -58,6 +58,8 @@ Proc from_loaded_library(Library library, const char* name) {
 
 }  // namespace
 
+void* real_dlsym_function() { return reinterpret_cast<void*>(find_real_dlsym()); }
+
 void* real_dlsym(void* handle, const char* name) {
   static const DlsymFunction dlsym_function = find_real_dlsym();
   return dlsym_function ? dlsym_function(handle, name) : nullptr;

@@ -7,8 +7,9 @@ namespace pfx::inject {
 
 using Proc = void (*)();
 
-// The C library's dlsym (ours is an interposer).
+// The C library's dlsym (ours is an interposer), and its address.
 void* real_dlsym(void* handle, const char* name);
+void* real_dlsym_function();
 
 // Which library a window-system function lives in.
 enum class Library { GLX, EGL };

@@ -1,0 +1,173 @@
+// pfx-inject in real applications no one here wrote: glxgears (links libGL and calls
+// glXSwapBuffers directly, compatibility profile), glmark2 (opens libGL itself and finds
+// glXSwapBuffers with dlsym) and glmark2-es2 (OpenGL ES through EGL, which pfx refuses).
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "inject_run.hpp"
+
+using namespace pfx::test;
+
+namespace {
+
+std::vector<std::string> glxgears() { return {PFX_GLXGEARS}; }
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream file(path);
+  file << text;
+}
+
+// The presented frame with every effect of the chain off (the copy in and out still done) and
+// the one presented in a dry run must be the same bits.
+void check_round_trip(const std::vector<std::string>& app, const std::string& transfer) {
+  ScratchFolder folder("round-trip");
+  const std::string preset = folder.file("off.json");
+  write_text(preset, R"({"pfx_preset": 1, "chain": [{"effect": "bloom", "enabled": false}]})");
+  const InjectRun dry = run_injected(folder, "dry", {"--dry-run", "--chain", "bloom", "--transfer", transfer,
+                                                     "--quit-after", "3", "--capture", "3:" + folder.file("dry")},
+                                     app);
+  INFO(dry.result.output << dry.log);
+  REQUIRE(dry.result.exit_code == 0);
+  const InjectRun off = run_injected(folder, "off", {"--preset", preset, "--transfer", transfer, "--quit-after", "3",
+                                                     "--capture", "3:" + folder.file("off")},
+                                     app);
+  INFO(off.result.output << off.log);
+  REQUIRE(off.result.exit_code == 0);
+  REQUIRE(off.log.find("chain: bloom (off)") != std::string::npos);
+  const auto presented = read_png_file(folder.file("off.png"));
+  CHECK(same_pixels(presented, read_png_file(folder.file("dry.png"))));
+  // Not a blank window: the application drew something the round trip had to keep.
+  bool varied = false;
+  for (size_t i = 3; i < presented.pixels.size() && !varied; ++i) varied = presented.pixels[i] != presented.pixels[i % 3];
+  CHECK(varied);
+}
+
+}  // namespace
+
+TEST_CASE("glxgears: with every effect off the presented frame is the application's, bit for bit (sRGB)") {
+  check_round_trip(glxgears(), "srgb");
+}
+
+TEST_CASE("glmark2: with every effect off the presented frame is the application's, bit for bit (sRGB and linear)") {
+  check_round_trip(glmark2_scene("shading"), "srgb");
+  check_round_trip(glmark2_scene("shading"), "linear");
+}
+
+TEST_CASE("a captured frame run through pfx-render gives the injector's output, and the chain visibly changed it") {
+  ScratchFolder folder("capture");
+  const std::vector<std::string> look = {"--chain", "bloom", "--set", "bloom.threshold=0.4", "--set", "bloom.strength=2"};
+  std::vector<std::string> args = look;
+  args.insert(args.end(), {"--quit-after", "3", "--capture", "3:" + folder.file("shot")});
+  const InjectRun run = run_injected(folder, "chain", args, glmark2_scene("shading"));
+  INFO(run.result.output << run.log);
+  REQUIRE(run.result.exit_code == 0);
+  std::vector<std::string> render = {PFX_RENDER, "--input", folder.file("shot.app.exr"), "--out", folder.file("render.exr")};
+  render.insert(render.end(), look.begin(), look.end());
+  const RunResult rendered = run_program(render);
+  INFO(rendered.output);
+  REQUIRE(rendered.exit_code == 0);
+  CHECK(same_pixels(read_exr_file(folder.file("render.exr")), read_exr_file(folder.file("shot.out.exr"))));
+
+  const InjectRun dry = run_injected(folder, "dry", {"--dry-run", "--chain", "bloom", "--quit-after", "3", "--capture",
+                                                     "3:" + folder.file("app")},
+                                     glmark2_scene("shading"));
+  REQUIRE(dry.result.exit_code == 0);
+  const PngDifference difference = compare_png(folder.file("shot.png"), folder.file("app.png"));
+  CHECK(difference.max >= 32);
+  CHECK(difference.mean >= 1.0);
+}
+
+TEST_CASE("glmark2-es2's OpenGL ES context passes through with one log line and the application runs on") {
+  ScratchFolder folder("es2");
+  const InjectRun run = run_injected(folder, "es2", {"--chain", "bloom", "--quit-after", "5"},
+                                     {PFX_GLMARK2_ES2, "-s", "96x64", "-b", "shading"});
+  INFO(run.result.output << run.log);
+  CHECK(run.result.exit_code == 0);
+  CHECK(run.log.find("hooked eglSwapBuffers") != std::string::npos);
+  CHECK(run.log.find("an OpenGL ES context: pfx needs desktop OpenGL 4.5; its frames pass through untouched") !=
+        std::string::npos);
+  CHECK(run.log.find("quitting after 5 presented frames") != std::string::npos);
+}
+
+TEST_CASE("a context below OpenGL 4.5 passes through with one log line") {
+  ScratchFolder folder("gl33");
+  const InjectRun run = run_injected(folder, "gl33", {"--chain", "bloom", "--quit-after", "5"}, glxgears(), true,
+                                     {"MESA_GL_VERSION_OVERRIDE=3.3"});
+  INFO(run.result.output << run.log);
+  CHECK(run.result.exit_code == 0);
+  CHECK(run.log.find("hooked glXSwapBuffers (linked directly)") != std::string::npos);
+  CHECK(run.log.find("OpenGL 3.3") != std::string::npos);
+  CHECK(run.log.find("pfx needs OpenGL 4.5; its frames pass through untouched") != std::string::npos);
+}
+
+TEST_CASE("an effect that fails to create leaves the application running to its own end") {
+  ScratchFolder folder("broken");
+  const std::string plugins = folder.file("plugins");
+  std::filesystem::create_directory(plugins);
+  std::filesystem::copy_file(std::string(PFX_TEST_RELOADABLE_DIR) + "/reloadable_broken_shader.so",
+                             plugins + "/reloadable_broken_shader.so");
+  // No --quit-after and a running clock: glmark2 ends the scene itself.
+  const InjectRun run = run_injected(folder, "broken", {"--plugins", plugins, "--chain", "tint"},
+                                     {PFX_GLMARK2, "-s", "96x64", "-b", "build:duration=0.5"}, false);
+  INFO(run.result.output << run.log);
+  CHECK(run.result.exit_code == 0);
+  CHECK(run.result.output.find("glmark2 Score") != std::string::npos);
+  CHECK(run.log.find("effect 'tint' could not be created") != std::string::npos);
+  CHECK(run.log.find("its frames pass through untouched") != std::string::npos);
+}
+
+TEST_CASE("glmark2's context per scene: each is hooked, the destroyed one's chain freed, and it runs to its end") {
+  ScratchFolder folder("contexts");
+  const InjectRun run = run_injected(folder, "contexts", {"--chain", "bloom"},
+                                     {PFX_GLMARK2, "-s", "96x64", "-b", "build:duration=0.3", "-b", "shading:duration=0.3"},
+                                     false);
+  INFO(run.result.output << run.log);
+  CHECK(run.result.exit_code == 0);
+  CHECK(run.result.output.find("glmark2 Score") != std::string::npos);
+  CHECK(run.log.find("in GLX context 1; chain: bloom") != std::string::npos);
+  CHECK(run.log.find("GLX context 1 destroyed: its chain freed") != std::string::npos);
+  CHECK(run.log.find("in GLX context 2; chain: bloom") != std::string::npos);
+}
+
+TEST_CASE("an application that never presents is left alone") {
+  ScratchFolder folder("offscreen");
+  const InjectRun run = run_injected(folder, "offscreen", {"--chain", "bloom"},
+                                     {PFX_GLMARK2, "--off-screen", "-s", "96x64", "-b", "build:duration=0.3"}, false);
+  INFO(run.result.output << run.log);
+  CHECK(run.result.exit_code == 0);
+  CHECK(run.result.output.find("glmark2 Score") != std::string::npos);
+  CHECK(run.log.find("hooked") == std::string::npos);
+}
+
+TEST_CASE("an edited preset applies while the application runs") {
+  ScratchFolder folder("reload");
+  const std::string preset = folder.file("look.json");
+  write_text(preset, R"({"pfx_preset": 1, "chain": [{"effect": "bloom"}]})");
+  ViewerProcess app({"/usr/bin/env", "FAKETIME=2020-01-01 00:00:00", std::string("LD_PRELOAD=") + PFX_FAKETIME_LIBRARY,
+                     PFX_INJECT, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--preset", preset, "--", PFX_GLMARK2, "-s",
+                     "96x64", "-b", "build"});
+  REQUIRE_FALSE(app.wait_for_line("chain: bloom", 60).empty());
+  // A new modification time even on a file system with coarse stamps.
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  write_text(folder.file("look.tmp"),
+             R"({"pfx_preset": 1, "chain": [{"effect": "glare"}, {"effect": "bloom", "enabled": false}]})");
+  std::filesystem::rename(folder.file("look.tmp"), preset);
+  INFO(app.output());
+  CHECK_FALSE(app.wait_for_line("preset applied: chain glare,bloom (off)", 10).empty());
+  write_text(folder.file("look.tmp"), R"({"pfx_preset": 1, "chain": [{"effect": "no-such-effect"}]})");
+  std::filesystem::rename(folder.file("look.tmp"), preset);
+  CHECK_FALSE(app.wait_for_line("the previous chain keeps running", 10).empty());
+}
+
+TEST_CASE("pfx-inject --bench reports the application alone, with an empty chain and with the chain") {
+  const RunResult run = run_program({PFX_INJECT, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--chain", "bloom", "--bench", "20",
+                                     "--bench-runs", "1", "--", PFX_GLXGEARS});
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  for (const char* row : {"| application alone | - |", "| empty chain | none", "| chain | bloom |"})
+    CHECK(run.output.find(row) != std::string::npos);
+  CHECK(run.output.find("copy pass (the unit):") != std::string::npos);
+}
