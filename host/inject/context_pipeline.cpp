@@ -115,7 +115,11 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
     messages->push_back(copy_.has_depth() ? "depth: " + copy_.depth_description() + ", read as hardware depth"
                                           : "depth: none (" + copy_.depth_description() + ")");
   }
-  if (!copy_.copy_in(settings_.transfer, reason)) return false;
+  // With every effect off the chain would only copy: the frame goes straight back out, and its
+  // depth is not needed.
+  const bool chain_runs = any_enabled(*chain_);
+  if (!copy_.copy_in(settings_.transfer, chain_runs, reason)) return false;
+  if (copy_.take_depth_lost()) messages->push_back("depth: " + copy_.depth_description());
 
   pfx_frame frame{};
   frame.struct_size = sizeof frame;
@@ -135,11 +139,15 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
   textures.color = copy_.color();
   textures.depth = copy_.depth();
 
-  // With every effect off the chain would only copy: the frame goes straight back out.
   GLuint result = copy_.color();
-  if (any_enabled(*chain_)) {
+  if (chain_runs) {
     if (!chain_->render(frame, textures, copy_.output(), reason)) return false;
     result = copy_.output();
+  }
+  if (!work.captures.empty() && chain_runs) {
+    std::string skipped;
+    for (const auto& id : chain_->report().effects_skipped) skipped += (skipped.empty() ? "" : ",") + id;
+    if (!skipped.empty()) messages->push_back("frame " + std::to_string(work.frame) + ": skipped as no-ops: " + skipped);
   }
   for (const auto& prefix : work.captures) {
     std::string error;

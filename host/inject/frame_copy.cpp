@@ -115,7 +115,7 @@ void FrameCopy::choose_depth_format() {
   else if (bits == 24) depth_format_ = stencil_bits ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
   else if (bits == 16) depth_format_ = GL_DEPTH_COMPONENT16;
   else if (bits == 32) depth_format_ = GL_DEPTH_COMPONENT32;
-  depth_description_ = std::to_string(bits) + "-bit " + (component == GL_FLOAT ? "float " : "") + "depth" +
+  depth_description_ = std::to_string(bits) + "-bit " + (component == GL_FLOAT ? "float " : component == GL_UNSIGNED_NORMALIZED ? "unorm " : "type " + std::to_string(component) + " ") + "depth" +
                        (stencil_bits ? " with " + std::to_string(stencil_bits) + "-bit stencil" : "");
   if (!depth_format_) depth_description_ += ", a format the copy does not know";
 }
@@ -136,7 +136,7 @@ void FrameCopy::resize(int width, int height) {
   glNamedFramebufferTexture(decode_framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
 }
 
-bool FrameCopy::copy_in(Transfer transfer, std::string* error) {
+bool FrameCopy::copy_in(Transfer transfer, bool with_depth, std::string* error) {
   while (glGetError() != GL_NO_ERROR) {
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -146,10 +146,13 @@ bool FrameCopy::copy_in(Transfer transfer, std::string* error) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, read_framebuffer_);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   GLenum colour_error = glGetError();
-  if (depth_ && colour_error == GL_NO_ERROR) {
+  if (depth_ && with_depth && colour_error == GL_NO_ERROR) {
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    if (glGetError() != GL_NO_ERROR) {
-      depth_description_ += ", which the GL would not copy";
+    const GLenum depth_error = glGetError();
+    if (depth_error != GL_NO_ERROR) {
+      depth_description_ += ", which the GL would not copy (error " + std::to_string(depth_error) +
+                            "): the chain runs without depth";
+      depth_lost_ = true;
       glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_ATTACHMENT, 0, 0);
       glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
       glDeleteTextures(1, &depth_);

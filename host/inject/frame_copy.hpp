@@ -25,12 +25,19 @@ class FrameCopy {
   int width() const { return width_; }
   int height() const { return height_; }
   bool has_depth() const { return depth_ != 0; }
+  // True once after a depth copy failed and depth was dropped (depth_description() says why).
+  bool take_depth_lost() {
+    const bool lost = depth_lost_;
+    depth_lost_ = false;
+    return lost;
+  }
   // What the default framebuffer's depth is, or why there is none, for the log.
   const std::string& depth_description() const { return depth_description_; }
 
-  // Copies the back buffer into color() (decoded as `transfer` says) and depth(). False with
-  // *error when GL refused; a refused depth copy only drops depth (has_depth() turns false).
-  bool copy_in(Transfer transfer, std::string* error);
+  // Copies the back buffer into color() (decoded as `transfer` says) and, with_depth, depth().
+  // False with *error when GL refused; a refused depth copy only drops depth (has_depth() turns
+  // false).
+  bool copy_in(Transfer transfer, bool with_depth, std::string* error);
   // Encodes `texture` (RGBA16F, the frame's size) into the back buffer.
   void copy_out(GLuint texture, Transfer transfer);
 
@@ -52,6 +59,7 @@ class FrameCopy {
   GLuint depth_ = 0;              // the default framebuffer's depth format, or 0
   GLuint read_framebuffer_ = 0, decode_framebuffer_ = 0, scratch_framebuffer_ = 0;
   GLenum depth_format_ = 0;
+  bool depth_lost_ = false;
   std::string depth_description_;
   int width_ = 0, height_ = 0;
 };

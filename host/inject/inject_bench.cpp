@@ -35,7 +35,7 @@ bool read_stats(const std::string& path, Configuration* configuration, std::stri
   text << file.rdbuf();
   const auto root = nlohmann::json::parse(text.str(), nullptr, false);
   if (root.is_discarded() || !root.contains("frame_ms")) {
-    *error = "the run wrote no frame times (" + path + "); did the application present?";
+    *error = "no frame times: the application ended before it presented the frames asked for (or never presented)";
     return false;
   }
   configuration->frame_ms.push_back(root["frame_ms"].get<double>());
@@ -95,9 +95,11 @@ int run_bench(const InjectOptions& options, const std::string& library) {
     const double frame = median(configuration.frame_ms);
     const double added = frame - alone;
     const bool first = &configuration == &configurations[0];
-    std::printf("| %s | %s | %.3f | %s | %s |\n", configuration.name.c_str(),
-                first ? "-" : configuration.chain.c_str(), frame, first ? "-" : std::to_string(added).substr(0, 6).c_str(),
-                first || unit <= 0 ? "-" : std::to_string(added / unit).substr(0, 5).c_str());
+    char added_text[32] = "-", passes_text[32] = "-";
+    if (!first) std::snprintf(added_text, sizeof added_text, "%.3f", added);
+    if (!first && unit > 0) std::snprintf(passes_text, sizeof passes_text, "%.2f", added / unit);
+    std::printf("| %s | %s | %.3f | %s | %s |\n", configuration.name.c_str(), first ? "-" : configuration.chain.c_str(),
+                frame, added_text, passes_text);
     json["configurations"].push_back({{"name", configuration.name},
                                       {"chain", first ? "" : configuration.chain},
                                       {"frame_ms", frame},
