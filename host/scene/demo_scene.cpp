@@ -2,58 +2,25 @@
 
 #include <cmath>
 
+#include "scene_random.hpp"
 #include "shapes.hpp"
 
 namespace pfx::app {
 namespace {
 
-// SplitMix64: tiny, fast, and the same numbers everywhere.
-class Random {
- public:
-  explicit Random(uint64_t seed) : state_(seed) {}
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [lo, hi): 53 random bits.
-  double uniform(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
-  // Uniform integer in [lo, hi].
-  int integer(int lo, int hi) { return lo + static_cast<int>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-
- private:
-  uint64_t state_;
-};
-
-// One of the seed's light colours: c in 1..7 read as the bits (R, G, B), times the intensity.
-pfx_light seed_light(const glm::vec3& position, Random& random) {
-  pfx_light light{};
-  light.position[0] = position.x;
-  light.position[1] = position.y;
-  light.position[2] = position.z;
-  light.range = 0;  // derived by the effect
-  const double intensity = random.uniform(0.25, 4.0);
-  const int c = random.integer(1, 7);
-  light.color[0] = float(c & 1);
-  light.color[1] = float((c >> 1) & 1);
-  light.color[2] = float((c >> 2) & 1);
-  light.intensity = static_cast<float>(intensity);
-  return light;
-}
-
 // A checker board, so a moving or blurred floor is easy to see.
-AlbedoTexture checker_texture() {
-  AlbedoTexture texture;
+Texture checker_texture() {
+  Texture texture;
   texture.width = texture.height = 64;
-  texture.rgb.resize(64 * 64 * 3);
+  texture.rgba.resize(64 * 64 * 4);
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x) {
       const bool light = ((x / 8) + (y / 8)) % 2 == 0;
-      float* p = &texture.rgb[(static_cast<size_t>(y) * 64 + x) * 3];
+      float* p = &texture.rgba[(static_cast<size_t>(y) * 64 + x) * 4];
       p[0] = light ? 0.75f : 0.35f;
       p[1] = light ? 0.72f : 0.34f;
       p[2] = light ? 0.68f : 0.33f;
+      p[3] = 1.0f;
     }
   return texture;
 }
@@ -69,8 +36,23 @@ int add_material(Scene* scene, const glm::vec3& albedo, const glm::vec3& emissiv
 
 }  // namespace
 
+pfx_light seed_light(const glm::vec3& position, SceneRandom& random) {
+  pfx_light light{};
+  light.position[0] = position.x;
+  light.position[1] = position.y;
+  light.position[2] = position.z;
+  light.range = 0;  // derived by the effect
+  const double intensity = random.uniform(0.25, 4.0);
+  const int c = random.integer(1, 7);
+  light.color[0] = float(c & 1);
+  light.color[1] = float((c >> 1) & 1);
+  light.color[2] = float((c >> 2) & 1);
+  light.intensity = static_cast<float>(intensity);
+  return light;
+}
+
 void add_seed_light_grid(Scene* scene, uint64_t seed) {
-  Random random(seed);
+  SceneRandom random(seed);
   for (int i = 0; i < 400; ++i) {
     const float x = static_cast<float>(i % 20) * 2 - 19;
     const float z = static_cast<float>(i / 20) * 2 - 19;
@@ -80,7 +62,7 @@ void add_seed_light_grid(Scene* scene, uint64_t seed) {
 
 void add_random_lights(Scene* scene, int count, const glm::vec3& lo, const glm::vec3& hi, uint64_t seed) {
   // A different stream from the grid's, so adding lights never recolours the grid.
-  Random random(seed ^ 0x5eed11675eed1167ull);
+  SceneRandom random(seed ^ 0x5eed11675eed1167ull);
   for (int i = 0; i < count; ++i) {
     const glm::vec3 position(static_cast<float>(random.uniform(lo.x, hi.x)),
                              static_cast<float>(random.uniform(lo.y, hi.y)),
