@@ -78,25 +78,33 @@ Scene make_demo_scene(const DemoSceneOptions& options) {
   const int white = add_material(&scene, glm::vec3(0.8f));
   const int clay = add_material(&scene, glm::vec3(0.7f, 0.45f, 0.3f));
   const int teal = add_material(&scene, glm::vec3(0.2f, 0.6f, 0.6f));
-  // Emissive objects: a warm lamp sphere, a blue bar, a small very bright red cube, well above
-  // the usual bloom threshold of 1.
+  // Emissive objects: a warm lamp sphere, a blue bar, a small very bright red cube, 12 to 60 times
+  // the bloom's default threshold of 1, so they glow at default settings.
   const int lamp = add_material(&scene, glm::vec3(0.9f), glm::vec3(40.0f, 28.0f, 12.0f));
   const int neon = add_material(&scene, glm::vec3(0.1f), glm::vec3(2.0f, 8.0f, 30.0f));
   const int ember = add_material(&scene, glm::vec3(0.1f), glm::vec3(60.0f, 4.0f, 2.0f));
 
   scene.meshes.push_back(make_floor(glm::vec3(0), 44.0f, 11.0f, floor));
-  // Boxes and spheres between the lights (the grid is at odd coordinates, objects near even ones).
-  scene.meshes.push_back(make_box(glm::vec3(-8, 1.5f, -6), glm::vec3(1.5f, 1.5f, 1.5f), white));
-  scene.meshes.push_back(make_box(glm::vec3(6, 1.0f, 4), glm::vec3(2.0f, 1.0f, 1.0f), clay));
-  scene.meshes.push_back(make_box(glm::vec3(12, 3.0f, -12), glm::vec3(1.0f, 3.0f, 1.0f), teal));
-  scene.meshes.push_back(make_box(glm::vec3(-14, 0.5f, 10), glm::vec3(2.5f, 0.5f, 2.5f), white));
-  scene.meshes.push_back(make_sphere(glm::vec3(0, 2.0f, -2), 2.0f, 48, 24, white));
-  scene.meshes.push_back(make_sphere(glm::vec3(-4, 1.0f, 8), 1.0f, 32, 16, teal));
-  scene.meshes.push_back(make_sphere(glm::vec3(10, 1.5f, 12), 1.5f, 32, 16, clay));
-  scene.meshes.push_back(make_sphere(glm::vec3(-12, 0.8f, -14), 0.8f, 24, 12, clay));
-  scene.meshes.push_back(make_sphere(glm::vec3(4, 0.5f, -8), 0.5f, 24, 12, lamp));
-  scene.meshes.push_back(make_box(glm::vec3(-2, 0.25f, 14), glm::vec3(3.0f, 0.15f, 0.15f), neon));
-  scene.meshes.push_back(make_box(glm::vec3(14, 0.3f, 0), glm::vec3(0.3f, 0.3f, 0.3f), ember));
+  // Three depths for the camera below, whose view axis meets the scene 10 m ahead (the
+  // depth-of-field effect's default focus distance; its 24 degree view makes a 48 mm lens on the
+  // effect's default 36 mm sensor, so f/1.4 blurs visibly): objects there stay sharp, a foreground
+  // about 3 m from the lens blurs large (near field), and the background 20-40 m away blurs too
+  // (far field). Objects stand between the lights (the grid is at odd coordinates).
+  // In focus: the warm lamp, a white sphere, a clay box.
+  scene.meshes.push_back(make_sphere(glm::vec3(0, 0.3f, 11), 0.3f, 32, 16, lamp));
+  scene.meshes.push_back(make_sphere(glm::vec3(-1.4f, 0.55f, 10.6f), 0.55f, 48, 24, white));
+  scene.meshes.push_back(make_box(glm::vec3(1.5f, 0.4f, 11.3f), glm::vec3(0.45f, 0.4f, 0.4f), clay));
+  // Foreground, about 3 m from the lens: the blue neon bar and a teal sphere, floating.
+  scene.meshes.push_back(make_box(glm::vec3(-0.55f, 1.25f, 17.9f), glm::vec3(0.35f, 0.04f, 0.04f), neon));
+  scene.meshes.push_back(make_sphere(glm::vec3(0.6f, 1.35f, 17.7f), 0.22f, 32, 16, teal));
+  // Background: the red ember, a tall teal box, white boxes and spheres, clay spheres.
+  scene.meshes.push_back(make_box(glm::vec3(-5, 0.4f, -6), glm::vec3(0.4f, 0.4f, 0.4f), ember));
+  scene.meshes.push_back(make_box(glm::vec3(8, 3.0f, -12), glm::vec3(1.0f, 3.0f, 1.0f), teal));
+  scene.meshes.push_back(make_box(glm::vec3(-9, 1.5f, -10), glm::vec3(1.5f, 1.5f, 1.5f), white));
+  scene.meshes.push_back(make_sphere(glm::vec3(3, 2.0f, -4), 2.0f, 48, 24, white));
+  scene.meshes.push_back(make_sphere(glm::vec3(-12, 0.8f, -16), 0.8f, 24, 12, clay));
+  scene.meshes.push_back(make_box(glm::vec3(-13, 0.5f, 4), glm::vec3(2.5f, 0.5f, 2.5f), white));
+  scene.meshes.push_back(make_sphere(glm::vec3(10, 1.5f, 2), 1.5f, 32, 16, clay));
   update_bounds(&scene);
 
   add_seed_light_grid(&scene, options.seed);
@@ -104,10 +112,11 @@ Scene make_demo_scene(const DemoSceneOptions& options) {
   add_random_lights(&scene, options.extra_lights, glm::vec3(scene.bounds_min.x, 0.2f, scene.bounds_min.z),
                     glm::vec3(scene.bounds_max.x, 4.0f, scene.bounds_max.z), options.seed);
 
-  scene.camera.position = glm::dvec3(0, 17, 31);
-  scene.camera.target = glm::dvec3(0, 0, 1);
+  // Low over the floor's front edge, so the grid's lights recede from 2 m to 40 m away.
+  scene.camera.position = glm::dvec3(0, 2.2, 21);
+  scene.camera.target = glm::dvec3(0, 0.6, 11.1);
   scene.camera.up = glm::dvec3(0, 1, 0);
-  scene.camera.fovy_radians = 50.0 * M_PI / 180.0;
+  scene.camera.fovy_radians = 24.0 * M_PI / 180.0;
   scene.camera.near_plane = 0.1;
   scene.camera.far_plane = 200.0;
   return scene;
