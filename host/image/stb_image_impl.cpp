@@ -1,8 +1,7 @@
 // Debian's stb_image (libstb-dev), compiled here rather than linked from libstb.a so that it is
-// built with our sanitizers and fuzz instrumentation, and with only the formats the host reads:
-// JPEG (baseline and progressive), TGA and BMP. PNG goes through libpng (png_io.hpp).
+// built with our sanitizers and fuzz instrumentation, and with only the formats no better library
+// reads: TGA and BMP. JPEG goes through libjpeg-turbo (jpeg_decode.hpp), PNG through libpng.
 #define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_JPEG
 #define STBI_ONLY_TGA
 #define STBI_ONLY_BMP
 #define STBI_NO_STDIO

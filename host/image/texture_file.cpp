@@ -2,6 +2,8 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -10,12 +12,13 @@
 
 #include <stb/stb_image.h>
 
+#include "jpeg_decode.hpp"
 #include "png_io.hpp"
 
 namespace pfx::app {
 namespace {
 
-// stb_image pads a file that ends early with zeros and returns a picture; reading through these
+// stb_image (TGA and BMP) pads a file that ends early with zeros and returns a picture; reading through these
 // callbacks lets us see that it asked for bytes the file does not have, and call the file
 // truncated instead of showing the made-up rest.
 struct ByteStream {
@@ -68,10 +71,11 @@ bool ends_with_tga(const std::string& path) {
 }  // namespace
 
 bool decode_texture_bytes(const std::uint8_t* data, std::size_t size, bool tga, DisplayImage* out,
-                          std::string* problem) {
+                          std::string* problem, std::int64_t max_pixels) {
   const bool jpeg = has_prefix(data, size, "\xFF\xD8\xFF", 3);
   const bool bmp = has_prefix(data, size, "BM", 2);
-  if (!jpeg && !bmp && !tga) {
+  if (jpeg) return decode_jpeg(data, size, max_pixels, out, problem);
+  if (!bmp && !tga) {
     *problem = "not a PNG, JPEG, TGA or BMP file";
     return false;
   }
@@ -83,12 +87,12 @@ bool decode_texture_bytes(const std::uint8_t* data, std::size_t size, bool tga, 
   int width = 0, height = 0, channels = 0;
   ByteStream probe{data, size};
   if (!stbi_info_from_callbacks(&callbacks, &probe, &width, &height, &channels)) {
-    *problem = std::string("damaged ") + (jpeg ? "JPEG" : bmp ? "BMP" : "TGA") + " file (" + stbi_failure_reason() + ")";
+    *problem = std::string("damaged ") + (bmp ? "BMP" : "TGA") + " file (" + stbi_failure_reason() + ")";
     return false;
   }
-  if (width <= 0 || height <= 0 || width > kMaxTexturePixels / height) {
+  if (width <= 0 || height <= 0 || width > max_pixels / height) {
     *problem = "image " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
-               std::to_string(kMaxTexturePixels) + " pixels";
+               std::to_string(max_pixels) + " pixels";
     return false;
   }
   // Grey + alpha and RGBA keep their alpha (a map_d or a cut-out); everything else is RGB.
@@ -97,12 +101,12 @@ bool decode_texture_bytes(const std::uint8_t* data, std::size_t size, bool tga, 
   int w = 0, h = 0, file_channels = 0;
   stbi_uc* pixels = stbi_load_from_callbacks(&callbacks, &stream, &w, &h, &file_channels, wanted);
   if (!pixels) {
-    *problem = std::string("damaged ") + (jpeg ? "JPEG" : bmp ? "BMP" : "TGA") + " file (" + stbi_failure_reason() + ")";
+    *problem = std::string("damaged ") + (bmp ? "BMP" : "TGA") + " file (" + stbi_failure_reason() + ")";
     return false;
   }
   if (stream.ran_out || w != width || h != height) {
     stbi_image_free(pixels);
-    *problem = std::string("truncated ") + (jpeg ? "JPEG" : bmp ? "BMP" : "TGA") + " file (it ends before its pixels do)";
+    *problem = std::string("truncated ") + (bmp ? "BMP" : "TGA") + " file (it ends before its pixels do)";
     return false;
   }
   DisplayImage image;
@@ -121,7 +125,7 @@ bool decode_texture_bytes(const std::uint8_t* data, std::size_t size, bool tga, 
   return true;
 }
 
-bool read_texture_file(const std::string& path, DisplayImage* out, std::string* problem) {
+bool read_texture_file(const std::string& path, DisplayImage* out, std::string* problem, std::int64_t max_pixels) {
   auto fail = [&](const std::string& why) {
     *problem = path + ": " + why;
     return false;
@@ -136,7 +140,7 @@ bool read_texture_file(const std::string& path, DisplayImage* out, std::string* 
   file.read(reinterpret_cast<char*>(signature), sizeof signature);
   if (!file && file.gcount() == 0 && st.st_size > 0) return fail("cannot be read");
   if (has_prefix(signature, static_cast<std::size_t>(file.gcount()), "\x89PNG\r\n\x1A\n", 8))
-    return read_png(path, out, problem, kMaxTexturePixels);
+    return read_png(path, out, problem, max_pixels);
 
   // A JPEG of 64 Mi pixels is well under 1 GiB; anything larger is not a texture we would use.
   if (st.st_size > (std::int64_t{1} << 30)) return fail("file too large for a texture");
@@ -151,7 +155,7 @@ bool read_texture_file(const std::string& path, DisplayImage* out, std::string* 
   file.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   if (static_cast<std::size_t>(file.gcount()) != bytes.size()) return fail("cannot be read");
   std::string why;
-  if (!decode_texture_bytes(bytes.data(), bytes.size(), ends_with_tga(path), out, &why)) return fail(why);
+  if (!decode_texture_bytes(bytes.data(), bytes.size(), ends_with_tga(path), out, &why, max_pixels)) return fail(why);
   return true;
 }
 
