@@ -2,45 +2,37 @@
 
 #include <cmath>
 #include <filesystem>
+#include <algorithm>
+#include <map>
 #include <unordered_map>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
-#include "demo_scene.hpp"
-#include "png_io.hpp"
+#include "model_light_rig.hpp"
+#include "texture_maps.hpp"
 
 namespace pfx::import {
 
 namespace {
 
-float srgb_to_linear(uint8_t code) {
-  const double c = code / 255.0;
-  return static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
-}
-
-// map_Kd as a linear albedo texture, rows bottom first; -1 (and a warning) when it cannot be read.
-int load_texture(const std::string& path, pfx::app::Scene* scene, std::unordered_map<std::string, int>* loaded,
-                 std::vector<std::string>* warnings) {
-  if (auto it = loaded->find(path); it != loaded->end()) return it->second;
-  pfx::app::DisplayImage image;
+// A material's map as a scene texture, each file read once per kind; -1 (and one warning per
+// file) when it cannot be read, so the material keeps its flat colour.
+int load_texture(const std::string& path, pfx::app::MapKind kind, pfx::app::Scene* scene,
+                 std::map<std::pair<std::string, pfx::app::MapKind>, int>* loaded, std::vector<std::string>* warnings) {
+  if (auto it = loaded->find({path, kind}); it != loaded->end()) return it->second;
+  pfx::app::Texture texture;
   std::string problem;
   int index = -1;
-  if (pfx::app::read_png(path, &image, &problem)) {
-    pfx::app::AlbedoTexture texture;
-    texture.width = image.width;
-    texture.height = image.height;
-    texture.rgb.resize(size_t(image.width) * image.height * 3);
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x)
-        for (int c = 0; c < 3; ++c)
-          texture.rgb[(size_t(image.height - 1 - y) * image.width + x) * 3 + c] =
-              srgb_to_linear(image.pixels[(size_t(y) * image.width + x) * image.channels + c]);
+  if (pfx::app::load_map(path, kind, &texture, &problem)) {
     scene->textures.push_back(std::move(texture));
     index = static_cast<int>(scene->textures.size() - 1);
   } else {
-    warnings->push_back(path + ": texture not used (" + problem + "; only PNG is read)");
+    const bool warned = std::any_of(loaded->begin(), loaded->end(),
+                                    [&](const auto& entry) { return entry.first.first == path && entry.second < 0; });
+    if (!warned) warnings->push_back("texture not used, flat colour instead: " + problem);
   }
-  (*loaded)[path] = index;
+  (*loaded)[{path, kind}] = index;
   return index;
 }
 
@@ -86,7 +78,7 @@ bool load_scene_from_model(const pfx::host::PluginRegistry& registry, const std:
   pfx::app::Scene out;
   // Scene material i + 1 is the file's material i; 0 is the default for faces without one.
   out.materials.push_back(pfx::app::Material{});
-  std::unordered_map<std::string, int> textures;
+  std::map<std::pair<std::string, pfx::app::MapKind>, int> textures;
   const auto* bytes = reinterpret_cast<const unsigned char*>(r.materials);
   for (uint32_t m = 0; m < r.material_count; ++m) {
     const auto& material = *reinterpret_cast<const pfx_import_material*>(bytes + size_t{m} * r.materials[0].struct_size);
@@ -94,7 +86,15 @@ bool load_scene_from_model(const pfx::host::PluginRegistry& registry, const std:
     scene_material.albedo = glm::vec3(material.diffuse[0], material.diffuse[1], material.diffuse[2]);
     scene_material.emissive = glm::vec3(material.emissive[0], material.emissive[1], material.emissive[2]);
     if (material.diffuse_map && r.texcoords)
-      scene_material.albedo_texture = load_texture(material.diffuse_map, &out, &textures, warnings);
+      scene_material.albedo_texture =
+          load_texture(material.diffuse_map, pfx::app::MapKind::color, &out, &textures, warnings);
+    if (material.emissive_map && r.texcoords) {
+      scene_material.emissive_texture =
+          load_texture(material.emissive_map, pfx::app::MapKind::color, &out, &textures, warnings);
+      // A glow map under a black (or absent) Ke would show nothing: the map alone gives the colour.
+      if (scene_material.emissive_texture >= 0 && scene_material.emissive == glm::vec3(0.0f))
+        scene_material.emissive = glm::vec3(1.0f);
+    }
     out.materials.push_back(scene_material);
   }
   // One mesh per sub-mesh, holding only the vertices it uses.
@@ -122,11 +122,7 @@ bool load_scene_from_model(const pfx::host::PluginRegistry& registry, const std:
   importer->desc->release(result);
 
   pfx::app::update_bounds(&out);
-  // The demo's lights (its colours and intensities) spread through the model's box, grown by a
-  // tenth on every side so the outer faces are lit too.
-  const glm::vec3 low(lo[0], lo[1], lo[2]), high(hi[0], hi[1], hi[2]);
-  const glm::vec3 margin = (high - low) * 0.1f;
-  pfx::app::add_random_lights(&out, options.lights, low - margin, high + margin, options.seed);
+  pfx::app::add_model_light_rig(&out, {options.lights, options.seed});
   out.camera = frame_bounds(lo, hi, options.fovy_degrees * M_PI / 180.0);
   *scene = std::move(out);
   return true;

@@ -1,6 +1,7 @@
 // A model file as a scene for pfx-render --scene: imported through the importer plugins
-// (pfx/importer.h), one scene mesh per sub-mesh, materials from the file's Kd / Ke / map_Kd, lit by
-// the demo's lights spread over the model, seen by a camera that frames the model's bounds.
+// (pfx/importer.h), one scene mesh per sub-mesh, materials from the file's Kd / Ke / map_Kd / map_Ke
+// (PNG, JPEG, TGA or BMP: texture_maps.hpp), lit by the model light rig (model_light_rig.hpp), seen
+// by a camera that frames the model's bounds.
 #pragma once
 
 #include <cstdint>
@@ -15,8 +16,8 @@ namespace pfx::import {
 
 struct SceneImportOptions {
   unsigned threads = 0;      // importer threads (0: all)
-  uint64_t seed = 1;         // the demo's light colours and places
-  int lights = 400;          // the demo's count (its 20 x 20 grid)
+  uint64_t seed = 1;         // the point lights' colours and places
+  int lights = 400;          // the point lights around the model (the demo's count)
   double fovy_degrees = 45;  // the camera's vertical field of view
 };
 

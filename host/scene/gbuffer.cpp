@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <glad/gl.h>
+#include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <pfx/cpp/gl_program.hpp>
 
@@ -13,16 +14,20 @@
 namespace pfx::app {
 namespace {
 
+constexpr int kMapSlots = 4;  // albedo, emissive, alpha, normal: texture units 0..3
+
 const char* kVertexShader = R"(#version 450 core
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 layout(location = 0) uniform mat4 view_projection;
 layout(location = 1) uniform mat4 view;
+out vec3 world_position;
 out vec3 world_normal;
 out vec2 uv;
 out float view_depth;
 void main() {
+  world_position = in_position;
   world_normal = in_normal;
   uv = in_uv;
   // Affine in view space, so the interpolated value is exact: no depth-buffer precision loss.
@@ -31,31 +36,64 @@ void main() {
 }
 )";
 
+// Texture slots: bit i of `maps` says whether unit i holds the material's map.
 const char* kFragmentShader = R"(#version 450 core
+in vec3 world_position;
 in vec3 world_normal;
 in vec2 uv;
 in float view_depth;
 layout(location = 2) uniform vec3 albedo_color;
-layout(location = 3) uniform vec3 emissive;
-layout(location = 4) uniform vec3 ambient;
-layout(location = 5) uniform bool has_texture;
-layout(binding = 0) uniform sampler2D albedo_texture;
+layout(location = 3) uniform vec3 emissive_color;
+layout(location = 4) uniform vec3 sky;
+layout(location = 5) uniform int maps;
+layout(location = 6) uniform vec3 ground;
+layout(location = 7) uniform vec3 key_direction;
+layout(location = 8) uniform vec3 key_radiance;
+layout(location = 9) uniform float alpha_cutoff;
+layout(binding = 0) uniform sampler2D albedo_map;
+layout(binding = 1) uniform sampler2D emissive_map;
+layout(binding = 2) uniform sampler2D alpha_map;
+layout(binding = 3) uniform sampler2D normal_map;
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
 layout(location = 2) out vec4 out_normal;
 layout(location = 3) out vec4 out_albedo;
 layout(location = 4) out vec4 out_emissive;
+
+// The surface's tangent frame from the screen-space change of position and UV, so meshes need no
+// tangent attribute: T and B are the directions in which U and V grow, scaled alike.
+// The derivatives are taken before any fragment of the quad is discarded.
+vec3 mapped_normal(vec3 n, vec3 m, vec3 dp_dx, vec3 dp_dy, vec2 duv_dx, vec2 duv_dy) {
+  vec3 across_y = cross(dp_dy, n), across_x = cross(n, dp_dx);
+  vec3 t = across_y * duv_dx.x + across_x * duv_dy.x;
+  vec3 b = across_y * duv_dx.y + across_x * duv_dy.y;
+  float size = max(dot(t, t), dot(b, b));
+  if (!(size > 0.0)) return n;  // no UV change over the pixel: nothing to map
+  vec3 mapped = mat3(t * inversesqrt(size), b * inversesqrt(size), n) * m;
+  float length2 = dot(mapped, mapped);
+  return length2 > 0.0 ? mapped * inversesqrt(length2) : n;
+}
+
 void main() {
+  vec3 dp_dx = dFdx(world_position), dp_dy = dFdy(world_position);
+  vec2 duv_dx = dFdx(uv), duv_dy = dFdy(uv);
+  bool cut = (maps & 4) != 0 && texture(alpha_map, uv).a < alpha_cutoff;
   vec3 albedo = albedo_color;
-  if (has_texture) albedo *= texture(albedo_texture, uv).rgb;
+  if ((maps & 1) != 0) albedo *= texture(albedo_map, uv).rgb;
+  vec3 emissive = emissive_color;
+  if ((maps & 2) != 0) emissive *= texture(emissive_map, uv).rgb;
   // Two-sided: a back face seen from inside still gets a normal facing the camera.
   vec3 n = normalize(world_normal);
   if (!gl_FrontFacing) n = -n;
-  out_color = vec4(emissive + ambient * albedo, 1.0);
+  if ((maps & 8) != 0)
+    n = mapped_normal(n, texture(normal_map, uv).xyz * 2.0 - 1.0, dp_dx, dp_dy, duv_dx, duv_dy);
+  vec3 light = mix(ground, sky, 0.5 + 0.5 * n.y) + key_radiance * max(dot(n, key_direction), 0.0);
+  out_color = vec4(emissive + light * albedo, 1.0);
   out_depth = view_depth;
   out_normal = vec4(n, 0.0);
   out_albedo = vec4(albedo, 1.0);
   out_emissive = vec4(emissive, 1.0);
+  if (cut) discard;
 }
 )";
 
@@ -97,15 +135,17 @@ std::unique_ptr<SceneRenderer> SceneRenderer::create(const Scene& scene, std::st
     return nullptr;
   }
   renderer->ambient_ = scene.ambient;
+  renderer->ground_ = scene.ground_ambient;
+  renderer->key_light_ = scene.key_light;
   renderer->background_ = scene.background;
   renderer->materials_ = scene.materials;
-  for (const AlbedoTexture& texture : scene.textures) {
+  for (const Texture& texture : scene.textures) {
     GLuint name = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &name);
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(texture.width, texture.height))));
-    glTextureStorage2D(name, levels, GL_RGB16F, texture.width, texture.height);
+    glTextureStorage2D(name, levels, GL_RGBA16F, texture.width, texture.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(name, 0, 0, 0, texture.width, texture.height, GL_RGB, GL_FLOAT, texture.rgb.data());
+    glTextureSubImage2D(name, 0, 0, 0, texture.width, texture.height, GL_RGBA, GL_FLOAT, texture.rgba.data());
     glGenerateTextureMipmap(name);
     glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -207,18 +247,30 @@ void SceneRenderer::render(const Camera& camera, int width, int height) {
   set_matrix(program_, 0, projection_matrix(camera, double(width) / double(height)) * view);
   set_matrix(program_, 1, view);
   glProgramUniform3f(program_, 4, ambient_.r, ambient_.g, ambient_.b);
+  glProgramUniform3f(program_, 6, ground_.r, ground_.g, ground_.b);
+  const float key_length = glm::length(key_light_.direction);
+  const glm::vec3 key = key_length > 0 ? key_light_.direction / key_length : glm::vec3(0.0f);
+  glProgramUniform3f(program_, 7, key.x, key.y, key.z);
+  glProgramUniform3f(program_, 8, key_light_.radiance.r, key_light_.radiance.g, key_light_.radiance.b);
   glUseProgram(program_);
   for (const auto& mesh : meshes_) {
     const Material& material = materials_[static_cast<size_t>(mesh->material)];
     glProgramUniform3f(program_, 2, material.albedo.r, material.albedo.g, material.albedo.b);
     glProgramUniform3f(program_, 3, material.emissive.r, material.emissive.g, material.emissive.b);
-    const bool textured = material.albedo_texture >= 0;
-    glProgramUniform1i(program_, 5, textured ? 1 : 0);
-    if (textured) glBindTextureUnit(0, textures_[static_cast<size_t>(material.albedo_texture)]);
+    glProgramUniform1f(program_, 9, material.alpha_cutoff);
+    const int slots[kMapSlots] = {material.albedo_texture, material.emissive_texture, material.alpha_texture,
+                                  material.normal_texture};
+    int maps = 0;
+    for (int unit = 0; unit < kMapSlots; ++unit)
+      if (slots[unit] >= 0) {
+        maps |= 1 << unit;
+        glBindTextureUnit(static_cast<GLuint>(unit), textures_[static_cast<size_t>(slots[unit])]);
+      }
+    glProgramUniform1i(program_, 5, maps);
     glBindVertexArray(mesh->vertex_array);
     glDrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
   }
-  glBindTextureUnit(0, 0);
+  for (int unit = 0; unit < kMapSlots; ++unit) glBindTextureUnit(static_cast<GLuint>(unit), 0);
   glBindVertexArray(0);
   glUseProgram(0);
   glDisable(GL_DEPTH_TEST);

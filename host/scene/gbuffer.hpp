@@ -1,9 +1,11 @@
 // The G-buffer the host renders from a scene: the frame inputs of the ABI (DESIGN.md §3) as GL
 // textures of one size, written by one geometry pass.
 //
-//   color     RGBA16F  emissive + ambient * albedo where there is geometry, the background elsewhere
+//   color     RGBA16F  emissive + albedo x (sky/ground ambient + key light) where there is geometry
+//                      (scene.hpp), the background elsewhere; the point lights are the effects' job
 //   depth     R32F     linear view depth in metres (PFX_DEPTH_LINEAR); +infinity where nothing is
-//   normal    RGBA16F  world-space unit normal in RGB, facing the camera; 0 where nothing is
+//   normal    RGBA16F  world-space unit normal in RGB (normal map applied), facing the camera; 0 where
+//                      nothing is
 //   albedo    RGBA16F  linear base colour (texture x colour) in RGB; 0 where nothing is
 //   emissive  RGBA16F  emitted radiance in RGB; 0 where nothing is
 #pragma once
@@ -44,9 +46,10 @@ class SceneRenderer {
   void allocate(int width, int height);
   void release_targets();
 
-  glm::vec3 ambient_{0.0f}, background_{0.0f};
+  glm::vec3 ambient_{0.0f}, ground_{0.0f}, background_{0.0f};
+  DirectionalLight key_light_;
   std::vector<Material> materials_;
-  std::vector<uint32_t> textures_;  // one GL texture per AlbedoTexture
+  std::vector<uint32_t> textures_;  // one GL texture per scene Texture
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
   uint32_t program_ = 0;
   uint32_t framebuffer_ = 0, depth_buffer_ = 0;

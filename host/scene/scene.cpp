@@ -20,19 +20,25 @@ bool validate_scene(const Scene& scene, std::string* error) {
     return false;
   };
   for (size_t t = 0; t < scene.textures.size(); ++t) {
-    const AlbedoTexture& texture = scene.textures[t];
+    const Texture& texture = scene.textures[t];
     if (texture.width < 1 || texture.height < 1 ||
-        texture.rgb.size() != static_cast<size_t>(texture.width) * texture.height * 3)
+        texture.rgba.size() != static_cast<size_t>(texture.width) * texture.height * 4)
       return fail("texture " + std::to_string(t) + ": size and pixel count disagree");
   }
   for (size_t m = 0; m < scene.materials.size(); ++m) {
     const Material& material = scene.materials[m];
     if (!finite(material.albedo) || !finite(material.emissive))
       return fail("material " + std::to_string(m) + ": albedo and emissive must be finite");
-    if (material.albedo_texture >= static_cast<int>(scene.textures.size()))
-      return fail("material " + std::to_string(m) + ": texture " + std::to_string(material.albedo_texture) +
-                  " does not exist");
+    for (int texture : {material.albedo_texture, material.emissive_texture, material.alpha_texture,
+                        material.normal_texture})
+      if (texture >= static_cast<int>(scene.textures.size()))
+        return fail("material " + std::to_string(m) + ": texture " + std::to_string(texture) + " does not exist");
+    if (!std::isfinite(material.alpha_cutoff))
+      return fail("material " + std::to_string(m) + ": the alpha cut-off must be finite");
   }
+  if (!finite(scene.ambient) || !finite(scene.ground_ambient) || !finite(scene.key_light.radiance) ||
+      !finite(scene.key_light.direction) || !finite(scene.background))
+    return fail("ambient, ground, key light and background must be finite");
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const Mesh& mesh = scene.meshes[i];
     const std::string name = "mesh " + std::to_string(i);

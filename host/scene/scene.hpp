@@ -14,16 +14,32 @@
 
 namespace pfx::app {
 
-// An RGB albedo texture, linear, rows bottom first (as GL stores it), repeated over the UVs.
-struct AlbedoTexture {
+// An RGBA texture, rows bottom first (as GL stores it), repeated over the UVs. Colour maps hold
+// linear values (decoded from sRGB when they were read); data maps (alpha, normals) hold the
+// file's codes / 255 as they are.
+struct Texture {
   int width = 0, height = 0;
-  std::vector<float> rgb;  // width * height * 3
+  std::vector<float> rgba;  // width * height * 4
 };
 
+// Texture indices are into Scene::textures, -1 for none.
 struct Material {
-  glm::vec3 albedo{0.8f};     // multiplied by the texture when there is one
-  int albedo_texture = -1;    // index into Scene::textures, or -1
-  glm::vec3 emissive{0.0f};   // radiance the surface emits itself
+  glm::vec3 albedo{0.8f};     // multiplied by albedo_texture's RGB when there is one
+  int albedo_texture = -1;
+  glm::vec3 emissive{0.0f};   // radiance the surface emits itself, times emissive_texture's RGB
+  int emissive_texture = -1;
+  // A cut-out: where alpha_texture's A is below alpha_cutoff the surface is not there at all.
+  int alpha_texture = -1;
+  float alpha_cutoff = 0.5f;
+  // A tangent-space normal map (RGB = XYZ * 0.5 + 0.5, +Z out of the surface, +Y along +V).
+  int normal_texture = -1;
+};
+
+// A distant light (the sun of an outdoor scene, the key light of a studio): every surface facing
+// it receives radiance x max(0, n . direction).
+struct DirectionalLight {
+  glm::vec3 direction{0.0f, 1.0f, 0.0f};  // unit, from the surface towards the light
+  glm::vec3 radiance{0.0f};               // 0: no such light
 };
 
 // Indexed triangles in world space (our scenes are static: no per-mesh transform is needed).
@@ -47,14 +63,19 @@ struct Camera {
 struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
-  std::vector<AlbedoTexture> textures;
+  std::vector<Texture> textures;
   // Point lights as the ABI passes them (pfx_light: position, range <= 0 for "derive it", colour,
   // intensity), so a frame can point at this array directly.
   std::vector<pfx_light> lights;
   Camera camera;
-  // Light that reaches every surface regardless of the point lights (the host's colour input is
-  // emissive + ambient * albedo), and the colour where no geometry is.
+  // Light that reaches every surface regardless of the point lights, a sky over a ground: a
+  // surface whose normal points up receives `ambient`, one pointing down `ground_ambient`, and
+  // in between a blend by the normal's height (0.5 + 0.5 n.y). With the key light, the host's
+  // colour input is emissive + albedo x (that ambient + key light).
   glm::vec3 ambient{0.02f};
+  glm::vec3 ground_ambient{0.02f};
+  DirectionalLight key_light;
+  // The colour where no geometry is.
   glm::vec3 background{0.01f, 0.012f, 0.02f};
   // An axis-aligned box holding every mesh (lights added with --lights are placed inside it).
   glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};

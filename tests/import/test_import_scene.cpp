@@ -62,13 +62,21 @@ TEST_CASE("import scene: sub-meshes, materials, lights and camera from a model",
   CHECK(scene.materials[scene.meshes[0].material].albedo == glm::vec3(0.7f, 0.6f, 0.5f));
   CHECK(scene.materials[scene.meshes[1].material].emissive == glm::vec3(3.0f, 1.0f, 0.25f));
   CHECK(scene.lights.size() == 400);
+  const float radius = std::sqrt(2.0f * 2.0f * 2 + 1.5f * 1.5f) / 2;  // half the box's diagonal
   for (const auto& light : scene.lights) {
-    // Inside the model's box grown by a tenth of its size on every side.
-    CHECK(light.position[0] >= -1.2f);
-    CHECK(light.position[0] <= 1.2f);
-    CHECK(light.position[1] >= -0.15f);
-    CHECK(light.position[1] <= 1.65f);
+    // Over and around the model's box (x, z out to 1.3 half sizes, y from 0.3 half sizes below
+    // its middle to 1.6 above), never inside it, reaching a fifth of the model's radius.
+    const float x = light.position[0], y = light.position[1], z = light.position[2];
+    CHECK(std::abs(x) <= 1.3f);
+    CHECK(std::abs(z) <= 1.3f);
+    CHECK(y >= 0.75f - 0.3f * 0.75f);
+    CHECK(y <= 0.75f + 1.6f * 0.75f + 1e-5f);
+    CHECK_FALSE((std::abs(x) < 1 && std::abs(z) < 1 && y > 0 && y < 1.5f));
+    CHECK(light.range == Approx(0.2f * radius));
   }
+  // The key light comes from above and the sky is brighter than the ground.
+  CHECK(scene.key_light.direction.y > 0.5f);
+  CHECK(scene.ambient.g > scene.ground_ambient.g);
   CHECK(scene.bounds_max.y == 1.5f);
   std::string why;
   CHECK(pfx::app::validate_scene(scene, &why));

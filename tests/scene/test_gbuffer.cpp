@@ -1,6 +1,7 @@
 // The G-buffer pass against ray casting done here in double precision: for every pixel whose
-// neighbourhood hits one surface, depth, normal, albedo, emissive and colour must be what that
-// surface gives; where nothing is hit, depth is +infinity and colour the background.
+// neighbourhood hits one surface, depth, normal, albedo, emissive and colour (sky and ground
+// ambient, key light) must be what that surface gives; where nothing is hit, depth is +infinity
+// and colour the background.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -46,6 +47,9 @@ Scene floor_and_box() {
   scene.camera.near_plane = 0.1;
   scene.camera.far_plane = 100;
   scene.ambient = glm::vec3(0.125f);
+  scene.ground_ambient = glm::vec3(0.0625f, 0.03125f, 0.0f);
+  scene.key_light.direction = glm::normalize(glm::vec3(1.0f, 2.0f, 0.5f));
+  scene.key_light.radiance = glm::vec3(0.5f, 0.25f, 1.0f);
   scene.background = glm::vec3(0.25f, 0.5f, 1.0f);
   update_bounds(&scene);
   return scene;
@@ -145,7 +149,12 @@ TEST_CASE("G-buffer of a floor and a box matches rays cast in double precision",
         REQUIRE(normal[i * 4 + c] == Approx(centre.normal[c]).margin(1e-3));
         REQUIRE(albedo[i * 4 + c] == m.albedo[c]);  // exact in half
         REQUIRE(emissive[i * 4 + c] == m.emissive[c]);
-        REQUIRE(color[i * 4 + c] == Approx(m.emissive[c] + 0.125 * m.albedo[c]).epsilon(1e-3));
+        // Sky over ground by the normal's height, plus the key light by Lambert's cosine.
+        const double up = 0.5 + 0.5 * centre.normal.y;
+        const double ambient = scene.ground_ambient[c] + (scene.ambient[c] - scene.ground_ambient[c]) * up;
+        const double key = scene.key_light.radiance[c] *
+                           std::max(0.0, glm::dot(centre.normal, glm::dvec3(scene.key_light.direction)));
+        REQUIRE(color[i * 4 + c] == Approx(m.emissive[c] + (ambient + key) * m.albedo[c]).epsilon(1e-3));
       }
       if (centre.surface > 0) ++box;
       ++checked;
