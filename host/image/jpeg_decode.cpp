@@ -45,17 +45,13 @@ struct JpegJob {
   std::vector<std::uint8_t> pixels;
   std::string problem;
   bool created = false;
+  bool jumped = false;  // libjpeg gave up: errors.message says why
 };
 
-bool run(JpegJob* job) {
+// Everything after the setjmp, in a function of its own: the one that calls setjmp then holds no
+// C++ object at all (GCC rightly warns that a std::string temporary there could be clobbered).
+__attribute__((noinline)) bool decode(JpegJob* job) {
   jpeg_decompress_struct& info = job->info;
-  info.err = jpeg_std_error(&job->errors.base);
-  job->errors.base.error_exit = on_error;
-  job->errors.base.emit_message = on_message;
-  if (setjmp(job->errors.jump)) {
-    job->problem = std::string("damaged JPEG file (libjpeg: ") + job->errors.message + ")";
-    return false;
-  }
   jpeg_create_decompress(&info);
   job->created = true;
   jpeg_mem_src(&info, job->data, static_cast<unsigned long>(job->size));
@@ -82,17 +78,29 @@ bool run(JpegJob* job) {
   return true;
 }
 
+bool run(JpegJob* job) {
+  job->info.err = jpeg_std_error(&job->errors.base);
+  job->errors.base.error_exit = on_error;
+  job->errors.base.emit_message = on_message;
+  if (setjmp(job->errors.jump)) {
+    job->jumped = true;
+    return false;
+  }
+  return decode(job);
+}
+
 }  // namespace
 
 bool decode_jpeg(const std::uint8_t* data, std::size_t size, std::int64_t max_pixels, DisplayImage* out,
                  std::string* problem) {
-  JpegJob job{data, size, max_pixels, {}, {}, {}, {}, false};
+  JpegJob job{data, size, max_pixels, {}, {}, {}, {}, false, false};
   bool ok = false;
   try {
     ok = run(&job);
   } catch (const std::bad_alloc&) {
     job.problem = "out of memory";
   }
+  if (job.jumped) job.problem = std::string("damaged JPEG file (libjpeg: ") + job.errors.message + ")";
   if (job.created) jpeg_destroy_decompress(&job.info);
   if (!ok) {
     *problem = job.problem;
