@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """pfx-farm on a real one-node Slurm cluster (started here, in a temporary folder): a 24-frame
-sequence in chunks of 5; one task is killed (SIGKILL) in the middle of its chunk; pfx-farm status
-must then name exactly the frames it left; pfx-farm resubmit must run only that chunk again;
+sequence in chunks of 5; one task is killed (SIGKILL) in the middle of its chunk and one frame
+of another task is a damaged file; pfx-farm status must then name exactly the frames the kill
+left and the failed frame with its reason; pfx-farm resubmit (the file mended) must run only those
+two chunks again;
 afterwards every output must exist and be byte for byte the file a single local pfx-render
 writes for the same frame.
 
@@ -14,6 +16,7 @@ Exit codes: 0 passed, 1 failed (with the reason), 77 skipped (not root, or Slurm
 ctest shows SKIP with the reason).
 """
 
+import json
 import os
 import shutil
 import subprocess
@@ -29,6 +32,7 @@ FIRST, LAST, CHUNK = 1001, 1024, 5
 WIDTH, HEIGHT = 64, 36
 KILLED_TASK = 2                   # frames 1011-1015
 SLOW = [1013, 1014, 1015]         # large frames: the kill lands in one of them
+DAMAGED = 1024                    # cut short at first: task 4 fails that frame alone
 
 
 class Failure(Exception):
@@ -90,6 +94,11 @@ def scenario(cluster, folder, render, farm, plugins):
         cluster.env, expect=[0])
     for frame in SLOW:
         shutil.copy(os.path.join(shot, "slow.exr"), os.path.join(shot, "in.%04d.exr" % frame))
+    damaged = os.path.join(shot, "in.%04d.exr" % DAMAGED)
+    with open(damaged, "rb") as f:
+        whole = f.read()
+    with open(damaged, "wb") as f:
+        f.write(whole[:len(whole) // 2])
     effects = ["--plugins", plugins, "--chain", "bloom", "--set", "bloom.threshold=1"]
     farm_args = effects + ["--input", "in.%04d.exr", "--out", "out/beauty.####.exr", "--out", "out/beauty.@@@@.png"]
     os.makedirs(os.path.join(shot, "out"))
@@ -107,21 +116,27 @@ def scenario(cluster, folder, render, farm, plugins):
     wait_until(job_done(cluster, job), 120, "job %s to end" % job, cluster)
 
     # What the kill left: the end of task 2's chunk, from whichever large frame it was in.
-    left = [f for f in range(FIRST, LAST + 1) if not os.path.exists("out/beauty.%04d.png" % f)]
+    left = [f for f in range(FIRST, LAST + 1) if f != DAMAGED and not os.path.exists("out/beauty.%04d.png" % f)]
+    check(not os.path.exists("out/beauty.%04d.exr" % DAMAGED), "the damaged frame %d has an output" % DAMAGED)
     check(left and left[-1] == SLOW[-1] and left == list(range(left[0], SLOW[-1] + 1)) and left[0] >= SLOW[0],
           "after killing task 2 in frames %s, the frames left should be the end of its chunk; left: %s" %
           (SLOW, left))
     result = run([farm, "status", job, *jobs], env, expect=[1])
     print(result.stdout, end="")
     listed = "%d-%d" % (left[0], left[-1]) if len(left) > 1 else str(left[0])
-    check("%d done" % (LAST - FIRST + 1 - len(left)) in result.stdout and "%d missing" % len(left) in result.stdout
-          and "missing  %s" % listed in result.stdout and "%d CANCELLED" % KILLED_TASK in result.stdout,
-          "pfx-farm status after the kill should list frames %s as missing:\n%s" % (listed, result.stdout))
+    check("%d done" % (LAST - FIRST - len(left)) in result.stdout and "%d missing" % len(left) in result.stdout
+          and "missing  %s" % listed in result.stdout and "%d CANCELLED" % KILLED_TASK in result.stdout
+          and "1 failed" in result.stdout and "frame %d: in.%d.exr: " % (DAMAGED, DAMAGED) in result.stdout
+          and "4 FAILED" in result.stdout,
+          "pfx-farm status after the kill should list frames %s as missing and %d as failed with its reason, "
+          "task 2 cancelled and task 4 failed:\n%s" % (listed, DAMAGED, result.stdout))
+    with open(damaged, "wb") as f:
+        f.write(whole)
     again = run([farm, "resubmit", job, *jobs], env, expect=[0]).stdout.strip()
     check(again.isdigit() and again != job, "pfx-farm resubmit printed %r, not a new job id" % again)
-    tasks = run(["squeue", "-h", "-r", "-j", again, "-o", "%K"], env).stdout.split()
-    check(tasks in ([str(KILLED_TASK)], []), "the resubmitted job should hold only task %d, holds %s" %
-          (KILLED_TASK, tasks))
+    with open(os.path.join(folder, "jobs", again, "job.json")) as f:
+        tasks = json.load(f)["tasks"]
+    check(tasks == [KILLED_TASK, 4], "the resubmitted job should hold only tasks 2 and 4, holds %s" % tasks)
     wait_until(job_done(cluster, again), 120, "job %s to end" % again, cluster)
 
     result = run([farm, "status", job, *jobs], env, expect=[0])

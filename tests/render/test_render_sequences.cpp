@@ -97,6 +97,9 @@ TEST_CASE("frame name patterns %04d %d #### @@@@ and a lone @ with %% and number
 }
 
 TEST_CASE("pfx-render --frames: usage errors exit 2 and say what is wrong", "[render][sequence][errors]") {
+  const Result help = pfx_render("--help", false);
+  for (const char* text : {"--frames A-B[xS]", "--overwrite", "--report PATTERN", "5 some frames of a sequence failed"})
+    CHECK(help.out.find(text) != std::string::npos);
   for (const auto& [args, message] :
        {std::pair{"--input in.%04d.exr --out out.exr", "--input in.%04d.exr names a frame sequence: give --frames"},
         std::pair{"--input in.%04d.exr --frames 1-3 --out out.exr", "--out out.exr: no frame number in the name"},
