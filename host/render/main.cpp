@@ -1,5 +1,6 @@
-// pfx-render: the command-line host. Loads plugins, runs a chain of effects over one frame
-// headless, writes EXR/PNG and optionally a JSON report. Exit codes in render_usage().
+// pfx-render: the command-line host. Loads plugins, runs a chain of effects over one frame or a
+// frame sequence (sequence_loop.hpp) headless, writes EXR/PNG and optionally a JSON report. Exit
+// codes in render_usage().
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +29,7 @@
 #include "png_io.hpp"
 #include "preset.hpp"
 #include "render_options.hpp"
+#include "sequence_loop.hpp"
 #include "timing_choice.hpp"
 #include "tonemap.hpp"
 
@@ -101,6 +103,62 @@ nlohmann::ordered_json report_json(const std::string& renderer, const pfx_frame&
   return root;
 }
 
+// An image's colour (and depth) as the frame the effects see, through `camera`.
+pfx_frame image_frame(const Image& input, const CameraOptions& camera) {
+  pfx_frame frame{};
+  frame.struct_size = sizeof frame;
+  frame.width = static_cast<uint32_t>(input.width);
+  frame.height = static_cast<uint32_t>(input.height);
+  frame.inputs = PFX_INPUT_COLOR;
+  if (input.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
+  frame.depth_encoding = input.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
+  frame.camera = make_camera(camera, input.width, input.height);
+  frame.light_struct_size = sizeof(pfx_light);
+  return frame;
+}
+
+host::FrameTextures upload_image(const Image& input) {
+  host::FrameTextures textures;
+  textures.color = upload_color_texture(input);
+  textures.depth = upload_depth_texture(input);
+  return textures;
+}
+
+// Runs the chain over one frame into a texture of its own and reads the result back.
+bool render_to_image(host::Chain& chain, const pfx_frame& frame, const host::FrameTextures& textures, Image* result,
+                     std::string* error) {
+  const int width = static_cast<int>(frame.width), height = static_cast<int>(frame.height);
+  uint32_t output = create_color_texture(width, height);
+  const bool rendered = chain.render(frame, textures, output, error);
+  // The pixels are read back next anyway, so waiting for the frame's times costs nothing.
+  if (rendered) chain.wait_for_timings();
+  if (rendered) *result = download_color_texture(output, width, height);
+  delete_texture(output);
+  return rendered;
+}
+
+// One frame of a sequence: the frame's input (and depth) through the chain, which keeps its
+// plugins, programs and targets from the frame before, to the frame's outputs.
+bool render_sequence_frame(const RenderOptions& effective, const FrameFiles& files, host::Chain& chain,
+                           const std::string& renderer, nlohmann::ordered_json* report, std::string* error) {
+  RenderOptions options = effective;
+  options.input = files.input;
+  options.depth = files.depth;
+  options.outputs = files.outputs;
+  Image input, result;
+  InputReport input_report;
+  if (!load_input(options, &input, &input_report, error)) return false;
+  const pfx_frame frame = image_frame(input, effective.camera);
+  const host::FrameTextures textures = upload_image(input);
+  const bool rendered = render_to_image(chain, frame, textures, &result, error);
+  delete_texture(textures.color);
+  delete_texture(textures.depth);
+  if (!rendered || !write_outputs(options, result, error)) return false;
+  *report = report_json(renderer, frame, chain.report(), compute_image_stats(result), options.outputs,
+                        input_json(options, input_report));
+  return true;
+}
+
 int run(const RenderOptions& options) {
   std::unique_ptr<HeadlessContext> context;
   std::string message;
@@ -155,6 +213,12 @@ int run(const RenderOptions& options) {
     if (!note.empty()) std::fprintf(stderr, "pfx-render: warning: --set %s: %s\n", assignment.c_str(), note.c_str());
   }
 
+  if (options.sequence.given) {
+    return run_sequence(options, [&](const FrameFiles& files, nlohmann::ordered_json* report, std::string* error) {
+      return render_sequence_frame(effective, files, chain, context->renderer(), report, error);
+    });
+  }
+
   // The frame: the demo scene's G-buffer, or an image's colour (and depth).
   Scene scene;
   std::unique_ptr<SceneRenderer> scene_renderer;
@@ -184,30 +248,16 @@ int run(const RenderOptions& options) {
     textures = scene_renderer->textures();
   } else {
     if (!load_input(options, &input, &input_report, &message)) return error_exit(kBadInput, message);
-    frame.struct_size = sizeof frame;
-    frame.width = static_cast<uint32_t>(input.width);
-    frame.height = static_cast<uint32_t>(input.height);
-    frame.inputs = PFX_INPUT_COLOR;
-    if (input.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
-    frame.depth_encoding = input.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
-    frame.camera = make_camera(effective.camera, input.width, input.height);
-    frame.light_struct_size = sizeof(pfx_light);
-    textures.color = upload_color_texture(input);
-    textures.depth = upload_depth_texture(input);
+    frame = image_frame(input, effective.camera);
+    textures = upload_image(input);
   }
 
-  const int width = static_cast<int>(frame.width), height = static_cast<int>(frame.height);
-  uint32_t output = create_color_texture(width, height);
-  bool rendered = chain.render(frame, textures, output, &message);
-  // One frame and out: waiting for its times here costs nothing a later frame would feel.
-  if (rendered) chain.wait_for_timings();
   Image result;
-  if (rendered) result = download_color_texture(output, width, height);
+  const bool rendered = render_to_image(chain, frame, textures, &result, &message);
   if (!scene_renderer) {
     delete_texture(textures.color);
     delete_texture(textures.depth);
   }
-  delete_texture(output);
   if (!rendered) return error_exit(kEffectError, message);
 
   if (!write_outputs(effective, result, &message)) return error_exit(kInternal, message);

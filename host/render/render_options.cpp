@@ -15,9 +15,11 @@ std::string render_usage() {
       "                  | --input IMG.exr [--layer NAME] [--depth DEPTH.exr]) [--size WxH]\n"
       "                  [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
       "                  [--preset FILE] [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
+      "       pfx-render --input SHOT.%04d.exr [--depth Z.%04d.exr] --frames FIRST-LAST[xSTEP]\n"
+      "                  [--overwrite] [--report R.%04d.json] [effects] --out OUT.%04d.exr|.png... [--json]\n"
       "       pfx-render --list [--json] [--plugins DIR]...\n"
       "\n"
-      "Runs a chain of pfx effects over one frame, headless (EGL, no window), and writes the result.\n"
+      "Runs a chain of pfx effects over one frame or a sequence, headless (EGL, no window), and writes the result.\n"
       "\n"
       "input\n"
       "  --demo               the built-in 3D scene, made in code: a floor, boxes and spheres, emissive\n"
@@ -77,8 +79,23 @@ std::string render_usage() {
       "                       really spends), off\n"
       "  -v, --verbose        also print debug messages\n"
       "\n"
+      "sequences (docs/farm.md)\n"
+      "  --frames A-B[xS]     render frames A to B (every S-th) in one process, plugins and GL objects\n"
+      "                       kept between frames; --input, every --out and --report are then file\n"
+      "                       name patterns: shot.%04d.exr, shot.####.exr or shot.@@@@.exr (each # or\n"
+      "                       @ one digit; %d or a lone @: no padding); --depth a pattern or one file\n"
+      "  --overwrite          render every frame; without it a frame whose outputs all exist and read\n"
+      "                       back whole is skipped, so a rerun finishes what an interrupted run left\n"
+      "  --report PATTERN     also write each frame's JSON report (status, error, times) to its own file\n"
+      "                       (only for frames rendered or failed: a skipped frame keeps its report)\n"
+      "  A progress line (frame, time per frame, time left) goes to a terminal, a\n"
+      "  line per frame to anything else; --json prints one JSON line per frame and a last one with the\n"
+      "  summary. SIGINT or SIGTERM stops after the frame being written. A missing or damaged input\n"
+      "  fails that frame only.\n"
+      "\n"
       "exit codes: 0 ok, 1 internal error (e.g. no OpenGL 4.5 context), 2 usage, 3 bad input file,\n"
-      "            4 plugin or effect error\n";
+      "            4 plugin or effect error, 5 some frames of a sequence failed (the others were\n"
+      "            written), 130 or 143 stopped by SIGINT or SIGTERM (rerun to finish)\n";
 }
 
 bool parse_render_options(const std::vector<std::string>& list, RenderOptions* out, std::string* error) {
@@ -144,7 +161,9 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
       if (options.timing != "auto" && options.timing != "gpu" && options.timing != "finish" && options.timing != "off")
         return args.fail("--timing " + options.timing + ": expected auto, gpu, finish or off");
     } else {
-      return args.unknown();
+      bool taken = false;
+      if (!parse_sequence_option(args, &options.sequence, &taken)) return false;
+      if (!taken) return args.unknown();
     }
   }
   if (options.help || options.list) {
@@ -159,6 +178,10 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
     return args.fail("--size applies to --demo and --demo-image (an input image has its own size)");
   if ((options.lights_given || options.seed_given) && !options.demo && options.scene.empty())
     return args.fail("--lights and --seed go with --demo or --scene");
+  std::string sequence_error;
+  if (!check_sequence_options(options.sequence, options.input, options.depth, options.outputs,
+                              options.demo || options.demo_image || !options.scene.empty(), &sequence_error))
+    return args.fail(sequence_error);
   if (options.outputs.empty() && !options.json) return args.fail("nothing to do: give --out FILE and/or --json");
   *out = options;
   return true;

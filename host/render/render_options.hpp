@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "camera_options.hpp"
+#include "sequence_options.hpp"
 #include "tonemap.hpp"
 
 namespace pfx::app {
@@ -38,6 +39,7 @@ struct RenderOptions {
   long long max_input_pixels = 1LL << 26;  // --max-input-pixels: larger EXR inputs are refused unread
   std::string timing = "auto";           // auto | gpu | finish | off
   bool verbose = false;
+  SequenceOptions sequence;              // --frames, --overwrite, --report (docs/farm.md)
 };
 
 // Parses argv (without argv[0]). False with *error for a usage error (exit code 2).

@@ -23,6 +23,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (pfx::app::parse_render_options(args, &render, &error)) {
     if (render.width < 1 || render.height < 1 || render.width > 16384 || render.height > 16384) __builtin_trap();
     if (!(render.camera.near_plane > 0) || !(render.camera.far_plane > render.camera.near_plane)) __builtin_trap();
+    const pfx::app::FrameRange& frames = render.sequence.frames;
+    if (render.sequence.given && (frames.first < 0 || frames.last < frames.first ||
+                                  frames.last > pfx::app::kMaxFrameNumber || frames.step < 1 || frames.count() < 1))
+      __builtin_trap();
+    pfx::app::FramePattern pattern;
+    if (render.sequence.given && !pfx::app::parse_frame_pattern("--input", render.input, &pattern, &error))
+      __builtin_trap();
   } else if (error.empty()) {
     __builtin_trap();
   }
