@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +31,13 @@ InjectRun run_injected(const ScratchFolder& folder, const std::string& name, con
                        const std::vector<std::string>& environment) {
   const std::string log = folder.file(name + ".log");
   std::vector<std::string> argv = {"/usr/bin/env"};
+#if defined(__SANITIZE_ADDRESS__)
+  // A sanitizer build of pfx-inject started with libfaketime preloaded would refuse to run
+  // (AddressSanitizer wants to be the first library); the injected application gets the runtime
+  // first from pfx-inject itself.
+  const char* asan_options = std::getenv("ASAN_OPTIONS");
+  argv.push_back(std::string("ASAN_OPTIONS=") + (asan_options ? asan_options : "") + ":verify_asan_link_order=0");
+#endif
   if (frozen_clock) {
     // Absolute and without '@': the clock stands still, so an animation shows one picture.
     argv.push_back("FAKETIME=2020-01-01 00:00:00");

@@ -3,6 +3,7 @@
 // glXSwapBuffers with dlsym) and glmark2-es2 (OpenGL ES through EGL, which pfx refuses).
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -146,9 +147,15 @@ TEST_CASE("an edited preset applies while the application runs") {
   ScratchFolder folder("reload");
   const std::string preset = folder.file("look.json");
   write_text(preset, R"({"pfx_preset": 1, "chain": [{"effect": "bloom"}]})");
-  ViewerProcess app({"/usr/bin/env", "FAKETIME=2020-01-01 00:00:00", std::string("LD_PRELOAD=") + PFX_FAKETIME_LIBRARY,
-                     PFX_INJECT, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--preset", preset, "--", PFX_GLMARK2, "-s",
-                     "96x64", "-b", "build"});
+  std::vector<std::string> argv = {"/usr/bin/env"};
+#if defined(__SANITIZE_ADDRESS__)
+  const char* asan_options = std::getenv("ASAN_OPTIONS");  // see run_injected
+  argv.push_back(std::string("ASAN_OPTIONS=") + (asan_options ? asan_options : "") + ":verify_asan_link_order=0");
+#endif
+  argv.insert(argv.end(), {"FAKETIME=2020-01-01 00:00:00", std::string("LD_PRELOAD=") + PFX_FAKETIME_LIBRARY, PFX_INJECT,
+                           "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--preset", preset, "--", PFX_GLMARK2, "-s", "96x64", "-b",
+                           "build"});
+  ViewerProcess app(argv);
   REQUIRE_FALSE(app.wait_for_line("chain: bloom", 60).empty());
   // A new modification time even on a file system with coarse stamps.
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
