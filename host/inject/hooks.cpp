@@ -65,6 +65,23 @@ Proc ours(const char* name) {
   return nullptr;
 }
 
+// Whether `name` is one we hand out our own function for. Not instrumented, like every step of a
+// lookup of another name: AddressSanitizer's runtime finds the functions it wraps with dlsym while
+// it starts, before instrumented code may run.
+constexpr const char* kHookedNames[] = {"glXSwapBuffers",       "glXGetProcAddressARB",         "glXGetProcAddress",
+                                        "glXDestroyContext",    "eglSwapBuffers",               "eglSwapBuffersWithDamageKHR",
+                                        "eglGetProcAddress",    "eglDestroyContext"};
+
+__attribute__((no_sanitize_address, no_sanitize_undefined)) bool is_hooked_name(const char* name) {
+  if (!name) return false;
+  for (const char* hooked : kHookedNames) {
+    size_t i = 0;
+    while (hooked[i] && hooked[i] == name[i]) ++i;
+    if (hooked[i] == name[i]) return true;
+  }
+  return false;
+}
+
 // A lookup found `found` for `name`: when it is one of ours, remember the real one and hand out
 // ours instead. A lookup that found our own function (RTLD_DEFAULT sees us first) is not a real one.
 Proc swap_in(const char* name, Proc found, const char* via) {
@@ -169,15 +186,22 @@ __attribute__((visibility("default"))) unsigned eglDestroyContext(void* display,
 // glmark2, GLFW and SDL open libGL or libEGL themselves and look the present call up by name.
 // dlsym's entry (below) comes here for every handle but RTLD_NEXT, by a jump, so the return
 // address is still the application's.
-__attribute__((visibility("hidden"))) void* pfx_inject_dlsym_hooked(void* handle, const char* name) {
-  void* found = pfx::inject::real_dlsym(handle, name);
-  if (inside_gl_libraries(__builtin_return_address(0))) return found;
+static __attribute__((noinline)) void* hand_out(void* found, const char* name, void* caller) {
+  if (inside_gl_libraries(caller)) return found;
   return reinterpret_cast<void*>(swap_in(name, reinterpret_cast<Proc>(found), "dlsym"));
+}
+
+__attribute__((visibility("hidden"), no_sanitize_address, no_sanitize_undefined)) void* pfx_inject_dlsym_hooked(
+    void* handle, const char* name) {
+  void* found = pfx::inject::real_dlsym(handle, name);
+  if (!is_hooked_name(name)) return found;
+  return hand_out(found, name, __builtin_return_address(0));
 }
 
 __attribute__((visibility("hidden"))) void* pfx_inject_real_dlsym = nullptr;
 
-__attribute__((visibility("hidden"))) void* pfx_inject_resolve_real_dlsym() {
+// Runs at the first dlsym(RTLD_NEXT, ...), which may come from a sanitizer runtime still starting.
+__attribute__((visibility("hidden"), no_sanitize_address, no_sanitize_undefined)) void* pfx_inject_resolve_real_dlsym() {
   pfx_inject_real_dlsym = pfx::inject::real_dlsym_function();
   return pfx_inject_real_dlsym;
 }

@@ -11,12 +11,13 @@ namespace {
 
 using DlsymFunction = void* (*)(void*, const char*);
 
-DlsymFunction find_real_dlsym() {
+// Not instrumented: a sanitizer runtime looks its own functions up with dlsym(RTLD_NEXT, ...)
+// while it starts, before instrumented code may run, and that first call lands here.
+__attribute__((no_sanitize_address, no_sanitize_undefined)) DlsymFunction find_real_dlsym() {
   // glibc 2.34 moved dlsym into libc under a new version; older binaries bind the old one. Both
   // are the same function; dlvsym is not interposed, so it reaches libc directly.
-  for (const char* version : {"GLIBC_2.34", "GLIBC_2.2.5"})
-    if (void* found = dlvsym(RTLD_NEXT, "dlsym", version)) return reinterpret_cast<DlsymFunction>(found);
-  return nullptr;
+  if (void* found = dlvsym(RTLD_NEXT, "dlsym", "GLIBC_2.34")) return reinterpret_cast<DlsymFunction>(found);
+  return reinterpret_cast<DlsymFunction>(dlvsym(RTLD_NEXT, "dlsym", "GLIBC_2.2.5"));
 }
 
 // Names whose real function an application's lookup found, in a fixed table: lookups happen on
@@ -58,9 +59,11 @@ Proc from_loaded_library(Library library, const char* name) {
 
 }  // namespace
 
-void* real_dlsym_function() { return reinterpret_cast<void*>(find_real_dlsym()); }
+__attribute__((no_sanitize_address, no_sanitize_undefined)) void* real_dlsym_function() {
+  return reinterpret_cast<void*>(find_real_dlsym());
+}
 
-void* real_dlsym(void* handle, const char* name) {
+__attribute__((no_sanitize_address, no_sanitize_undefined)) void* real_dlsym(void* handle, const char* name) {
   static const DlsymFunction dlsym_function = find_real_dlsym();
   return dlsym_function ? dlsym_function(handle, name) : nullptr;
 }
