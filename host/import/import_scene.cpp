@@ -95,6 +95,17 @@ bool load_scene_from_model(const pfx::host::PluginRegistry& registry, const std:
       if (scene_material.emissive_texture >= 0 && scene_material.emissive == glm::vec3(0.0f))
         scene_material.emissive = glm::vec3(1.0f);
     }
+    // Since ABI 1.3; an importer built against an older header has no such fields.
+    if (PFX_STRUCT_HAS(&material, pfx_import_material, normal_map) && r.texcoords) {
+      if (material.alpha_map)
+        scene_material.alpha_texture = load_texture(material.alpha_map, pfx::app::MapKind::alpha, &out, &textures, warnings);
+      // norm wins over bump when a material has both: it is the map made for shading.
+      if (material.normal_map)
+        scene_material.normal_texture =
+            load_texture(material.normal_map, pfx::app::MapKind::normal, &out, &textures, warnings);
+      else if (material.bump_map)
+        scene_material.normal_texture = load_texture(material.bump_map, pfx::app::MapKind::bump, &out, &textures, warnings);
+    }
     out.materials.push_back(scene_material);
   }
   // One mesh per sub-mesh, holding only the vertices it uses.

@@ -32,6 +32,16 @@ class MtlParser {
     warnings_->push_back(file_name_ + ":" + std::to_string(line_) + ": " + text);
   }
 
+  // The material's path that a map statement sets; null for every other statement.
+  static std::string* map_field(Material* m, std::string_view keyword) {
+    if (keyword == "map_Kd") return &m->diffuse_map;
+    if (keyword == "map_Ke") return &m->emissive_map;
+    if (keyword == "map_d") return &m->alpha_map;
+    if (keyword == "bump" || keyword == "map_Bump" || keyword == "map_bump") return &m->bump_map;
+    if (keyword == "norm") return &m->normal_map;
+    return nullptr;
+  }
+
   Material* current(std::string_view keyword) {
     if (materials_->size() > first_ && current_) return &materials_->back();
     warn(std::string(keyword) + " before any newmtl: ignored");
@@ -83,14 +93,14 @@ class MtlParser {
       if (keyword == "Ns") m->shininess = value;
       else if (keyword == "d") m->opacity = value;
       else m->opacity = 1.0f - value;
-    } else if (keyword == "map_Kd" || keyword == "map_Ke") {
+    } else if (Material probe; map_field(&probe, keyword)) {
       std::string path = map_path(keyword);
       if (path.empty()) return;
       Material* m = current(keyword);
       if (!m) return;
-      (keyword == "map_Kd" ? m->diffuse_map : m->emissive_map) = resolve_path(directory_, path);
+      *map_field(m, keyword) = resolve_path(directory_, path);
     }
-    // Everything else (Ka, Ni, illum, map_Ks, bump, ...) is valid MTL that pfx does not use.
+    // Everything else (Ka, Ni, illum, map_Ks, ...) is valid MTL that pfx does not use.
   }
 
   bool number(std::string_view keyword, float* out) {

@@ -1,5 +1,5 @@
 // Material libraries (.mtl): the statements pfx uses (newmtl, Kd, Ks, Ke, Ns, d, Tr, map_Kd,
-// map_Ke); every other statement is skipped. A bad material library never fails an import: its
+// map_Ke, map_d, bump / map_Bump, norm); every other statement is skipped. A bad material library never fails an import: its
 // problems are warnings, and the model loads with default materials.
 #pragma once
 
@@ -18,6 +18,9 @@ struct Material {
   float opacity = 1.0f;
   std::string diffuse_map;   // resolved against the .mtl file's folder; empty when absent
   std::string emissive_map;
+  std::string alpha_map;     // map_d
+  std::string bump_map;      // bump, map_Bump
+  std::string normal_map;    // norm
 };
 
 // Appends the materials of `text`. Warnings are "FILE:LINE: text" with `file_name`; map paths

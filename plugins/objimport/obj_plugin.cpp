@@ -63,6 +63,9 @@ void publish(ResultStorage* s) {
     out.opacity = material.opacity;
     out.diffuse_map = material.diffuse_map.empty() ? nullptr : material.diffuse_map.c_str();
     out.emissive_map = material.emissive_map.empty() ? nullptr : material.emissive_map.c_str();
+    out.alpha_map = material.alpha_map.empty() ? nullptr : material.alpha_map.c_str();
+    out.bump_map = material.bump_map.empty() ? nullptr : material.bump_map.c_str();
+    out.normal_map = material.normal_map.empty() ? nullptr : material.normal_map.c_str();
     s->materials.push_back(out);
   }
   r.material_count = static_cast<uint32_t>(s->materials.size());

@@ -17,7 +17,7 @@ struct Sizes {
   size_t minimum, today;
 };
 
-// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.2).
+// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.3).
 const std::map<std::string, Sizes>& pinned() {
   static const std::map<std::string, Sizes> sizes = {
       {"pfx_entry", {64, 64}},          {"pfx_host", {48, 56}},
@@ -28,7 +28,7 @@ const std::map<std::string, Sizes>& pinned() {
       {"pfx_pass_context", {68, 72}},   {"pfx_reference_factory", {24, 24}},
       {"pfx_reference_request", {64, 88}}, {"pfx_importer_factory", {24, 24}},
       {"pfx_importer_desc", {56, 56}},  {"pfx_import_request", {64, 64}},
-      {"pfx_import_result", {184, 184}}, {"pfx_import_material", {80, 80}},
+      {"pfx_import_result", {184, 184}}, {"pfx_import_material", {80, 104}},
       {"pfx_thread_pool", {32, 32}}};
   return sizes;
 }

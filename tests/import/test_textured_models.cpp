@@ -72,6 +72,13 @@ void check_colour(const glm::dvec3& got, int r, int g, int b, double tolerance) 
   CHECK(got.b == Approx(swatch_mean(b)).margin(tolerance));
 }
 
+// A data map keeps its codes as they are: the swatch's mean is code / 255.
+void check_stored(const glm::dvec3& got, int r, int g, int b) {
+  CHECK(got.r == Approx(r / 255.0).margin(1e-5));
+  CHECK(got.g == Approx(g / 255.0).margin(1e-5));
+  CHECK(got.b == Approx(b / 255.0).margin(1e-5));
+}
+
 struct Run {
   int exit_code = -1;
   std::string err;
@@ -225,4 +232,39 @@ TEST_CASE("pfx-render --scene: broken textures warn once each and render their f
   CHECK(broken[0].mean.r > broken[0].mean.g + 0.2);  // Kd 0.5 0.1 0.1
   CHECK(broken[1].mean.g > broken[1].mean.r + 0.2);  // Kd 0.1 0.5 0.1
   CHECK(broken[2].mean.b > broken[2].mean.r + 0.2);  // Kd 0.1 0.1 0.5
+}
+
+TEST_CASE("textured models: map_d, norm and bump from the .mtl become the cut-out and normal maps, kept linear",
+          "[import][textures]") {
+  // The tinyobjloader-style model again, its materials given a cut-out, a normal map and a bump
+  // map made of its own colour swatches.
+  const fs::path dir = fs::temp_directory_path() / ("pfx-data-maps-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::copy(kModels + "/tinyobj_style", dir);
+  {
+    std::ofstream mtl(dir / "cubes.mtl", std::ios::app);
+    mtl << "\nnewmtl cutout\nKd 1 1 1\nmap_d yellow.png\n"
+        << "newmtl normal\nKd 1 1 1\nnorm purple.bmp\nbump blue.tga\n"
+        << "newmtl bumped\nKd 1 1 1\nmap_Bump -bm 0.5 blue.tga\n";
+    std::ofstream obj(dir / "cubes.obj", std::ios::app);
+    obj << "\nusemtl cutout\nf 1/1 2/2 4/3\nusemtl normal\nf 1/1 2/2 4/3\nusemtl bumped\nf 1/1 2/2 4/3\n";
+  }
+  static auto registry = obj_registry();
+  Loaded l;
+  std::string error;
+  REQUIRE(pfx::import::load_scene_from_model(*registry, (dir / "cubes.obj").string(), {}, &l.scene, &l.warnings, &error));
+  fs::remove_all(dir);
+  CHECK(l.warnings.empty());
+  REQUIRE(l.scene.materials.size() == 7);  // the default, the file's three, the three above
+  const pfx::app::Material& cutout = l.scene.materials[4];
+  const pfx::app::Material& normal = l.scene.materials[5];
+  const pfx::app::Material& bumped = l.scene.materials[6];
+  CHECK(cutout.alpha_texture >= 0);
+  CHECK(cutout.normal_texture < 0);
+  // norm wins over bump; a coloured map is taken as stored, not decoded from sRGB.
+  REQUIRE(normal.normal_texture >= 0);
+  check_stored(texture_mean(l.scene.textures.at(static_cast<size_t>(normal.normal_texture))), 150, 60, 170);
+  REQUIRE(bumped.normal_texture >= 0);
+  check_stored(texture_mean(l.scene.textures.at(static_cast<size_t>(bumped.normal_texture))), 50, 80, 200);
+  CHECK(bumped.alpha_texture < 0);
 }

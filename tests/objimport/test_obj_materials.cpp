@@ -69,6 +69,25 @@ TEST_CASE("obj materials: every field, several libraries, names with spaces", "[
   CHECK(r.mesh.materials[r.mesh.submeshes[1].material].name == "blue paint");
   CHECK(r.mesh.materials[r.mesh.submeshes[2].material].name == "glow");
 
+  // Cut-out, bump and normal maps (ABI 1.3), with options before the path as exporters write them.
+  scratch.write("maps.mtl",
+                "newmtl leaf\nmap_d -imfchan m leaf_alpha.png\nbump -bm 0.3 leaf_height.png\nnorm leaf_normal.png\n"
+                "newmtl bark\nmap_Bump bark normal.png\n");
+  auto maps = import_text("mtllib maps.mtl\n" + kTriangle + "usemtl leaf\nf 1 2 3\nusemtl bark\nf 1 3 2\n", 1, 0,
+                          scratch.dir.string());
+  REQUIRE(maps.ok);
+  CHECK(maps.mesh.warnings.empty());
+  const auto* leaf = find(maps.mesh, "leaf");
+  REQUIRE(leaf);
+  CHECK(leaf->alpha_map == (scratch.dir / "leaf_alpha.png").string());
+  CHECK(leaf->bump_map == (scratch.dir / "leaf_height.png").string());
+  CHECK(leaf->normal_map == (scratch.dir / "leaf_normal.png").string());
+  CHECK(leaf->diffuse_map.empty());
+  const auto* bark = find(maps.mesh, "bark");
+  REQUIRE(bark);
+  CHECK(bark->bump_map == (scratch.dir / "bark normal.png").string());
+  CHECK(bark->alpha_map.empty());
+
   // Two files on one mtllib line.
   scratch.write("b.mtl", "newmtl green\nKd 0 1 0\n");
   auto two = import_text("mtllib a.mtl b.mtl\n" + kTriangle + "usemtl green\nf 1 2 3\n", 1, 0, scratch.dir.string());

@@ -42,6 +42,12 @@ typedef struct pfx_import_material {
    * Texture options (-s, -o, -bm, ...) are skipped. The importer does not check that it exists. */
   const char* diffuse_map;
   const char* emissive_map;
+  /* map_d (a cut-out: alpha, or the first channel of a map without alpha), bump / map_Bump (a
+   * height map, or a normal map that exporters often put under this name) and norm (a
+   * tangent-space normal map), resolved like the maps above; NULL when absent. */
+  const char* alpha_map; /* since 1.3 */
+  const char* bump_map; /* since 1.3 */
+  const char* normal_map; /* since 1.3 */
 } pfx_import_material;
 #define PFX_IMPORT_MATERIAL_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_import_material, emissive_map)
 
