@@ -178,3 +178,20 @@ TEST_CASE("pfx-inject --bench reports the application alone, with an empty chain
     CHECK(run.output.find(row) != std::string::npos);
   CHECK(run.output.find("copy pass (the unit):") != std::string::npos);
 }
+
+TEST_CASE("a pass that raises a GL error turns the chain off with one log line and the application runs to its end") {
+  ScratchFolder folder("gl-error");
+  const std::string plugins = folder.file("plugins");
+  std::filesystem::create_directory(plugins);
+  std::filesystem::copy_file(std::string(PFX_TEST_MISBEHAVING_PLUGIN_DIR) + "/broken_raises_gl_error.so",
+                             plugins + "/broken_raises_gl_error.so");
+  const InjectRun run = run_injected(folder, "gl-error", {"--plugins", plugins, "--chain", "broken_raises_gl_error"},
+                                     {PFX_GLMARK2, "-s", "96x64", "-b", "build:duration=0.5"}, false);
+  INFO(run.result.output << run.log);
+  CHECK(run.result.exit_code == 0);
+  CHECK(run.result.output.find("glmark2 Score") != std::string::npos);
+  CHECK(run.log.find("frame 1: effect 'broken_raises_gl_error' pass 'copy' raised GL error 0x0500; this context's "
+                     "frames pass through untouched from now on") != std::string::npos);
+  // Said once: the frames after it pass through without trying again.
+  CHECK(run.log.find("raised GL error", run.log.find("raised GL error") + 1) == std::string::npos);
+}

@@ -115,6 +115,16 @@ TEST_CASE("broken_leaks_gl_state: every render check names the pass and the stat
   CHECK(check(plugin, "descriptors", "broken_leaks_gl_state")["status"] == "pass");
 }
 
+TEST_CASE("broken_raises_gl_error: every render check names the GL error its pass left", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_raises_gl_error"));
+  for (const char* name : {"defaults", "random params", "resize"}) {
+    const auto& c = check(plugin, name, "broken_raises_gl_error");
+    CHECK(c["status"] == "FAIL");
+    CHECK(any_problem_contains(c, "GL error"));
+  }
+  CHECK(check(plugin, "descriptors", "broken_raises_gl_error")["status"] == "pass");
+}
+
 TEST_CASE("broken_assumes_clean_state: the dirty state check names the pixel store it relies on", "[validate][fixtures]") {
   const nlohmann::json plugin = validate_json(misbehaving("broken_assumes_clean_state"));
   const auto& dirty = check(plugin, "dirty state", "broken_assumes_clean_state");
