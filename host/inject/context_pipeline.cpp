@@ -7,7 +7,6 @@
 
 #include "camera_options.hpp"
 #include "frame_capture.hpp"
-#include "legacy_state.hpp"
 
 namespace pfx::inject {
 namespace {
@@ -70,9 +69,6 @@ std::unique_ptr<ContextPipeline> ContextPipeline::create(const host::PluginRegis
     return nullptr;
   }
   std::unique_ptr<ContextPipeline> pipeline(new ContextPipeline(registry, settings));
-  GLint profile = 0;
-  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
-  pipeline->compatibility_profile_ = (profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0;
   if (!pipeline->copy_.create(reason)) return nullptr;
   if (!pipeline->rebuild(recipe, notes, reason)) return nullptr;
   return pipeline;
@@ -108,7 +104,6 @@ std::string ContextPipeline::chain_text() const {
 
 bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* messages, std::string* reason) {
   host::GlStateGuard guard(*chain_);
-  LegacyStateScope legacy(compatibility_profile_);
   copy_.resize(work.width, work.height);
   if (!depth_said_) {
     depth_said_ = true;

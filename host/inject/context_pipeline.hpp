@@ -53,7 +53,6 @@ class ContextPipeline {
   std::unique_ptr<host::ParamStore> params_;
   std::unique_ptr<host::Chain> chain_;
   FrameCopy copy_;
-  bool compatibility_profile_ = false;
   bool depth_said_ = false;
   double copy_pass_ms_ = 0;
 };

@@ -141,6 +141,7 @@ GlLimits GlLimits::query() {
     glGetIntegerv(pname, &v);
     return v;
   };
+  limits.compatibility_profile = (get(GL_CONTEXT_PROFILE_MASK) & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0;
   limits.viewports = std::max(1, get(GL_MAX_VIEWPORTS));
   limits.draw_buffers = std::max(1, get(GL_MAX_DRAW_BUFFERS));
   limits.clip_distances = get(GL_MAX_CLIP_DISTANCES);
@@ -156,6 +157,7 @@ GlLimits GlLimits::query() {
 GlStateScope::GlStateScope(const GlLimits& limits) : limits_(limits) {
   save();
   set_chain_state();
+  if (limits_.compatibility_profile) legacy_ = std::make_unique<LegacyStateScope>(true);
 }
 
 GlStateScope::~GlStateScope() { restore(); }

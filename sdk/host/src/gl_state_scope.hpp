@@ -5,9 +5,12 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <glad/gl.h>
+
+#include "legacy_state.hpp"
 
 namespace pfx::host {
 
@@ -16,6 +19,7 @@ namespace pfx::host {
 // for the binding points a plugin may use freely. Queried once per chain.
 struct GlLimits {
   GLint viewports = 1, draw_buffers = 1, clip_distances = 0;
+  bool compatibility_profile = false;  // fixed-function state still applies (LegacyStateScope)
   GLint texture_units = 0, image_units = 0, uniform_buffers = 0, storage_buffers = 0, atomic_buffers = 0,
         feedback_buffers = 0;
   static GlLimits query();
@@ -86,6 +90,7 @@ class GlStateScope {
   GLfloat blend_color_[4] = {}, clear_color_[4] = {};
   GLdouble clear_depth_ = 1;
   GlBindings bindings_;
+  std::unique_ptr<LegacyStateScope> legacy_;  // in a compatibility-profile context only
 };
 
 }  // namespace pfx::host

@@ -2,7 +2,7 @@
 
 #include <glad/gl.h>
 
-namespace pfx::inject {
+namespace pfx::host {
 namespace {
 
 // Compatibility-profile enums, which a core loader does not define (values from the GL registry).
@@ -31,4 +31,4 @@ LegacyStateScope::~LegacyStateScope() {
   glClampColor(kClampFragmentColor, static_cast<GLenum>(clamp_fragment_color_));
 }
 
-}  // namespace pfx::inject
+}  // namespace pfx::host

@@ -1,10 +1,10 @@
 // A compatibility-profile context (glxgears asks for one) keeps fixed-function state that still
 // applies to a program's fragments: the alpha test, polygon stipple and fragment colour clamping.
-// Core-profile code, libpfxhost's state guard included, never sees it, so the injector saves it,
-// turns it off for its own passes and the chain's, and puts it back.
+// Core-profile code never sets it, so GlStateScope saves it in such a context, turns it off for
+// the chain and puts it back.
 #pragma once
 
-namespace pfx::inject {
+namespace pfx::host {
 
 class LegacyStateScope {
  public:
@@ -19,4 +19,4 @@ class LegacyStateScope {
   int clamp_fragment_color_ = 0;
 };
 
-}  // namespace pfx::inject
+}  // namespace pfx::host
