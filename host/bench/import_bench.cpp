@@ -17,7 +17,6 @@
 #include "import_files.hpp"
 #include "import_loaders.hpp"
 #include "import_measure.hpp"
-#include "import_stages.hpp"
 #include "plugin_directory.hpp"
 
 namespace fs = std::filesystem;
@@ -27,6 +26,7 @@ namespace pfx::bench {
 namespace {
 
 struct ImportRow {
+  ObjLayout layout = ObjLayout::kTriangles;
   double size_mb = 0;      // requested
   uint64_t bytes = 0;      // actual
   std::string loader;
@@ -45,13 +45,15 @@ double load_average() {
   return ::getloadavg(load, 1) == 1 ? load[0] : 0;
 }
 
-const ImportRow* find_row(const std::vector<ImportRow>& rows, double size, const std::string& loader, unsigned threads) {
+const ImportRow* find_row(const std::vector<ImportRow>& rows, ObjLayout layout, double size, const std::string& loader,
+                         unsigned threads) {
   for (const auto& row : rows)
-    if (row.size_mb == size && row.loader == loader && row.threads == threads && row.counts.ok) return &row;
+    if (row.layout == layout && row.size_mb == size && row.loader == loader && row.threads == threads && row.counts.ok)
+      return &row;
   return nullptr;
 }
 
-std::string markdown(const std::vector<ImportRow>& rows, const std::vector<StageTable>& stages,
+std::string markdown(const std::vector<ImportRow>& rows,
                      const ImportBenchOptions& options) {
   std::string text = "## OBJ import (pfx-bench --import)\n\n";
   char line[512];
@@ -61,53 +63,61 @@ std::string markdown(const std::vector<ImportRow>& rows, const std::vector<Stage
                 "machine). %u hardware threads; load average %.1f at the start.\n\n",
                 options.runs, std::max(1u, static_cast<unsigned>(::sysconf(_SC_NPROCESSORS_ONLN))), load_average());
   text += line;
-  text += "| file MB | loader | threads | wall s | MB/s (wall) | CPU s | MB/CPU s | peak MB | vertices | triangles |\n";
-  text += "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  text += "| layout | file MB | loader | threads | wall s | MB/s (wall) | CPU s | MB/CPU s | peak MB | vertices | triangles |\n";
+  text += "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& row : rows) {
     if (!row.counts.ok) {
-      std::snprintf(line, sizeof line, "| %.1f | %s | %u | failed: %s | | | | | | |\n", row.bytes / 1e6, row.loader.c_str(),
+      std::snprintf(line, sizeof line, "| %s | %.1f | %s | %u | failed: %s | | | | | | |\n", layout_name(row.layout), row.bytes / 1e6, row.loader.c_str(),
                     row.threads, row.counts.error.substr(0, 200).c_str());
     } else {
-      std::snprintf(line, sizeof line, "| %.1f | %s | %u | %.3f | %.1f | %.3f | %.1f | %.1f | %llu | %llu |\n",
-                    row.bytes / 1e6, row.loader.c_str(), row.threads, row.median_seconds, row.mb_per_s(),
+      std::snprintf(line, sizeof line, "| %s | %.1f | %s | %u | %.3f | %.1f | %.3f | %.1f | %.1f | %llu | %llu |\n",
+                    layout_name(row.layout), row.bytes / 1e6, row.loader.c_str(), row.threads, row.median_seconds, row.mb_per_s(),
                     row.median_cpu_seconds, row.mb_per_cpu_s(), row.peak_bytes / 1e6,
                     static_cast<unsigned long long>(row.counts.vertices),
                     static_cast<unsigned long long>(row.counts.triangles));
     }
     text += line;
   }
-  text += "\n| file MB | pfx 1 thread / tinyobjloader: wall (CPU) | pfx 1 thread / assimp: wall (CPU) | "
-          "pfx 2 threads / 1 thread: wall |\n";
-  text += "|---:|---:|---:|---:|\n";
-  for (double size : options.sizes_mb) {
-    const ImportRow* one = find_row(rows, size, "pfx", 1);
-    const ImportRow* two = find_row(rows, size, "pfx", 2);
-    const ImportRow* tiny = find_row(rows, size, "tinyobjloader", 1);
-    const ImportRow* assimp = find_row(rows, size, "assimp", 1);
-    auto ratio = [](const ImportRow* a, const ImportRow* b, bool with_cpu) -> std::string {
-      if (!a || !b || b->mb_per_s() <= 0 || b->mb_per_cpu_s() <= 0) return "—";
-      char value[64];
-      if (with_cpu)
-        std::snprintf(value, sizeof value, "%.2f (%.2f)", a->mb_per_s() / b->mb_per_s(), a->mb_per_cpu_s() / b->mb_per_cpu_s());
-      else
-        std::snprintf(value, sizeof value, "%.2f", a->mb_per_s() / b->mb_per_s());
-      return value;
-    };
-    std::snprintf(line, sizeof line, "| %.1f | %s | %s | %s |\n", one ? one->bytes / 1e6 : size,
-                  ratio(one, tiny, true).c_str(), ratio(one, assimp, true).c_str(), ratio(two, one, false).c_str());
-    text += line;
-  }
+  text += "\n| layout | file MB | pfx 1 thread / tinyobjloader: wall (CPU) | pfx 2 threads / tinyobjloader: wall | "
+          "pfx 2 threads / 1 thread: wall | pfx 1 thread / assimp: wall (CPU) | peak MB pfx 1, 2 threads / tinyobjloader |\n";
+  text += "|---|---:|---:|---:|---:|---:|---|\n";
+  for (ObjLayout layout : options.layouts)
+    for (double size : options.sizes_mb) {
+      const ImportRow* one = find_row(rows, layout, size, "pfx", 1);
+      const ImportRow* two = find_row(rows, layout, size, "pfx", 2);
+      const ImportRow* tiny = find_row(rows, layout, size, "tinyobjloader", 1);
+      const ImportRow* assimp = find_row(rows, layout, size, "assimp", 1);
+      auto ratio = [](const ImportRow* a, const ImportRow* b, bool with_cpu) -> std::string {
+        if (!a || !b || b->mb_per_s() <= 0 || b->mb_per_cpu_s() <= 0) return "—";
+        char value[64];
+        if (with_cpu)
+          std::snprintf(value, sizeof value, "%.2f (%.2f)", a->mb_per_s() / b->mb_per_s(), a->mb_per_cpu_s() / b->mb_per_cpu_s());
+        else
+          std::snprintf(value, sizeof value, "%.2f", a->mb_per_s() / b->mb_per_s());
+        return value;
+      };
+      auto peak = [](const ImportRow* row) -> std::string {
+        char value[32];
+        std::snprintf(value, sizeof value, "%.1f", row ? row->peak_bytes / 1e6 : 0.0);
+        return row ? value : "—";
+      };
+      std::snprintf(line, sizeof line, "| %s | %.1f | %s | %s | %s | %s | %s, %s / %s |\n", layout_name(layout),
+                    one ? one->bytes / 1e6 : size, ratio(one, tiny, true).c_str(), ratio(two, tiny, false).c_str(),
+                    ratio(two, one, false).c_str(), ratio(one, assimp, true).c_str(), peak(one).c_str(), peak(two).c_str(),
+                    peak(tiny).c_str());
+      text += line;
+    }
   text += "\nVertices: pfx and assimp count distinct corners (deduplicated); tinyobjloader counts `v` "
           "positions (it does not deduplicate).\n";
-  if (!stages.empty()) text += "\n" + stage_markdown(stages);
   return text;
 }
 
-nlohmann::ordered_json json(const std::vector<ImportRow>& rows, const std::vector<StageTable>& stages) {
+nlohmann::ordered_json json(const std::vector<ImportRow>& rows) {
   nlohmann::ordered_json root;
   root["rows"] = nlohmann::ordered_json::array();
   for (const auto& row : rows) {
     nlohmann::ordered_json r;
+    r["layout"] = layout_name(row.layout);
     r["size_mb"] = row.size_mb;
     r["bytes"] = row.bytes;
     r["loader"] = row.loader;
@@ -124,19 +134,6 @@ nlohmann::ordered_json json(const std::vector<ImportRow>& rows, const std::vecto
     r["triangles"] = row.counts.triangles;
     root["rows"].push_back(r);
   }
-  root["pfx_stages"] = nlohmann::ordered_json::array();
-  for (const auto& table : stages)
-    for (const auto& b : table.by_threads) {
-      nlohmann::ordered_json t;
-      t["file_mb"] = table.file_mb;
-      t["threads"] = b.threads;
-      t["ok"] = b.ok;
-      if (!b.ok) t["error"] = b.error;
-      t["stages"] = nlohmann::ordered_json::array();
-      for (const auto& s : b.stages)
-        t["stages"].push_back({{"name", s.name}, {"parallel", s.parallel}, {"seconds", s.seconds}, {"cpu_seconds", s.cpu_seconds}});
-      root["pfx_stages"].push_back(t);
-    }
   return root;
 }
 
@@ -154,21 +151,23 @@ bool write_text(const std::string& path, const std::string& text, std::string* e
 
 std::string import_bench_usage() {
   return
-      "usage: pfx-bench --import [--sizes MB,...] [--threads N,...] [--loaders a,b,...] [--runs N]\n"
-      "                          [--dir DIR] [--keep] [--out DIR] [--plugins DIR]...\n"
+      "usage: pfx-bench --import [--layouts a,b,...] [--sizes MB,...] [--threads N,...] [--loaders a,b,...]\n"
+      "                          [--runs N] [--dir DIR] [--keep] [--out DIR] [--plugins DIR]...\n"
       "\n"
       "Measures the OBJ importer plugin against tinyobjloader and assimp, in one run, on OBJ files\n"
-      "generated at each size (a height field with v, vt, vn and v/vt/vn triangles): MB/s (file bytes\n"
-      "over the median wall time of a load) and the peak memory a load adds, with pfx at each thread\n"
-      "count (the others are single-threaded). The file is read once into the page cache and\n"
-      "written out to disk first; then each load runs in a new process (pfx-bench runs itself with\n"
-      "the internal option --import-load), in rounds of one load per row. Then pfx's stages (parse\n"
-      "and numbering, vertices, ...: wall and CPU time, which run on every thread and which on one)\n"
-      "at each thread count, each run in a new process too, and the speed-up they predict on idle\n"
-      "cores (an upper bound: the numbering within the parse stage runs on one thread at a time).\n"
+      "generated in each layout at each size (a height field's grid, written as exporters write it):\n"
+      "MB/s (file bytes over the median wall time of a load) and the peak memory a load adds, with pfx\n"
+      "at each thread count (the others are single-threaded). Each file is read once into the page\n"
+      "cache and written out to disk first; then each load runs in a new process (pfx-bench runs\n"
+      "itself with the internal option --import-load), in rounds of one load per row.\n"
       "Writes DIR/import.json and DIR/import.md.\n"
       "\n"
-      "  --sizes LIST      file sizes in MB (default 10,100,500)\n"
+      "  --layouts LIST    any of positions (v only, triangles), triangles (v, vt, vn, v/vt/vn\n"
+      "                    triangles), quads (the same as quads), relative-quads (with negative\n"
+      "                    indices), objects (quads in 8 objects and groups, 3 materials),\n"
+      "                    long-numbers (triangles, 9 decimals and an exponent), short-numbers\n"
+      "                    (triangles, 2 decimals); default: all\n"
+      "  --sizes LIST      file sizes in MB (default 100,500)\n"
       "  --threads LIST    pfx thread counts (default 1,2)\n"
       "  --loaders LIST    pfx,tinyobjloader,assimp (default: all three)\n"
       "  --runs N          loads per row, taken in rounds of one load per row (default 5)\n"
@@ -191,7 +190,16 @@ bool parse_import_bench_options(const std::vector<std::string>& list, ImportBenc
     else if (arg == "--dir") { if (!args.value(&text)) return false; options.work_dir = text; }
     else if (arg == "--out") { if (!args.value(&text)) return false; options.out_dir = text; }
     else if (arg == "--plugins") { if (!args.value(&options.plugin_dirs)) return false; }
-    else if (arg == "--sizes") {
+    else if (arg == "--layouts") {
+      if (!args.value(&text)) return false;
+      options.layouts.clear();
+      for (const auto& item : pfx::app::split_list(text)) {
+        ObjLayout layout;
+        if (!layout_from_name(item, &layout)) return args.fail("--layouts " + item + ": unknown layout (see --help)");
+        options.layouts.push_back(layout);
+      }
+      if (options.layouts.empty()) return args.fail("--layouts needs at least one layout");
+    } else if (arg == "--sizes") {
       if (!args.value(&text)) return false;
       options.sizes_mb.clear();
       for (const auto& item : pfx::app::split_list(text)) {
@@ -258,12 +266,14 @@ int import_bench_main(const std::vector<std::string>& args) {
   }
 
   std::vector<ImportRow> rows;
-  std::vector<StageTable> stage_tables;
   int code = 0;
+  for (ObjLayout layout : options.layouts)
   for (double size : options.sizes_mb) {
+    if (code != 0) break;
     GeneratedObj file;
-    std::fprintf(stderr, "pfx-bench: generating a %g MB OBJ file in %s\n", size, options.work_dir.c_str());
-    if (!generate_obj(options.work_dir, size, &file, &message) || !warm_file(file.path, &message)) {
+    std::fprintf(stderr, "pfx-bench: generating a %g MB OBJ file (%s) in %s\n", size, layout_name(layout),
+                 options.work_dir.c_str());
+    if (!generate_obj(options.work_dir, layout, size, &file, &message) || !warm_file(file.path, &message)) {
       std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
       code = 1;
       break;
@@ -278,6 +288,7 @@ int import_bench_main(const std::vector<std::string>& args) {
           loader_is_multithreaded(loader) ? options.threads : std::vector<unsigned>{1};
       for (unsigned threads : thread_counts) {
         ImportRow row;
+        row.layout = layout;
         row.size_mb = size;
         row.bytes = file.bytes;
         row.loader = loader;
@@ -294,8 +305,8 @@ int import_bench_main(const std::vector<std::string>& args) {
       for (size_t i = first_row; i < rows.size(); ++i) {
         ImportRow& row = rows[i];
         if (stopped[i]) continue;
-        std::fprintf(stderr, "pfx-bench: round %d of %d, %s, %u thread(s), %.0f MB\n", r + 1, runs, row.loader.c_str(),
-                     row.threads, file.bytes / 1e6);
+        std::fprintf(stderr, "pfx-bench: round %d of %d, %s, %u thread(s), %s, %.0f MB\n", r + 1, runs, row.loader.c_str(),
+                     row.threads, layout_name(layout), file.bytes / 1e6);
         LoadMeasure m = measure_in_new_process(row.loader, file.path, row.threads, options.plugin_dirs);
         row.counts = m.counts;
         if (!m.counts.ok) {
@@ -312,21 +323,12 @@ int import_bench_main(const std::vector<std::string>& args) {
       rows[i].median_seconds = median(seconds[i]);
       rows[i].median_cpu_seconds = median(cpu_seconds[i]);
     }
-    if (std::find(options.loaders.begin(), options.loaders.end(), "pfx") != options.loaders.end()) {
-      StageTable table;
-      table.file_mb = file.bytes / 1e6;
-      for (unsigned threads : options.threads) {
-        std::fprintf(stderr, "pfx-bench: pfx stages, %u thread(s), %.0f MB\n", threads, file.bytes / 1e6);
-        table.by_threads.push_back(measure_stages(file.path, threads, runs));
-      }
-      stage_tables.push_back(table);
-    }
   }
   if (temporary_dir && !options.keep_files) fs::remove_all(options.work_dir, ec);
 
   fs::create_directories(options.out_dir, ec);
-  const std::string text = markdown(rows, stage_tables, options);
-  if (!write_text(options.out_dir + "/import.json", json(rows, stage_tables).dump(2) + "\n", &message) ||
+  const std::string text = markdown(rows, options);
+  if (!write_text(options.out_dir + "/import.json", json(rows).dump(2) + "\n", &message) ||
       !write_text(options.out_dir + "/import.md", text, &message)) {
     std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
     return 1;

@@ -1,5 +1,6 @@
 // pfx-bench --import: the OBJ importer against tinyobjloader and assimp (Debian packages, linked
-// by the benchmark only), in one run, on OBJ files generated at given sizes: MB/s and peak memory,
+// by the benchmark only), in one run, on OBJ files generated in several layouts at given sizes: MB/s
+// and peak memory,
 // our importer at each thread count. Every load runs in a new process (import_measure.hpp), so one
 // loader's heap and peak never count against the next.
 #pragma once
@@ -7,11 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "import_files.hpp"
+
 namespace pfx::bench {
 
 struct ImportBenchOptions {
   bool help = false;
-  std::vector<double> sizes_mb = {10, 100, 500};
+  std::vector<double> sizes_mb = {100, 500};
+  std::vector<ObjLayout> layouts = all_layouts();
   std::vector<unsigned> threads = {1, 2};
   std::vector<std::string> loaders = {"pfx", "tinyobjloader", "assimp"};
   int runs = 5;                  // loads per row, in rounds of one load per row

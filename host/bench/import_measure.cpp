@@ -12,7 +12,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "import_stages.hpp"
 #include "plugin_directory.hpp"
 
 namespace pfx::bench {
@@ -124,7 +123,6 @@ int import_load_main(const std::vector<std::string>& args) {
                          "pfx-bench --import, which runs it once per load\n");
     return 2;
   }
-  if (args[0] == kStagesLoader) return print_stages(args[1], threads);
   pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
                                      pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
   if (args[0] == "pfx") pfx::app::load_plugins(registry, plugin_dirs);  // failures show as a failed load

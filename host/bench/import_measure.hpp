@@ -32,7 +32,7 @@ LoadMeasure measure_in_new_process(const std::string& loader, const std::string&
                                    const std::vector<std::string>& plugin_dirs);
 
 // The --import-load mode: loads the plugins, then measures one load and writes the report on
-// standard output; with the loader kStagesLoader, pfx's stage times instead (import_stages.hpp).
+// standard output.
 // Returns the exit code (2 on bad arguments).
 int import_load_main(const std::vector<std::string>& args);
 
