@@ -1,8 +1,7 @@
-// One chunk of an OBJ file, parsed on its own: the chunks of a file are cut at line ends
-// (obj_split.hpp) and parsed in parallel, then merged in file order (obj_import.cpp). A chunk
-// cannot know what came before it, so everything that depends on earlier text is recorded in a
-// form the merge can finish: relative indices, the material and smoothing group in force at the
-// chunk's start, and line numbers counted from the chunk's first line.
+// One chunk of an OBJ file, read on its own (obj_reader.cpp). The file is cut into chunks at line
+// ends (obj_split.hpp) which are read in parallel; a chunk cannot know what came before it, so what
+// depends on earlier text is kept in a form the in-order merge (obj_import.cpp) can finish: relative
+// indices, the material and smoothing changes, and lines counted from the chunk's first line.
 #pragma once
 
 #include <cstdint>
@@ -20,8 +19,7 @@ constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 // OBJ indices as written must fit in 31 bits (a file with 2^31 vertices would be over 16 GB).
 constexpr int64_t kMaxWrittenIndex = 0x7FFFFFFF;
 
-// A message at a line counted from the chunk's first line (0-based), merged later into
-// "FILE:LINE: text".
+// A message at a line counted from the chunk's first line (0-based).
 struct LocalMessage {
   uint64_t line = 0;
   std::string text;
@@ -32,36 +30,36 @@ struct Face {
   uint32_t line;  // chunk-local, 0-based
 };
 
-// A statement that changes what later faces use, recorded at the face it applies from.
+// A usemtl or s statement, recorded at the first face it applies to.
 struct StateChange {
   enum Kind : uint32_t { kMaterial = 0, kSmoothing = 1 };
-  uint32_t first_face;  // chunk-local index of the first face it applies to
+  uint32_t first_face;  // chunk-local
   Kind kind;
   uint32_t value;  // kMaterial: index into ChunkData::material_names; kSmoothing: group, 0 = off
 };
 
-// Statements counted and skipped with one warning per keyword (free-form geometry, unknown ones).
+// Statements counted and skipped with one warning per keyword.
 struct IgnoredKeyword {
   uint64_t first_line = 0;  // chunk-local
   uint64_t count = 0;
-  bool valid_obj = false;   // a statement of the OBJ format pfx does not mesh, not an unknown one
+  bool valid_obj = false;  // OBJ that pfx does not mesh (free-form geometry), not an unknown word
 };
 
 struct ChunkData {
   uint64_t line_ends = 0;  // physical line ends in the chunk: the next chunk's first line follows
 
-  // Vertex data in file order within the chunk.
   BigVector<float> positions;  // x y z per v
   BigVector<float> colors;     // r g b per v, or empty while no v of the chunk has a colour
   BigVector<float> texcoords;  // u v per vt
   BigVector<float> normals;    // x y z per vn
   uint32_t position_count() const { return static_cast<uint32_t>(positions.size() / 3); }
+  uint32_t texcoord_count() const { return static_cast<uint32_t>(texcoords.size() / 2); }
+  uint32_t normal_count() const { return static_cast<uint32_t>(normals.size() / 3); }
 
-  // Face corners, three fields each (v, vt, vn): a positive index as written minus one (0-based,
-  // final), kNoIndex for a missing vt or vn, or for a relative (negative) index the 1-based
-  // position it denotes counted from the chunk's first element — which may be zero or negative
-  // (stored two's complement), when it reaches back into earlier chunks. relative_fields marks
-  // those, one bit per field; the resolve stage makes them final.
+  // Three fields per corner (v, vt, vn): a positive index minus one (final), kNoIndex for a missing
+  // vt or vn, or — for a relative (negative) index — the 1-based element it denotes counted from the
+  // chunk's first element, which is zero or negative (two's complement) when it reaches into earlier
+  // chunks. relative_fields marks those, a bit per field; the merge makes them final.
   BigVector<uint32_t> corners;
   std::vector<uint64_t> relative_fields;
   bool is_relative(uint64_t field) const {
@@ -69,37 +67,30 @@ struct ChunkData {
   }
   uint32_t max_index[3] = {0, 0, 0};  // the largest positive v, vt, vn index written (1-based)
   BigVector<Face> faces;
-  uint64_t face_count = 0;  // faces.size() once parsed (the import chunk by chunk may hand faces on)
-  // Per material of the chunk — 0: the one in force at the chunk's start, i + 1: material_names[i]
-  // — the triangles its faces make, and its first face (chunk-local), or kNoFace.
+  // Per material of the chunk (0: the one in force at its start, i + 1: material_names[i]): the
+  // triangles its faces make and its first face (chunk-local), or kNoFace.
   static constexpr uint64_t kNoFace = ~uint64_t{0};
   std::vector<uint64_t> triangles_by_material{0};
   std::vector<uint64_t> first_face_by_material{kNoFace};
   std::vector<StateChange> changes;
-  std::vector<std::string> material_names;  // usemtl names, in order of first use in the chunk
-  std::vector<uint64_t> material_name_lines;  // the chunk-local line of each name's first usemtl
-
-  struct MaterialLibrary {
-    uint64_t line;
-    std::string text;  // the rest of the mtllib line: one name, or several separated by blanks
-  };
-  std::vector<MaterialLibrary> material_libraries;
+  std::vector<std::string> material_names;    // usemtl names, in order of first use in the chunk
+  std::vector<uint64_t> material_name_lines;  // the line of each name's first usemtl
+  std::vector<LocalMessage> material_libraries;  // the rest of each mtllib line
 
   uint64_t lines_skipped = 0;   // `l` statements
   uint64_t points_skipped = 0;  // `p` statements
   std::map<std::string, IgnoredKeyword> ignored;
-
-  std::vector<LocalMessage> warnings;  // at most the first kMaxKeptWarnings
+  std::vector<LocalMessage> warnings;  // the first kMaxKeptWarnings
   uint64_t warning_total = 0;
   bool failed = false;
-  LocalMessage error;  // the first error; parsing stops there
+  LocalMessage error;  // the first error: reading stops there
 };
 
-// Parses the chunk's text. `first_in_file` lets a UTF-8 byte-order mark be skipped. `plain_lines`:
-// read the common line forms with the fast readers (obj_plain_lines.hpp); false only in tests that
-// check both ways give the same result. The arrays are sized for the most `reserve_bytes` (at least
-// the text's size) could hold, so that chunks parsed in turn into the same corner and face arrays
-// (obj_streamed.cpp) all fit the first one's; *out's arrays are kept if large enough.
-void parse_chunk(std::string_view text, bool first_in_file, bool plain_lines, ChunkData* out, size_t reserve_bytes = 0);
+constexpr size_t kMaxKeptWarnings = 100;
+
+// Reads the chunk's text into *out. `first_in_file` lets a UTF-8 byte-order mark be skipped. The
+// arrays are sized for the most `reserve_bytes` (at least the text's size) could hold, so chunks
+// read in turn into one chunk's arrays all fit; arrays already that large are reused.
+void parse_chunk(std::string_view text, bool first_in_file, ChunkData* out, size_t reserve_bytes = 0);
 
 }  // namespace pfx_obj

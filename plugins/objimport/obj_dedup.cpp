@@ -7,11 +7,7 @@
 
 namespace pfx_obj {
 
-VertexNumbering::VertexNumbering(uint32_t position_count, uint64_t max_keys) : head_(position_count, kNoIndex) {
-  keys_.reserve(max_keys);
-  next_.reserve(max_keys);
-}
-
+VertexNumbering::VertexNumbering() = default;
 VertexNumbering::~VertexNumbering() = default;
 
 void VertexNumbering::grow(uint32_t position_count, uint64_t position_room, uint64_t key_count, uint64_t key_room) {
@@ -38,36 +34,6 @@ uint32_t VertexNumbering::find_or_insert_overflow(const VertexKey& key) {
   const uint32_t id = overflow_->find_or_insert(key, hash_key(key), static_cast<uint32_t>(keys_.size()), &inserted);
   if (inserted) add(key);
   return id;
-}
-
-void VertexNumbering::clear() {
-  for (const VertexKey& key : keys_) head_[key.v] = kNoIndex;
-  keys_.clear();
-  next_.clear();
-  overflow_.reset();
-}
-
-void VertexNumbering::keep_pages_for_reuse() {
-  free_array(&keys_);
-  keep_for_reuse(&head_);
-  keep_for_reuse(&next_);
-  overflow_.reset();
-}
-
-void merge_chunk_keys(std::vector<BigVector<VertexKey>>* chunk_keys, uint32_t position_count,
-                      BigVector<VertexKey>* file_keys, std::vector<BigVector<uint32_t>>* to_file) {
-  uint64_t total = 0;
-  for (const auto& keys : *chunk_keys) total += keys.size();
-  VertexNumbering file(position_count, total);
-  to_file->assign(chunk_keys->size(), {});
-  for (size_t c = 0; c < chunk_keys->size(); ++c) {
-    BigVector<VertexKey>& keys = (*chunk_keys)[c];
-    BigVector<uint32_t>& map = (*to_file)[c];
-    map.resize(keys.size());
-    for (size_t i = 0; i < keys.size(); ++i) map[i] = file.find_or_insert(keys[i]);
-    free_array(&keys);
-  }
-  file_keys->swap(file.keys());
 }
 
 }  // namespace pfx_obj

@@ -9,8 +9,6 @@
 #include <cstdint>
 #include <cstring>
 
-#include "obj_pages.hpp"
-
 namespace pfx_obj {
 
 namespace {
@@ -62,12 +60,7 @@ bool FileBytes::open(const std::string& path, std::string* error) {
   if (!open_for_reading(path, &file, &info, error)) return false;
   if (S_ISREG(info.st_mode) && info.st_size > 0) {
     size_ = static_cast<size_t>(info.st_size);
-    // Not populated up front: the parser's threads fault the pages in as they read, each fault
-    // mapping 64 KB of the page cache, in parallel. Measured on the 99 MB and 10 MB files (medians
-    // of 11 whole imports): two threads 76.3 against 80.2 ms and 9.9 against 11.5 ms with one
-    // MAP_POPULATE before the threads start, one thread the same within noise; populating each
-    // chunk on its own thread (MADV_POPULATE_READ) was slower than one MAP_POPULATE (78 against
-    // 72 ms, two threads).
+    // Not populated up front: the reading threads fault the pages in as they read, in parallel.
     void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, file.fd, 0);
     if (mapping != MAP_FAILED) {
       // The parser reads front to back, each chunk by one thread.
@@ -86,11 +79,6 @@ bool FileBytes::open(const std::string& path, std::string* error) {
   data_ = copy_.data();
   size_ = copy_.size();
   return true;
-}
-
-void release_read_pages(std::string_view range) {
-  const ByteRange pages = whole_pages_inside(range.data(), range.size());
-  if (pages.bytes > 0) ::madvise(const_cast<void*>(pages.begin), pages.bytes, MADV_DONTNEED);
 }
 
 bool read_small_file(const std::string& path, std::string* out, std::string* error) {

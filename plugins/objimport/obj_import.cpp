@@ -1,100 +1,541 @@
-// The OBJ importer's entry points and the pipeline in order (the stages: obj_importer.hpp).
+// The OBJ importer, top to bottom. An import runs these stages in order (Importer::run):
+//
+//   1. cut      the text into chunks at line ends (obj_split.cpp), a few per thread
+//   2. read     each chunk on any worker (obj_reader.cpp: the grammar, into obj_chunk.hpp's data),
+//      number  and, in file order as soon as it and every chunk before it are read, its corners
+//               numbered against one vertex numbering for the whole file (obj_dedup.hpp): relative
+//               indices made final, one vertex number per corner in file order. The workers read
+//               later chunks while one numbers (obj_ordered_jobs.hpp), so the numbers never
+//               depend on the thread count.
+//   3. check    indices against the file's totals, and material libraries read (obj_mtl.cpp)
+//   4. index    sub-meshes in order of their material's first use; each chunk's triangles
+//               written at its material's place, polygons ear-clipped (obj_triangulate.cpp)
+//   5. vertices the vertex arrays from the numbered keys and the chunks' data, and the bounds
+//   6. normals  where the file gives none (obj_normals.cpp)
+//   7. warnings in line order
+//
+// Parallel stages run on the host's thread pool (obj_parallel.hpp); without one, on the caller.
 #include "obj_import.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
 #include <atomic>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <new>
 #include <stdexcept>
+#include <unordered_map>
 
+#include "obj_chunk.hpp"
+#include "obj_chunked_elements.hpp"
+#include "obj_dedup.hpp"
 #include "obj_file.hpp"
-#include "obj_importer.hpp"
 #include "obj_normals.hpp"
+#include "obj_ordered_jobs.hpp"
 #include "obj_parallel.hpp"
 #include "obj_split.hpp"
+#include "obj_triangulate.hpp"
 
 namespace pfx_obj {
 
-bool Importer::run(std::string_view text, ObjMesh* out, std::string* error) {
-  out_ = out;
-  *out = ObjMesh{};
-  StageClock clock(&out->stages);
-  report(0.0f);
-  clock.time("parse", true, [&] { parse(text); });
-  bool ok = true;
-  clock.time("plan", false, [&] { ok = plan(error); });
-  if (!ok) return false;
-  clock.time("resolve", true, [&] { resolve_all(threads_); });
-  if (!first_resolve_error(error)) return false;
-  clock.time("gather", false, [&] { gather(); });
-  report(0.7f);
-  clock.time("layout", false, [&] { layout_triangles(); });
-  number_and_triangulate(&clock);
-  assemble(&clock);
-  return true;
-}
-
-// The stages after the index array: vertex arrays and bounds, normals, warnings.
-void Importer::assemble(StageClock* clock) {
-  report(0.85f);
-  clock->time("vertices, bounds", true, [&] { fill_vertices(); });
-  clock->time("normals", true, [&] { generate_normals(keys_, out_->positions, out_->indices, options_.pool, threads_, &out_->normals); });
-  clock->time("warnings", false, [&] { finish(); });
-  report(1.0f);
-}
-
-size_t Importer::chunk_count(size_t bytes) const {
-  if (options_.chunk_bytes > 0) return std::max<size_t>(1, (bytes + options_.chunk_bytes - 1) / options_.chunk_bytes);
-  // About eight chunks per thread of 1 to 4 MB each, their count a multiple of the thread count
-  // so that the threads, taking equal chunks in turn, finish together. Not larger: the chunks
-  // between parse and numbering each hold a chunk's corners (about its size in bytes), and with
-  // 32 MB chunks a two-thread import of 487 MB faulted in three slots of 27 MB of them, more than
-  // the vertex arrays took over, the rest unmapped at the end (245 against 221 ms with 4 MB,
-  // medians of 21; on one thread 416 against 409 ms; at 99 MB the same either way).
-  const size_t chunk_bytes = std::clamp<size_t>(bytes / (size_t{threads_} * 8), 1 << 20, 4 << 20);
-  size_t chunks = (bytes + chunk_bytes - 1) / chunk_bytes;
-  if (chunks > 1) chunks = (chunks + threads_ - 1) / threads_ * threads_;
-  return std::max<size_t>(1, chunks);
-}
-
-void Importer::parse(std::string_view text) {
-  texts_ = split_at_line_ends(text, chunk_count(text.size()));
-  chunks_.assign(texts_.size(), ChunkData{});
-  std::atomic<size_t> bytes_done{0};
-  const double total = std::max<size_t>(1, text.size());
-  run_parallel(
-      options_.pool, threads_, texts_.size(),
-      [&](size_t c, unsigned) {
-        parse_one(c, 0);
-        bytes_done += texts_[c].size();
-      },
-      [&] { report(static_cast<float>(0.6 * bytes_done.load() / total)); });
-}
-
-// Chunk c's text into chunks_[c], its file pages then dropped where they are the importer's own.
-void Importer::parse_one(size_t c, size_t reserve_bytes) {
-  parse_chunk(texts_[c], c == 0, options_.plain_lines, &chunks_[c], reserve_bytes);
-  if (release_text_) release_read_pages(texts_[c]);
-}
-
 namespace {
 
-// import_obj_text, told whether the text is import_obj_file's own mapping of the file (see
-// release_read_pages).
-bool import_text(std::string_view text, const std::string& name, const std::string& directory,
-                 const ImportOptions& options, bool text_is_file_mapping, ObjMesh* out, std::string* error) {
-  // Whatever way the import ends, the pages it kept for reuse go back (obj_spare_mappings.hpp).
-  struct ReleaseSpares {
-    ~ReleaseSpares() { release_spare_mappings(); }
-  } release_spares;
-  try {
-    // Chunk by chunk, unless the file needs the stages (then from the start).
-    if (options.streamed) {
-      const Importer::Outcome outcome =
-          Importer(name, directory, options, text_is_file_mapping).run_streamed(text, out, error);
-      if (outcome != Importer::Outcome::kUseStages) return outcome == Importer::Outcome::kDone;
-      release_spare_mappings();
+struct Located {
+  uint64_t line;  // 1-based, in the OBJ file
+  std::string text;
+};
+
+// Cuts "a.mtl b.mtl" into files; a name with blanks ("my materials.mtl") is taken whole when a
+// file of that whole name exists.
+std::vector<std::string> material_library_names(const std::string& directory, const std::string& text) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(resolve_path(directory, text), ec)) return {text};
+  std::vector<std::string> names;
+  size_t start = 0;
+  while ((start = text.find_first_not_of(" \t", start)) != std::string::npos) {
+    const size_t end = std::min(text.find_first_of(" \t", start), text.size());
+    names.push_back(text.substr(start, end - start));
+    start = end;
+  }
+  return names;
+}
+
+// Room for an array that grows as chunks are numbered: for the most elements the rest of the text
+// could make (address space only: never copied) unless that is more than an eighth of the machine's
+// memory (the kernel refuses a mapping much larger than memory); then the same per byte as the text
+// so far, and an eighth more.
+uint64_t room_for(uint64_t most, size_t element_bytes, uint64_t so_far, uint64_t bytes_read, uint64_t text_bytes) {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  const uint64_t memory = pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
+  if (most * element_bytes <= memory / 8) return most;
+  const double per_byte = bytes_read > 0 ? static_cast<double>(so_far) / static_cast<double>(bytes_read) : 0.0;
+  return static_cast<uint64_t>(per_byte * static_cast<double>(text_bytes) * 1.125) + 1024;
+}
+
+class Importer {
+ public:
+  Importer(const std::string& name, const std::string& directory, const ImportOptions& options, ObjMesh* out)
+      : name_(name), directory_(directory), options_(options), threads_(worker_count(options.pool, options.threads)),
+        out_(out) {}
+
+  bool run(std::string_view text, std::string* error) {
+    report(0.0f);
+    if (!read_and_number(text, error) || !check_indices(error)) return false;
+    load_materials();
+    gather_vertex_data();
+    report(0.7f);
+    write_index_array();
+    report(0.85f);
+    fill_vertices();
+    generate_normals(numbering_.keys(), out_->positions, out_->indices, options_.pool, threads_, &out_->normals);
+    free_array(&numbering_.keys());
+    finish_warnings();
+    report(1.0f);
+    return true;
+  }
+
+ private:
+  // What the file before a chunk set up for it, found when the chunk is numbered.
+  struct ChunkStart {
+    uint64_t line = 1;
+    uint32_t bases[3] = {0, 0, 0};  // v, vt and vn before the chunk
+    uint64_t face = 0;              // the file ordinal of its first face
+    uint64_t corner = 0;            // where its corners' vertex numbers start in ids_
+    uint32_t material = kNoIndex;   // the usemtl name in force (index into names_), or none
+    uint32_t smoothing = kDefaultSmoothing;
+    std::vector<uint32_t> names;    // the chunk's material names as indices into names_
+    bool faces_kept = false;        // its faces are needed again: polygons or usemtl
+    bool suspect = false;           // it may hold an index the file cannot satisfy
+  };
+
+  void report(float fraction) {
+    if (options_.progress) options_.progress(fraction);
+  }
+  void warn(uint64_t line, std::string text) { warnings_.push_back({line, std::move(text)}); }
+  std::string at(uint64_t line, const std::string& text) const {
+    return name_ + ":" + std::to_string(line) + ": " + text;
+  }
+
+  size_t chunk_count(size_t bytes) const {
+    if (options_.chunk_bytes > 0) return std::max<size_t>(1, (bytes + options_.chunk_bytes - 1) / options_.chunk_bytes);
+    // About eight chunks per thread of 1 to 4 MB, their count a multiple of the thread count so
+    // the threads finish together: a chunk's corners live from its reading to its numbering.
+    const size_t chunk_bytes = std::clamp<size_t>(bytes / (size_t{threads_} * 8), 1 << 20, 4 << 20);
+    size_t chunks = (bytes + chunk_bytes - 1) / chunk_bytes;
+    if (chunks > 1) chunks = (chunks + threads_ - 1) / threads_ * threads_;
+    return std::max<size_t>(1, chunks);
+  }
+
+  // Stage 2. A chunk's corners and faces are read into the arrays of one of a few slots and go
+  // back to it once numbered, so later chunks reuse pages already written instead of fresh ones.
+  bool read_and_number(std::string_view text, std::string* error) {
+    texts_ = split_at_line_ends(text, chunk_count(text.size()));
+    const size_t count = texts_.size();
+    chunks_.resize(count);
+    starts_.resize(count + 1);
+    size_t largest = 0;
+    for (std::string_view chunk : texts_) largest = std::max(largest, chunk.size());
+    const size_t window = threads_ == 1 ? 1 : size_t{threads_} + 1;
+    struct Slot {
+      BigVector<uint32_t> corners;
+      BigVector<Face> faces;
+    };
+    std::vector<Slot> slots(window);
+    std::atomic<uint64_t> bytes_numbered{0};
+    auto read = [&](size_t c, unsigned) {
+      chunks_[c].corners.swap(slots[c % window].corners);
+      chunks_[c].faces.swap(slots[c % window].faces);
+      parse_chunk(texts_[c], c == 0, &chunks_[c], largest);
+    };
+    auto number = [&](size_t c) {
+      if (!number_chunk(c, text.size(), error)) return false;
+      slots[c % window].corners.swap(chunks_[c].corners);
+      free_array(&chunks_[c].corners);
+      if (!starts_[c].faces_kept) slots[c % window].faces.swap(chunks_[c].faces);
+      bytes_numbered += texts_[c].size();
+      return true;
+    };
+    run_ordered_jobs(options_.pool, threads_, count, window, read, number, [&] {
+      report(static_cast<float>(0.6 * static_cast<double>(bytes_numbered.load()) / std::max<double>(1.0, text.size())));
+    });
+    return error->empty();
+  }
+
+  // Chunk c, read, after every chunk before it: its corners numbered into ids_, and starts_[c + 1]
+  // set from starts_[c]. False with *error at the first chunk that failed to read.
+  bool number_chunk(size_t c, uint64_t text_bytes, std::string* error) {
+    ChunkData& chunk = chunks_[c];
+    ChunkStart& start = starts_[c];
+    if (chunk.failed) {
+      *error = at(start.line + chunk.error.line, chunk.error.text);
+      return false;
     }
-    return Importer(name, directory, options, text_is_file_mapping).run(text, out, error);
+    ChunkStart& next = starts_[c + 1];
+    const uint32_t counts[3] = {chunk.position_count(), chunk.texcoord_count(), chunk.normal_count()};
+    for (int k = 0; k < 3; ++k) {
+      if (uint64_t{start.bases[k]} + counts[k] > uint64_t(kMaxWrittenIndex) || start.face + chunk.faces.size() > uint64_t(kMaxWrittenIndex)) {
+        *error = name_ + ": more than 2^31 - 1 elements of one kind (v, vt, vn or f): too large";
+        return false;
+      }
+      next.bases[k] = start.bases[k] + counts[k];
+    }
+    next.line = start.line + chunk.line_ends;
+    next.face = start.face + chunk.faces.size();
+    const uint64_t corners = chunk.corners.size() / 3;
+    next.corner = start.corner + corners;
+    if (next.corner > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
+    collect_statements(c);
+
+    // An index past what the rest of the text could still define cannot be satisfied: the chunk is
+    // left for check_indices to report (a position index sizes an array below).
+    const uint64_t bytes_read = (texts_[c].data() - texts_[0].data()) + texts_[c].size();
+    const uint64_t bytes_left = text_bytes - bytes_read;
+    const uint64_t positions_at_most = next.bases[0] + bytes_left / 8 + 1;
+    start.suspect |= chunk.max_index[0] > positions_at_most;
+    if (!start.suspect && !make_relative_final(c)) start.suspect = true;
+    bool number_ok = !start.suspect && !any_suspect_;
+    any_suspect_ |= start.suspect;
+    if (number_ok) {
+      if (next.corner > ids_.capacity())
+        ids_.reserve(std::max({next.corner, room_for(next.corner + bytes_left / 2 + 1, 4, next.corner, bytes_read, text_bytes),
+                               2 * uint64_t{ids_.capacity()}}));
+      ids_.resize(next.corner);
+      const uint32_t positions = std::max(next.bases[0], chunk.max_index[0]);
+      const uint64_t keys = numbering_.keys().size() + corners;
+      numbering_.grow(positions, room_for(positions_at_most, 4, positions, bytes_read, text_bytes), keys,
+                      room_for(keys + bytes_left / 2 + 1, sizeof(VertexKey) + 4, keys, bytes_read, text_bytes));
+      number_corners(c, ids_.data() + start.corner);
+    }
+    uint64_t triangles = 0;
+    for (uint64_t t : chunk.triangles_by_material) triangles += t;
+    start.faces_kept = 3 * triangles != corners || !chunk.material_names.empty();
+    free_array(&chunk.relative_fields);
+    return true;
+  }
+
+  // Chunk c's relative indices made final; false when one reaches before the first element.
+  bool make_relative_final(size_t c) {
+    ChunkData& chunk = chunks_[c];
+    const uint32_t* bases = starts_[c].bases;
+    for (size_t word = 0; word < chunk.relative_fields.size(); ++word)
+      for (uint64_t bits = chunk.relative_fields[word]; bits != 0; bits &= bits - 1) {
+        const size_t field = word * 64 + static_cast<size_t>(__builtin_ctzll(bits));
+        const int64_t one_based = int64_t{bases[field % 3]} + static_cast<int32_t>(chunk.corners[field]);
+        if (one_based < 1) return false;
+        chunk.corners[field] = static_cast<uint32_t>(one_based - 1);
+      }
+    return true;
+  }
+
+  // Each corner of chunk c numbered, in order, into ids; a corner without a normal is keyed by its
+  // face's normal group: its smoothing group, or the face itself when smoothing is off.
+  void number_corners(size_t c, uint32_t* ids) {
+    const ChunkData& chunk = chunks_[c];
+    uint32_t smoothing = starts_[c].smoothing;
+    const uint32_t* fields = chunk.corners.data();
+    size_t change = 0;
+    for (size_t f = 0; f < chunk.faces.size(); ++f) {
+      for (; change < chunk.changes.size() && chunk.changes[change].first_face == f; ++change)
+        if (chunk.changes[change].kind == StateChange::kSmoothing) smoothing = chunk.changes[change].value;
+      const uint32_t group =
+          smoothing == 0 ? kFlatFaceBit | static_cast<uint32_t>(starts_[c].face + f) : smoothing;
+      for (uint32_t k = 0; k < chunk.faces[f].corner_count; ++k, fields += 3)
+        *ids++ = numbering_.find_or_insert({fields[0], fields[1], fields[2], fields[2] == kNoIndex ? group : 0});
+    }
+  }
+
+  // Chunk c's other statements: the state in force after it, its usemtl names, material libraries
+  // and skipped statements.
+  void collect_statements(size_t c) {
+    ChunkData& chunk = chunks_[c];
+    ChunkStart& start = starts_[c];
+    ChunkStart& next = starts_[c + 1];
+    for (size_t i = 0; i < chunk.material_names.size(); ++i) {
+      auto [it, fresh] = name_index_.emplace(chunk.material_names[i], static_cast<uint32_t>(names_.size()));
+      if (fresh) names_.push_back({start.line + chunk.material_name_lines[i], chunk.material_names[i]});
+      start.names.push_back(it->second);
+    }
+    next.material = start.material;
+    next.smoothing = start.smoothing;
+    for (const StateChange& change : chunk.changes) {
+      if (change.kind == StateChange::kMaterial) next.material = start.names[change.value];
+      else next.smoothing = change.value;
+    }
+    for (const LocalMessage& library : chunk.material_libraries)
+      libraries_.push_back({start.line + library.line, library.text});
+    for (const auto& [keyword, ignored] : chunk.ignored) {
+      IgnoredKeyword& total = ignored_[keyword];
+      if (total.count == 0) total = {start.line + ignored.first_line, 0, ignored.valid_obj};
+      total.count += ignored.count;
+    }
+    out_->lines_skipped += chunk.lines_skipped;
+    out_->points_skipped += chunk.points_skipped;
+  }
+
+  // Stage 3. Every index within the file's totals; the first that is not, in file order, is the
+  // error. Chunks that may hold one are read again here (an error path only).
+  bool check_indices(std::string* error) {
+    const size_t count = chunks_.size();
+    const uint32_t* totals = starts_[count].bases;
+    for (size_t c = 0; c < count; ++c) {
+      for (int k = 0; k < 3; ++k) starts_[c].suspect |= chunks_[c].max_index[k] > totals[k];
+      if (!starts_[c].suspect) continue;
+      ChunkData chunk;
+      parse_chunk(texts_[c], c == 0, &chunk);
+      uint64_t field = 0;
+      for (const Face& face : chunk.faces)
+        for (uint32_t j = 0; j < 3 * face.corner_count; ++j, ++field) {
+          const int kind = static_cast<int>(field % 3);
+          const bool relative = chunk.is_relative(field);
+          if (!relative && chunk.corners[field] == kNoIndex) continue;
+          const int64_t one_based = relative ? int64_t{starts_[c].bases[kind]} + static_cast<int32_t>(chunk.corners[field])
+                                             : int64_t{chunk.corners[field]} + 1;
+          const std::string k = kind == 0 ? "v" : kind == 1 ? "vt" : "vn";
+          std::string why;
+          if (one_based < 1) why = "relative " + k + " index reaches before the first " + k;
+          else if (one_based > totals[kind] && totals[kind] == 0)
+            why = k + " index " + std::to_string(one_based) + " but the file has no " + k;
+          else if (one_based > totals[kind])
+            why = k + " index " + std::to_string(one_based) + " is out of range (the file has " +
+                  std::to_string(totals[kind]) + " " + k + ")";
+          if (why.empty()) continue;
+          *error = at(starts_[c].line + face.line, "f: " + why);
+          return false;
+        }
+    }
+    return true;
+  }
+
+  void load_materials() {
+    // Every library first, in file order: a usemtl may come before its mtllib.
+    for (const Located& library : libraries_) {
+      if (directory_.empty()) {
+        warn(library.line, "mtllib " + library.text + ": not read (the model was given as bytes without a file name)");
+        continue;
+      }
+      for (const std::string& file : material_library_names(directory_, library.text)) {
+        const std::string path = resolve_path(directory_, file);
+        std::string bytes, problem;
+        if (!read_small_file(path, &bytes, &problem)) {
+          warn(library.line, "mtllib: " + problem + " (materials keep their defaults)");
+          continue;
+        }
+        std::vector<std::string> mtl_warnings;
+        parse_mtl(bytes, path, std::filesystem::path(path).parent_path().string(), &out_->materials, &mtl_warnings);
+        for (auto& w : mtl_warnings) warn(library.line, std::move(w));
+      }
+    }
+    // Each usemtl name's material; an unknown name gets a default material of that name.
+    std::unordered_map<std::string, uint32_t> by_name;
+    for (size_t i = 0; i < out_->materials.size(); ++i)
+      by_name.emplace(out_->materials[i].name, static_cast<uint32_t>(i));
+    for (const Located& name : names_) {
+      auto [it, fresh] = by_name.emplace(name.text, static_cast<uint32_t>(out_->materials.size()));
+      if (fresh) {
+        out_->materials.push_back(Material{});
+        out_->materials.back().name = name.text;
+        warn(name.line, "usemtl " + name.text + ": no material of that name in the material libraries (defaults used)");
+      }
+      name_slots_.push_back(it->second);
+    }
+  }
+
+  // The slot (material index, or the last slot for none) of chunk c's material m (0: the one in
+  // force at its start, i + 1: its i-th name).
+  uint32_t slot_of(size_t c, size_t m) const {
+    const uint32_t name = m == 0 ? starts_[c].material : starts_[c].names[m - 1];
+    return name == kNoIndex ? static_cast<uint32_t>(out_->materials.size()) : name_slots_[name];
+  }
+
+  // Stage 4. Sub-meshes in order of their material's first face; each chunk's triangles of each
+  // material at their place, which the chunks then fill in parallel.
+  void write_index_array() {
+    const size_t slots = out_->materials.size() + 1, count = chunks_.size();
+    std::vector<uint64_t> triangles(slots, 0), first_use(slots, ~uint64_t{0});
+    for (size_t c = 0; c < count; ++c)
+      for (size_t m = 0; m < chunks_[c].triangles_by_material.size(); ++m) {
+        if (chunks_[c].first_face_by_material[m] == ChunkData::kNoFace) continue;
+        const uint32_t s = slot_of(c, m);
+        triangles[s] += chunks_[c].triangles_by_material[m];
+        first_use[s] = std::min(first_use[s], starts_[c].face + chunks_[c].first_face_by_material[m]);
+      }
+    std::vector<uint32_t> order;
+    for (uint32_t s = 0; s < slots; ++s)
+      if (triangles[s] > 0) order.push_back(s);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return first_use[a] < first_use[b]; });
+    std::vector<uint64_t> place(slots, 0);
+    uint64_t total = 0;
+    for (uint32_t s : order) {
+      place[s] = total;
+      total += 3 * triangles[s];
+      if (total > 0xFFFFFFFFull) throw std::length_error(name_ + ": more than 2^32 - 1 triangle indices");
+      out_->submeshes.push_back({static_cast<uint32_t>(place[s]), static_cast<uint32_t>(3 * triangles[s]),
+                                 s == slots - 1 ? kNoIndex : s});
+    }
+    out_->faces = starts_[count].face;
+    if (order.size() <= 1 && total == ids_.size()) {  // triangles of one material: the numbers as they are
+      out_->indices.swap(ids_);
+      return;
+    }
+    out_->indices.resize(total);
+    std::vector<std::vector<uint64_t>> chunk_places(count);
+    for (size_t c = 0; c < count; ++c) {
+      chunk_places[c] = place;
+      for (size_t m = 0; m < chunks_[c].triangles_by_material.size(); ++m)
+        place[slot_of(c, m)] += 3 * chunks_[c].triangles_by_material[m];
+    }
+    std::vector<std::vector<Located>> chunk_warnings(count);
+    run_parallel(options_.pool, threads_, count,
+                 [&](size_t c, unsigned) { write_triangles(c, &chunk_places[c], &chunk_warnings[c]); });
+    for (auto& list : chunk_warnings)
+      for (Located& w : list) warnings_.push_back(std::move(w));
+    free_array(&ids_);
+  }
+
+  // Chunk c's faces from its vertex numbers to their places: a triangle copied, a polygon
+  // ear-clipped (with a warning when it had to be a fan).
+  void write_triangles(size_t c, std::vector<uint64_t>* places, std::vector<Located>* warnings) {
+    const ChunkData& chunk = chunks_[c];
+    const ChunkStart& start = starts_[c];
+    uint32_t* indices = out_->indices.data();
+    const uint32_t* ids = ids_.data() + start.corner;
+    if (!start.faces_kept) {  // triangles only, all of the material in force at its start
+      const uint64_t n = starts_[c + 1].corner - start.corner;
+      if (n > 0) std::memcpy(indices + (*places)[slot_of(c, 0)], ids, n * sizeof(uint32_t));
+      return;
+    }
+    ChunkedElements::Reader positions(all_positions_);
+    std::vector<const float*> corners;
+    std::vector<uint32_t> triangles;
+    TriangulationScratch scratch;
+    uint32_t slot = slot_of(c, 0);
+    size_t change = 0;
+    for (size_t f = 0; f < chunk.faces.size(); ++f) {
+      for (; change < chunk.changes.size() && chunk.changes[change].first_face == f; ++change)
+        if (chunk.changes[change].kind == StateChange::kMaterial) slot = slot_of(c, chunk.changes[change].value + 1);
+      const uint32_t n = chunk.faces[f].corner_count;
+      uint64_t& place = (*places)[slot];
+      if (n == 3) {
+        std::memcpy(indices + place, ids, 3 * sizeof(uint32_t));
+        place += 3;
+      } else {
+        corners.resize(n);
+        for (uint32_t k = 0; k < n; ++k) corners[k] = positions.at(numbering_.keys()[ids[k]].v);
+        triangles.clear();
+        const Triangulation how = triangulate_polygon(corners.data(), n, &triangles, &scratch);
+        for (uint32_t k : triangles) indices[place++] = ids[k];
+        if (how != Triangulation::kEarClipped)
+          warnings->push_back({start.line + chunk.faces[f].line,
+                               "f: polygon of " + std::to_string(n) + " corners " +
+                                   (how == Triangulation::kFanDegenerate ? "has no area"
+                                    : how == Triangulation::kFanTooLarge
+                                        ? "is too large for ear clipping (over 4096 corners)"
+                                        : "is self-intersecting") +
+                                   ": triangulated as a fan"});
+      }
+      ids += n;
+    }
+  }
+
+  // The chunks' vertex data seen as one array per kind, read where the chunks wrote it.
+  void gather_vertex_data() {
+    for (size_t c = 0; c < chunks_.size(); ++c) {
+      const ChunkData& chunk = chunks_[c];
+      const uint32_t* bases = starts_[c].bases;
+      all_positions_.add(bases[0], chunk.position_count(), chunk.positions.data());
+      all_colors_.add(bases[0], chunk.position_count(), chunk.colors.empty() ? nullptr : chunk.colors.data());
+      all_texcoords_.add(bases[1], chunk.texcoord_count(), chunk.texcoords.data());
+      all_normals_.add(bases[2], chunk.normal_count(), chunk.normals.data());
+      any_colors_ |= !chunk.colors.empty();
+    }
+  }
+
+  // Stage 5, in blocks on every worker, each block's bounds combined after (min and max do not
+  // depend on the order).
+  void fill_vertices() {
+    const BigVector<VertexKey>& keys = numbering_.keys();
+    const size_t count = keys.size();
+    const bool any_texcoords = std::any_of(keys.begin(), keys.end(), [](const VertexKey& k) { return k.vt != kNoIndex; });
+    out_->positions.resize(3 * count);
+    out_->normals.resize(3 * count);
+    if (any_texcoords) out_->texcoords.resize(2 * count);
+    if (any_colors_) out_->colors.resize(3 * count);
+    constexpr size_t kBlock = size_t{1} << 15;
+    const size_t blocks = (count + kBlock - 1) / kBlock;
+    std::vector<std::array<float, 6>> block_bounds(blocks);
+    run_parallel(options_.pool, threads_, blocks, [&](size_t b, unsigned) {
+      ChunkedElements::Reader positions(all_positions_), colors(all_colors_), texcoords(all_texcoords_),
+          normals(all_normals_);
+      std::array<float, 6> bounds = {HUGE_VALF, HUGE_VALF, HUGE_VALF, -HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
+      for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
+        const VertexKey& key = keys[i];
+        const float* p = positions.at(key.v);
+        std::memcpy(&out_->positions[3 * i], p, 3 * sizeof(float));
+        for (int k = 0; k < 3; ++k) {  // as std::min and std::max: a NaN coordinate is passed over
+          bounds[k] = std::min(bounds[k], p[k]);
+          bounds[3 + k] = std::max(bounds[3 + k], p[k]);
+        }
+        if (any_colors_) std::memcpy(&out_->colors[3 * i], colors.at(key.v), 3 * sizeof(float));
+        if (any_texcoords) {
+          if (key.vt != kNoIndex) std::memcpy(&out_->texcoords[2 * i], texcoords.at(key.vt), 2 * sizeof(float));
+          else out_->texcoords[2 * i] = out_->texcoords[2 * i + 1] = 0.0f;
+        }
+        if (key.vn != kNoIndex) std::memcpy(&out_->normals[3 * i], normals.at(key.vn), 3 * sizeof(float));
+      }
+      block_bounds[b] = bounds;
+    });
+    for (size_t b = 0; b < blocks; ++b)
+      for (int k = 0; k < 3; ++k) {
+        out_->bounds_min[k] = b == 0 ? block_bounds[b][k] : std::min(out_->bounds_min[k], block_bounds[b][k]);
+        out_->bounds_max[k] = b == 0 ? block_bounds[b][3 + k] : std::max(out_->bounds_max[k], block_bounds[b][3 + k]);
+      }
+    free_array(&chunks_);
+  }
+
+  // Stage 7: skipped statements and an empty mesh said once, then every warning in line order.
+  void finish_warnings() {
+    for (const auto& [keyword, ignored] : ignored_)
+      warn(ignored.first_line, (ignored.valid_obj ? "'" + keyword + "' statements are not supported: "
+                                                  : "unknown statement '" + keyword + "': ") +
+                                   std::to_string(ignored.count) + " ignored");
+    const uint64_t last_line = starts_.back().line;
+    if (out_->faces == 0) warn(last_line > 1 ? last_line - 1 : 1, "no faces: the mesh is empty");
+    std::stable_sort(warnings_.begin(), warnings_.end(), [](const Located& a, const Located& b) { return a.line < b.line; });
+    out_->warning_total = warnings_.size();
+    for (size_t i = 0; i < warnings_.size() && i < kMaxWarnings; ++i) out_->warnings.push_back(at(warnings_[i].line, warnings_[i].text));
+  }
+
+  static constexpr float kWhite[3] = {1.0f, 1.0f, 1.0f};
+  const std::string& name_;
+  const std::string& directory_;
+  const ImportOptions& options_;
+  const unsigned threads_;
+  ObjMesh* out_;
+  std::vector<std::string_view> texts_;
+  std::vector<ChunkData> chunks_;
+  std::vector<ChunkStart> starts_;  // per chunk, and one past the last: the file's totals
+  bool any_suspect_ = false;        // from the first chunk that may hold a bad index, none is numbered
+  VertexNumbering numbering_;
+  BigVector<uint32_t> ids_;  // every corner's vertex number, in file order
+  std::vector<Located> names_;   // usemtl names in order of first use, at that line
+  std::unordered_map<std::string, uint32_t> name_index_;
+  std::vector<uint32_t> name_slots_;  // per name: its material's index
+  std::vector<Located> libraries_;    // mtllib lines
+  std::map<std::string, IgnoredKeyword> ignored_;
+  std::vector<Located> warnings_;
+  bool any_colors_ = false;
+  ChunkedElements all_positions_{3}, all_texcoords_{2}, all_normals_{3}, all_colors_{3, kWhite};
+};
+
+bool import_text(std::string_view text, const std::string& name, const std::string& directory,
+                 const ImportOptions& options, ObjMesh* out, std::string* error) {
+  *out = ObjMesh{};
+  error->clear();
+  try {
+    if (Importer(name, directory, options, out).run(text, error)) return true;
   } catch (const std::bad_alloc&) {
     *error = name + ": out of memory";
   } catch (const std::exception& e) {
@@ -108,14 +549,14 @@ bool import_text(std::string_view text, const std::string& name, const std::stri
 
 bool import_obj_text(std::string_view text, const std::string& name, const std::string& directory,
                      const ImportOptions& options, ObjMesh* out, std::string* error) {
-  return import_text(text, name, directory, options, false, out, error);
+  return import_text(text, name, directory, options, out, error);
 }
 
 bool import_obj_file(const std::string& path, const ImportOptions& options, ObjMesh* out, std::string* error) {
   FileBytes file;
   if (!file.open(path, error)) return false;
   const std::string directory = std::filesystem::path(path).parent_path().string();
-  return import_text(file.bytes(), path, directory.empty() ? "." : directory, options, file.mapped(), out, error);
+  return import_text(file.bytes(), path, directory.empty() ? "." : directory, options, out, error);
 }
 
 }  // namespace pfx_obj

@@ -16,7 +16,6 @@
 
 #include "obj_buffer.hpp"
 #include "obj_mtl.hpp"
-#include "obj_stages.hpp"
 
 namespace pfx_obj {
 
@@ -38,8 +37,6 @@ struct ObjMesh {
   std::vector<std::string> warnings;  // the first kMaxWarnings, in file order
   uint64_t warning_total = 0;
   uint32_t vertex_count() const { return static_cast<uint32_t>(positions.size() / 3); }
-
-  std::vector<ImportStage> stages;  // each stage's times, in order (obj_stages.hpp)
 };
 
 constexpr size_t kMaxWarnings = 100;
@@ -52,13 +49,9 @@ struct ImportOptions {
 
   std::function<void(float)> progress;   // 0..1, on the calling thread
   size_t chunk_bytes = 0;                // 0: chosen from the size and thread count (tests set it)
-  bool plain_lines = true;               // the fast readers for common lines; tests compare with false
-  bool streamed = true;                  // chunk by chunk (obj_streamed.cpp); tests compare with
-                                         // false, the staged pipeline (also where a file needs it)
 };
 
-// How many tasks of an import (and of the plugin's release of its result) run at once: the
-// request's bound within what the pool offers, and 1 without a pool.
+// How many tasks of an import run at once: the request's bound within what the pool offers, and 1 without a pool.
 inline unsigned worker_count(const pfx_thread_pool* pool, unsigned requested) {
   if (!pool) return 1;
   const unsigned offered = std::max(1u, pool->concurrency(pool->pool_data));

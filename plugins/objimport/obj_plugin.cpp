@@ -13,7 +13,6 @@
 
 #include "obj_chunk.hpp"
 #include "obj_import.hpp"
-#include "obj_parallel_free.hpp"
 
 namespace pfx_obj {
 namespace {
@@ -27,7 +26,6 @@ struct ResultStorage {
   std::vector<pfx_import_submesh> submeshes;
   std::vector<pfx_import_material> materials;
   std::vector<const char*> warnings;
-  unsigned threads = 1;  // the import's bound on tasks at once, which release frees the arrays with too
 };
 
 // The host's thread pool, looked up in init (null: the host offers none, and imports run on the
@@ -98,7 +96,6 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
       ImportOptions options;
       options.pool = g_pool;
       options.threads = request->threads;
-      storage->threads = worker_count(g_pool, request->threads);
       if (request->progress) {
         pfx_import_progress_fn progress = request->progress;
         void* user = request->progress_user;
@@ -152,7 +149,6 @@ void release(pfx_import_result* result) {
     storage = it->second;
     g_results.erase(it);
   }
-  free_mesh_in_parallel(g_pool, storage->threads, &storage->mesh);
   delete storage;
 }
 

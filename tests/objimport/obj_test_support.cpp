@@ -21,15 +21,12 @@ const pfx_thread_pool* test_pool(unsigned threads) {
   return pool->service();
 }
 
-Imported import_text(const std::string& text, unsigned threads, size_t chunk_bytes, const std::string& directory,
-                     bool plain_lines, bool streamed) {
+Imported import_text(const std::string& text, unsigned threads, size_t chunk_bytes, const std::string& directory) {
   Imported result;
   pfx_obj::ImportOptions options;
   options.pool = test_pool(threads);
   options.threads = threads;
   options.chunk_bytes = chunk_bytes;
-  options.plain_lines = plain_lines;
-  options.streamed = streamed;
   const std::string name = directory.empty() ? "test.obj" : directory + "/test.obj";
   result.ok = pfx_obj::import_obj_text(text, name, directory, options, &result.mesh, &result.error);
   return result;

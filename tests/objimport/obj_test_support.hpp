@@ -23,10 +23,9 @@ struct Imported {
 const pfx_thread_pool* test_pool(unsigned threads);
 
 // Imports `text` as the file "test.obj" (no material libraries read) or, with `directory`, as a
-// file in that folder, on test_pool(threads). plain_lines = false: the general grammar reads every
-// line (no fast readers).
+// file in that folder, on test_pool(threads).
 Imported import_text(const std::string& text, unsigned threads = 1, size_t chunk_bytes = 0,
-                     const std::string& directory = "", bool plain_lines = true, bool streamed = true);
+                     const std::string& directory = "");
 
 struct SoupCorner {
   std::array<float, 3> position{};
@@ -40,7 +39,7 @@ struct SoupCorner {
 std::vector<SoupCorner> soup(const pfx_obj::ObjMesh& mesh);
 
 // A generated file using every statement: relative indices, material and smoothing changes,
-// colours, polygons, line continuations, CRLF, and many plain lines (obj_plain_lines.hpp).
+// colours, polygons, line continuations, CRLF.
 std::string varied_file(uint32_t faces, uint32_t seed);
 
 // Checks (Catch CHECKs) that two imports gave the same mesh, bit for bit.

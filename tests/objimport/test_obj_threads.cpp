@@ -37,12 +37,10 @@ TEST_CASE("obj threads: the same output for any thread count and chunk size", "[
   REQUIRE(reference.ok);
   REQUIRE(reference.mesh.submeshes.size() == 4);  // m0, m1, m2 and the faces before any usemtl
   REQUIRE_FALSE(reference.mesh.colors.empty());
-  // Chunk by chunk (obj_streamed.cpp, the default) and through the staged pipeline.
-  for (bool streamed : {true, false})
-    for (unsigned threads : {1u, 2u, 3u, 4u, 7u})
+  for (unsigned threads : {1u, 2u, 3u, 4u, 7u})
       for (size_t chunk : {size_t{0}, size_t{97}, size_t{4096}, size_t{100000}}) {
-        INFO((streamed ? "streamed" : "staged") << ", threads " << threads << ", chunk bytes " << chunk);
-        auto r = import_text(text, threads, chunk, "", true, streamed);
+        INFO("threads " << threads << ", chunk bytes " << chunk);
+        auto r = import_text(text, threads, chunk);
         REQUIRE(r.ok);
         check_same(reference.mesh, r.mesh);
       }
@@ -56,10 +54,9 @@ TEST_CASE("obj threads: the first error in file order wins whatever the cut", "[
   auto reference = import_text(text, 1, size_t{1} << 30);
   REQUIRE_FALSE(reference.ok);
   CHECK(reference.error.find("index 0") != std::string::npos);
-  for (bool streamed : {true, false})
-    for (unsigned threads : {2u, 5u})
+  for (unsigned threads : {2u, 5u})
       for (size_t chunk : {size_t{64}, size_t{5000}}) {
-        auto r = import_text(text, threads, chunk, "", true, streamed);
+        auto r = import_text(text, threads, chunk);
         CHECK(r.error == reference.error);
       }
 }
@@ -71,9 +68,8 @@ TEST_CASE("obj threads: a relative index reaching exactly one chunk back (found 
   auto whole = import_text(text, 1, size_t{1} << 30);
   REQUIRE(whole.ok);
   CHECK(whole.mesh.normals == std::vector<float>{0, -1, 0, 0, -1, 0, 0, -1, 0});
-  for (bool streamed : {true, false})
-    for (size_t chunk : {size_t{1}, size_t{5}, size_t{11}}) {
-      auto cut = import_text(text, 2, chunk, "", true, streamed);
+  for (size_t chunk : {size_t{1}, size_t{5}, size_t{11}}) {
+      auto cut = import_text(text, 2, chunk);
       REQUIRE(cut.ok);
       CHECK(cut.mesh.normals == whole.mesh.normals);
     }
@@ -109,14 +105,12 @@ TEST_CASE("obj threads: the same output on a pool that runs fewer tasks at once 
   SerialPool serial;
   NarrowPool narrow;
   for (const pfx_thread_pool* pool : {&serial.service, &narrow.service})
-    for (bool streamed : {true, false})
       for (size_t chunk : {size_t{0}, size_t{97}, size_t{4096}}) {
-        INFO((pool == &serial.service ? "serial" : "narrow") << (streamed ? ", streamed" : ", staged") << ", chunk bytes " << chunk);
+        INFO((pool == &serial.service ? "serial" : "narrow") << ", chunk bytes " << chunk);
         pfx_obj::ImportOptions options;
         options.pool = pool;
         options.threads = 0;  // all four the pool offers
         options.chunk_bytes = chunk;
-        options.streamed = streamed;
         pfx_obj::ObjMesh mesh;
         std::string error;
         REQUIRE(pfx_obj::import_obj_text(text, "test.obj", "", options, &mesh, &error));

@@ -1,8 +1,7 @@
 // libFuzzer target for the OBJ and MTL parsers. Every input must import or fail with a message
 // naming the file, without a crash or an out-of-bounds read (the target is built with
-// AddressSanitizer), the import cut into chunks — on one thread or three, chunk by chunk or staged
-// — must give exactly what one chunk gives, and the fast readers of plain lines exactly what the
-// general grammar gives.
+// AddressSanitizer), and the import cut into chunks, on one thread or three, must give exactly what
+// one chunk gives.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -42,28 +41,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!ok_one && error_one.rfind("fuzz.obj", 0) != 0) __builtin_trap();  // a message without the file
 
   // Small chunks cut the text at many line ends, on one thread and on three (which take them in
-  // any order), chunk by chunk (obj_streamed.cpp) and through the staged pipeline: every way
-  // exactly the one-chunk import.
-  for (unsigned threads : {1u, 3u})
-    for (bool streamed : {true, false}) {
-      pfx_obj::ImportOptions cut = sequential;
-      static pfx::host::ThreadPool three(3);  // the pool a host offers, as libpfxhost makes it
-      cut.pool = threads > 1 ? three.service() : nullptr;
-      cut.threads = threads;
-      cut.chunk_bytes = 1 + size % (threads == 1 ? 37 : 61);
-      cut.streamed = streamed;
-      pfx_obj::ObjMesh cut_mesh;
-      std::string error_cut;
-      const bool ok_cut = pfx_obj::import_obj_text(text, "fuzz.obj", "", cut, &cut_mesh, &error_cut);
-      if (ok_one != ok_cut || error_one != error_cut || (ok_one && !same(one, cut_mesh))) __builtin_trap();
-    }
-
-  pfx_obj::ImportOptions general = sequential;
-  general.plain_lines = false;
-  pfx_obj::ObjMesh general_mesh;
-  std::string error_general;
-  const bool ok_general = pfx_obj::import_obj_text(text, "fuzz.obj", "", general, &general_mesh, &error_general);
-  if (ok_one != ok_general || error_one != error_general || (ok_one && !same(one, general_mesh))) __builtin_trap();
+  // any order): every way exactly the one-chunk import.
+  for (unsigned threads : {1u, 3u}) {
+    pfx_obj::ImportOptions cut = sequential;
+    static pfx::host::ThreadPool three(3);  // the pool a host offers, as libpfxhost makes it
+    cut.pool = threads > 1 ? three.service() : nullptr;
+    cut.threads = threads;
+    cut.chunk_bytes = 1 + size % (threads == 1 ? 37 : 61);
+    pfx_obj::ObjMesh cut_mesh;
+    std::string error_cut;
+    const bool ok_cut = pfx_obj::import_obj_text(text, "fuzz.obj", "", cut, &cut_mesh, &error_cut);
+    if (ok_one != ok_cut || error_one != error_cut || (ok_one && !same(one, cut_mesh))) __builtin_trap();
+  }
 
   if (ok_one) {
     for (uint32_t index : one.indices)

@@ -1,0 +1,433 @@
+// The OBJ statement grammar, one chunk at a time, in one pass and one reader for every line.
+//
+// Bounds: each scan stops at a line end (LF or CR), and the text a Reader reads always ends with a
+// line end that does not continue its line — a chunk's text up to its last such line end, then
+// (when the chunk does not end with one) its last statement copied with a line end added. So no
+// loop checks for the end of the text except the one over statements; the first malformed
+// statement stops the chunk with a message naming the line and the token.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "obj_chunk.hpp"
+#include "obj_text.hpp"
+
+namespace pfx_obj {
+
+namespace {
+
+// Statements of OBJ's free-form geometry (curves, surfaces) and rendering attributes: valid OBJ we
+// do not mesh. They are counted and reported once per keyword.
+bool is_unsupported_obj_keyword(std::string_view k) {
+  static const char* const kKnown[] = {"vp",   "cstype", "deg",     "bmat",     "step",     "curv",
+                                       "curv2", "surf",  "parm",    "trim",     "hole",     "scrv",
+                                       "sp",   "end",    "con",     "mg",       "bevel",    "c_interp",
+                                       "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech",
+                                       "maplib", "usemap", "call",  "csh"};
+  return std::any_of(std::begin(kKnown), std::end(kKnown), [&](const char* known) { return k == known; });
+}
+
+inline bool digit(char c, uint32_t* value) {
+  *value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0';
+  return *value < 10;
+}
+
+// Where the text's unterminated last statement starts: after its last line end that does not
+// continue its line (0 when there is none; text.size() when that is its last byte).
+size_t unterminated_tail(std::string_view text) {
+  for (size_t i = text.size(); i-- > 0;) {
+    if (!is_line_end(text[i])) continue;
+    const size_t line_end_start = (text[i] == '\n' && i > 0 && text[i - 1] == '\r') ? i - 1 : i;
+    if (line_end_start == 0 || text[line_end_start - 1] != '\\') return i + 1;
+    i = line_end_start;  // a continued line: the statement started before it
+  }
+  return 0;
+}
+
+class Reader {
+ public:
+  Reader(ChunkData* out, size_t reserve_bytes) : out_(out) { reserve_upper_bounds(reserve_bytes); }
+
+  // Reads [p, end); *(end - 1) is a line end that does not continue its line, and *end is readable
+  // unless that line end is the last byte of the file. False on an error (recorded).
+  bool read(const char* p, const char* end) {
+    p_ = p;
+    end_ = end;
+    while (p_ < end_) {
+      line_ = line_ends_;
+      if (!statement()) return false;
+    }
+    return true;
+  }
+
+  void finish() {
+    out_->positions.resize(static_cast<size_t>(position_at_ - out_->positions.data()));
+    out_->texcoords.resize(static_cast<size_t>(texcoord_at_ - out_->texcoords.data()));
+    out_->normals.resize(static_cast<size_t>(normal_at_ - out_->normals.data()));
+    out_->corners.resize(static_cast<size_t>(corner_at_ - out_->corners.data()));
+    out_->line_ends = line_ends_;
+  }
+
+ private:
+  // The most elements `bytes` of text can hold (the shortest statements: "v 0 0 0\n", "vt 0\n",
+  // "vn 0 0 0\n", a corner "1 ", "f 1 2 3\n"), made room for up front without touching the memory
+  // (BigVector leaves elements uninitialised; only pages written become resident): elements are
+  // then written through pointers, with no capacity check per element, and trimmed at the end.
+  void reserve_upper_bounds(size_t bytes) {
+    out_->positions.resize(3 * (bytes / 8 + 1));
+    out_->texcoords.resize(2 * (bytes / 5 + 1));
+    out_->normals.resize(3 * (bytes / 9 + 1));
+    out_->corners.resize(3 * (bytes / 2 + 1));
+    out_->faces.clear();
+    out_->faces.reserve(bytes / 8 + 1);
+    position_at_ = out_->positions.data();
+    texcoord_at_ = out_->texcoords.data();
+    normal_at_ = out_->normals.data();
+    corner_at_ = out_->corners.data();
+  }
+
+  uint32_t positions_so_far() const { return static_cast<uint32_t>((position_at_ - out_->positions.data()) / 3); }
+  uint32_t texcoords_so_far() const { return static_cast<uint32_t>((texcoord_at_ - out_->texcoords.data()) / 2); }
+  uint32_t normals_so_far() const { return static_cast<uint32_t>((normal_at_ - out_->normals.data()) / 3); }
+
+  // --- The bytes of a line -------------------------------------------------------------------
+  // A backslash right before a line end continues the statement on the next line.
+  bool continuation(const char* q) const { return q[0] == '\\' && is_line_end(q[1]); }
+  bool token_end(const char* q) const { return is_blank(*q) || is_line_end(*q) || continuation(q); }
+  bool statement_end() const { return is_line_end(*p_) || *p_ == '#'; }
+  void consume_line_end() {
+    if (*p_ == '\r' && p_ + 1 < end_ && p_[1] == '\n') ++p_;
+    ++p_;
+    ++line_ends_;
+  }
+  void skip_blanks() {
+    for (;;) {
+      if (is_blank(*p_)) ++p_;
+      else if (continuation(p_)) ++p_, consume_line_end();
+      else return;
+    }
+  }
+  // Past the end of the statement: a comment and continued lines included.
+  void skip_statement() {
+    for (;;) {
+      if (is_line_end(*p_)) return consume_line_end();
+      if (continuation(p_)) ++p_, consume_line_end();
+      else ++p_;
+    }
+  }
+  std::string_view token() {
+    const char* start = p_;
+    while (!token_end(p_)) ++p_;
+    return {start, static_cast<size_t>(p_ - start)};
+  }
+  std::string_view token_at(const char* start) {
+    p_ = start;
+    return token();
+  }
+  // The rest of the line up to its end (not a '#': names may hold one), blanks trimmed, each
+  // continuation one space.
+  std::string rest_of_line() {
+    std::string text;
+    while (!is_line_end(*p_)) {
+      if (!continuation(p_)) text += *p_++;
+      else ++p_, consume_line_end(), text += ' ';
+    }
+    const size_t first = text.find_first_not_of(" \t\f\v"), last = text.find_last_not_of(" \t\f\v");
+    return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  }
+
+  bool fail(std::string text) {
+    out_->failed = true;
+    out_->error = {line_, std::move(text)};
+    return false;
+  }
+
+  // --- Statements ----------------------------------------------------------------------------
+  bool statement() {
+    skip_blanks();
+    if (statement_end()) {
+      skip_statement();
+      return true;
+    }
+    const std::string_view keyword = token();
+    bool ok = true;
+    if (keyword == "v") ok = vertex();
+    else if (keyword == "vt") ok = texcoord();
+    else if (keyword == "vn") ok = normal();
+    else if (keyword == "f" || keyword == "fo") ok = face();
+    else if (keyword == "usemtl") ok = use_material();
+    else if (keyword == "mtllib") ok = material_library();
+    else if (keyword == "s") ok = smoothing();
+    else if (keyword == "l") ++out_->lines_skipped;
+    else if (keyword == "p") ++out_->points_skipped;
+    else if (keyword != "o" && keyword != "g") ok = other(keyword);  // o, g: names only
+    if (!ok) return false;
+    skip_statement();
+    return true;
+  }
+
+  bool other(std::string_view keyword) {
+    for (char c : keyword) {
+      const unsigned char byte = static_cast<unsigned char>(c);
+      if (byte < 0x20 || byte == 0x7f) {
+        const char* digits = "0123456789abcdef";
+        return fail(std::string("binary data (byte 0x") + digits[byte >> 4] + digits[byte & 15] +
+                    " in a keyword): not an OBJ text file");
+      }
+    }
+    IgnoredKeyword& ignored = out_->ignored[std::string(keyword.substr(0, 40))];
+    if (ignored.count++ == 0) {
+      ignored.first_line = line_;
+      ignored.valid_obj = is_unsupported_obj_keyword(keyword);
+    }
+    return true;
+  }
+
+  // A number ending where its token ends, finite as a float. Plain decimals ([+-]digits[.digits],
+  // at most 19 digits) take Clinger's fast path here, as parse_number_prefix would; anything else
+  // goes to it.
+  bool number(double* out) {
+    const char* q = p_;
+    const bool negative = *q == '-';
+    if (*q == '-' || *q == '+') ++q;
+    uint64_t mantissa = 0;
+    uint32_t d;
+    int digits = 0, fraction = 0;
+    for (; digits < 19 && digit(*q, &d); ++q, ++digits) mantissa = mantissa * 10 + d;
+    if (*q == '.')
+      for (++q; digits < 19 && digit(*q, &d); ++q, ++digits, ++fraction) mantissa = mantissa * 10 + d;
+    if (digits > 0 && token_end(q) && mantissa < (uint64_t{1} << 53)) {
+      const double value = static_cast<double>(mantissa) / kExactPowersOf10[fraction];
+      *out = negative ? -value : value;
+      p_ = q;
+      return true;
+    }
+    double value;
+    q = parse_number_prefix(p_, end_, &value);
+    if (!q || !token_end(q) || !std::isfinite(static_cast<float>(value))) return false;
+    *out = value;
+    p_ = q;
+    return true;
+  }
+
+  // Up to `capacity` numbers to the end of the statement; false on a malformed one (recorded).
+  bool numbers(const char* keyword, double* values, int capacity, int* count) {
+    for (*count = 0;; ++*count) {
+      skip_blanks();
+      if (statement_end()) return true;
+      const char* start = p_;
+      if (*count < capacity && number(&values[*count])) continue;
+      const std::string_view text = token_at(start);
+      double value;
+      const std::string what = std::string(keyword) + ": ";
+      if (*count == capacity) return fail(what + "too many numbers (at most " + std::to_string(capacity) + ")");
+      if (is_non_finite_word(text)) return fail(what + "'" + printable(text) + "' is not a finite number");
+      if (!parse_double(text, &value)) return fail(what + "malformed number '" + printable(text) + "'");
+      return fail(what + "'" + printable(text) + "' is out of the 32-bit float range");
+    }
+  }
+
+  bool vertex() {
+    double values[7];
+    int count;
+    if (!numbers("v", values, 7, &count)) return false;
+    if (count != 3 && count != 4 && count != 6)
+      return fail("v: expected x y z, x y z w or x y z r g b (got " + std::to_string(count) + " numbers)");
+    for (int i = 0; i < 3; ++i) *position_at_++ = static_cast<float>(values[i]);
+    if (count == 6) {
+      // The chunk's first coloured v: the ones before it are white.
+      if (out_->colors.empty()) out_->colors.assign(3 * size_t{positions_so_far() - 1}, 1.0f);
+      for (int i = 3; i < 6; ++i) out_->colors.push_back(static_cast<float>(values[i]));
+    } else if (!out_->colors.empty()) {
+      out_->colors.insert(out_->colors.end(), 3, 1.0f);
+    }
+    return true;
+  }
+
+  bool texcoord() {
+    double values[3];
+    int count;
+    if (!numbers("vt", values, 3, &count)) return false;
+    if (count == 0) return fail("vt: expected u [v [w]] (got no number)");
+    *texcoord_at_++ = static_cast<float>(values[0]);
+    *texcoord_at_++ = count > 1 ? static_cast<float>(values[1]) : 0.0f;
+    return true;
+  }
+
+  bool normal() {
+    double values[3];
+    int count;
+    if (!numbers("vn", values, 3, &count)) return false;
+    if (count != 3) return fail("vn: expected x y z (got " + std::to_string(count) + " numbers)");
+    for (int i = 0; i < 3; ++i) *normal_at_++ = static_cast<float>(values[i]);
+    return true;
+  }
+
+  // [+-]digits at the cursor; false when there are no digits. More than 18 digits: *too_long.
+  bool read_index(int64_t* value, bool* too_long) {
+    const char* q = p_;
+    const bool negative = *q == '-';
+    if (*q == '-' || *q == '+') ++q;
+    const char* digits = q;
+    int64_t n = 0;
+    uint32_t d;
+    for (; digit(*q, &d); ++q)
+      if (q - digits < 18) n = n * 10 + d;
+    if (q == digits) return false;
+    *too_long = q - digits > 18;
+    *value = negative ? -n : n;
+    p_ = q;
+    return true;
+  }
+
+  bool malformed_corner(const char* start) {
+    return fail("f: malformed corner '" + printable(token_at(start)) + "' (expected v, v/vt, v//vn or v/vt/vn)");
+  }
+
+  // One index of a corner (kind 0, 1, 2: v, vt, vn) read from `field`; `count`: the chunk's
+  // elements of its kind so far.
+  bool store_index(int64_t value, bool too_long, const char* field, const char* corner, int kind, uint32_t count) {
+    if (value > 0 && !too_long && value <= kMaxWrittenIndex) {  // the common case
+      out_->max_index[kind] = std::max(out_->max_index[kind], static_cast<uint32_t>(value));
+      *corner_at_++ = static_cast<uint32_t>(value - 1);
+      return true;
+    }
+    static const char* const kKinds[] = {"v", "vt", "vn"};
+    if (too_long || value > kMaxWrittenIndex || value < -kMaxWrittenIndex)
+      return fail("f: index '" + printable({field, static_cast<size_t>(p_ - field)}) + "' is too large");
+    if (value == 0)
+      return fail("f: " + std::string(kKinds[kind]) + " index 0 in '" + printable(token_at(corner)) +
+                  "' (OBJ indices start at 1)");
+    const size_t at = static_cast<size_t>(corner_at_ - out_->corners.data());
+    if (out_->relative_fields.size() <= at / 64) out_->relative_fields.resize(at / 64 + 1 + at / 128, 0);
+    out_->relative_fields[at / 64] |= uint64_t{1} << (at % 64);
+    *corner_at_++ = static_cast<uint32_t>(int64_t{count} + value + 1);
+    return true;
+  }
+
+  // v, v/vt, v//vn or v/vt/vn: each field checked and stored as it is read.
+  bool corner(const uint32_t counts[3]) {
+    const char* start = p_;
+    int64_t value;
+    bool too_long;
+    const char* field = p_;
+    if (!read_index(&value, &too_long) || (*p_ != '/' && !token_end(p_))) return malformed_corner(start);
+    if (!store_index(value, too_long, field, start, 0, counts[0])) return false;
+    if (*p_ != '/') {
+      corner_at_[0] = corner_at_[1] = kNoIndex;
+      corner_at_ += 2;
+      return true;
+    }
+    field = ++p_;
+    if (*p_ == '/') {  // v//vn
+      field = ++p_;
+      if (!read_index(&value, &too_long) || !token_end(p_)) return malformed_corner(start);
+      *corner_at_++ = kNoIndex;
+      return store_index(value, too_long, field, start, 2, counts[2]);
+    }
+    if (!read_index(&value, &too_long) || (*p_ != '/' && !token_end(p_))) return malformed_corner(start);
+    if (!store_index(value, too_long, field, start, 1, counts[1])) return false;
+    if (*p_ != '/') {
+      *corner_at_++ = kNoIndex;
+      return true;
+    }
+    field = ++p_;
+    if (!read_index(&value, &too_long) || !token_end(p_)) return malformed_corner(start);
+    return store_index(value, too_long, field, start, 2, counts[2]);
+  }
+
+  bool face() {
+    const uint32_t counts[3] = {positions_so_far(), texcoords_so_far(), normals_so_far()};
+    uint32_t corners = 0;
+    for (;; ++corners) {
+      skip_blanks();
+      if (statement_end()) break;
+      if (!corner(counts)) return false;
+    }
+    if (corners < 3) return fail("f: needs at least 3 corners (got " + std::to_string(corners) + ")");
+    out_->triangles_by_material[material_] += corners - 2;
+    uint64_t& first = out_->first_face_by_material[material_];
+    if (first == ChunkData::kNoFace) first = out_->faces.size();
+    out_->faces.push_back({corners, static_cast<uint32_t>(line_)});
+    return true;
+  }
+
+  bool use_material() {
+    skip_blanks();
+    std::string name = rest_of_line();
+    if (name.empty()) return fail("usemtl: needs a material name");
+    // A map, not a scan: some exporters write a usemtl before every face, over many materials.
+    auto [it, fresh] = material_index_.emplace(name, static_cast<uint32_t>(out_->material_names.size()));
+    if (fresh) {
+      out_->material_names.push_back(std::move(name));
+      out_->material_name_lines.push_back(line_);
+      out_->triangles_by_material.push_back(0);
+      out_->first_face_by_material.push_back(ChunkData::kNoFace);
+    }
+    material_ = it->second + 1;
+    record_change(StateChange::kMaterial, it->second);
+    return true;
+  }
+
+  bool material_library() {
+    skip_blanks();
+    std::string text = rest_of_line();
+    if (text.empty()) return fail("mtllib: needs a file name");
+    out_->material_libraries.push_back({line_, std::move(text)});
+    return true;
+  }
+
+  bool smoothing() {
+    skip_blanks();
+    const std::string_view token = this->token();
+    int64_t value;
+    uint32_t group;
+    if (token == "off" || token == "Off" || token == "OFF") group = 0;
+    else if (parse_integer(token, &value) && value >= 0 && value <= kMaxWrittenIndex) group = static_cast<uint32_t>(value);
+    else if (token.empty()) return fail("s: needs a group number or off");
+    else return fail("s: '" + printable(token) + "' is not a smoothing group (a number 0 to 2147483647, or off)");
+    record_change(StateChange::kSmoothing, group);
+    return true;
+  }
+
+  void record_change(StateChange::Kind kind, uint32_t value) {
+    const uint32_t face = static_cast<uint32_t>(out_->faces.size());
+    // Two changes of one kind before the same face: the later one is in force.
+    for (auto it = out_->changes.rbegin(); it != out_->changes.rend() && it->first_face == face; ++it)
+      if (it->kind == kind) {
+        it->value = value;
+        return;
+      }
+    out_->changes.push_back({face, kind, value});
+  }
+
+  ChunkData* out_;
+  const char* p_ = nullptr;
+  const char* end_ = nullptr;
+  uint64_t line_ = 0, line_ends_ = 0;  // the statement's line; line ends stepped over (chunk-local)
+  float* position_at_ = nullptr;       // where the next v, vt, vn and corner field go
+  float* texcoord_at_ = nullptr;
+  float* normal_at_ = nullptr;
+  uint32_t* corner_at_ = nullptr;
+  uint32_t material_ = 0;  // the next face's material: 0, or 1 + its index in material_names
+  std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index
+};
+
+}  // namespace
+
+void parse_chunk(std::string_view text, bool first_in_file, ChunkData* out, size_t reserve_bytes) {
+  if (first_in_file && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  out->failed = false;
+  Reader reader(out, std::max(reserve_bytes, text.size()));
+  const size_t tail = unterminated_tail(text);
+  bool ok = reader.read(text.data(), text.data() + tail);
+  if (ok && tail < text.size()) {
+    // The last statement has no line end: read from a copy with one, and one more for the reads
+    // just past a continuation that ends the file.
+    const std::string last = std::string(text.substr(tail)) + "\n\n";
+    reader.read(last.data(), last.data() + last.size() - 1);
+  }
+  reader.finish();
+}
+
+}  // namespace pfx_obj
