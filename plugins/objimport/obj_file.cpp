@@ -81,6 +81,14 @@ bool FileBytes::open(const std::string& path, std::string* error) {
   return true;
 }
 
+void FileBytes::drop_pages(std::string_view range) const {
+  if (!mapping_) return;
+  const uintptr_t page = static_cast<uintptr_t>(::sysconf(_SC_PAGESIZE));
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(range.data()) + page - 1) / page * page;
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(range.data()) + range.size()) / page * page;
+  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+}
+
 bool read_small_file(const std::string& path, std::string* out, std::string* error) {
   Descriptor file{-1};
   struct stat info {};

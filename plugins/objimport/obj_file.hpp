@@ -17,6 +17,10 @@ class FileBytes {
   // False with *error = "PATH: reason" (no such file, a folder, unreadable, ...).
   bool open(const std::string& path, std::string* error);
   std::string_view bytes() const { return {data_, size_}; }
+  // Drops the mapped pages wholly inside `range`, a part of bytes() already read, from this
+  // process's page tables (a later read maps them again from the page cache), so that a large
+  // file does not count whole towards the import's resident memory. Nothing for a copy.
+  void drop_pages(std::string_view range) const;
 
  private:
   const char* data_ = "";

@@ -77,9 +77,11 @@ uint64_t room_for(uint64_t most, size_t element_bytes, uint64_t so_far, uint64_t
 
 class Importer {
  public:
-  Importer(const std::string& name, const std::string& directory, const ImportOptions& options, ObjMesh* out)
+  // file: where the text is a file's mapping, whose pages each chunk drops once read.
+  Importer(const std::string& name, const std::string& directory, const ImportOptions& options,
+           const FileBytes* file, ObjMesh* out)
       : name_(name), directory_(directory), options_(options), threads_(worker_count(options.pool, options.threads)),
-        out_(out) {}
+        file_(file), out_(out) {}
 
   bool run(std::string_view text, std::string* error) {
     report(0.0f);
@@ -149,6 +151,7 @@ class Importer {
       chunks_[c].corners.swap(slots[c % window].corners);
       chunks_[c].faces.swap(slots[c % window].faces);
       parse_chunk(texts_[c], c == 0, &chunks_[c], largest);
+      if (file_) file_->drop_pages(texts_[c]);
     };
     auto number = [&](size_t c) {
       if (!number_chunk(c, text.size(), error)) return false;
@@ -513,6 +516,7 @@ class Importer {
   const std::string& directory_;
   const ImportOptions& options_;
   const unsigned threads_;
+  const FileBytes* file_;
   ObjMesh* out_;
   std::vector<std::string_view> texts_;
   std::vector<ChunkData> chunks_;
@@ -531,11 +535,11 @@ class Importer {
 };
 
 bool import_text(std::string_view text, const std::string& name, const std::string& directory,
-                 const ImportOptions& options, ObjMesh* out, std::string* error) {
+                 const ImportOptions& options, const FileBytes* file, ObjMesh* out, std::string* error) {
   *out = ObjMesh{};
   error->clear();
   try {
-    if (Importer(name, directory, options, out).run(text, error)) return true;
+    if (Importer(name, directory, options, file, out).run(text, error)) return true;
   } catch (const std::bad_alloc&) {
     *error = name + ": out of memory";
   } catch (const std::exception& e) {
@@ -549,14 +553,14 @@ bool import_text(std::string_view text, const std::string& name, const std::stri
 
 bool import_obj_text(std::string_view text, const std::string& name, const std::string& directory,
                      const ImportOptions& options, ObjMesh* out, std::string* error) {
-  return import_text(text, name, directory, options, out, error);
+  return import_text(text, name, directory, options, nullptr, out, error);
 }
 
 bool import_obj_file(const std::string& path, const ImportOptions& options, ObjMesh* out, std::string* error) {
   FileBytes file;
   if (!file.open(path, error)) return false;
   const std::string directory = std::filesystem::path(path).parent_path().string();
-  return import_text(file.bytes(), path, directory.empty() ? "." : directory, options, out, error);
+  return import_text(file.bytes(), path, directory.empty() ? "." : directory, options, &file, out, error);
 }
 
 }  // namespace pfx_obj

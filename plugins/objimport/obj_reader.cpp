@@ -190,13 +190,15 @@ class Reader {
     const char* q = p_;
     const bool negative = *q == '-';
     if (*q == '-' || *q == '+') ++q;
-    uint64_t mantissa = 0;
+    uint64_t mantissa = 0;  // wraps past 19 digits, when it is not used
     uint32_t d;
-    int digits = 0, fraction = 0;
-    for (; digits < 19 && digit(*q, &d); ++q, ++digits) mantissa = mantissa * 10 + d;
+    const char* first = q;
+    for (; digit(*q, &d); ++q) mantissa = mantissa * 10 + d;
+    const char* point = q;
     if (*q == '.')
-      for (++q; digits < 19 && digit(*q, &d); ++q, ++digits, ++fraction) mantissa = mantissa * 10 + d;
-    if (digits > 0 && token_end(q) && mantissa < (uint64_t{1} << 53)) {
+      for (++q; digit(*q, &d); ++q) mantissa = mantissa * 10 + d;
+    const long fraction = *point == '.' ? q - point - 1 : 0, digits = (q - first) - (*point == '.');
+    if (digits > 0 && digits < 20 && token_end(q) && mantissa < (uint64_t{1} << 53)) {
       const double value = static_cast<double>(mantissa) / kExactPowersOf10[fraction];
       *out = negative ? -value : value;
       p_ = q;
@@ -217,14 +219,19 @@ class Reader {
       if (statement_end()) return true;
       const char* start = p_;
       if (*count < capacity && number(&values[*count])) continue;
-      const std::string_view text = token_at(start);
-      double value;
-      const std::string what = std::string(keyword) + ": ";
-      if (*count == capacity) return fail(what + "too many numbers (at most " + std::to_string(capacity) + ")");
-      if (is_non_finite_word(text)) return fail(what + "'" + printable(text) + "' is not a finite number");
-      if (!parse_double(text, &value)) return fail(what + "malformed number '" + printable(text) + "'");
-      return fail(what + "'" + printable(text) + "' is out of the 32-bit float range");
+      return bad_number(keyword, start, *count == capacity ? capacity : -1);
     }
+  }
+
+  // The message for the token at start that is not a number (or one too many: capacity >= 0).
+  [[gnu::cold, gnu::noinline]] bool bad_number(const char* keyword, const char* start, int capacity) {
+    const std::string_view text = token_at(start);
+    const std::string what = std::string(keyword) + ": ";
+    double value;
+    if (capacity >= 0) return fail(what + "too many numbers (at most " + std::to_string(capacity) + ")");
+    if (is_non_finite_word(text)) return fail(what + "'" + printable(text) + "' is not a finite number");
+    if (!parse_double(text, &value)) return fail(what + "malformed number '" + printable(text) + "'");
+    return fail(what + "'" + printable(text) + "' is out of the 32-bit float range");
   }
 
   bool vertex() {
@@ -269,29 +276,35 @@ class Reader {
     const bool negative = *q == '-';
     if (*q == '-' || *q == '+') ++q;
     const char* digits = q;
-    int64_t n = 0;
+    uint64_t n = 0;  // wraps past 19 digits, when it is not used
     uint32_t d;
-    for (; digit(*q, &d); ++q)
-      if (q - digits < 18) n = n * 10 + d;
+    for (; digit(*q, &d); ++q) n = n * 10 + d;
     if (q == digits) return false;
     *too_long = q - digits > 18;
-    *value = negative ? -n : n;
+    *value = negative ? -static_cast<int64_t>(n) : static_cast<int64_t>(n);
     p_ = q;
     return true;
   }
 
-  bool malformed_corner(const char* start) {
+  [[gnu::cold, gnu::noinline]] bool malformed_corner(const char* start) {
     return fail("f: malformed corner '" + printable(token_at(start)) + "' (expected v, v/vt, v//vn or v/vt/vn)");
   }
 
   // One index of a corner (kind 0, 1, 2: v, vt, vn) read from `field`; `count`: the chunk's
   // elements of its kind so far.
-  bool store_index(int64_t value, bool too_long, const char* field, const char* corner, int kind, uint32_t count) {
+  bool store_index(int64_t value, bool too_long, const char* field, const char* corner, int kind, uint32_t count,
+                   uint32_t* max_index) {
     if (value > 0 && !too_long && value <= kMaxWrittenIndex) {  // the common case
-      out_->max_index[kind] = std::max(out_->max_index[kind], static_cast<uint32_t>(value));
+      max_index[kind] = std::max(max_index[kind], static_cast<uint32_t>(value));
       *corner_at_++ = static_cast<uint32_t>(value - 1);
       return true;
     }
+    return other_index(value, too_long, field, corner, kind, count);
+  }
+
+  // A relative index stored (see ChunkData::corners), or the message for a bad one.
+  [[gnu::noinline]] bool other_index(int64_t value, bool too_long, const char* field, const char* corner, int kind,
+                                     uint32_t count) {
     static const char* const kKinds[] = {"v", "vt", "vn"};
     if (too_long || value > kMaxWrittenIndex || value < -kMaxWrittenIndex)
       return fail("f: index '" + printable({field, static_cast<size_t>(p_ - field)}) + "' is too large");
@@ -305,14 +318,15 @@ class Reader {
     return true;
   }
 
-  // v, v/vt, v//vn or v/vt/vn: each field checked and stored as it is read.
-  bool corner(const uint32_t counts[3]) {
+  // v, v/vt, v//vn or v/vt/vn: each field checked and stored as it is read. max_index: the face's
+  // own copy of the chunk's (a local: stores of corners cannot change it, so it stays in registers).
+  bool corner(const uint32_t counts[3], uint32_t* max_index) {
     const char* start = p_;
     int64_t value;
     bool too_long;
     const char* field = p_;
     if (!read_index(&value, &too_long) || (*p_ != '/' && !token_end(p_))) return malformed_corner(start);
-    if (!store_index(value, too_long, field, start, 0, counts[0])) return false;
+    if (!store_index(value, too_long, field, start, 0, counts[0], max_index)) return false;
     if (*p_ != '/') {
       corner_at_[0] = corner_at_[1] = kNoIndex;
       corner_at_ += 2;
@@ -323,27 +337,28 @@ class Reader {
       field = ++p_;
       if (!read_index(&value, &too_long) || !token_end(p_)) return malformed_corner(start);
       *corner_at_++ = kNoIndex;
-      return store_index(value, too_long, field, start, 2, counts[2]);
+      return store_index(value, too_long, field, start, 2, counts[2], max_index);
     }
     if (!read_index(&value, &too_long) || (*p_ != '/' && !token_end(p_))) return malformed_corner(start);
-    if (!store_index(value, too_long, field, start, 1, counts[1])) return false;
+    if (!store_index(value, too_long, field, start, 1, counts[1], max_index)) return false;
     if (*p_ != '/') {
       *corner_at_++ = kNoIndex;
       return true;
     }
     field = ++p_;
     if (!read_index(&value, &too_long) || !token_end(p_)) return malformed_corner(start);
-    return store_index(value, too_long, field, start, 2, counts[2]);
+    return store_index(value, too_long, field, start, 2, counts[2], max_index);
   }
 
   bool face() {
     const uint32_t counts[3] = {positions_so_far(), texcoords_so_far(), normals_so_far()};
-    uint32_t corners = 0;
+    uint32_t corners = 0, max_index[3] = {out_->max_index[0], out_->max_index[1], out_->max_index[2]};
     for (;; ++corners) {
       skip_blanks();
       if (statement_end()) break;
-      if (!corner(counts)) return false;
+      if (!corner(counts, max_index)) return false;
     }
+    std::copy(max_index, max_index + 3, out_->max_index);
     if (corners < 3) return fail("f: needs at least 3 corners (got " + std::to_string(corners) + ")");
     out_->triangles_by_material[material_] += corners - 2;
     uint64_t& first = out_->first_face_by_material[material_];

@@ -1,5 +1,6 @@
 #include "obj_triangulate.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pfx_obj {
@@ -19,14 +20,11 @@ void fan(uint32_t first, const std::vector<uint32_t>& next, uint32_t remaining, 
 
 Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::vector<uint32_t>* triangles,
                                   TriangulationScratch* s) {
-  s->previous.resize(n);
-  s->next.resize(n);
-  for (uint32_t i = 0; i < n; ++i) {
-    s->previous[i] = (i + n - 1) % n;
-    s->next[i] = (i + 1) % n;
-  }
+  auto fan_from_first = [&] {
+    for (uint32_t k = 1; k + 1 < n; ++k) triangles->insert(triangles->end(), {0, k, k + 1});
+  };
   if (n > kMaxEarClipCorners) {
-    fan(0, s->next, n, triangles);
+    fan_from_first();
     return Triangulation::kFanTooLarge;
   }
   // Newell's normal: robust for non-planar and concave polygons; its largest component says
@@ -40,8 +38,8 @@ Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::
     normal[1] += (double(a[2]) - b[2]) * (double(a[0]) + b[0]);
     normal[2] += (double(a[0]) - b[0]) * (double(a[1]) + b[1]);
     for (int k = 0; k < 3; ++k) {
-      lo[k] = std::fmin(lo[k], a[k]);
-      hi[k] = std::fmax(hi[k], a[k]);
+      lo[k] = std::min(lo[k], double(a[k]));  // as fmin and fmax: a NaN is passed over
+      hi[k] = std::max(hi[k], double(a[k]));
     }
   }
   int drop = 2;
@@ -53,7 +51,7 @@ Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::
   // Twice the projected area equals the dropped normal component; relative to the size squared it
   // says whether the polygon has any area at all.
   if (!(std::fabs(normal[drop]) > 1e-12 * extent2)) {
-    fan(0, s->next, n, triangles);
+    fan_from_first();
     return Triangulation::kFanDegenerate;
   }
   s->xy.resize(2 * size_t{n});
@@ -75,6 +73,17 @@ Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::
                           (xy[2 * b + 1] - xy[2 * a + 1]) * (xy[2 * c] - xy[2 * a]));
   };
   auto same_point = [&](uint32_t a, uint32_t b) { return xy[2 * a] == xy[2 * b] && xy[2 * a + 1] == xy[2 * b + 1]; };
+  // A convex quadrilateral, as most quads are, without the walk: the triangles it would clip.
+  if (n == 4 && turn(3, 0, 1) > 0 && turn(0, 1, 2) > 0 && turn(1, 2, 3) > 0 && turn(2, 3, 0) > 0) {
+    triangles->insert(triangles->end(), {3, 0, 1, 3, 1, 2});
+    return Triangulation::kEarClipped;
+  }
+  s->previous.resize(n);
+  s->next.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    s->previous[i] = (i + n - 1) % n;
+    s->next[i] = (i + 1) % n;
+  }
   s->reflex.resize(n);
   for (uint32_t i = 0; i < n; ++i) s->reflex[i] = !(turn(s->previous[i], i, s->next[i]) > 0);
 
