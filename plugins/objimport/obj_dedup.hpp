@@ -7,7 +7,7 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
+#include <unordered_map>
 
 #include "obj_buffer.hpp"
 #include "obj_chunk.hpp"
@@ -27,7 +27,13 @@ struct VertexKey {
   bool operator==(const VertexKey& o) const { return v == o.v && vt == o.vt && vn == o.vn && group == o.group; }
 };
 
-class VertexTable;
+struct VertexKeyHash {
+  size_t operator()(const VertexKey& k) const {
+    const uint64_t a = (uint64_t{k.v} | uint64_t{k.vt} << 32) * 0x9E3779B97F4A7C15ull;
+    const uint64_t b = (uint64_t{k.vn} | uint64_t{k.group} << 32) * 0xC2B2AE3D27D4EB4Full;
+    return static_cast<size_t>(a ^ (b >> 29) ^ (b << 35));
+  }
+};
 
 // Distinct keys numbered in order of first insertion. Variants of one position (different vt, vn
 // or normal group) are chained from a table indexed by the position itself, so a lookup reads one
@@ -36,9 +42,6 @@ class VertexTable;
 // sends the rest to a hash table, so no lookup walks far.
 class VertexNumbering {
  public:
-  VertexNumbering();
-  ~VertexNumbering();
-
   uint32_t find_or_insert(const VertexKey& key) {
     uint32_t last = kNoIndex, length = 0;
     for (uint32_t id = head_[key.v]; id != kNoIndex; id = next_[id]) {
@@ -63,12 +66,15 @@ class VertexNumbering {
  private:
   static constexpr uint32_t kMaxChain = 8;
   uint32_t add(const VertexKey& key);
-  uint32_t find_or_insert_overflow(const VertexKey& key);
+  uint32_t find_or_insert_overflow(const VertexKey& key) {
+    const auto [it, fresh] = overflow_.emplace(key, static_cast<uint32_t>(keys_.size()));
+    return fresh ? add(key) : it->second;
+  }
 
   BigVector<uint32_t> head_;   // per position: its first variant, or kNoIndex
   BigVector<uint32_t> next_;   // per vertex: the next variant of its position
   BigVector<VertexKey> keys_;  // in order of first insertion
-  std::unique_ptr<VertexTable> overflow_;
+  std::unordered_map<VertexKey, uint32_t, VertexKeyHash> overflow_;
 };
 
 }  // namespace pfx_obj

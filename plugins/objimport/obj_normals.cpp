@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "obj_parallel.hpp"
-#include "obj_vertex_table.hpp"
 
 namespace pfx_obj {
 
@@ -59,19 +59,14 @@ void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& 
   // Vertices that differ only by texture coordinate (a UV seam) share a position and smoothing
   // group, so they must share one normal: add their sums, in vertex order.
   if (with_texcoords) {
-    VertexTable table(count / 2);
+    std::unordered_map<VertexKey, uint32_t, VertexKeyHash> first_of;  // its first vertex
     std::vector<uint32_t> representative(count, kNoIndex);
-    std::vector<uint32_t> first_of;
     for (size_t i = 0; i < count; ++i) {
       if (!generated[i]) continue;
-      const VertexKey key{keys[i].v, kNoIndex, kNoIndex, keys[i].group};
-      bool inserted;
-      uint32_t slot = table.find_or_insert(key, hash_key(key), static_cast<uint32_t>(first_of.size()), &inserted);
-      if (inserted) first_of.push_back(static_cast<uint32_t>(i));
-      const uint32_t first = first_of[slot];
-      representative[i] = first;
-      if (first != i)
-        for (int k = 0; k < 3; ++k) n[3 * size_t{first} + k] += n[3 * i + k];
+      const auto [it, fresh] = first_of.emplace(VertexKey{keys[i].v, kNoIndex, kNoIndex, keys[i].group}, uint32_t(i));
+      representative[i] = it->second;
+      if (!fresh)
+        for (int k = 0; k < 3; ++k) n[3 * size_t{it->second} + k] += n[3 * i + k];
     }
     for (size_t i = 0; i < count; ++i)
       if (generated[i] && representative[i] != i)

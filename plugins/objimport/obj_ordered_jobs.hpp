@@ -1,20 +1,11 @@
-// Two jobs per item on a few workers: the first for any item on any worker at once (parsing a
-// chunk), the second strictly in item order, one at a time, each after the item's first job
-// (numbering the chunk's corners against one numbering for the whole file). A worker takes the
-// next in-order job whenever it is ready — it is the one that holds up the rest — and otherwise
-// the next first job, so one worker numbers while the others parse ahead. At most `window` items
-// are between their first job's start and their in-order job's end, and those are consecutive, so
-// item % window names a slot of working memory no other item in flight uses.
-//
-// The workers are tasks of one pool run (obj_parallel.hpp), which the pool may run one after
-// another on one thread. So a worker waits only for a job another worker is in the middle of,
-// never for a worker to start: when no job is running, the next in-order job is ready (its first
-// job has finished) or the next first job is (the window has room), and a worker that finds
-// neither while no job runs would be a fault in this file, reported as one rather than waited on.
-// On one thread the first worker runs first(0), in_order(0), first(1), ... and the others find
-// nothing left.
-// An in-order job returning false stops the run: no job starts after it. An exception in any job
-// stops the run too, and is rethrown on the calling thread once every worker has stopped.
+// Two jobs per item on a few workers: the first for any item on any worker at once (reading a
+// chunk), the second strictly in item order, one at a time, after the item's first (numbering its
+// corners). A worker takes the next in-order job whenever it is ready, else the next first job. At
+// most `window` consecutive items are between their first job's start and their in-order job's
+// end, so item % window names working memory no other item in flight uses. The workers are tasks of
+// one pool run, which the pool may run one after another: a worker waits only for a job another is
+// in the middle of. An in-order job returning false, or an exception (rethrown on the caller once
+// every worker stopped), stops the run.
 #pragma once
 
 #include <condition_variable>
