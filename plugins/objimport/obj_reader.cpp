@@ -149,6 +149,13 @@ class Reader {
       skip_statement();
       return true;
     }
+    // The statements of nearly every line of a large file, before a token is cut.
+    if ((p_[0] == 'v' || p_[0] == 'f') && is_blank(p_[1])) {
+      ++p_;
+      if (!(p_[-1] == 'v' ? vertex() : face())) return false;
+      skip_statement();
+      return true;
+    }
     const std::string_view keyword = token();
     bool ok = true;
     if (keyword == "v") ok = vertex();
@@ -197,9 +204,21 @@ class Reader {
     const char* point = q;
     if (*q == '.')
       for (++q; digit(*q, &d); ++q) mantissa = mantissa * 10 + d;
-    const long fraction = *point == '.' ? q - point - 1 : 0, digits = (q - first) - (*point == '.');
-    if (digits > 0 && digits < 20 && token_end(q) && mantissa < (uint64_t{1} << 53)) {
-      const double value = static_cast<double>(mantissa) / kExactPowersOf10[fraction];
+    const long digits = (q - first) - (*point == '.');
+    long exponent = *point == '.' ? point + 1 - q : 0;
+    if ((*q == 'e' || *q == 'E') && digits > 0) {
+      const char* e = q + 1;
+      const bool below = *e == '-';
+      if (*e == '-' || *e == '+') ++e;
+      long written = 0;
+      for (const char* start = e; digit(*e, &d) && e - start < 4; ++e) written = written * 10 + d;
+      if (e > q + 1 + (below || q[1] == '+')) q = e, exponent += below ? -written : written;
+    }
+    // Clinger's fast path: both factors exact, so one correctly rounded operation.
+    if (digits > 0 && digits < 20 && token_end(q) && mantissa < (uint64_t{1} << 53) && exponent >= -22 &&
+        exponent <= 22) {
+      const double value = exponent < 0 ? static_cast<double>(mantissa) / kExactPowersOf10[-exponent]
+                                        : static_cast<double>(mantissa) * kExactPowersOf10[exponent];
       *out = negative ? -value : value;
       p_ = q;
       return true;
