@@ -300,7 +300,7 @@ class Reader {
     for (; digit(*q, &d); ++q) n = n * 10 + d;
     if (q == digits) return false;
     *too_long = q - digits > 18;
-    *value = negative ? -static_cast<int64_t>(n) : static_cast<int64_t>(n);
+    *value = *too_long ? 0 : negative ? -static_cast<int64_t>(n) : static_cast<int64_t>(n);
     p_ = q;
     return true;
   }
