@@ -1,5 +1,5 @@
 // One chunk of an OBJ file, read on its own (obj_reader.cpp). The file is cut into chunks at line
-// ends (obj_split.hpp) which are read in parallel; a chunk cannot know what came before it, so what
+// ends which are read in parallel; a chunk cannot know what came before it, so what
 // depends on earlier text is kept in a form the in-order merge (obj_import.cpp) can finish: relative
 // indices, the material and smoothing changes, and lines counted from the chunk's first line.
 #pragma once
@@ -87,6 +87,10 @@ struct ChunkData {
 };
 
 constexpr size_t kMaxKeptWarnings = 100;
+
+// The text cut into about `count` chunks of similar size (fewer when it has fewer line ends), each
+// cut right after a line end that does not continue its line, so no statement is split.
+std::vector<std::string_view> split_at_line_ends(std::string_view text, size_t count);
 
 // Reads the chunk's text into *out. `first_in_file` lets a UTF-8 byte-order mark be skipped. The
 // arrays are sized for the most `reserve_bytes` (at least the text's size) could hold, so chunks

@@ -55,10 +55,16 @@ class VertexNumbering {
     return id;
   }
 
-  // Keys with v below position_count may be numbered from now on, and key_count keys in all. An
-  // array that must grow for that grows to the room given, or at least twice its size, so that it
-  // is seldom copied (and with room for the most the file could need, never).
-  void grow(uint32_t position_count, uint64_t position_room, uint64_t key_count, uint64_t key_room);
+  // Room for that many keys and positions, reserved before the first insertion.
+  void reserve(uint64_t keys, uint64_t positions) {
+    keys_.reserve(keys);
+    next_.reserve(keys);
+    head_.reserve(positions);
+  }
+  // Keys with v below position_count may be numbered from now on.
+  void cover(uint32_t position_count) {
+    if (position_count > head_.size()) head_.resize(position_count, kNoIndex);
+  }
 
   // The distinct keys, in order of first insertion.
   BigVector<VertexKey>& keys() { return keys_; }

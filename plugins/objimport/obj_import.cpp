@@ -1,11 +1,11 @@
 // The OBJ importer, top to bottom. An import runs these stages in order (Importer::run):
 //
-//   1. cut      the text into chunks at line ends (obj_split.cpp), a few per thread
+//   1. cut      the text into chunks at line ends (obj_reader.cpp), a few per thread
 //   2. read     each chunk on any worker (obj_reader.cpp: the grammar, into obj_chunk.hpp's data),
 //      number  and, in file order as soon as it and every chunk before it are read, its corners
 //               numbered against one vertex numbering for the whole file (obj_dedup.hpp): relative
 //               indices made final, one vertex number per corner in file order. The workers read
-//               later chunks while one numbers (obj_ordered_jobs.hpp), so the numbers never
+//               later chunks while one numbers (obj_parallel.hpp), so the numbers never
 //               depend on the thread count.
 //   3. check    indices against the file's totals, and material libraries read (obj_mtl.cpp)
 //   4. index    sub-meshes in order of their material's first use; each chunk's triangles
@@ -34,9 +34,7 @@
 #include "obj_dedup.hpp"
 #include "obj_file.hpp"
 #include "obj_normals.hpp"
-#include "obj_ordered_jobs.hpp"
 #include "obj_parallel.hpp"
-#include "obj_split.hpp"
 #include "obj_triangulate.hpp"
 
 namespace pfx_obj {
@@ -63,16 +61,12 @@ std::vector<std::string> material_library_names(const std::string& directory, co
   return names;
 }
 
-// Room for an array that grows as chunks are numbered: for the most elements the rest of the text
-// could make (address space only: never copied) unless that is more than an eighth of the machine's
-// memory (the kernel refuses a mapping much larger than memory); then the same per byte as the text
-// so far, and an eighth more.
-uint64_t room_for(uint64_t most, size_t element_bytes, uint64_t so_far, uint64_t bytes_read, uint64_t text_bytes) {
+// Room for `most` elements when that is at most an eighth of the machine's memory (address space
+// only, never copied: the kernel refuses mappings much larger than memory), else none: the array
+// then doubles as it grows.
+uint64_t room_for(uint64_t most, size_t element_bytes) {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
-  const uint64_t memory = pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
-  if (most * element_bytes <= memory / 8) return most;
-  const double per_byte = bytes_read > 0 ? static_cast<double>(so_far) / static_cast<double>(bytes_read) : 0.0;
-  return static_cast<uint64_t>(per_byte * static_cast<double>(text_bytes) * 1.125) + 1024;
+  return pages > 0 && page > 0 && most * element_bytes <= uint64_t(pages) * uint64_t(page) / 8 ? most : 0;
 }
 
 class Importer {
@@ -192,24 +186,19 @@ class Importer {
     if (next.corner > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
     collect_statements(c);
 
-    // An index past what the rest of the text could still define cannot be satisfied: the chunk is
-    // left for check_indices to report (a position index sizes an array below).
-    const uint64_t bytes_read = (texts_[c].data() - texts_[0].data()) + texts_[c].size();
-    const uint64_t bytes_left = text_bytes - bytes_read;
-    const uint64_t positions_at_most = next.bases[0] + bytes_left / 8 + 1;
-    start.suspect |= chunk.max_index[0] > positions_at_most;
-    if (!start.suspect && !make_relative_final(c)) start.suspect = true;
-    bool number_ok = !start.suspect && !any_suspect_;
+    // An index past what the rest of the text could still define cannot be satisfied: from the
+    // chunk that may hold one, none is numbered and check_indices finds it. (A position index
+    // sizes an array here.)
+    const uint64_t bytes_left = text_bytes - static_cast<uint64_t>(texts_[c].data() + texts_[c].size() - texts_[0].data());
+    start.suspect |= chunk.max_index[0] > next.bases[0] + bytes_left / 8 + 1 || !make_relative_final(c);
     any_suspect_ |= start.suspect;
-    if (number_ok) {
-      if (next.corner > ids_.capacity())
-        ids_.reserve(std::max({next.corner, room_for(next.corner + bytes_left / 2 + 1, 4, next.corner, bytes_read, text_bytes),
-                               2 * uint64_t{ids_.capacity()}}));
+    if (!any_suspect_) {
+      if (c == 0) {  // for the most corners ("1 ") and positions ("v 0 0 0") the text can hold
+        ids_.reserve(room_for(text_bytes / 2 + 1, sizeof(uint32_t)));
+        numbering_.reserve(room_for(text_bytes / 2 + 1, sizeof(VertexKey) + 4), room_for(text_bytes / 8 + 1, 4));
+      }
       ids_.resize(next.corner);
-      const uint32_t positions = std::max(next.bases[0], chunk.max_index[0]);
-      const uint64_t keys = numbering_.keys().size() + corners;
-      numbering_.grow(positions, room_for(positions_at_most, 4, positions, bytes_read, text_bytes), keys,
-                      room_for(keys + bytes_left / 2 + 1, sizeof(VertexKey) + 4, keys, bytes_read, text_bytes));
+      numbering_.cover(std::max(next.bases[0], chunk.max_index[0]));
       number_corners(c, ids_.data() + start.corner);
     }
     uint64_t triangles = 0;
@@ -296,15 +285,11 @@ class Importer {
           if (!relative && chunk.corners[field] == kNoIndex) continue;
           const int64_t one_based = relative ? int64_t{starts_[c].bases[kind]} + static_cast<int32_t>(chunk.corners[field])
                                              : int64_t{chunk.corners[field]} + 1;
-          const std::string k = kind == 0 ? "v" : kind == 1 ? "vt" : "vn";
-          std::string why;
-          if (one_based < 1) why = "relative " + k + " index reaches before the first " + k;
-          else if (one_based > totals[kind] && totals[kind] == 0)
-            why = k + " index " + std::to_string(one_based) + " but the file has no " + k;
-          else if (one_based > totals[kind])
-            why = k + " index " + std::to_string(one_based) + " is out of range (the file has " +
-                  std::to_string(totals[kind]) + " " + k + ")";
-          if (why.empty()) continue;
+          if (one_based >= 1 && one_based <= totals[kind]) continue;
+          const std::string k = kind == 0 ? "v" : kind == 1 ? "vt" : "vn", n = std::to_string(one_based);
+          const std::string why = one_based < 1 ? "relative " + k + " index reaches before the first " + k
+                                  : totals[kind] == 0 ? k + " index " + n + " but the file has no " + k
+                                  : k + " index " + n + " is out of range (the file has " + std::to_string(totals[kind]) + " " + k + ")";
           *error = at(starts_[c].line + face.line, "f: " + why);
           return false;
         }
@@ -521,7 +506,7 @@ class Importer {
   std::vector<std::string_view> texts_;
   std::vector<ChunkData> chunks_;
   std::vector<ChunkStart> starts_;  // per chunk, and one past the last: the file's totals
-  bool any_suspect_ = false;        // from the first chunk that may hold a bad index, none is numbered
+  bool any_suspect_ = false;
   VertexNumbering numbering_;
   BigVector<uint32_t> ids_;  // every corner's vertex number, in file order
   std::vector<Located> names_;   // usemtl names in order of first use, at that line

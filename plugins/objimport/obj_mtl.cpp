@@ -20,7 +20,7 @@ class MtlParser {
     if (cursor_.end - cursor_.p >= 3 && static_cast<unsigned char>(cursor_.p[0]) == 0xEF &&
         static_cast<unsigned char>(cursor_.p[1]) == 0xBB && static_cast<unsigned char>(cursor_.p[2]) == 0xBF)
       cursor_.p += 3;
-    while (!cursor_.at_end()) {
+    while (cursor_.p < cursor_.end) {
       line_ = cursor_.line_ends + 1;
       statement();
       cursor_.skip_statement();
@@ -168,7 +168,7 @@ class MtlParser {
     return path;
   }
 
-  Cursor cursor_;
+  LineCursor cursor_;
   const std::string& file_name_;
   const std::string& directory_;
   std::vector<Material>* materials_;
@@ -182,7 +182,9 @@ class MtlParser {
 
 void parse_mtl(std::string_view text, const std::string& file_name, const std::string& directory,
                std::vector<Material>* materials, std::vector<std::string>* warnings) {
-  MtlParser(text, file_name, directory, materials, warnings).run();
+  // Read from a copy that ends with a line end, and one more byte (LineCursor).
+  const std::string copy = std::string(text) + "\n\n";
+  MtlParser({copy.data(), copy.size() - 1}, file_name, directory, materials, warnings).run();
 }
 
 std::string resolve_path(const std::string& directory, std::string path) {

@@ -35,7 +35,7 @@ void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& 
 
   // Each worker owns a range of vertices and adds every triangle's normal to the ones it owns, in
   // index order: no two workers write one vertex, and the order of each sum is fixed.
-  run_on_each_worker(pool, workers, [&](unsigned w) {
+  run_workers(pool, workers, [&](unsigned w) {
     const uint64_t lo = count * w / workers, hi = count * (w + 1) / workers;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
       const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];

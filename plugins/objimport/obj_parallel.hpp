@@ -1,73 +1,120 @@
 // Running jobs on the host's thread pool (pfx/services.h): the importer starts no thread of its own
 // and leaves every thread's affinity, priority and signal mask alone — the host decides those.
 // Without a pool, or with one worker, the jobs run in order on the calling thread. An exception in
-// any job is rethrown on the calling thread once every worker has stopped.
+// any job stops the run and is rethrown on the calling thread once every worker has stopped.
 #pragma once
 
-#include <atomic>
+#include <algorithm>
+#include <condition_variable>
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include <pfx/services.h>
 
 namespace pfx_obj {
 
-// Calls job(index, worker) once for every index in [0, count), on at most `threads` workers at
-// once: each worker is one task of a pool run and takes indices in increasing order until none is
-// left, so no task waits for another. `worker` (0 to threads - 1) names scratch memory of the
-// worker's own; one worker index never runs twice at once. `after_own_job` (optional) runs on the
-// calling thread after each job it finished there, for progress reports.
-inline void run_parallel(const pfx_thread_pool* pool, unsigned threads, size_t count,
-                         const std::function<void(size_t, unsigned)>& job,
-                         const std::function<void()>& after_own_job = nullptr) {
-  if (threads < 1) threads = 1;
-  if (threads > count) threads = static_cast<unsigned>(count > 0 ? count : 1);
-  if (!pool || threads == 1) {
-    for (size_t index = 0; index < count; ++index) {
-      job(index, 0);
-      if (after_own_job) after_own_job();
-    }
+// Calls work(worker) once for each of `threads` workers: the tasks of one pool run, which the pool
+// may run one after another, or in turn on the calling thread.
+inline void run_workers(const pfx_thread_pool* pool, unsigned threads, const std::function<void(unsigned)>& work) {
+  if (!pool || threads <= 1) {
+    for (unsigned worker = 0; worker < std::max(1u, threads); ++worker) work(worker);
     return;
   }
   struct Run {
-    Run(const std::function<void(size_t, unsigned)>& job, const std::function<void()>& after_own_job, size_t count)
-        : job(job), after_own_job(after_own_job), count(count) {}
-    const std::function<void(size_t, unsigned)>& job;
-    const std::function<void()>& after_own_job;
-    size_t count;
-    std::thread::id caller = std::this_thread::get_id();
-    std::atomic<size_t> next{0};
-    std::atomic<bool> stop{false};
+    const std::function<void(unsigned)>& work;
     std::exception_ptr failure;
-    std::mutex failure_mutex;
-  } run(job, after_own_job, count);
-  auto work = [](void* user, uint32_t worker) {
+    std::mutex mutex;
+  } run{work, nullptr, {}};
+  auto task = [](void* user, uint32_t worker) {
     Run& r = *static_cast<Run*>(user);
-    const bool on_caller = std::this_thread::get_id() == r.caller;
-    for (;;) {
-      const size_t index = r.next.fetch_add(1);
-      if (index >= r.count || r.stop.load()) return;
-      try {
-        r.job(index, worker);
-        if (on_caller && r.after_own_job) r.after_own_job();
-      } catch (...) {  // a pool task must not throw: the caller rethrows it
-        std::lock_guard<std::mutex> lock(r.failure_mutex);
-        if (!r.failure) r.failure = std::current_exception();
-        r.stop = true;
-        return;
-      }
+    try {
+      r.work(worker);
+    } catch (...) {  // a pool task must not throw: the caller rethrows it
+      std::lock_guard<std::mutex> lock(r.mutex);
+      if (!r.failure) r.failure = std::current_exception();
     }
   };
-  pool->run(pool->pool_data, work, &run, threads, threads);
+  pool->run(pool->pool_data, task, &run, threads, threads);
   if (run.failure) std::rethrow_exception(run.failure);
 }
 
-// Calls part(worker) once for each of `threads` workers: for work split by ownership (each
-// worker handles the items it owns) rather than by job.
-inline void run_on_each_worker(const pfx_thread_pool* pool, unsigned threads, const std::function<void(unsigned)>& part) {
-  run_parallel(pool, threads, threads, [&](size_t index, unsigned) { part(static_cast<unsigned>(index)); });
+// Two jobs per item on a few workers: the first for any item on any worker at once (reading a
+// chunk), the second strictly in item order, one at a time, after the item's first (numbering its
+// corners); `in_order` null: none. A worker takes the next in-order job whenever it is ready, else
+// the next first job. At most `window` consecutive items are between their first job's start and
+// their in-order job's end, so item % window names working memory no other item in flight uses.
+// A worker waits only for a job another is in the middle of. An in-order job returning false stops
+// the run. `worker` (below `threads`) names scratch memory of the worker's own; `after_own_job`
+// runs on the calling thread after each job it ran, for progress reports.
+inline void run_ordered_jobs(const pfx_thread_pool* pool, unsigned threads, size_t count, size_t window,
+                             const std::function<void(size_t item, unsigned worker)>& first,
+                             const std::function<bool(size_t item)>& in_order,
+                             const std::function<void()>& after_own_job = nullptr) {
+  if (window < 1) window = 1;
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<char> first_done(count, 0);
+  size_t next_first = 0, next_in_order = 0;
+  bool in_order_running = false, stop = false;
+  unsigned running = 0;  // jobs in progress
+  std::exception_ptr failure;
+  const std::thread::id caller = std::this_thread::get_id();
+
+  auto work = [&](unsigned worker) {
+    std::unique_lock<std::mutex> lock(mutex);
+    for (;;) {
+      if (stop || next_in_order == count) return;
+      const bool in_order_ready = !in_order_running && first_done[next_in_order];
+      const bool first_ready = next_first < count && next_first < next_in_order + window;
+      if (!in_order_ready && !first_ready) {
+        if (running == 0) {  // see above: cannot happen, and waiting would never end
+          if (!failure) failure = std::make_exception_ptr(std::logic_error("ordered jobs: nothing ready, nothing running"));
+          stop = true;
+          changed.notify_all();
+          return;
+        }
+        changed.wait(lock);
+        continue;
+      }
+      const size_t item = in_order_ready ? next_in_order : next_first++;
+      if (in_order_ready) in_order_running = true;
+      ++running;
+      lock.unlock();
+      bool go = true;
+      try {
+        if (in_order_ready) go = !in_order || in_order(item);
+        else first(item, worker);
+      } catch (...) {
+        go = false;
+        lock.lock();
+        if (!failure) failure = std::current_exception();
+        lock.unlock();
+      }
+      if (after_own_job && std::this_thread::get_id() == caller) after_own_job();
+      lock.lock();
+      --running;
+      if (in_order_ready) {
+        in_order_running = false;
+        ++next_in_order;
+      } else {
+        first_done[item] = 1;
+      }
+      if (!go) stop = true;
+      changed.notify_all();
+    }
+  };
+  run_workers(pool, threads, work);
+  if (failure) std::rethrow_exception(failure);
+}
+
+// job(index, worker) once for every index in [0, count).
+inline void run_parallel(const pfx_thread_pool* pool, unsigned threads, size_t count,
+                         const std::function<void(size_t, unsigned)>& job) {
+  run_ordered_jobs(pool, threads, count, count, job, nullptr);
 }
 
 }  // namespace pfx_obj

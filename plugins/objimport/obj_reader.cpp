@@ -44,17 +44,45 @@ size_t unterminated_tail(std::string_view text) {
   return 0;
 }
 
-class Reader {
+}  // namespace
+
+std::vector<std::string_view> split_at_line_ends(std::string_view text, size_t count) {
+  std::vector<std::string_view> chunks;
+  size_t begin = 0;
+  for (size_t k = 1; k < count && begin < text.size(); ++k) {
+    size_t i = k * (text.size() / count), cut = text.size();
+    if (i <= begin) continue;
+    if (text[i] == '\n' && text[i - 1] == '\r') ++i;  // never between the CR and LF of one line end
+    for (; i < text.size(); ++i) {
+      if (!is_line_end(text[i])) continue;
+      const size_t start = i;
+      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      if (start == 0 || text[start - 1] != '\\') {
+        cut = i + 1;
+        break;
+      }
+    }
+    if (cut >= text.size()) break;
+    chunks.push_back(text.substr(begin, cut - begin));
+    begin = cut;
+  }
+  chunks.push_back(text.substr(begin));
+  return chunks;
+}
+
+namespace {
+
+class Reader : LineCursor {
  public:
-  Reader(ChunkData* out, size_t reserve_bytes) : out_(out) { reserve_upper_bounds(reserve_bytes); }
+  Reader(ChunkData* out, size_t reserve_bytes) : LineCursor{nullptr, nullptr}, out_(out) { reserve_upper_bounds(reserve_bytes); }
 
   // Reads [p, end); *(end - 1) is a line end that does not continue its line, and *end is readable
   // unless that line end is the last byte of the file. False on an error (recorded).
-  bool read(const char* p, const char* end) {
-    p_ = p;
-    end_ = end;
-    while (p_ < end_) {
-      line_ = line_ends_;
+  bool read(const char* begin, const char* stop) {
+    p = begin;
+    end = stop;
+    while (p < end) {
+      line_ = line_ends;
       if (!statement()) return false;
     }
     return true;
@@ -65,7 +93,7 @@ class Reader {
     out_->texcoords.resize(static_cast<size_t>(texcoord_at_ - out_->texcoords.data()));
     out_->normals.resize(static_cast<size_t>(normal_at_ - out_->normals.data()));
     out_->corners.resize(static_cast<size_t>(corner_at_ - out_->corners.data()));
-    out_->line_ends = line_ends_;
+    out_->line_ends = line_ends;
   }
 
  private:
@@ -90,52 +118,10 @@ class Reader {
   uint32_t texcoords_so_far() const { return static_cast<uint32_t>((texcoord_at_ - out_->texcoords.data()) / 2); }
   uint32_t normals_so_far() const { return static_cast<uint32_t>((normal_at_ - out_->normals.data()) / 3); }
 
-  // --- The bytes of a line -------------------------------------------------------------------
-  // A backslash right before a line end continues the statement on the next line.
-  bool continuation(const char* q) const { return q[0] == '\\' && is_line_end(q[1]); }
-  bool token_end(const char* q) const { return is_blank(*q) || is_line_end(*q) || continuation(q); }
-  bool statement_end() const { return is_line_end(*p_) || *p_ == '#'; }
-  void consume_line_end() {
-    if (*p_ == '\r' && p_ + 1 < end_ && p_[1] == '\n') ++p_;
-    ++p_;
-    ++line_ends_;
-  }
-  void skip_blanks() {
-    for (;;) {
-      if (is_blank(*p_)) ++p_;
-      else if (continuation(p_)) ++p_, consume_line_end();
-      else return;
-    }
-  }
-  // Past the end of the statement: a comment and continued lines included.
-  void skip_statement() {
-    for (;;) {
-      if (is_line_end(*p_)) return consume_line_end();
-      if (continuation(p_)) ++p_, consume_line_end();
-      else ++p_;
-    }
-  }
-  std::string_view token() {
-    const char* start = p_;
-    while (!token_end(p_)) ++p_;
-    return {start, static_cast<size_t>(p_ - start)};
-  }
   std::string_view token_at(const char* start) {
-    p_ = start;
+    p = start;
     return token();
   }
-  // The rest of the line up to its end (not a '#': names may hold one), blanks trimmed, each
-  // continuation one space.
-  std::string rest_of_line() {
-    std::string text;
-    while (!is_line_end(*p_)) {
-      if (!continuation(p_)) text += *p_++;
-      else ++p_, consume_line_end(), text += ' ';
-    }
-    const size_t first = text.find_first_not_of(" \t\f\v"), last = text.find_last_not_of(" \t\f\v");
-    return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-  }
-
   bool fail(std::string text) {
     out_->failed = true;
     out_->error = {line_, std::move(text)};
@@ -145,14 +131,14 @@ class Reader {
   // --- Statements ----------------------------------------------------------------------------
   bool statement() {
     skip_blanks();
-    if (statement_end()) {
+    if (at_statement_end()) {
       skip_statement();
       return true;
     }
     // The statements of nearly every line of a large file, before a token is cut.
-    if ((p_[0] == 'v' || p_[0] == 'f') && is_blank(p_[1])) {
-      ++p_;
-      if (!(p_[-1] == 'v' ? vertex() : face())) return false;
+    if ((p[0] == 'v' || p[0] == 'f') && is_blank(p[1])) {
+      ++p;
+      if (!(p[-1] == 'v' ? vertex() : face())) return false;
       skip_statement();
       return true;
     }
@@ -194,7 +180,7 @@ class Reader {
   // at most 19 digits) take Clinger's fast path here, as parse_number_prefix would; anything else
   // goes to it.
   bool number(double* out) {
-    const char* q = p_;
+    const char* q = p;
     const bool negative = *q == '-';
     if (*q == '-' || *q == '+') ++q;
     uint64_t mantissa = 0;  // wraps past 19 digits, when it is not used
@@ -220,14 +206,14 @@ class Reader {
       const double value = exponent < 0 ? static_cast<double>(mantissa) / kExactPowersOf10[-exponent]
                                         : static_cast<double>(mantissa) * kExactPowersOf10[exponent];
       *out = negative ? -value : value;
-      p_ = q;
+      p = q;
       return true;
     }
     double value;
-    q = parse_number_prefix(p_, end_, &value);
+    q = parse_number_prefix(p, end, &value);
     if (!q || !token_end(q) || !std::isfinite(static_cast<float>(value))) return false;
     *out = value;
-    p_ = q;
+    p = q;
     return true;
   }
 
@@ -235,8 +221,8 @@ class Reader {
   bool numbers(const char* keyword, double* values, int capacity, int* count) {
     for (*count = 0;; ++*count) {
       skip_blanks();
-      if (statement_end()) return true;
-      const char* start = p_;
+      if (at_statement_end()) return true;
+      const char* start = p;
       if (*count < capacity && number(&values[*count])) continue;
       return bad_number(keyword, start, *count == capacity ? capacity : -1);
     }
@@ -291,7 +277,7 @@ class Reader {
 
   // [+-]digits at the cursor; false when there are no digits. More than 18 digits: *too_long.
   bool read_index(int64_t* value, bool* too_long) {
-    const char* q = p_;
+    const char* q = p;
     const bool negative = *q == '-';
     if (*q == '-' || *q == '+') ++q;
     const char* digits = q;
@@ -301,7 +287,7 @@ class Reader {
     if (q == digits) return false;
     *too_long = q - digits > 18;
     *value = *too_long ? 0 : negative ? -static_cast<int64_t>(n) : static_cast<int64_t>(n);
-    p_ = q;
+    p = q;
     return true;
   }
 
@@ -326,7 +312,7 @@ class Reader {
                                      uint32_t count) {
     static const char* const kKinds[] = {"v", "vt", "vn"};
     if (too_long || value > kMaxWrittenIndex || value < -kMaxWrittenIndex)
-      return fail("f: index '" + printable({field, static_cast<size_t>(p_ - field)}) + "' is too large");
+      return fail("f: index '" + printable({field, static_cast<size_t>(p - field)}) + "' is too large");
     if (value == 0)
       return fail("f: " + std::string(kKinds[kind]) + " index 0 in '" + printable(token_at(corner)) +
                   "' (OBJ indices start at 1)");
@@ -340,32 +326,32 @@ class Reader {
   // v, v/vt, v//vn or v/vt/vn: each field checked and stored as it is read. max_index: the face's
   // own copy of the chunk's (a local: stores of corners cannot change it, so it stays in registers).
   bool corner(const uint32_t counts[3], uint32_t* max_index) {
-    const char* start = p_;
+    const char* start = p;
     int64_t value;
     bool too_long;
-    const char* field = p_;
-    if (!read_index(&value, &too_long) || (*p_ != '/' && !token_end(p_))) return malformed_corner(start);
+    const char* field = p;
+    if (!read_index(&value, &too_long) || (*p != '/' && !token_end(p))) return malformed_corner(start);
     if (!store_index(value, too_long, field, start, 0, counts[0], max_index)) return false;
-    if (*p_ != '/') {
+    if (*p != '/') {
       corner_at_[0] = corner_at_[1] = kNoIndex;
       corner_at_ += 2;
       return true;
     }
-    field = ++p_;
-    if (*p_ == '/') {  // v//vn
-      field = ++p_;
-      if (!read_index(&value, &too_long) || !token_end(p_)) return malformed_corner(start);
+    field = ++p;
+    if (*p == '/') {  // v//vn
+      field = ++p;
+      if (!read_index(&value, &too_long) || !token_end(p)) return malformed_corner(start);
       *corner_at_++ = kNoIndex;
       return store_index(value, too_long, field, start, 2, counts[2], max_index);
     }
-    if (!read_index(&value, &too_long) || (*p_ != '/' && !token_end(p_))) return malformed_corner(start);
+    if (!read_index(&value, &too_long) || (*p != '/' && !token_end(p))) return malformed_corner(start);
     if (!store_index(value, too_long, field, start, 1, counts[1], max_index)) return false;
-    if (*p_ != '/') {
+    if (*p != '/') {
       *corner_at_++ = kNoIndex;
       return true;
     }
-    field = ++p_;
-    if (!read_index(&value, &too_long) || !token_end(p_)) return malformed_corner(start);
+    field = ++p;
+    if (!read_index(&value, &too_long) || !token_end(p)) return malformed_corner(start);
     return store_index(value, too_long, field, start, 2, counts[2], max_index);
   }
 
@@ -374,7 +360,7 @@ class Reader {
     uint32_t corners = 0, max_index[3] = {out_->max_index[0], out_->max_index[1], out_->max_index[2]};
     for (;; ++corners) {
       skip_blanks();
-      if (statement_end()) break;
+      if (at_statement_end()) break;
       if (!corner(counts, max_index)) return false;
     }
     std::copy(max_index, max_index + 3, out_->max_index);
@@ -436,9 +422,7 @@ class Reader {
   }
 
   ChunkData* out_;
-  const char* p_ = nullptr;
-  const char* end_ = nullptr;
-  uint64_t line_ = 0, line_ends_ = 0;  // the statement's line; line ends stepped over (chunk-local)
+  uint64_t line_ = 0;  // the statement's line (chunk-local)
   float* position_at_ = nullptr;       // where the next v, vt, vn and corner field go
   float* texcoord_at_ = nullptr;
   float* normal_at_ = nullptr;

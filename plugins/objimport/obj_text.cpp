@@ -21,22 +21,14 @@ bool equals_lower(std::string_view text, std::string_view word) {
 
 }  // namespace
 
-std::string Cursor::rest_of_line() {
+std::string LineCursor::rest_of_line() {
   std::string text;
-  while (p < end) {
-    if (at_continuation()) {
-      ++p;
-      consume_line_end();
-      text += ' ';
-      continue;
-    }
-    if (is_line_end(*p)) break;
-    text += *p++;
+  while (!is_line_end(*p)) {
+    if (!continuation(p)) text += *p++;
+    else ++p, consume_line_end(), text += ' ';
   }
-  size_t first = 0, last = text.size();
-  while (first < last && is_blank(text[first])) ++first;
-  while (last > first && is_blank(text[last - 1])) --last;
-  return text.substr(first, last - first);
+  const size_t first = text.find_first_not_of(" \t\f\v"), last = text.find_last_not_of(" \t\f\v");
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
 }
 
 const char* parse_number_prefix(const char* p, const char* end, double* out) {

@@ -1,5 +1,4 @@
-// Reading OBJ and MTL text: blanks, line ends, tokens and numbers, over a byte range that is never
-// read past its end. Three line-end conventions are accepted (LF, CRLF, bare CR), and a backslash
+// Reading OBJ and MTL text: blanks, line ends, tokens and numbers. Three line-end conventions are accepted (LF, CRLF, bare CR), and a backslash
 // right before a line end joins the next physical line to this one (the OBJ line continuation).
 #pragma once
 
@@ -12,49 +11,45 @@ namespace pfx_obj {
 inline bool is_line_end(char c) { return c == '\n' || c == '\r'; }
 inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; }
 
-// A read position in [p, end) that counts the physical line ends it steps over.
-struct Cursor {
+// A read position in text that ends with a line end which does not continue its line, with one
+// more readable byte after it unless that line end is the last byte of a file: every scan stops at
+// a line end, so none checks for the end of the text. It counts the physical line ends it steps
+// over; a backslash right before a line end joins the next line to this one.
+struct LineCursor {
   const char* p;
   const char* end;
-  uint64_t line_ends = 0;  // line ends consumed so far (continuations included)
+  uint64_t line_ends = 0;
 
-  bool at_end() const { return p >= end; }
-  // A backslash followed by a line end (LF, CRLF or CR): the next line continues this one.
-  bool at_continuation() const { return p < end && *p == '\\' && p + 1 < end && is_line_end(p[1]); }
-  // Steps over one line end (CRLF counts once).
-  void consume_line_end() {
+  static bool continuation(const char* q) { return q[0] == '\\' && is_line_end(q[1]); }
+  static bool token_end(const char* q) { return is_blank(*q) || is_line_end(*q) || continuation(q); }
+  bool at_statement_end() const { return is_line_end(*p) || *p == '#'; }  // a line end or a comment
+  void consume_line_end() {  // CRLF counts once
     if (*p == '\r' && p + 1 < end && p[1] == '\n') ++p;
     ++p;
     ++line_ends;
   }
-  // Skips blanks and continuations.
   void skip_blanks() {
-    while (p < end) {
+    for (;;) {
       if (is_blank(*p)) ++p;
-      else if (at_continuation()) { ++p; consume_line_end(); }
-      else break;
+      else if (continuation(p)) ++p, consume_line_end();
+      else return;
     }
   }
-  // True at the end of the logical line: a line end, the end of the text, or a '#' comment.
-  bool at_statement_end() const { return p >= end || is_line_end(*p) || *p == '#'; }
-  // True where a token stops: a blank, a line end, a continuation, or the end.
-  bool at_token_end() const { return p >= end || is_blank(*p) || is_line_end(*p) || at_continuation(); }
-  // Moves past the end of the logical line (comments and continued lines included).
+  // Past the end of the statement: a comment and continued lines included.
   void skip_statement() {
-    while (p < end) {
-      if (at_continuation()) { ++p; consume_line_end(); continue; }
-      if (is_line_end(*p)) { consume_line_end(); return; }
-      ++p;
+    for (;;) {
+      if (is_line_end(*p)) return consume_line_end();
+      if (continuation(p)) ++p, consume_line_end();
+      else ++p;
     }
   }
-  // The next token (may be empty at a statement end). Does not skip blanks before it.
-  std::string_view token() {
+  std::string_view token() {  // may be empty; blanks before it are not skipped
     const char* start = p;
-    while (!at_token_end()) ++p;
-    return std::string_view(start, static_cast<size_t>(p - start));
+    while (!token_end(p)) ++p;
+    return {start, static_cast<size_t>(p - start)};
   }
-  // The rest of the logical line up to a line end (not a '#': names may contain it), blanks
-  // trimmed at both ends and continuations turned into one space.
+  // The rest of the line (a '#' included: names may hold one), blanks trimmed at both ends, each
+  // continuation one space.
   std::string rest_of_line();
 };
 
