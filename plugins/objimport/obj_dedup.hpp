@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "obj_buffer.hpp"
@@ -71,7 +72,12 @@ class VertexNumbering {
 
  private:
   static constexpr uint32_t kMaxChain = 8;
-  uint32_t add(const VertexKey& key);
+  uint32_t add(const VertexKey& key) {
+    if (keys_.size() >= kNoIndex) throw std::length_error("more than 2^32 - 1 distinct vertices");
+    keys_.push_back(key);
+    next_.push_back(kNoIndex);
+    return static_cast<uint32_t>(keys_.size() - 1);
+  }
   uint32_t find_or_insert_overflow(const VertexKey& key) {
     const auto [it, fresh] = overflow_.emplace(key, static_cast<uint32_t>(keys_.size()));
     return fresh ? add(key) : it->second;

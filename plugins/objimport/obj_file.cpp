@@ -90,14 +90,9 @@ void FileBytes::drop_pages(std::string_view range) const {
 }
 
 bool read_small_file(const std::string& path, std::string* out, std::string* error) {
-  Descriptor file{-1};
-  struct stat info {};
-  if (!open_for_reading(path, &file, &info, error)) return false;
-  out->clear();
-  if (!read_all(file.fd, out)) {
-    *error = path + ": " + std::strerror(errno);
-    return false;
-  }
+  FileBytes file;
+  if (!file.open(path, error)) return false;
+  out->assign(file.bytes());
   return true;
 }
 
