@@ -30,7 +30,6 @@
 #include <unordered_map>
 
 #include "obj_chunk.hpp"
-#include "obj_chunked_elements.hpp"
 #include "obj_dedup.hpp"
 #include "obj_file.hpp"
 #include "obj_normals.hpp"
@@ -81,7 +80,6 @@ class Importer {
     report(0.0f);
     if (!read_and_number(text, error) || !check_indices(error)) return false;
     load_materials();
-    gather_vertex_data();
     report(0.7f);
     write_index_array();
     report(0.85f);
@@ -135,23 +133,16 @@ class Importer {
     size_t largest = 0;
     for (std::string_view chunk : texts_) largest = std::max(largest, chunk.size());
     const size_t window = threads_ == 1 ? 1 : size_t{threads_} + 1;
-    struct Slot {
-      BigVector<uint32_t> corners;
-      BigVector<Face> faces;
-    };
-    std::vector<Slot> slots(window);
+    std::vector<ChunkData> slots(window);  // only their arrays are used
     std::atomic<uint64_t> bytes_numbered{0};
     auto read = [&](size_t c, unsigned) {
-      chunks_[c].corners.swap(slots[c % window].corners);
-      chunks_[c].faces.swap(slots[c % window].faces);
+      swap_arrays(&chunks_[c], &slots[c % window], true);
       parse_chunk(texts_[c], c == 0, &chunks_[c], largest);
       if (file_) file_->drop_pages(texts_[c]);
     };
     auto number = [&](size_t c) {
       if (!number_chunk(c, text.size(), error)) return false;
-      slots[c % window].corners.swap(chunks_[c].corners);
-      free_array(&chunks_[c].corners);
-      if (!starts_[c].faces_kept) slots[c % window].faces.swap(chunks_[c].faces);
+      swap_arrays(&chunks_[c], &slots[c % window], !starts_[c].faces_kept);
       bytes_numbered += texts_[c].size();
       return true;
     };
@@ -159,6 +150,32 @@ class Importer {
       report(static_cast<float>(0.6 * static_cast<double>(bytes_numbered.load()) / std::max<double>(1.0, text.size())));
     });
     return error->empty();
+  }
+
+  // A chunk's large arrays swapped with a slot's (its faces too when `faces`).
+  static void swap_arrays(ChunkData* a, ChunkData* b, bool faces) {
+    a->positions.swap(b->positions);
+    a->texcoords.swap(b->texcoords);
+    a->normals.swap(b->normals);
+    a->corners.swap(b->corners);
+    if (faces) a->faces.swap(b->faces);
+  }
+
+  // Chunk c's vertex data appended to the file's (colours: white for a v without one, once any v
+  // has one).
+  void append_vertex_data(size_t c, uint64_t text_bytes) {
+    const ChunkData& chunk = chunks_[c];
+    if (c == 0) {  // room for the most the text can hold ("v 0 0 0", "vt 0", "vn 0 0 0")
+      positions_.reserve(room_for(3 * (text_bytes / 8 + 1), sizeof(float)));
+      texcoords_.reserve(room_for(2 * (text_bytes / 5 + 1), sizeof(float)));
+      normals_.reserve(room_for(3 * (text_bytes / 9 + 1), sizeof(float)));
+    }
+    positions_.insert(positions_.end(), chunk.positions.begin(), chunk.positions.end());
+    texcoords_.insert(texcoords_.end(), chunk.texcoords.begin(), chunk.texcoords.end());
+    normals_.insert(normals_.end(), chunk.normals.begin(), chunk.normals.end());
+    if (!chunk.colors.empty() && colors_.empty()) colors_.assign(3 * size_t{starts_[c].bases[0]}, 1.0f);
+    if (chunk.colors.empty() && !colors_.empty()) colors_.resize(positions_.size(), 1.0f);
+    colors_.insert(colors_.end(), chunk.colors.begin(), chunk.colors.end());
   }
 
   // Chunk c, read, after every chunk before it: its corners numbered into ids_, and starts_[c + 1]
@@ -185,6 +202,7 @@ class Importer {
     next.corner = start.corner + corners;
     if (next.corner > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
     collect_statements(c);
+    append_vertex_data(c, text_bytes);
 
     // An index past what the rest of the text could still define cannot be satisfied: from the
     // chunk that may hold one, none is numbered and check_indices finds it. (A position index
@@ -395,7 +413,6 @@ class Importer {
       if (n > 0) std::memcpy(indices + (*places)[slot_of(c, 0)], ids, n * sizeof(uint32_t));
       return;
     }
-    ChunkedElements::Reader positions(all_positions_);
     std::vector<const float*> corners;
     std::vector<uint32_t> triangles;
     TriangulationScratch scratch;
@@ -411,7 +428,7 @@ class Importer {
         place += 3;
       } else {
         corners.resize(n);
-        for (uint32_t k = 0; k < n; ++k) corners[k] = positions.at(numbering_.keys()[ids[k]].v);
+        for (uint32_t k = 0; k < n; ++k) corners[k] = &positions_[3 * size_t{numbering_.keys()[ids[k]].v}];
         triangles.clear();
         const Triangulation how = triangulate_polygon(corners.data(), n, &triangles, &scratch);
         for (uint32_t k : triangles) indices[place++] = ids[k];
@@ -428,19 +445,6 @@ class Importer {
     }
   }
 
-  // The chunks' vertex data seen as one array per kind, read where the chunks wrote it.
-  void gather_vertex_data() {
-    for (size_t c = 0; c < chunks_.size(); ++c) {
-      const ChunkData& chunk = chunks_[c];
-      const uint32_t* bases = starts_[c].bases;
-      all_positions_.add(bases[0], chunk.position_count(), chunk.positions.data());
-      all_colors_.add(bases[0], chunk.position_count(), chunk.colors.empty() ? nullptr : chunk.colors.data());
-      all_texcoords_.add(bases[1], chunk.texcoord_count(), chunk.texcoords.data());
-      all_normals_.add(bases[2], chunk.normal_count(), chunk.normals.data());
-      any_colors_ |= !chunk.colors.empty();
-    }
-  }
-
   // Stage 5, in blocks on every worker, each block's bounds combined after (min and max do not
   // depend on the order).
   void fill_vertices() {
@@ -450,28 +454,26 @@ class Importer {
     out_->positions.resize(3 * count);
     out_->normals.resize(3 * count);
     if (any_texcoords) out_->texcoords.resize(2 * count);
-    if (any_colors_) out_->colors.resize(3 * count);
+    if (!colors_.empty()) out_->colors.resize(3 * count);
     constexpr size_t kBlock = size_t{1} << 15;
     const size_t blocks = (count + kBlock - 1) / kBlock;
     std::vector<std::array<float, 6>> block_bounds(blocks);
     run_parallel(options_.pool, threads_, blocks, [&](size_t b, unsigned) {
-      ChunkedElements::Reader positions(all_positions_), colors(all_colors_), texcoords(all_texcoords_),
-          normals(all_normals_);
       std::array<float, 6> bounds = {HUGE_VALF, HUGE_VALF, HUGE_VALF, -HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
       for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
         const VertexKey& key = keys[i];
-        const float* p = positions.at(key.v);
+        const float* p = &positions_[3 * size_t{key.v}];
         std::memcpy(&out_->positions[3 * i], p, 3 * sizeof(float));
         for (int k = 0; k < 3; ++k) {  // as std::min and std::max: a NaN coordinate is passed over
           bounds[k] = std::min(bounds[k], p[k]);
           bounds[3 + k] = std::max(bounds[3 + k], p[k]);
         }
-        if (any_colors_) std::memcpy(&out_->colors[3 * i], colors.at(key.v), 3 * sizeof(float));
+        if (!colors_.empty()) std::memcpy(&out_->colors[3 * i], &colors_[3 * size_t{key.v}], 3 * sizeof(float));
         if (any_texcoords) {
-          if (key.vt != kNoIndex) std::memcpy(&out_->texcoords[2 * i], texcoords.at(key.vt), 2 * sizeof(float));
+          if (key.vt != kNoIndex) std::memcpy(&out_->texcoords[2 * i], &texcoords_[2 * size_t{key.vt}], 2 * sizeof(float));
           else out_->texcoords[2 * i] = out_->texcoords[2 * i + 1] = 0.0f;
         }
-        if (key.vn != kNoIndex) std::memcpy(&out_->normals[3 * i], normals.at(key.vn), 3 * sizeof(float));
+        if (key.vn != kNoIndex) std::memcpy(&out_->normals[3 * i], &normals_[3 * size_t{key.vn}], 3 * sizeof(float));
       }
       block_bounds[b] = bounds;
     });
@@ -481,6 +483,7 @@ class Importer {
         out_->bounds_max[k] = b == 0 ? block_bounds[b][3 + k] : std::max(out_->bounds_max[k], block_bounds[b][3 + k]);
       }
     free_array(&chunks_);
+    for (BigVector<float>* data : {&positions_, &texcoords_, &normals_, &colors_}) free_array(data);
   }
 
   // Stage 7: skipped statements and an empty mesh said once, then every warning in line order.
@@ -496,7 +499,6 @@ class Importer {
     for (size_t i = 0; i < warnings_.size() && i < kMaxWarnings; ++i) out_->warnings.push_back(at(warnings_[i].line, warnings_[i].text));
   }
 
-  static constexpr float kWhite[3] = {1.0f, 1.0f, 1.0f};
   const std::string& name_;
   const std::string& directory_;
   const ImportOptions& options_;
@@ -515,8 +517,7 @@ class Importer {
   std::vector<Located> libraries_;    // mtllib lines
   std::map<std::string, IgnoredKeyword> ignored_;
   std::vector<Located> warnings_;
-  bool any_colors_ = false;
-  ChunkedElements all_positions_{3}, all_texcoords_{2}, all_normals_{3}, all_colors_{3, kWhite};
+  BigVector<float> positions_, texcoords_, normals_, colors_;  // the file's vertex data, as written
 };
 
 bool import_text(std::string_view text, const std::string& name, const std::string& directory,
