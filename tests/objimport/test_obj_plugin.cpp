@@ -148,10 +148,9 @@ TEST_CASE("obj plugin: bytes in memory, errors and release", "[objimport][plugin
   importer->release(&foreign);
 }
 
-TEST_CASE("obj plugin: a large result, imported and released on two threads, gives its memory back", "[objimport][plugin][memory]") {
+TEST_CASE("obj plugin: a large result, imported on two threads, gives its memory back at release", "[objimport][plugin][memory]") {
   // A 450 x 450 grid with v, vt, vn and v/vt/vn triangles: 202,500 vertices (32 bytes each) and
-  // 403,202 triangles (12 bytes): 11.3 MB of arrays, enough that release frees them on two
-  // workers of the host's pool (obj_parallel_free.hpp) where the machine has two hardware threads.
+  // 403,202 triangles (12 bytes): 11.3 MB of arrays, imported on two workers of the host's pool.
   constexpr int n = 450;
   std::string text;
   char line[256];

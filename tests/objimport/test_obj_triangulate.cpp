@@ -110,3 +110,25 @@ TEST_CASE("obj triangulate: degenerate polygons fall back to a fan", "[objimport
     CHECK(triangles == std::vector<uint32_t>{0, 1, 2, 0, 2, 3});
   }
 }
+
+// Ear clipping walks from corner 0: in a convex quadrilateral corner 0 is an ear, giving (3 0 1),
+// and the rest is (3 1 2). A concave one (a dart, corner 2 reflex) has no ear at 0 (its triangle
+// 3 0 1 holds corner 2), so the walk moves on to corner 1 — (0 1 2) — and ends with (0 2 3).
+// Worked out by hand, so a quick path for quadrilaterals must cut them as the walk does.
+TEST_CASE("obj triangulate: quadrilaterals are cut where ear clipping cuts them", "[objimport][triangulate]") {
+  const float square[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const float dart[4][3] = {{0, 0, 0}, {2, 1, 0}, {0.5f, 0.5f, 0}, {1, 2, 0}};
+  const float tilted[4][3] = {{0, 0, 0}, {1, 0, 0.2f}, {1, 1, 0.1f}, {0, 1, 0.3f}};  // not planar
+  for (auto [points, expected] : {std::pair{square, std::vector<uint32_t>{3, 0, 1, 3, 1, 2}},
+                                  std::pair{dart, std::vector<uint32_t>{0, 1, 2, 0, 2, 3}},
+                                  std::pair{tilted, std::vector<uint32_t>{3, 0, 1, 3, 1, 2}}}) {
+    for (bool reversed : {false, true}) {  // the other winding keeps corner 2 reflex in the dart
+      const float* pointers[4];
+      for (int k = 0; k < 4; ++k) pointers[k] = points[reversed ? (4 - k) % 4 : k];
+      std::vector<uint32_t> triangles;
+      pfx_obj::TriangulationScratch scratch;
+      CHECK(pfx_obj::triangulate_polygon(pointers, 4, &triangles, &scratch) == Triangulation::kEarClipped);
+      CHECK(triangles == expected);
+    }
+  }
+}
