@@ -7,7 +7,8 @@
 
 namespace pfx::import {
 
-std::string summary_text(const std::string& file, const pfx_import_result& result);
-std::string summary_json(const std::string& file, const pfx_import_result& result);
+// seconds: the import call's wall-clock time, as pfx-import measured it.
+std::string summary_text(const std::string& file, const pfx_import_result& result, double seconds);
+std::string summary_json(const std::string& file, const pfx_import_result& result, double seconds);
 
 }  // namespace pfx::import

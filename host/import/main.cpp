@@ -1,6 +1,7 @@
 // pfx-import: loads a model file through the importer plugins and says what it got.
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -74,12 +75,14 @@ int main(int argc, char** argv) {
     request.progress_user = &last_percent;
   }
   pfx_import_result* result = nullptr;
+  const auto start = std::chrono::steady_clock::now();  // the call timed here, whatever the importer says
   importer->desc->import(&request, &result);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!result) return error_exit(1, options.file + ": out of memory");
   int code = 0;
   if (result->status == PFX_OK) {
-    const std::string text = options.json ? pfx::import::summary_json(options.file, *result)
-                                          : pfx::import::summary_text(options.file, *result);
+    const std::string text = options.json ? pfx::import::summary_json(options.file, *result, seconds)
+                                          : pfx::import::summary_text(options.file, *result, seconds);
     std::fputs(text.c_str(), stdout);
   } else {
     if (last_percent >= 0 && last_percent < 100) std::fputc('\n', stderr);
