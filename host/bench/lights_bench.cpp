@@ -374,9 +374,13 @@ void run_dense(const LightsOptions& o, const pfx::host::PluginRegistry& registry
         warmup = 0;
         fill_cell(&cell, frames > 1 ? stage.measure(frames, 0) : one);
         brute_total = cell.total_ms;
-        std::vector<float> depth4 = read_texture(stage.renderer().textures().depth, w, h, GL_RGBA), depth(size_t(w) * h);
+        const auto textures = stage.renderer().textures();
+        std::vector<float> depth4 = read_texture(textures.depth, w, h, GL_RGBA), depth(size_t(w) * h);
         for (size_t i = 0; i < depth.size(); ++i) depth[i] = depth4[i * 4];
-        cell.reach_mean = mean_lights_reaching(stage.frame(), depth, 0.05);  // the default cutoff
+        const LightReach reach =
+            count_light_reach(stage.frame(), depth, read_texture(textures.normal, w, h, GL_RGBA), 0.05);  // the default cutoff
+        cell.reach_mean = reach.reaching_mean;
+        cell.lit_mean = reach.lit_mean;
       } else {
         fill_cell(&cell, stage.measure(frames, warmup));
       }
