@@ -1,5 +1,6 @@
 #include "light_reach.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <pfx/depth.h>
@@ -8,7 +9,8 @@ namespace pfx::bench {
 namespace {
 
 struct Light {
-  double x, y, z, range2;
+  double p[3];  // view space
+  double range2;
   bool radiant;  // some colour channel times intensity is > 0
 };
 
@@ -23,7 +25,7 @@ void cross(const double a[3], const double b[3], double out[3]) {
 }  // namespace
 
 LightReach count_light_reach(const pfx_frame& frame, const std::vector<float>& depth, const std::vector<float>& normal,
-                             double cutoff) {
+                             double cutoff, int tile) {
   // The lights in view space (the view matrix is column-major), with their ranges squared.
   std::vector<Light> lights;
   const auto* bytes = reinterpret_cast<const unsigned char*>(frame.lights);
@@ -35,8 +37,10 @@ LightReach count_light_reach(const pfx_frame& frame, const std::vector<float>& d
     if (!(range > 0)) range = peak > cutoff ? std::sqrt(peak / cutoff - 1) : 0;
     if (!(range > 0)) continue;
     const double p[3] = {l.position[0], l.position[1], l.position[2]};
-    lights.push_back({v[0] * p[0] + v[4] * p[1] + v[8] * p[2] + v[12], v[1] * p[0] + v[5] * p[1] + v[9] * p[2] + v[13],
-                      v[2] * p[0] + v[6] * p[1] + v[10] * p[2] + v[14], range * range, peak > 0});
+    lights.push_back({{v[0] * p[0] + v[4] * p[1] + v[8] * p[2] + v[12], v[1] * p[0] + v[5] * p[1] + v[9] * p[2] + v[13],
+                      v[2] * p[0] + v[6] * p[1] + v[10] * p[2] + v[14]},
+                      range * range,
+                      peak > 0});
   }
   // N.L's sign in view space: with M the view's rotation part, n_w . l_w = (M^-T n_w) . l_v, and
   // M^-T's rows are the cross products of M's rows over det(M).
@@ -47,38 +51,67 @@ LightReach count_light_reach(const pfx_frame& frame, const std::vector<float>& d
   cross(rows[0], rows[1], to_view[2]);
   const double det_sign = dot(rows[0], to_view[0]) < 0 ? -1.0 : 1.0;
 
-  // A pixel's view-space point, as tiledlights reconstructs it (w_clip = -z_view).
+  // Each pixel's view-space point, as tiledlights reconstructs it (w_clip = -z_view).
   const float* P = frame.camera.projection;
   const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
-  LightReach out;
-  double reaching = 0, lit = 0;
+  struct Point {
+    double p[3];
+    bool geometry;
+  };
+  std::vector<Point> points(size_t(w) * h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * w + x;
-      const double d = pfx_view_depth(depth[i], frame.depth_encoding, frame.camera.near_plane, frame.camera.far_plane);
-      if (!(d > 0) || !std::isfinite(d)) continue;
-      const double p[3] = {d * (2.0 * (x + 0.5) / w - 1 + P[8]) / P[0], d * (2.0 * (y + 0.5) / h - 1 + P[9]) / P[5],
-                           -d};
-      // A normal with a non-finite component faces nothing, as in the shading pass.
-      double nw[3] = {normal[i * 4], normal[i * 4 + 1], normal[i * 4 + 2]};
-      if (!std::isfinite(nw[0]) || !std::isfinite(nw[1]) || !std::isfinite(nw[2])) nw[0] = nw[1] = nw[2] = 0;
-      const double n[3] = {det_sign * dot(to_view[0], nw), det_sign * dot(to_view[1], nw),
-                           det_sign * dot(to_view[2], nw)};
-      uint64_t reach_count = 0, lit_count = 0;
-      for (const Light& l : lights) {
-        const double to_light[3] = {l.x - p[0], l.y - p[1], l.z - p[2]};
-        const double d2 = dot(to_light, to_light);
-        if (!(d2 < l.range2)) continue;
-        ++reach_count;
-        lit_count += l.radiant && (d2 == 0 || dot(n, to_light) > 0);
-      }
-      reaching += double(reach_count);
-      lit += double(lit_count);
-      ++out.pixels;
+      Point& point = points[size_t(y) * w + x];
+      const double d = pfx_view_depth(depth[size_t(y) * w + x], frame.depth_encoding, frame.camera.near_plane,
+                                      frame.camera.far_plane);
+      point.geometry = d > 0 && std::isfinite(d);
+      point.p[0] = d * (2.0 * (x + 0.5) / w - 1 + P[8]) / P[0];
+      point.p[1] = d * (2.0 * (y + 0.5) / h - 1 + P[9]) / P[5];
+      point.p[2] = -d;
+    }
+  auto reaches = [](const Light& l, const double p[3], double to_light[3]) {
+    for (int k = 0; k < 3; ++k) to_light[k] = l.p[k] - p[k];
+    return dot(to_light, to_light) < l.range2;
+  };
+
+  LightReach out;
+  double reaching = 0, lit = 0, tile_reaching = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].geometry) continue;
+    // A normal with a non-finite component faces nothing, as in the shading pass.
+    double nw[3] = {normal[i * 4], normal[i * 4 + 1], normal[i * 4 + 2]};
+    if (!std::isfinite(nw[0]) || !std::isfinite(nw[1]) || !std::isfinite(nw[2])) nw[0] = nw[1] = nw[2] = 0;
+    const double n[3] = {det_sign * dot(to_view[0], nw), det_sign * dot(to_view[1], nw), det_sign * dot(to_view[2], nw)};
+    for (const Light& l : lights) {
+      double to_light[3];
+      if (!reaches(l, points[i].p, to_light)) continue;
+      reaching += 1;
+      lit += l.radiant && (dot(to_light, to_light) == 0 || dot(n, to_light) > 0);
+    }
+    ++out.pixels;
+  }
+  // Per tile: the lights reaching any of its points, summed once for each of its pixels with geometry.
+  for (int ty = 0; ty < h; ty += tile)
+    for (int tx = 0; tx < w; tx += tile) {
+      std::vector<const Point*> tile_points;
+      for (int y = ty; y < std::min(ty + tile, h); ++y)
+        for (int x = tx; x < std::min(tx + tile, w); ++x)
+          if (points[size_t(y) * w + x].geometry) tile_points.push_back(&points[size_t(y) * w + x]);
+      uint64_t count = 0;
+      for (const Light& l : lights)
+        for (const Point* point : tile_points) {
+          double to_light[3];
+          if (reaches(l, point->p, to_light)) {
+            ++count;
+            break;
+          }
+        }
+      tile_reaching += double(count) * double(tile_points.size());
     }
   if (out.pixels) {
     out.reaching_mean = reaching / double(out.pixels);
     out.lit_mean = lit / double(out.pixels);
+    out.tile_reaching_mean = tile_reaching / double(out.pixels);
   }
   return out;
 }

@@ -377,10 +377,12 @@ void run_dense(const LightsOptions& o, const pfx::host::PluginRegistry& registry
         const auto textures = stage.renderer().textures();
         std::vector<float> depth4 = read_texture(textures.depth, w, h, GL_RGBA), depth(size_t(w) * h);
         for (size_t i = 0; i < depth.size(); ++i) depth[i] = depth4[i * 4];
+        // tiledlights' default cutoff and tile size.
         const LightReach reach =
-            count_light_reach(stage.frame(), depth, read_texture(textures.normal, w, h, GL_RGBA), 0.05);  // the default cutoff
+            count_light_reach(stage.frame(), depth, read_texture(textures.normal, w, h, GL_RGBA), 0.05, 16);
         cell.reach_mean = reach.reaching_mean;
         cell.lit_mean = reach.lit_mean;
+        cell.tile_reach_mean = reach.tile_reaching_mean;
       } else {
         fill_cell(&cell, stage.measure(frames, warmup));
       }

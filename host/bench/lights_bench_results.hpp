@@ -23,8 +23,9 @@ struct LightsCell {
   double list_mean = 0;
   uint64_t list_max = 0, list_entries = 0, ssbo_bytes = 0;
   // Dense brute-force cells: the means, over pixels with geometry, of the lights that really reach
-  // the pixel and of those whose term there is not zero (light_reach.hpp); 0 elsewhere.
-  double reach_mean = 0, lit_mean = 0;
+  // the pixel, of those whose term there is not zero, and of those reaching a point of the pixel's
+  // 16-pixel tile (light_reach.hpp); 0 elsewhere.
+  double reach_mean = 0, lit_mean = 0, tile_reach_mean = 0;
 };
 
 struct CutoffPoint {

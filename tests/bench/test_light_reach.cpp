@@ -9,7 +9,8 @@
 //                          N.L exactly 0: reaching only; pixel 1: the light is at the point: lit.
 //   L5 (-1,-1,-2) r 5, black: reaches both, lights neither.
 // Pixel 0: 4 reaching, 1 lit; pixel 1: 4 reaching, 2 lit. Means over the 2 pixels with geometry:
-// 4 and 1.5.
+// 4 and 1.5. With 2-pixel tiles (the whole frame one tile) every pixel sums the 5 lights reaching
+// one of its tile's points; with 1-pixel tiles, its own 4.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -67,10 +68,12 @@ TEST_CASE("light reach: lights reaching each pixel and lights whose term is not 
     Case c = make_case(identity, [](const float* v, float, float* out) {
       for (int k = 0; k < 3; ++k) out[k] = v[k];
     });
-    const pfx::bench::LightReach r = pfx::bench::count_light_reach(c.frame, c.depth, c.normal, 0.05);
+    const pfx::bench::LightReach r = pfx::bench::count_light_reach(c.frame, c.depth, c.normal, 0.05, 2);
     CHECK(r.pixels == 2);
     CHECK(r.reaching_mean == Approx(4.0));
     CHECK(r.lit_mean == Approx(1.5));
+    CHECK(r.tile_reaching_mean == Approx(5.0));
+    CHECK(pfx::bench::count_light_reach(c.frame, c.depth, c.normal, 0.05, 1).tile_reaching_mean == Approx(4.0));
   }
   SECTION("the same view-space scene seen by a turned, moved camera: the normals turn with it") {
     // view: x_v = z_w, y_v = y_w, z_v = -x_w - 5; so world = (-(z_v + 5), y_v, x_v) for points and
@@ -81,7 +84,7 @@ TEST_CASE("light reach: lights reaching each pixel and lights whose term is not 
       out[1] = v[1];
       out[2] = v[0];
     });
-    const pfx::bench::LightReach r = pfx::bench::count_light_reach(c.frame, c.depth, c.normal, 0.05);
+    const pfx::bench::LightReach r = pfx::bench::count_light_reach(c.frame, c.depth, c.normal, 0.05, 2);
     CHECK(r.pixels == 2);
     CHECK(r.reaching_mean == Approx(4.0));
     CHECK(r.lit_mean == Approx(1.5));
