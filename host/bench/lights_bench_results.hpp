@@ -22,9 +22,10 @@ struct LightsCell {
   uint64_t lists = 0;
   double list_mean = 0;
   uint64_t list_max = 0, list_entries = 0, ssbo_bytes = 0;
-  // Dense brute-force cells: the mean, over pixels with geometry, of the lights that really reach
-  // the pixel (light_reach.hpp); 0 elsewhere.
-  double reach_mean = 0;
+  // Dense brute-force cells: the means, over pixels with geometry, of the lights that really reach
+  // the pixel, of those whose term there is not zero, and of those reaching a point of the pixel's
+  // 16-pixel tile (light_reach.hpp); 0 elsewhere.
+  double reach_mean = 0, lit_mean = 0, tile_reach_mean = 0;
 };
 
 struct CutoffPoint {

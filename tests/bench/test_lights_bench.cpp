@@ -88,6 +88,13 @@ TEST_CASE("lights bench quick run: speed-ups, brute force predicted past its lim
   // The lights that really reach a pixel: some, not all (the floor is 44 m wide, the ranges 2..9 m).
   CHECK(dense["brute"]["reach_mean"].get<double>() > 10);
   CHECK(dense["brute"]["reach_mean"].get<double>() < 700);
+  // Of those, the ones in front of the surface: some of the lights reaching a floor point are below
+  // nothing, but those reaching a wall from behind it light nothing.
+  CHECK(dense["brute"]["lit_mean"].get<double>() > 5);
+  CHECK(dense["brute"]["lit_mean"].get<double>() < dense["brute"]["reach_mean"].get<double>());
+  // A tile's list holds every light of its pixels: more than each pixel's own.
+  CHECK(dense["brute"]["tile_reach_mean"].get<double>() > dense["brute"]["reach_mean"].get<double>());
+  CHECK(dense["brute"]["tile_reach_mean"].get<double>() <= dense["brute"]["lights_in_view"].get<double>());
   for (const char* mode : {"cpu8x4", "tiled", "clustered"}) {
     INFO("dense " << mode);
     const auto& c = dense[mode];
