@@ -93,6 +93,7 @@ class Reader : LineCursor {
     out_->texcoords.resize(static_cast<size_t>(texcoord_at_ - out_->texcoords.data()));
     out_->normals.resize(static_cast<size_t>(normal_at_ - out_->normals.data()));
     out_->corners.resize(static_cast<size_t>(corner_at_ - out_->corners.data()));
+    out_->faces.resize(faces_so_far());
     out_->line_ends = line_ends;
   }
 
@@ -106,16 +107,17 @@ class Reader : LineCursor {
     out_->texcoords.resize(2 * (bytes / 5 + 1));
     out_->normals.resize(3 * (bytes / 9 + 1));
     out_->corners.resize(3 * (bytes / 2 + 1));
-    out_->faces.clear();
-    out_->faces.reserve(bytes / 8 + 1);
+    out_->faces.resize(bytes / 8 + 1);
     position_at_ = out_->positions.data();
     texcoord_at_ = out_->texcoords.data();
     normal_at_ = out_->normals.data();
     corner_at_ = out_->corners.data();
+    face_at_ = out_->faces.data();
   }
 
   uint32_t positions_so_far() const { return static_cast<uint32_t>((position_at_ - out_->positions.data()) / 3); }
   uint32_t texcoords_so_far() const { return static_cast<uint32_t>((texcoord_at_ - out_->texcoords.data()) / 2); }
+  size_t faces_so_far() const { return static_cast<size_t>(face_at_ - out_->faces.data()); }
   uint32_t normals_so_far() const { return static_cast<uint32_t>((normal_at_ - out_->normals.data()) / 3); }
 
   std::string_view token_at(const char* start) {
@@ -179,7 +181,7 @@ class Reader : LineCursor {
   // A number ending where its token ends, finite as a float. Plain decimals ([+-]digits[.digits],
   // at most 19 digits) take Clinger's fast path here, as parse_number_prefix would; anything else
   // goes to it.
-  bool number(double* out) {
+  [[gnu::always_inline]] bool number(double* out) {
     const char* q = p;
     const bool negative = *q == '-';
     if (*q == '-' || *q == '+') ++q;
@@ -218,7 +220,7 @@ class Reader : LineCursor {
   }
 
   // Up to `capacity` numbers to the end of the statement; false on a malformed one (recorded).
-  bool numbers(const char* keyword, double* values, int capacity, int* count) {
+  [[gnu::always_inline]] bool numbers(const char* keyword, double* values, int capacity, int* count) {
     for (*count = 0;; ++*count) {
       skip_blanks();
       if (at_statement_end()) return true;
@@ -304,23 +306,23 @@ class Reader : LineCursor {
       *corner_at_++ = static_cast<uint32_t>(value - 1);
       return true;
     }
-    return other_index(value, too_long, field, corner, kind, count);
+    if (value < 0 && !too_long && value >= -kMaxWrittenIndex) {  // relative: see ChunkData::corners
+      const size_t at = static_cast<size_t>(corner_at_ - out_->corners.data());
+      if (out_->relative_fields.size() <= at / 64) out_->relative_fields.resize(at / 64 + 1 + at / 128, 0);
+      out_->relative_fields[at / 64] |= uint64_t{1} << (at % 64);
+      *corner_at_++ = static_cast<uint32_t>(int64_t{count} + value + 1);
+      return true;
+    }
+    return bad_index(value == 0 && !too_long, field, corner, kind);
   }
 
-  // A relative index stored (see ChunkData::corners), or the message for a bad one.
-  [[gnu::noinline]] bool other_index(int64_t value, bool too_long, const char* field, const char* corner, int kind,
-                                     uint32_t count) {
+  // The message for an index 0 (`zero`) or one too large.
+  [[gnu::cold, gnu::noinline]] bool bad_index(bool zero, const char* field, const char* corner, int kind) {
     static const char* const kKinds[] = {"v", "vt", "vn"};
-    if (too_long || value > kMaxWrittenIndex || value < -kMaxWrittenIndex)
-      return fail("f: index '" + printable({field, static_cast<size_t>(p - field)}) + "' is too large");
-    if (value == 0)
+    if (zero)
       return fail("f: " + std::string(kKinds[kind]) + " index 0 in '" + printable(token_at(corner)) +
                   "' (OBJ indices start at 1)");
-    const size_t at = static_cast<size_t>(corner_at_ - out_->corners.data());
-    if (out_->relative_fields.size() <= at / 64) out_->relative_fields.resize(at / 64 + 1 + at / 128, 0);
-    out_->relative_fields[at / 64] |= uint64_t{1} << (at % 64);
-    *corner_at_++ = static_cast<uint32_t>(int64_t{count} + value + 1);
-    return true;
+    return fail("f: index '" + printable({field, static_cast<size_t>(p - field)}) + "' is too large");
   }
 
   // v, v/vt, v//vn or v/vt/vn: each field checked and stored as it is read. max_index: the face's
@@ -367,8 +369,8 @@ class Reader : LineCursor {
     if (corners < 3) return fail("f: needs at least 3 corners (got " + std::to_string(corners) + ")");
     out_->triangles_by_material[material_] += corners - 2;
     uint64_t& first = out_->first_face_by_material[material_];
-    if (first == ChunkData::kNoFace) first = out_->faces.size();
-    out_->faces.push_back({corners, static_cast<uint32_t>(line_)});
+    if (first == ChunkData::kNoFace) first = faces_so_far();
+    *face_at_++ = {corners, static_cast<uint32_t>(line_)};
     return true;
   }
 
@@ -411,7 +413,7 @@ class Reader : LineCursor {
   }
 
   void record_change(StateChange::Kind kind, uint32_t value) {
-    const uint32_t face = static_cast<uint32_t>(out_->faces.size());
+    const uint32_t face = static_cast<uint32_t>(faces_so_far());
     // Two changes of one kind before the same face: the later one is in force.
     for (auto it = out_->changes.rbegin(); it != out_->changes.rend() && it->first_face == face; ++it)
       if (it->kind == kind) {
@@ -427,6 +429,7 @@ class Reader : LineCursor {
   float* texcoord_at_ = nullptr;
   float* normal_at_ = nullptr;
   uint32_t* corner_at_ = nullptr;
+  Face* face_at_ = nullptr;
   uint32_t material_ = 0;  // the next face's material: 0, or 1 + its index in material_names
   std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index
 };
