@@ -138,9 +138,12 @@ class Reader : LineCursor {
       return true;
     }
     // The statements of nearly every line of a large file, before a token is cut.
-    if ((p[0] == 'v' || p[0] == 'f') && is_blank(p[1])) {
-      ++p;
-      if (!(p[-1] == 'v' ? vertex() : face())) return false;
+    // "f ", "v ", "vt ", "vn ": the kind, and where the numbers start.
+    const char kind = is_blank(p[1]) && (p[0] == 'f' || p[0] == 'v') ? p[0]
+                      : p[0] == 'v' && (p[1] == 't' || p[1] == 'n') && is_blank(p[2]) ? p[1] : 0;
+    if (kind) {
+      p += kind == 'f' || kind == 'v' ? 1 : 2;
+      if (!(kind == 'f' ? face() : kind == 'v' ? vertex() : kind == 't' ? texcoord() : normal())) return false;
       skip_statement();
       return true;
     }
