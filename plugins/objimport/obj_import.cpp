@@ -1,20 +1,21 @@
 // The OBJ importer, top to bottom. An import runs these stages in order (Importer::run):
 //
-//   1. cut      the text into chunks at line ends (obj_reader.cpp), a few per thread
+//   1. cut      the text into chunks at line ends (split_at_line_ends, obj_reader.cpp)
 //   2. read     each chunk on any worker (obj_reader.cpp: the grammar, into obj_chunk.hpp's data),
-//      number  and, in file order as soon as it and every chunk before it are read, its corners
-//               numbered against one vertex numbering for the whole file (obj_dedup.hpp): relative
-//               indices made final, one vertex number per corner in file order. The workers read
-//               later chunks while one numbers (obj_parallel.hpp), so the numbers never
-//               depend on the thread count.
-//   3. check    indices against the file's totals, and material libraries read (obj_mtl.cpp)
+//      number  and, in file order as soon as it and every chunk before it are read, its vertex
+//               data appended to the file's and its corners numbered against one vertex numbering
+//               for the whole file (obj_dedup.hpp): relative indices made final, one vertex number
+//               per corner. The workers read later chunks while one numbers (obj_parallel.hpp), so
+//               the numbers never depend on the thread count.
+//   3. check    indices against the file's totals; material libraries read (obj_mtl.cpp)
 //   4. index    sub-meshes in order of their material's first use; each chunk's triangles
 //               written at its material's place, polygons ear-clipped (obj_triangulate.cpp)
-//   5. vertices the vertex arrays from the numbered keys and the chunks' data, and the bounds
+//   5. vertices the vertex arrays from the numbered keys, and the bounds
 //   6. normals  where the file gives none (obj_normals.cpp)
 //   7. warnings in line order
 //
-// Parallel stages run on the host's thread pool (obj_parallel.hpp); without one, on the caller.
+// The file comes mapped (obj_file.cpp); large arrays are obj_buffer.hpp's. Parallel stages run on
+// the host's thread pool (obj_parallel.hpp); without one, on the calling thread.
 #include "obj_import.hpp"
 
 #include <unistd.h>
