@@ -27,10 +27,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (render.sequence.given && (frames.first < 0 || frames.last < frames.first ||
                                   frames.last > pfx::app::kMaxFrameNumber || frames.step < 1 || frames.count() < 1))
       __builtin_trap();
-    // --help ends the checks: it prints the usage, whatever else the line holds
-    // (regressions/cli/help-with-frames).
+    // --help and --list end the checks: they print the usage or the effects, whatever else the
+    // line holds (regressions/cli/help-with-frames, list-with-frames).
     pfx::app::FramePattern pattern;
-    if (render.sequence.given && !render.help &&
+    if (render.sequence.given && !render.help && !render.list &&
         !pfx::app::parse_frame_pattern("--input", render.input, &pattern, &error))
       __builtin_trap();
   } else if (error.empty()) {
