@@ -32,14 +32,23 @@ inline bool digit(char c, uint32_t* value) {
   return *value < 10;
 }
 
+// The first byte of the line end whose last byte is text[i] (a CRLF is one line end).
+size_t line_end_start(std::string_view text, size_t i) {
+  return text[i] == '\n' && i > 0 && text[i - 1] == '\r' ? i - 1 : i;
+}
+// Whether that line end continues its line (a backslash right before it).
+bool continues_line(std::string_view text, size_t i) {
+  const size_t start = line_end_start(text, i);
+  return start > 0 && text[start - 1] == '\\';
+}
+
 // Where the text's unterminated last statement starts: after its last line end that does not
 // continue its line (0 when there is none; text.size() when that is its last byte).
 size_t unterminated_tail(std::string_view text) {
   for (size_t i = text.size(); i-- > 0;) {
     if (!is_line_end(text[i])) continue;
-    const size_t line_end_start = (text[i] == '\n' && i > 0 && text[i - 1] == '\r') ? i - 1 : i;
-    if (line_end_start == 0 || text[line_end_start - 1] != '\\') return i + 1;
-    i = line_end_start;  // a continued line: the statement started before it
+    if (!continues_line(text, i)) return i + 1;
+    i = line_end_start(text, i);  // a continued line: the statement started before it
   }
   return 0;
 }
@@ -55,9 +64,8 @@ std::vector<std::string_view> split_at_line_ends(std::string_view text, size_t c
     if (text[i] == '\n' && text[i - 1] == '\r') ++i;  // never between the CR and LF of one line end
     for (; i < text.size(); ++i) {
       if (!is_line_end(text[i])) continue;
-      const size_t start = i;
-      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-      if (start == 0 || text[start - 1] != '\\') {
+      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;  // to the line end's last byte
+      if (!continues_line(text, i)) {
         cut = i + 1;
         break;
       }

@@ -61,6 +61,13 @@ InjectRun run_injected(const ScratchFolder& folder, const std::string& name, con
   return run;
 }
 
+std::string plugin_folder_with(const ScratchFolder& folder, const std::string& plugin) {
+  const std::string plugins = folder.file("plugins");
+  std::filesystem::create_directory(plugins);
+  std::filesystem::copy_file(plugin, plugins + "/" + std::filesystem::path(plugin).filename().string());
+  return plugins;
+}
+
 std::vector<std::string> glmark2_scene(const std::string& scene) { return {PFX_GLMARK2, "-s", "96x64", "-b", scene}; }
 
 app::Image read_exr_file(const std::string& path) {

@@ -33,6 +33,9 @@ InjectRun run_injected(const ScratchFolder& folder, const std::string& name, con
                        const std::vector<std::string>& app_args, bool frozen_clock = true,
                        const std::vector<std::string>& environment = {});
 
+// FOLDER/plugins holding a copy of one plugin (`plugin`: its path) and nothing else; its path.
+std::string plugin_folder_with(const ScratchFolder& folder, const std::string& plugin);
+
 // glmark2 at a small window size, one scene.
 std::vector<std::string> glmark2_scene(const std::string& scene);
 

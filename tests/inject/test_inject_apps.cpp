@@ -106,10 +106,8 @@ TEST_CASE("a context below OpenGL 4.5 passes through with one log line") {
 
 TEST_CASE("an effect that fails to create leaves the application running to its own end") {
   ScratchFolder folder("broken");
-  const std::string plugins = folder.file("plugins");
-  std::filesystem::create_directory(plugins);
-  std::filesystem::copy_file(std::string(PFX_TEST_RELOADABLE_DIR) + "/reloadable_broken_shader.so",
-                             plugins + "/reloadable_broken_shader.so");
+  const std::string plugins =
+      plugin_folder_with(folder, std::string(PFX_TEST_RELOADABLE_DIR) + "/reloadable_broken_shader.so");
   // No --quit-after and a running clock: glmark2 ends the scene itself.
   const InjectRun run = run_injected(folder, "broken", {"--plugins", plugins, "--chain", "tint"},
                                      {PFX_GLMARK2, "-s", "96x64", "-b", "build:duration=0.5"}, false);
@@ -181,10 +179,8 @@ TEST_CASE("pfx-inject --bench reports the application alone, with an empty chain
 
 TEST_CASE("a pass that raises a GL error turns the chain off with one log line and the application runs to its end") {
   ScratchFolder folder("gl-error");
-  const std::string plugins = folder.file("plugins");
-  std::filesystem::create_directory(plugins);
-  std::filesystem::copy_file(std::string(PFX_TEST_MISBEHAVING_PLUGIN_DIR) + "/broken_raises_gl_error.so",
-                             plugins + "/broken_raises_gl_error.so");
+  const std::string plugins =
+      plugin_folder_with(folder, std::string(PFX_TEST_MISBEHAVING_PLUGIN_DIR) + "/broken_raises_gl_error.so");
   const InjectRun run = run_injected(folder, "gl-error", {"--plugins", plugins, "--chain", "broken_raises_gl_error"},
                                      {PFX_GLMARK2, "-s", "96x64", "-b", "build:duration=0.5"}, false);
   INFO(run.result.output << run.log);
