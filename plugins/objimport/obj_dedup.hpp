@@ -67,6 +67,13 @@ class VertexNumbering {
     if (position_count > head_.size()) head_.resize(position_count, kNoIndex);
   }
 
+  // No more insertions: only the keys are kept.
+  void finish() {
+    free_array(&head_);
+    free_array(&next_);
+    free_array(&overflow_);
+  }
+
   // The distinct keys, in order of first insertion.
   BigVector<VertexKey>& keys() { return keys_; }
 

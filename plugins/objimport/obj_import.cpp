@@ -71,6 +71,8 @@ uint64_t room_for(uint64_t most, size_t element_bytes) {
 
 class Importer {
  public:
+  static constexpr size_t kBlock = size_t{1} << 15;  // vertices per parallel task
+
   // file: where the text is a file's mapping, whose pages each chunk drops once read.
   Importer(const std::string& name, const std::string& directory, const ImportOptions& options,
            const FileBytes* file, ObjMesh* out)
@@ -83,6 +85,7 @@ class Importer {
     load_materials();
     report(0.7f);
     write_index_array();
+    free_array(&chunks_);
     report(0.85f);
     fill_vertices();
     generate_normals(numbering_.keys(), out_->positions, out_->indices, options_.pool, threads_, &out_->normals);
@@ -150,6 +153,7 @@ class Importer {
     run_ordered_jobs(options_.pool, threads_, count, window, read, number, [&] {
       report(static_cast<float>(0.6 * static_cast<double>(bytes_numbered.load()) / std::max<double>(1.0, text.size())));
     });
+    numbering_.finish();
     return error->empty();
   }
 
@@ -209,7 +213,7 @@ class Importer {
     // chunk that may hold one, none is numbered and check_indices finds it. (A position index
     // sizes an array here.)
     const uint64_t bytes_left = text_bytes - static_cast<uint64_t>(texts_[c].data() + texts_[c].size() - texts_[0].data());
-    start.suspect |= chunk.max_index[0] > next.bases[0] + bytes_left / 8 + 1 || !make_relative_final(c);
+    start.suspect |= chunk.max_index[0] > next.bases[0] + bytes_left / 8 + 1;
     any_suspect_ |= start.suspect;
     if (!any_suspect_) {
       if (c == 0) {  // for the most corners ("1 ") and positions ("v 0 0 0") the text can hold
@@ -218,7 +222,7 @@ class Importer {
       }
       ids_.resize(next.corner);
       numbering_.cover(std::max(next.bases[0], chunk.max_index[0]));
-      number_corners(c, ids_.data() + start.corner);
+      any_suspect_ = start.suspect = !number_corners(c, ids_.data() + start.corner);
     }
     uint64_t triangles = 0;
     for (uint64_t t : chunk.triangles_by_material) triangles += t;
@@ -227,35 +231,34 @@ class Importer {
     return true;
   }
 
-  // Chunk c's relative indices made final; false when one reaches before the first element.
-  bool make_relative_final(size_t c) {
-    ChunkData& chunk = chunks_[c];
-    const uint32_t* bases = starts_[c].bases;
-    for (size_t word = 0; word < chunk.relative_fields.size(); ++word)
-      for (uint64_t bits = chunk.relative_fields[word]; bits != 0; bits &= bits - 1) {
-        const size_t field = word * 64 + static_cast<size_t>(__builtin_ctzll(bits));
-        const int64_t one_based = int64_t{bases[field % 3]} + static_cast<int32_t>(chunk.corners[field]);
-        if (one_based < 1) return false;
-        chunk.corners[field] = static_cast<uint32_t>(one_based - 1);
-      }
-    return true;
-  }
-
-  // Each corner of chunk c numbered, in order, into ids; a corner without a normal is keyed by its
+  // Each corner of chunk c numbered, in order, into ids, its relative indices made final first
+  // (false when one reaches before the first element). A corner without a normal is keyed by its
   // face's normal group: its smoothing group, or the face itself when smoothing is off.
-  void number_corners(size_t c, uint32_t* ids) {
+  bool number_corners(size_t c, uint32_t* ids) {
     const ChunkData& chunk = chunks_[c];
+    const uint32_t* bases = starts_[c].bases;
+    const bool any_relative = !chunk.relative_fields.empty();
     uint32_t smoothing = starts_[c].smoothing;
-    const uint32_t* fields = chunk.corners.data();
+    uint64_t field = 0;
     size_t change = 0;
     for (size_t f = 0; f < chunk.faces.size(); ++f) {
       for (; change < chunk.changes.size() && chunk.changes[change].first_face == f; ++change)
         if (chunk.changes[change].kind == StateChange::kSmoothing) smoothing = chunk.changes[change].value;
       const uint32_t group =
           smoothing == 0 ? kFlatFaceBit | static_cast<uint32_t>(starts_[c].face + f) : smoothing;
-      for (uint32_t k = 0; k < chunk.faces[f].corner_count; ++k, fields += 3)
-        *ids++ = numbering_.find_or_insert({fields[0], fields[1], fields[2], fields[2] == kNoIndex ? group : 0});
+      for (uint32_t k = 0; k < chunk.faces[f].corner_count; ++k) {
+        uint32_t index[3];
+        for (int kind = 0; kind < 3; ++kind, ++field) {
+          index[kind] = chunk.corners[field];
+          if (!any_relative || !chunk.is_relative(field)) continue;
+          const int64_t one_based = int64_t{bases[kind]} + static_cast<int32_t>(index[kind]);
+          if (one_based < 1) return false;
+          index[kind] = static_cast<uint32_t>(one_based - 1);
+        }
+        *ids++ = numbering_.find_or_insert({index[0], index[1], index[2], index[2] == kNoIndex ? group : 0});
+      }
     }
+    return true;
   }
 
   // Chunk c's other statements: the state in force after it, its usemtl names, material libraries
@@ -446,36 +449,26 @@ class Importer {
     }
   }
 
-  // Stage 5, in blocks on every worker, each block's bounds combined after (min and max do not
-  // depend on the order).
+  // Stage 5: each kind of vertex data gathered by the numbered keys, one kind at a time, the
+  // file's array of that kind freed once gathered; then the bounds.
   void fill_vertices() {
     const BigVector<VertexKey>& keys = numbering_.keys();
-    const size_t count = keys.size();
-    const bool any_texcoords = std::any_of(keys.begin(), keys.end(), [](const VertexKey& k) { return k.vt != kNoIndex; });
-    out_->positions.resize(3 * count);
-    out_->normals.resize(3 * count);
-    if (any_texcoords) out_->texcoords.resize(2 * count);
-    if (!colors_.empty()) out_->colors.resize(3 * count);
-    constexpr size_t kBlock = size_t{1} << 15;
-    const size_t blocks = (count + kBlock - 1) / kBlock;
+    gather<3>(&positions_, &VertexKey::v, &out_->positions);
+    if (!colors_.empty()) gather<3>(&colors_, &VertexKey::v, &out_->colors);
+    if (std::any_of(keys.begin(), keys.end(), [](const VertexKey& k) { return k.vt != kNoIndex; }))
+      gather<2>(&texcoords_, &VertexKey::vt, &out_->texcoords);
+    gather<3>(&normals_, &VertexKey::vn, &out_->normals);  // those without are generated later
+    for (BigVector<float>* data : {&positions_, &texcoords_, &normals_, &colors_}) free_array(data);
+    // Per block of vertices, combined after (min and max do not depend on the order).
+    const size_t count = keys.size(), blocks = (count + kBlock - 1) / kBlock;
     std::vector<std::array<float, 6>> block_bounds(blocks);
     run_parallel(options_.pool, threads_, blocks, [&](size_t b, unsigned) {
       std::array<float, 6> bounds = {HUGE_VALF, HUGE_VALF, HUGE_VALF, -HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
-      for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
-        const VertexKey& key = keys[i];
-        const float* p = &positions_[3 * size_t{key.v}];
-        std::memcpy(&out_->positions[3 * i], p, 3 * sizeof(float));
+      for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i)
         for (int k = 0; k < 3; ++k) {  // as std::min and std::max: a NaN coordinate is passed over
-          bounds[k] = std::min(bounds[k], p[k]);
-          bounds[3 + k] = std::max(bounds[3 + k], p[k]);
+          bounds[k] = std::min(bounds[k], out_->positions[3 * i + k]);
+          bounds[3 + k] = std::max(bounds[3 + k], out_->positions[3 * i + k]);
         }
-        if (!colors_.empty()) std::memcpy(&out_->colors[3 * i], &colors_[3 * size_t{key.v}], 3 * sizeof(float));
-        if (any_texcoords) {
-          if (key.vt != kNoIndex) std::memcpy(&out_->texcoords[2 * i], &texcoords_[2 * size_t{key.vt}], 2 * sizeof(float));
-          else out_->texcoords[2 * i] = out_->texcoords[2 * i + 1] = 0.0f;
-        }
-        if (key.vn != kNoIndex) std::memcpy(&out_->normals[3 * i], &normals_[3 * size_t{key.vn}], 3 * sizeof(float));
-      }
       block_bounds[b] = bounds;
     });
     for (size_t b = 0; b < blocks; ++b)
@@ -483,8 +476,23 @@ class Importer {
         out_->bounds_min[k] = b == 0 ? block_bounds[b][k] : std::min(out_->bounds_min[k], block_bounds[b][k]);
         out_->bounds_max[k] = b == 0 ? block_bounds[b][3 + k] : std::max(out_->bounds_max[k], block_bounds[b][3 + k]);
       }
-    free_array(&chunks_);
-    for (BigVector<float>* data : {&positions_, &texcoords_, &normals_, &colors_}) free_array(data);
+  }
+
+  // Each vertex's kWidth floats of `source` at the element its key's `field` names (zeros for
+  // none), in blocks on every worker; `source` freed after.
+  template <int kWidth>
+  void gather(BigVector<float>* source, uint32_t VertexKey::*field, BigVector<float>* out) {
+    const BigVector<VertexKey>& keys = numbering_.keys();
+    const size_t count = keys.size();
+    out->resize(kWidth * count);
+    run_parallel(options_.pool, threads_, (count + kBlock - 1) / kBlock, [&](size_t b, unsigned) {
+      for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
+        const uint32_t element = keys[i].*field;
+        for (int k = 0; k < kWidth; ++k)
+          (*out)[kWidth * i + k] = element == kNoIndex ? 0.0f : (*source)[kWidth * size_t{element} + k];
+      }
+    });
+    free_array(source);
   }
 
   // Stage 7: skipped statements and an empty mesh said once, then every warning in line order.

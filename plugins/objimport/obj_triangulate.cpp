@@ -16,24 +16,18 @@ void fan(uint32_t first, const std::vector<uint32_t>& next, uint32_t remaining, 
   }
 }
 
-}  // namespace
-
-Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::vector<uint32_t>* triangles,
-                                  TriangulationScratch* s) {
-  auto fan_from_first = [&] {
-    for (uint32_t k = 1; k + 1 < n; ++k) triangles->insert(triangles->end(), {0, k, k + 1});
-  };
-  if (n > kMaxEarClipCorners) {
-    fan_from_first();
-    return Triangulation::kFanTooLarge;
-  }
-  // Newell's normal: robust for non-planar and concave polygons; its largest component says
-  // which axis to drop when projecting to 2D.
+// The polygon projected to 2D (xy) along the largest axis of its Newell normal, which is robust for
+// non-planar and concave polygons; false when it has no area (all corners on a line or a point).
+// *orientation: +1 or -1, the polygon's winding in the projection (the axis order flips it for
+// some dropped axes). kCorners: n known when compiled (4), or 0.
+template <uint32_t kCorners>
+[[gnu::always_inline]] inline bool project(const float* const* corners, uint32_t n, double* xy, double* orientation) {
+  if (kCorners) n = kCorners;
   double normal[3] = {0, 0, 0};
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (uint32_t i = 0; i < n; ++i) {
     const float* a = corners[i];
-    const float* b = corners[(i + 1) % n];
+    const float* b = corners[i + 1 == n ? 0 : i + 1];
     normal[0] += (double(a[1]) - b[1]) * (double(a[2]) + b[2]);
     normal[1] += (double(a[2]) - b[2]) * (double(a[0]) + b[0]);
     normal[2] += (double(a[0]) - b[0]) * (double(a[1]) + b[1]);
@@ -45,33 +39,50 @@ Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::
   int drop = 2;
   if (std::fabs(normal[0]) >= std::fabs(normal[1]) && std::fabs(normal[0]) >= std::fabs(normal[2])) drop = 0;
   else if (std::fabs(normal[1]) >= std::fabs(normal[2])) drop = 1;
-  const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
   double extent2 = 0;
   for (int k = 0; k < 3; ++k) extent2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
   // Twice the projected area equals the dropped normal component; relative to the size squared it
   // says whether the polygon has any area at all.
-  if (!(std::fabs(normal[drop]) > 1e-12 * extent2)) {
+  if (!(std::fabs(normal[drop]) > 1e-12 * extent2)) return false;
+  const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
+  for (uint32_t i = 0; i < n; ++i) {
+    xy[2 * i] = corners[i][u];
+    xy[2 * i + 1] = corners[i][v];
+  }
+  double area2 = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t j = i + 1 == n ? 0 : i + 1;
+    area2 += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+  }
+  *orientation = area2 > 0 ? 1.0 : -1.0;
+  return true;
+}
+
+// Positive for a left turn a -> b -> c in the polygon's own winding.
+inline double turn(const double* xy, double orientation, uint32_t a, uint32_t b, uint32_t c) {
+  return orientation * ((xy[2 * b] - xy[2 * a]) * (xy[2 * c + 1] - xy[2 * a + 1]) -
+                        (xy[2 * b + 1] - xy[2 * a + 1]) * (xy[2 * c] - xy[2 * a]));
+}
+
+}  // namespace
+
+Triangulation triangulate_polygon(const float* const* corners, uint32_t n, std::vector<uint32_t>* triangles,
+                                  TriangulationScratch* s) {
+  auto fan_from_first = [&] {
+    for (uint32_t k = 1; k + 1 < n; ++k) triangles->insert(triangles->end(), {0, k, k + 1});
+  };
+  if (n > kMaxEarClipCorners) {
+    fan_from_first();
+    return Triangulation::kFanTooLarge;
+  }
+  s->xy.resize(2 * size_t{n});
+  double* xy = s->xy.data();
+  double orientation;
+  if (!(n == 4 ? project<4>(corners, n, xy, &orientation) : project<0>(corners, n, xy, &orientation))) {
     fan_from_first();
     return Triangulation::kFanDegenerate;
   }
-  s->xy.resize(2 * size_t{n});
-  for (uint32_t i = 0; i < n; ++i) {
-    s->xy[2 * i] = corners[i][u];
-    s->xy[2 * i + 1] = corners[i][v];
-  }
-  const double* xy = s->xy.data();
-  // The winding in the projection (the axis order flips it for some dropped axes).
-  double area2 = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t j = (i + 1) % n;
-    area2 += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
-  }
-  const double orientation = area2 > 0 ? 1.0 : -1.0;
-  // Positive for a left turn a -> b -> c in the polygon's own winding.
-  auto turn = [&](uint32_t a, uint32_t b, uint32_t c) {
-    return orientation * ((xy[2 * b] - xy[2 * a]) * (xy[2 * c + 1] - xy[2 * a + 1]) -
-                          (xy[2 * b + 1] - xy[2 * a + 1]) * (xy[2 * c] - xy[2 * a]));
-  };
+  auto turn = [&](uint32_t a, uint32_t b, uint32_t c) { return pfx_obj::turn(xy, orientation, a, b, c); };
   auto same_point = [&](uint32_t a, uint32_t b) { return xy[2 * a] == xy[2 * b] && xy[2 * a + 1] == xy[2 * b + 1]; };
   // A convex quadrilateral, as most quads are, without the walk: the triangles it would clip.
   if (n == 4 && turn(3, 0, 1) > 0 && turn(0, 1, 2) > 0 && turn(1, 2, 3) > 0 && turn(2, 3, 0) > 0) {
