@@ -36,6 +36,7 @@ struct StateChange {
   uint32_t first_face;  // chunk-local
   Kind kind;
   uint32_t value;  // kMaterial: index into ChunkData::material_names; kSmoothing: group, 0 = off
+  uint64_t first_triangle;  // chunk-local: the triangles its faces before it make
 };
 
 // Statements counted and skipped with one warning per keyword.

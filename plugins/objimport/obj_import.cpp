@@ -3,13 +3,15 @@
 //   1. cut      the text into chunks at line ends (split_at_line_ends, obj_reader.cpp)
 //   2. read     each chunk on any worker (obj_reader.cpp: the grammar, into obj_chunk.hpp's data),
 //      number  and, in file order as soon as it and every chunk before it are read, its vertex
-//               data appended to the file's and its corners numbered against one vertex numbering
-//               for the whole file (obj_dedup.hpp): relative indices made final, one vertex number
-//               per corner. The workers read later chunks while one numbers (obj_parallel.hpp), so
-//               the numbers never depend on the thread count.
-//   3. check    indices against the file's totals; material libraries read (obj_mtl.cpp)
-//   4. index    sub-meshes in order of their material's first use; each chunk's triangles
-//               written at its material's place, polygons ear-clipped (obj_triangulate.cpp)
+//               data appended to the file's and its faces written as triangles of vertex numbers:
+//               each corner numbered against one vertex numbering for the whole file
+//               (obj_dedup.hpp), relative indices made final, polygons ear-clipped
+//               (obj_triangulate.cpp). The workers read later chunks while one numbers
+//               (obj_parallel.hpp), so the numbers never depend on the thread count.
+//   3. check    indices against the file's totals; polygons that reached past the positions read
+//               so far clipped; material libraries read (obj_mtl.cpp)
+//   4. index    sub-meshes in order of their material's first use, each chunk's triangles copied
+//               to their material's place
 //   5. vertices the vertex arrays from the numbered keys, and the bounds
 //   6. normals  where the file gives none (obj_normals.cpp)
 //   7. warnings in line order
@@ -82,6 +84,7 @@ class Importer {
   bool run(std::string_view text, std::string* error) {
     report(0.0f);
     if (!read_and_number(text, error) || !check_indices(error)) return false;
+    clip_deferred_polygons();
     load_materials();
     report(0.7f);
     write_index_array();
@@ -101,11 +104,10 @@ class Importer {
     uint64_t line = 1;
     uint32_t bases[3] = {0, 0, 0};  // v, vt and vn before the chunk
     uint64_t face = 0;              // the file ordinal of its first face
-    uint64_t corner = 0;            // where its corners' vertex numbers start in ids_
+    uint64_t triangle = 0;          // where its triangles start in triangles_
     uint32_t material = kNoIndex;   // the usemtl name in force (index into names_), or none
     uint32_t smoothing = kDefaultSmoothing;
     std::vector<uint32_t> names;    // the chunk's material names as indices into names_
-    bool faces_kept = false;        // its faces are needed again: polygons or usemtl
     bool suspect = false;           // it may hold an index the file cannot satisfy
   };
 
@@ -127,8 +129,9 @@ class Importer {
     return std::max<size_t>(1, chunks);
   }
 
-  // Stage 2. A chunk's corners and faces are read into the arrays of one of a few slots and go
-  // back to it once numbered, so later chunks reuse pages already written instead of fresh ones.
+  // Stage 2. A chunk's vertex data, corners and faces are read into the arrays of one of a few
+  // slots and go back to it once numbered, so later chunks reuse pages already written instead of
+  // fresh ones.
   bool read_and_number(std::string_view text, std::string* error) {
     texts_ = split_at_line_ends(text, chunk_count(text.size()));
     const size_t count = texts_.size();
@@ -140,13 +143,13 @@ class Importer {
     std::vector<ChunkData> slots(window);  // only their arrays are used
     std::atomic<uint64_t> bytes_numbered{0};
     auto read = [&](size_t c, unsigned) {
-      swap_arrays(&chunks_[c], &slots[c % window], true);
+      swap_arrays(&chunks_[c], &slots[c % window]);
       parse_chunk(texts_[c], c == 0, &chunks_[c], largest);
       if (file_) file_->drop_pages(texts_[c]);
     };
     auto number = [&](size_t c) {
       if (!number_chunk(c, text.size(), error)) return false;
-      swap_arrays(&chunks_[c], &slots[c % window], !starts_[c].faces_kept);
+      swap_arrays(&chunks_[c], &slots[c % window]);
       bytes_numbered += texts_[c].size();
       return true;
     };
@@ -157,13 +160,13 @@ class Importer {
     return error->empty();
   }
 
-  // A chunk's large arrays swapped with a slot's (its faces too when `faces`).
-  static void swap_arrays(ChunkData* a, ChunkData* b, bool faces) {
+  // A chunk's large arrays swapped with a slot's.
+  static void swap_arrays(ChunkData* a, ChunkData* b) {
     a->positions.swap(b->positions);
     a->texcoords.swap(b->texcoords);
     a->normals.swap(b->normals);
     a->corners.swap(b->corners);
-    if (faces) a->faces.swap(b->faces);
+    a->faces.swap(b->faces);
   }
 
   // Chunk c's vertex data appended to the file's (colours: white for a v without one, once any v
@@ -183,8 +186,8 @@ class Importer {
     colors_.insert(colors_.end(), chunk.colors.begin(), chunk.colors.end());
   }
 
-  // Chunk c, read, after every chunk before it: its corners numbered into ids_, and starts_[c + 1]
-  // set from starts_[c]. False with *error at the first chunk that failed to read.
+  // Chunk c, read, after every chunk before it: its faces numbered into triangles_, and
+  // starts_[c + 1] set from starts_[c]. False with *error at the first chunk that failed to read.
   bool number_chunk(size_t c, uint64_t text_bytes, std::string* error) {
     ChunkData& chunk = chunks_[c];
     ChunkStart& start = starts_[c];
@@ -203,9 +206,10 @@ class Importer {
     }
     next.line = start.line + chunk.line_ends;
     next.face = start.face + chunk.faces.size();
-    const uint64_t corners = chunk.corners.size() / 3;
-    next.corner = start.corner + corners;
-    if (next.corner > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 face corners");
+    uint64_t triangles = 0;
+    for (uint64_t t : chunk.triangles_by_material) triangles += t;
+    next.triangle = start.triangle + triangles;
+    if (3 * next.triangle > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 triangle indices");
     collect_statements(c);
     append_vertex_data(c, text_bytes);
 
@@ -216,37 +220,41 @@ class Importer {
     start.suspect |= chunk.max_index[0] > next.bases[0] + bytes_left / 8 + 1;
     any_suspect_ |= start.suspect;
     if (!any_suspect_) {
-      if (c == 0) {  // for the most corners ("1 ") and positions ("v 0 0 0") the text can hold
-        ids_.reserve(room_for(text_bytes / 2 + 1, sizeof(uint32_t)));
+      if (c == 0) {  // for the most the text can hold: a polygon's corner "1 " adds a triangle
+        triangles_.reserve(room_for(3 * (text_bytes / 2 + 1), sizeof(uint32_t)));
         numbering_.reserve(room_for(text_bytes / 2 + 1, sizeof(VertexKey) + 4), room_for(text_bytes / 8 + 1, 4));
       }
-      ids_.resize(next.corner);
+      triangles_.resize(3 * next.triangle);
       numbering_.cover(std::max(next.bases[0], chunk.max_index[0]));
-      any_suspect_ = start.suspect = !number_corners(c, ids_.data() + start.corner);
+      any_suspect_ = start.suspect = !number_faces(c, triangles_.data() + 3 * start.triangle);
     }
-    uint64_t triangles = 0;
-    for (uint64_t t : chunk.triangles_by_material) triangles += t;
-    start.faces_kept = 3 * triangles != corners || !chunk.material_names.empty();
     free_array(&chunk.relative_fields);
     return true;
   }
 
-  // Each corner of chunk c numbered, in order, into ids, its relative indices made final first
-  // (false when one reaches before the first element). A corner without a normal is keyed by its
-  // face's normal group: its smoothing group, or the face itself when smoothing is off.
-  bool number_corners(size_t c, uint32_t* ids) {
+  // Chunk c's faces as triangles of vertex numbers, into `out`. Each corner is numbered in order,
+  // its relative indices made final first (false when one reaches before the first element); a
+  // corner without a normal is keyed by its face's normal group: its smoothing group, or the face
+  // itself when smoothing is off. A polygon is ear-clipped, or, when a corner's position comes
+  // later in the file, cut as a fan for now and clipped once every chunk is read.
+  bool number_faces(size_t c, uint32_t* out) {
     const ChunkData& chunk = chunks_[c];
-    const uint32_t* bases = starts_[c].bases;
+    const ChunkStart& start = starts_[c];
+    const uint32_t* bases = start.bases;
+    const uint32_t positions_read = starts_[c + 1].bases[0];
     const bool any_relative = !chunk.relative_fields.empty();
-    uint32_t smoothing = starts_[c].smoothing;
+    uint32_t smoothing = start.smoothing;
     uint64_t field = 0;
     size_t change = 0;
     for (size_t f = 0; f < chunk.faces.size(); ++f) {
       for (; change < chunk.changes.size() && chunk.changes[change].first_face == f; ++change)
         if (chunk.changes[change].kind == StateChange::kSmoothing) smoothing = chunk.changes[change].value;
-      const uint32_t group =
-          smoothing == 0 ? kFlatFaceBit | static_cast<uint32_t>(starts_[c].face + f) : smoothing;
-      for (uint32_t k = 0; k < chunk.faces[f].corner_count; ++k) {
+      const uint32_t group = smoothing == 0 ? kFlatFaceBit | static_cast<uint32_t>(start.face + f) : smoothing;
+      const uint32_t n = chunk.faces[f].corner_count;
+      if (n > 3) polygon_.resize(n), corners_.resize(n);
+      uint32_t* ids = n == 3 ? out : polygon_.data();
+      bool all_read = true;
+      for (uint32_t k = 0; k < n; ++k) {
         uint32_t index[3];
         for (int kind = 0; kind < 3; ++kind, ++field) {
           index[kind] = chunk.corners[field];
@@ -255,10 +263,47 @@ class Importer {
           if (one_based < 1) return false;
           index[kind] = static_cast<uint32_t>(one_based - 1);
         }
-        *ids++ = numbering_.find_or_insert({index[0], index[1], index[2], index[2] == kNoIndex ? group : 0});
+        ids[k] = numbering_.find_or_insert({index[0], index[1], index[2], index[2] == kNoIndex ? group : 0});
+        if (n > 3 && (all_read &= index[0] < positions_read)) corners_[k] = &positions_[3 * size_t{index[0]}];
+      }
+      if (n == 3) {
+        out += 3;
+      } else if (all_read) {
+        out = clip(ids, corners_.data(), n, start.line + chunk.faces[f].line, out);
+      } else {
+        deferred_.push_back({static_cast<uint64_t>(out - triangles_.data()), n, start.line + chunk.faces[f].line});
+        for (uint32_t k = 1; k + 1 < n; ++k) *out++ = ids[0], *out++ = ids[k], *out++ = ids[k + 1];
       }
     }
     return true;
+  }
+
+  // Polygon `ids` (n vertex numbers, their positions at `corners`) as n - 2 triangles from `out` on,
+  // with a warning at `line` when it had to be cut as a fan. Returns the end of what it wrote.
+  uint32_t* clip(const uint32_t* ids, const float* const* corners, uint32_t n, uint64_t line, uint32_t* out) {
+    clipped_.clear();
+    const Triangulation how = triangulate_polygon(corners, n, &clipped_, &scratch_);
+    for (uint32_t k : clipped_) *out++ = ids[k];
+    if (how != Triangulation::kEarClipped)
+      warn(line, "f: polygon of " + std::to_string(n) + " corners " +
+                     (how == Triangulation::kFanDegenerate  ? "has no area"
+                      : how == Triangulation::kFanTooLarge ? "is too large for ear clipping (over 4096 corners)"
+                                                           : "is self-intersecting") +
+                     ": triangulated as a fan");
+    return out;
+  }
+
+  // The polygons cut as fans while a corner's position was still to come, clipped now. A fan
+  // (0 1 2) (0 2 3) ... holds the polygon's corners 0 and 1, then one in each triangle's third place.
+  void clip_deferred_polygons() {
+    for (const DeferredPolygon& polygon : deferred_) {
+      uint32_t* fan = triangles_.data() + polygon.at;
+      polygon_.assign({fan[0], fan[1]});
+      for (uint32_t k = 0; k + 2 < polygon.corners; ++k) polygon_.push_back(fan[3 * k + 2]);
+      corners_.resize(polygon.corners);
+      for (uint32_t k = 0; k < polygon.corners; ++k) corners_[k] = &positions_[3 * size_t{numbering_.keys()[polygon_[k]].v}];
+      clip(polygon_.data(), corners_.data(), polygon.corners, polygon.line, fan);
+    }
   }
 
   // Chunk c's other statements: the state in force after it, its usemtl names, material libraries
@@ -381,13 +426,12 @@ class Importer {
     for (uint32_t s : order) {
       place[s] = total;
       total += 3 * triangles[s];
-      if (total > 0xFFFFFFFFull) throw std::length_error(name_ + ": more than 2^32 - 1 triangle indices");
       out_->submeshes.push_back({static_cast<uint32_t>(place[s]), static_cast<uint32_t>(3 * triangles[s]),
                                  s == slots - 1 ? kNoIndex : s});
     }
     out_->faces = starts_[count].face;
-    if (order.size() <= 1 && total == ids_.size()) {  // triangles of one material: the numbers as they are
-      out_->indices.swap(ids_);
+    if (order.size() <= 1) {  // one material: the triangles as they are
+      out_->indices.swap(triangles_);
       return;
     }
     out_->indices.resize(total);
@@ -397,56 +441,26 @@ class Importer {
       for (size_t m = 0; m < chunks_[c].triangles_by_material.size(); ++m)
         place[slot_of(c, m)] += 3 * chunks_[c].triangles_by_material[m];
     }
-    std::vector<std::vector<Located>> chunk_warnings(count);
-    run_parallel(options_.pool, threads_, count,
-                 [&](size_t c, unsigned) { write_triangles(c, &chunk_places[c], &chunk_warnings[c]); });
-    for (auto& list : chunk_warnings)
-      for (Located& w : list) warnings_.push_back(std::move(w));
-    free_array(&ids_);
+    run_parallel(options_.pool, threads_, count, [&](size_t c, unsigned) { copy_runs(c, &chunk_places[c]); });
+    free_array(&triangles_);
   }
 
-  // Chunk c's faces from its vertex numbers to their places: a triangle copied, a polygon
-  // ear-clipped (with a warning when it had to be a fan).
-  void write_triangles(size_t c, std::vector<uint64_t>* places, std::vector<Located>* warnings) {
-    const ChunkData& chunk = chunks_[c];
-    const ChunkStart& start = starts_[c];
-    uint32_t* indices = out_->indices.data();
-    const uint32_t* ids = ids_.data() + start.corner;
-    if (!start.faces_kept) {  // triangles only, all of the material in force at its start
-      const uint64_t n = starts_[c + 1].corner - start.corner;
-      if (n > 0) std::memcpy(indices + (*places)[slot_of(c, 0)], ids, n * sizeof(uint32_t));
-      return;
-    }
-    std::vector<const float*> corners;
-    std::vector<uint32_t> triangles;
-    TriangulationScratch scratch;
+  // Chunk c's triangles to their material's places, a run of one material at a time.
+  void copy_runs(size_t c, std::vector<uint64_t>* places) {
+    const uint32_t* from = triangles_.data() + 3 * starts_[c].triangle;
     uint32_t slot = slot_of(c, 0);
-    size_t change = 0;
-    for (size_t f = 0; f < chunk.faces.size(); ++f) {
-      for (; change < chunk.changes.size() && chunk.changes[change].first_face == f; ++change)
-        if (chunk.changes[change].kind == StateChange::kMaterial) slot = slot_of(c, chunk.changes[change].value + 1);
-      const uint32_t n = chunk.faces[f].corner_count;
-      uint64_t& place = (*places)[slot];
-      if (n == 3) {
-        std::memcpy(indices + place, ids, 3 * sizeof(uint32_t));
-        place += 3;
-      } else {
-        corners.resize(n);
-        for (uint32_t k = 0; k < n; ++k) corners[k] = &positions_[3 * size_t{numbering_.keys()[ids[k]].v}];
-        triangles.clear();
-        const Triangulation how = triangulate_polygon(corners.data(), n, &triangles, &scratch);
-        for (uint32_t k : triangles) indices[place++] = ids[k];
-        if (how != Triangulation::kEarClipped)
-          warnings->push_back({start.line + chunk.faces[f].line,
-                               "f: polygon of " + std::to_string(n) + " corners " +
-                                   (how == Triangulation::kFanDegenerate ? "has no area"
-                                    : how == Triangulation::kFanTooLarge
-                                        ? "is too large for ear clipping (over 4096 corners)"
-                                        : "is self-intersecting") +
-                                   ": triangulated as a fan"});
+    uint64_t copied = 0;
+    auto copy_to = [&](uint64_t end) {
+      std::memcpy(out_->indices.data() + (*places)[slot], from + 3 * copied, 3 * (end - copied) * sizeof(uint32_t));
+      (*places)[slot] += 3 * (end - copied);
+      copied = end;
+    };
+    for (const StateChange& change : chunks_[c].changes)
+      if (change.kind == StateChange::kMaterial) {
+        copy_to(change.first_triangle);
+        slot = slot_of(c, change.value + 1);
       }
-      ids += n;
-    }
+    copy_to(starts_[c + 1].triangle - starts_[c].triangle);
   }
 
   // Stage 5: each kind of vertex data gathered by the numbered keys, one kind at a time, the
@@ -519,7 +533,16 @@ class Importer {
   std::vector<ChunkStart> starts_;  // per chunk, and one past the last: the file's totals
   bool any_suspect_ = false;
   VertexNumbering numbering_;
-  BigVector<uint32_t> ids_;  // every corner's vertex number, in file order
+  BigVector<uint32_t> triangles_;  // three vertex numbers per triangle, in file order
+  struct DeferredPolygon {
+    uint64_t at;  // its first triangle's place in triangles_
+    uint32_t corners;
+    uint64_t line;
+  };
+  std::vector<DeferredPolygon> deferred_;
+  std::vector<uint32_t> polygon_, clipped_;  // a polygon's vertex numbers; its triangles as corner numbers
+  std::vector<const float*> corners_;        // a polygon's positions
+  TriangulationScratch scratch_;
   std::vector<Located> names_;   // usemtl names in order of first use, at that line
   std::unordered_map<std::string, uint32_t> name_index_;
   std::vector<uint32_t> name_slots_;  // per name: its material's index

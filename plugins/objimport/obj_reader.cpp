@@ -379,6 +379,7 @@ class Reader : LineCursor {
     std::copy(max_index, max_index + 3, out_->max_index);
     if (corners < 3) return fail("f: needs at least 3 corners (got " + std::to_string(corners) + ")");
     out_->triangles_by_material[material_] += corners - 2;
+    triangles_ += corners - 2;
     uint64_t& first = out_->first_face_by_material[material_];
     if (first == ChunkData::kNoFace) first = faces_so_far();
     *face_at_++ = {corners, static_cast<uint32_t>(line_)};
@@ -431,7 +432,7 @@ class Reader : LineCursor {
         it->value = value;
         return;
       }
-    out_->changes.push_back({face, kind, value});
+    out_->changes.push_back({face, kind, value, triangles_});
   }
 
   ChunkData* out_;
@@ -441,6 +442,7 @@ class Reader : LineCursor {
   float* normal_at_ = nullptr;
   uint32_t* corner_at_ = nullptr;
   Face* face_at_ = nullptr;
+  uint64_t triangles_ = 0;  // the triangles of the faces so far
   uint32_t material_ = 0;  // the next face's material: 0, or 1 + its index in material_names
   std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index
 };

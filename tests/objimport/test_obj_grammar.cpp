@@ -74,6 +74,18 @@ TEST_CASE("obj grammar: forward references resolve against the whole file", "[ob
   auto r = import_text("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
   REQUIRE(r.ok);
   CHECK(positions_of_corners(r.mesh) == std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+  // Polygons before their positions are cut where they would be after them: a dart whose first
+  // corner is its reflex one's neighbour (a fan from it would cover the notch), and one with no area.
+  const std::string dart = "v 2 1 0\nv 0.5 0.5 0\nv 1 2 0\nv 0 0 0\n", faces = "f 1 2 3 4\nf 1 3 1 3\n";
+  // (Chunks of a line each: a polygon numbered before the chunk with its positions is read.)
+  auto later = import_text(faces + dart, 1, 8), earlier = import_text(dart + faces);
+  REQUIRE(later.ok);
+  REQUIRE(earlier.ok);
+  const std::vector<float> fan = {2, 1, 0, 0.5f, 0.5f, 0, 1, 2, 0, 2, 1, 0, 1, 2, 0, 0, 0, 0};
+  const std::vector<float> clipped = positions_of_corners(earlier.mesh);
+  CHECK(std::vector<float>(clipped.begin(), clipped.begin() + 18) != fan);
+  CHECK(positions_of_corners(later.mesh) == clipped);
+  CHECK(later.mesh.warnings == std::vector<std::string>{"test.obj:2: f: polygon of 4 corners has no area: triangulated as a fan"});
 }
 
 TEST_CASE("obj grammar: v with w, with a colour, vt with one or three numbers", "[objimport][grammar]") {
