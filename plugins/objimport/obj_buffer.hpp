@@ -8,7 +8,6 @@
 
 #include <sys/mman.h>
 
-#include <algorithm>
 #include <cstddef>
 #include <new>
 #include <utility>
@@ -59,23 +58,9 @@ struct BigBufferAllocator {
 template <typename T>
 using BigVector = std::vector<T, BigBufferAllocator<T>>;
 
-// Empties an array and gives its memory back at once. `array = {}` does not: it calls
-// operator=(initializer_list), which destroys the elements and keeps the capacity, so the memory
-// went back only with the array's owner (a 487 MB file's 35 MB of vertex keys, say, at the very
-// end of the import instead of after the normals).
+// Empties an array and gives its memory back now (`array = {}` keeps the capacity).
 template <typename Array>
 void free_array(Array* array) {
   Array().swap(*array);
 }
-
-// Element-wise equality with a plain vector (tests compare results with literals).
-template <typename T>
-bool operator==(const BigVector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
-}
-template <typename T>
-bool operator==(const std::vector<T>& a, const BigVector<T>& b) {
-  return b == a;
-}
-
 }  // namespace pfx_obj

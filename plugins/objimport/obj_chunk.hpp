@@ -1,7 +1,7 @@
-// One chunk of an OBJ file, read on its own (obj_reader.cpp). The file is cut into chunks at line
-// ends which are read in parallel; a chunk cannot know what came before it, so what
-// depends on earlier text is kept in a form the in-order merge (obj_import.cpp) can finish: relative
-// indices, the material and smoothing changes, and lines counted from the chunk's first line.
+// One chunk of an OBJ file, read on its own (obj_reader.cpp), in parallel with the others. A chunk
+// cannot know what came before it, so what depends on earlier text is kept in a form the in-order
+// numbering (obj_import.cpp) can finish: relative indices, the material and smoothing changes, and
+// lines counted from the chunk's first line.
 #pragma once
 
 #include <cstdint>
@@ -68,11 +68,7 @@ struct ChunkData {
   }
   uint32_t max_index[3] = {0, 0, 0};  // the largest positive v, vt, vn index written (1-based)
   BigVector<Face> faces;
-  // Per material of the chunk (0: the one in force at its start, i + 1: material_names[i]): the
-  // triangles its faces make and its first face (chunk-local), or kNoFace.
-  static constexpr uint64_t kNoFace = ~uint64_t{0};
-  std::vector<uint64_t> triangles_by_material{0};
-  std::vector<uint64_t> first_face_by_material{kNoFace};
+  uint64_t triangles = 0;  // the n - 2 triangles of each face of n corners
   std::vector<StateChange> changes;
   std::vector<std::string> material_names;    // usemtl names, in order of first use in the chunk
   std::vector<uint64_t> material_name_lines;  // the line of each name's first usemtl
@@ -81,13 +77,9 @@ struct ChunkData {
   uint64_t lines_skipped = 0;   // `l` statements
   uint64_t points_skipped = 0;  // `p` statements
   std::map<std::string, IgnoredKeyword> ignored;
-  std::vector<LocalMessage> warnings;  // the first kMaxKeptWarnings
-  uint64_t warning_total = 0;
   bool failed = false;
   LocalMessage error;  // the first error: reading stops there
 };
-
-constexpr size_t kMaxKeptWarnings = 100;
 
 // The text cut into about `count` chunks of similar size (fewer when it has fewer line ends), each
 // cut right after a line end that does not continue its line, so no statement is split.

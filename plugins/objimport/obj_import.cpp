@@ -206,9 +206,7 @@ class Importer {
     }
     next.line = start.line + chunk.line_ends;
     next.face = start.face + chunk.faces.size();
-    uint64_t triangles = 0;
-    for (uint64_t t : chunk.triangles_by_material) triangles += t;
-    next.triangle = start.triangle + triangles;
+    next.triangle = start.triangle + chunk.triangles;
     if (3 * next.triangle > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 triangle indices");
     collect_statements(c);
     append_vertex_data(c, text_bytes);
@@ -405,18 +403,32 @@ class Importer {
     return name == kNoIndex ? static_cast<uint32_t>(out_->materials.size()) : name_slots_[name];
   }
 
-  // Stage 4. Sub-meshes in order of their material's first face; each chunk's triangles of each
-  // material at their place, which the chunks then fill in parallel.
+  // run(slot, first, end) for each run of chunk c's triangles of one material, in order: the
+  // triangles [first, end) of triangles_.
+  template <typename Run>
+  void for_each_run(size_t c, Run run) const {
+    const uint64_t base = starts_[c].triangle;
+    uint32_t slot = slot_of(c, 0);
+    uint64_t first = base;
+    for (const StateChange& change : chunks_[c].changes) {
+      if (change.kind != StateChange::kMaterial) continue;
+      if (base + change.first_triangle > first) run(slot, first, base + change.first_triangle);
+      slot = slot_of(c, change.value + 1);
+      first = base + change.first_triangle;
+    }
+    if (starts_[c + 1].triangle > first) run(slot, first, starts_[c + 1].triangle);
+  }
+
+  // Stage 4. Sub-meshes in order of their material's first triangle, each run of triangles copied
+  // to its material's place.
   void write_index_array() {
     const size_t slots = out_->materials.size() + 1, count = chunks_.size();
     std::vector<uint64_t> triangles(slots, 0), first_use(slots, ~uint64_t{0});
     for (size_t c = 0; c < count; ++c)
-      for (size_t m = 0; m < chunks_[c].triangles_by_material.size(); ++m) {
-        if (chunks_[c].first_face_by_material[m] == ChunkData::kNoFace) continue;
-        const uint32_t s = slot_of(c, m);
-        triangles[s] += chunks_[c].triangles_by_material[m];
-        first_use[s] = std::min(first_use[s], starts_[c].face + chunks_[c].first_face_by_material[m]);
-      }
+      for_each_run(c, [&](uint32_t s, uint64_t first, uint64_t end) {
+        triangles[s] += end - first;
+        first_use[s] = std::min(first_use[s], first);
+      });
     std::vector<uint32_t> order;
     for (uint32_t s = 0; s < slots; ++s)
       if (triangles[s] > 0) order.push_back(s);
@@ -435,32 +447,12 @@ class Importer {
       return;
     }
     out_->indices.resize(total);
-    std::vector<std::vector<uint64_t>> chunk_places(count);
-    for (size_t c = 0; c < count; ++c) {
-      chunk_places[c] = place;
-      for (size_t m = 0; m < chunks_[c].triangles_by_material.size(); ++m)
-        place[slot_of(c, m)] += 3 * chunks_[c].triangles_by_material[m];
-    }
-    run_parallel(options_.pool, threads_, count, [&](size_t c, unsigned) { copy_runs(c, &chunk_places[c]); });
+    for (size_t c = 0; c < count; ++c)
+      for_each_run(c, [&](uint32_t s, uint64_t first, uint64_t end) {
+        std::memcpy(&out_->indices[place[s]], &triangles_[3 * first], 3 * (end - first) * sizeof(uint32_t));
+        place[s] += 3 * (end - first);
+      });
     free_array(&triangles_);
-  }
-
-  // Chunk c's triangles to their material's places, a run of one material at a time.
-  void copy_runs(size_t c, std::vector<uint64_t>* places) {
-    const uint32_t* from = triangles_.data() + 3 * starts_[c].triangle;
-    uint32_t slot = slot_of(c, 0);
-    uint64_t copied = 0;
-    auto copy_to = [&](uint64_t end) {
-      std::memcpy(out_->indices.data() + (*places)[slot], from + 3 * copied, 3 * (end - copied) * sizeof(uint32_t));
-      (*places)[slot] += 3 * (end - copied);
-      copied = end;
-    };
-    for (const StateChange& change : chunks_[c].changes)
-      if (change.kind == StateChange::kMaterial) {
-        copy_to(change.first_triangle);
-        slot = slot_of(c, change.value + 1);
-      }
-    copy_to(starts_[c + 1].triangle - starts_[c].triangle);
   }
 
   // Stage 5: each kind of vertex data gathered by the numbered keys, one kind at a time, the

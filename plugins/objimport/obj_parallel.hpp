@@ -9,7 +9,6 @@
 #include <exception>
 #include <functional>
 #include <mutex>
-#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -43,71 +42,53 @@ inline void run_workers(const pfx_thread_pool* pool, unsigned threads, const std
 }
 
 // Two jobs per item on a few workers: the first for any item on any worker at once (reading a
-// chunk), the second strictly in item order, one at a time, after the item's first (numbering its
-// corners); `in_order` null: none. A worker takes the next in-order job whenever it is ready, else
-// the next first job. At most `window` consecutive items are between their first job's start and
-// their in-order job's end, so item % window names working memory no other item in flight uses.
-// A worker waits only for a job another is in the middle of. An in-order job returning false stops
-// the run. `worker` (below `threads`) names scratch memory of the worker's own; `after_own_job`
-// runs on the calling thread after each job it ran, for progress reports.
+// chunk), the second strictly in item order, one at a time, after the item's first (numbering it);
+// `in_order` null: none. A worker takes the next in-order job whenever it is ready, else the next
+// first job. At most `window` consecutive items are between their first job's start and their
+// in-order job's end, so item % window names working memory no other item in flight uses. A
+// worker waits only while another runs a job (when none runs, one of the two is ready), so a pool
+// that runs its tasks one after another still finishes. An in-order job returning false stops the
+// run. `worker` (below `threads`) names scratch memory of the worker's own; `after_own_job` runs
+// on the calling thread after each job it ran, for progress reports.
 inline void run_ordered_jobs(const pfx_thread_pool* pool, unsigned threads, size_t count, size_t window,
                              const std::function<void(size_t item, unsigned worker)>& first,
                              const std::function<bool(size_t item)>& in_order,
                              const std::function<void()>& after_own_job = nullptr) {
-  if (window < 1) window = 1;
   std::mutex mutex;
   std::condition_variable changed;
   std::vector<char> first_done(count, 0);
   size_t next_first = 0, next_in_order = 0;
   bool in_order_running = false, stop = false;
-  unsigned running = 0;  // jobs in progress
   std::exception_ptr failure;
   const std::thread::id caller = std::this_thread::get_id();
-
-  auto work = [&](unsigned worker) {
+  run_workers(pool, threads, [&](unsigned worker) {
     std::unique_lock<std::mutex> lock(mutex);
-    for (;;) {
-      if (stop || next_in_order == count) return;
-      const bool in_order_ready = !in_order_running && first_done[next_in_order];
-      const bool first_ready = next_first < count && next_first < next_in_order + window;
-      if (!in_order_ready && !first_ready) {
-        if (running == 0) {  // see above: cannot happen, and waiting would never end
-          if (!failure) failure = std::make_exception_ptr(std::logic_error("ordered jobs: nothing ready, nothing running"));
-          stop = true;
-          changed.notify_all();
-          return;
-        }
+    while (!stop && next_in_order < count) {
+      const bool ordered = !in_order_running && first_done[next_in_order];
+      if (!ordered && !(next_first < count && next_first < next_in_order + std::max<size_t>(window, 1))) {
         changed.wait(lock);
         continue;
       }
-      const size_t item = in_order_ready ? next_in_order : next_first++;
-      if (in_order_ready) in_order_running = true;
-      ++running;
+      const size_t item = ordered ? next_in_order : next_first++;
+      in_order_running |= ordered;
       lock.unlock();
       bool go = true;
+      std::exception_ptr thrown;
       try {
-        if (in_order_ready) go = !in_order || in_order(item);
+        if (ordered) go = !in_order || in_order(item);
         else first(item, worker);
       } catch (...) {
-        go = false;
-        lock.lock();
-        if (!failure) failure = std::current_exception();
-        lock.unlock();
+        thrown = std::current_exception();
       }
       if (after_own_job && std::this_thread::get_id() == caller) after_own_job();
       lock.lock();
-      --running;
-      if (in_order_ready) {
-        in_order_running = false;
-        ++next_in_order;
-      } else {
-        first_done[item] = 1;
-      }
-      if (!go) stop = true;
+      if (thrown && !failure) failure = thrown;
+      if (ordered) in_order_running = false, ++next_in_order;
+      else first_done[item] = 1;
+      stop |= !go || thrown;
       changed.notify_all();
     }
-  };
-  run_workers(pool, threads, work);
+  });
   if (failure) std::rethrow_exception(failure);
 }
 

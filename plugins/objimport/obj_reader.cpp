@@ -27,11 +27,6 @@ bool is_unsupported_obj_keyword(std::string_view k) {
   return std::any_of(std::begin(kKnown), std::end(kKnown), [&](const char* known) { return k == known; });
 }
 
-inline bool digit(char c, uint32_t* value) {
-  *value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0';
-  return *value < 10;
-}
-
 // The first byte of the line end whose last byte is text[i] (a CRLF is one line end).
 size_t line_end_start(std::string_view text, size_t i) {
   return text[i] == '\n' && i > 0 && text[i - 1] == '\r' ? i - 1 : i;
@@ -141,35 +136,25 @@ class Reader : LineCursor {
   // --- Statements ----------------------------------------------------------------------------
   bool statement() {
     skip_blanks();
-    if (at_statement_end()) {
-      skip_statement();
-      return true;
-    }
-    // The statements of nearly every line of a large file, before a token is cut.
-    // "f ", "v ", "vt ", "vn ": the kind, and where the numbers start.
-    const char kind = is_blank(p[1]) && (p[0] == 'f' || p[0] == 'v') ? p[0]
-                      : p[0] == 'v' && (p[1] == 't' || p[1] == 'n') && is_blank(p[2]) ? p[1] : 0;
-    if (kind) {
-      p += kind == 'f' || kind == 'v' ? 1 : 2;
-      if (!(kind == 'f' ? face() : kind == 'v' ? vertex() : kind == 't' ? texcoord() : normal())) return false;
-      skip_statement();
-      return true;
-    }
-    const std::string_view keyword = token();
-    bool ok = true;
-    if (keyword == "v") ok = vertex();
-    else if (keyword == "vt") ok = texcoord();
-    else if (keyword == "vn") ok = normal();
-    else if (keyword == "f" || keyword == "fo") ok = face();
-    else if (keyword == "usemtl") ok = use_material();
-    else if (keyword == "mtllib") ok = material_library();
-    else if (keyword == "s") ok = smoothing();
-    else if (keyword == "l") ++out_->lines_skipped;
-    else if (keyword == "p") ++out_->points_skipped;
-    else if (keyword != "o" && keyword != "g") ok = other(keyword);  // o, g: names only
-    if (!ok) return false;
+    if (!at_statement_end() && !keyword_statement(token())) return false;
     skip_statement();
     return true;
+  }
+
+  bool keyword_statement(std::string_view keyword) {
+    if (keyword == "f") return face();
+    if (keyword == "v") return vertex();
+    if (keyword == "vt") return texcoord();
+    if (keyword == "vn") return normal();
+    if (keyword == "usemtl") return use_material();
+    if (keyword == "mtllib") return material_library();
+    if (keyword == "s") return smoothing();
+    if (keyword == "fo") return face();
+    if (keyword == "l" || keyword == "p") {  // lines and points are counted, not meshed
+      ++(keyword == "l" ? out_->lines_skipped : out_->points_skipped);
+      return true;
+    }
+    return keyword == "o" || keyword == "g" || other(keyword);  // o, g: names only
   }
 
   bool other(std::string_view keyword) {
@@ -189,43 +174,10 @@ class Reader : LineCursor {
     return true;
   }
 
-  // A number ending where its token ends, finite as a float. Plain decimals ([+-]digits[.digits],
-  // at most 19 digits) take Clinger's fast path here, as parse_number_prefix would; anything else
-  // goes to it.
+  // A number ending where its token ends, finite as a float.
   [[gnu::always_inline]] bool number(double* out) {
-    const char* q = p;
-    const bool negative = *q == '-';
-    if (*q == '-' || *q == '+') ++q;
-    uint64_t mantissa = 0;  // wraps past 19 digits, when it is not used
-    uint32_t d;
-    const char* first = q;
-    for (; digit(*q, &d); ++q) mantissa = mantissa * 10 + d;
-    const char* point = q;
-    if (*q == '.')
-      for (++q; digit(*q, &d); ++q) mantissa = mantissa * 10 + d;
-    const long digits = (q - first) - (*point == '.');
-    long exponent = *point == '.' ? point + 1 - q : 0;
-    if ((*q == 'e' || *q == 'E') && digits > 0) {
-      const char* e = q + 1;
-      const bool below = *e == '-';
-      if (*e == '-' || *e == '+') ++e;
-      long written = 0;
-      for (const char* start = e; digit(*e, &d) && e - start < 4; ++e) written = written * 10 + d;
-      if (e > q + 1 + (below || q[1] == '+')) q = e, exponent += below ? -written : written;
-    }
-    // Clinger's fast path: both factors exact, so one correctly rounded operation.
-    if (digits > 0 && digits < 20 && token_end(q) && mantissa < (uint64_t{1} << 53) && exponent >= -22 &&
-        exponent <= 22) {
-      const double value = exponent < 0 ? static_cast<double>(mantissa) / kExactPowersOf10[-exponent]
-                                        : static_cast<double>(mantissa) * kExactPowersOf10[exponent];
-      *out = negative ? -value : value;
-      p = q;
-      return true;
-    }
-    double value;
-    q = parse_number_prefix(p, end, &value);
-    if (!q || !token_end(q) || !std::isfinite(static_cast<float>(value))) return false;
-    *out = value;
+    const char* q = parse_number(p, out);
+    if (!q || !token_end(q) || !std::isfinite(static_cast<float>(*out))) return false;
     p = q;
     return true;
   }
@@ -378,10 +330,7 @@ class Reader : LineCursor {
     }
     std::copy(max_index, max_index + 3, out_->max_index);
     if (corners < 3) return fail("f: needs at least 3 corners (got " + std::to_string(corners) + ")");
-    out_->triangles_by_material[material_] += corners - 2;
-    triangles_ += corners - 2;
-    uint64_t& first = out_->first_face_by_material[material_];
-    if (first == ChunkData::kNoFace) first = faces_so_far();
+    out_->triangles += corners - 2;
     *face_at_++ = {corners, static_cast<uint32_t>(line_)};
     return true;
   }
@@ -395,10 +344,7 @@ class Reader : LineCursor {
     if (fresh) {
       out_->material_names.push_back(std::move(name));
       out_->material_name_lines.push_back(line_);
-      out_->triangles_by_material.push_back(0);
-      out_->first_face_by_material.push_back(ChunkData::kNoFace);
     }
-    material_ = it->second + 1;
     record_change(StateChange::kMaterial, it->second);
     return true;
   }
@@ -413,11 +359,15 @@ class Reader : LineCursor {
 
   bool smoothing() {
     skip_blanks();
+    const char* start = p;
     const std::string_view token = this->token();
-    int64_t value;
+    p = start;  // the token again, as a number
+    int64_t value = 0;
+    bool too_long = false;
+    const bool number = read_index(&value, &too_long) && p == start + token.size() && !too_long;
     uint32_t group;
     if (token == "off" || token == "Off" || token == "OFF") group = 0;
-    else if (parse_integer(token, &value) && value >= 0 && value <= kMaxWrittenIndex) group = static_cast<uint32_t>(value);
+    else if (number && value >= 0 && value <= kMaxWrittenIndex) group = static_cast<uint32_t>(value);
     else if (token.empty()) return fail("s: needs a group number or off");
     else return fail("s: '" + printable(token) + "' is not a smoothing group (a number 0 to 2147483647, or off)");
     record_change(StateChange::kSmoothing, group);
@@ -432,7 +382,7 @@ class Reader : LineCursor {
         it->value = value;
         return;
       }
-    out_->changes.push_back({face, kind, value, triangles_});
+    out_->changes.push_back({face, kind, value, out_->triangles});
   }
 
   ChunkData* out_;
@@ -442,8 +392,6 @@ class Reader : LineCursor {
   float* normal_at_ = nullptr;
   uint32_t* corner_at_ = nullptr;
   Face* face_at_ = nullptr;
-  uint64_t triangles_ = 0;  // the triangles of the faces so far
-  uint32_t material_ = 0;  // the next face's material: 0, or 1 + its index in material_names
   std::unordered_map<std::string, uint32_t> material_index_;  // usemtl name -> material_names index
 };
 

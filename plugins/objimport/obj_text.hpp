@@ -1,7 +1,11 @@
-// Reading OBJ and MTL text: blanks, line ends, tokens and numbers. Three line-end conventions are accepted (LF, CRLF, bare CR), and a backslash
-// right before a line end joins the next physical line to this one (the OBJ line continuation).
+// Reading OBJ and MTL text: blanks, line ends, tokens and numbers. Three line-end conventions are
+// accepted (LF, CRLF, bare CR), and a backslash right before a line end joins the next physical line
+// to this one (the OBJ line continuation).
 #pragma once
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -58,20 +62,63 @@ struct LineCursor {
 inline constexpr double kExactPowersOf10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                               1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-// Parses a decimal number: [+-] digits [. digits] [(e|E) [+-] digits], or [+-] . digits ...
-// Accepts ".5", "1.", "+1", "1e-5", "-0". Returns false for anything else (including "nan",
-// "inf", hex, a second '.', trailing letters), leaving *out alone. Rounds to double, then float.
+inline bool digit(char c, uint32_t* value) {
+  *value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0';
+  return *value < 10;
+}
+
+// Reads the decimal number at p — [+-] digits [. digits] [(e|E) [+-] digits], with a digit on at
+// least one side of the point — into *out (rounded once, to double) and returns where it ends, or
+// null when none starts there; the caller checks what follows. The text must end with a byte that
+// is not part of a number (a line end, a blank, a NUL). Up to 19 digits with a small exponent take
+// Clinger's fast path; the rest, std::from_chars (exact, locale-independent).
+inline const char* parse_number(const char* p, double* out) {
+  const bool negative = *p == '-';
+  if (*p == '-' || *p == '+') ++p;
+  const char* const start = p;  // from_chars takes no sign
+  uint64_t mantissa = 0;        // wraps past 19 digits, when it is not used
+  uint32_t d;
+  for (; digit(*p, &d); ++p) mantissa = mantissa * 10 + d;
+  const char* const point = p;
+  if (*p == '.')
+    for (++p; digit(*p, &d); ++p) mantissa = mantissa * 10 + d;
+  const long digits = (p - start) - (*point == '.');
+  if (digits == 0) return nullptr;
+  long exponent = *point == '.' ? point + 1 - p : 0;  // the value is mantissa * 10^exponent
+  if (*p == 'e' || *p == 'E') {
+    const bool below = p[1] == '-';
+    p += p[1] == '-' || p[1] == '+' ? 2 : 1;
+    if (!digit(*p, &d)) return nullptr;
+    long written = 0;
+    for (; digit(*p, &d); ++p) written = std::min(written * 10 + d, 100000L);
+    exponent += below ? -written : written;
+  }
+  double value;
+  if (digits < 20 && mantissa < (uint64_t{1} << 53) && exponent >= -22 && exponent <= 22) {
+    value = exponent < 0 ? static_cast<double>(mantissa) / kExactPowersOf10[-exponent]
+                         : static_cast<double>(mantissa) * kExactPowersOf10[exponent];
+  } else {
+    const auto result = std::from_chars(start, p, value);
+    if (result.ec == std::errc::result_out_of_range) {  // too large or too small: the first digit's place says which
+      long zeros = 0;
+      for (const char* q = start; *q == '0' || *q == '.'; ++q) zeros += *q == '0';
+      value = digits - zeros - 1 + exponent > 0 ? HUGE_VAL : 0.0;
+    } else if (result.ec != std::errc() || result.ptr != p) {
+      return nullptr;
+    }
+  }
+  *out = negative ? -value : value;
+  return p;
+}
+
+// A whole token as a number (as parse_number, so the byte after it is read), rounded to double and
+// then to float; false for anything else (nan, inf, hex, a second '.', trailing letters), leaving
+// *out alone.
 bool parse_float(std::string_view token, float* out);
-// Reads the longest number at p (before end) into *out and returns where it stopped, or nullptr
-// when no number starts there. The caller checks what follows.
-const char* parse_number_prefix(const char* p, const char* end, double* out);
 // As parse_float, but keeps the double.
 bool parse_double(std::string_view token, double* out);
 // True when the token spells nan or inf/infinity in any case, with an optional sign.
 bool is_non_finite_word(std::string_view token);
-
-// Parses [+-] digits into an int64, rejecting empty, signs alone and more than 18 digits.
-bool parse_integer(std::string_view token, int64_t* out);
 
 // A token shown in a message: at most 40 bytes, control and non-ASCII bytes as \xNN.
 std::string printable(std::string_view token);

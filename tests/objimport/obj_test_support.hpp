@@ -3,12 +3,28 @@
 // independently of how their vertices are numbered.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "obj_import.hpp"
+
+namespace pfx_obj {
+
+// The importer's arrays compared element-wise with plain vectors (found by argument-dependent
+// lookup through the arrays' allocator, which is pfx_obj's).
+template <typename T>
+bool operator==(const BigVector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+}
+template <typename T>
+bool operator==(const std::vector<T>& a, const BigVector<T>& b) {
+  return b == a;
+}
+
+}  // namespace pfx_obj
 
 namespace pfx_obj_test {
 
