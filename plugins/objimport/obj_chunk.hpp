@@ -19,7 +19,8 @@ constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 // OBJ indices as written must fit in 31 bits (a file with 2^31 vertices would be over 16 GB).
 constexpr int64_t kMaxWrittenIndex = 0x7FFFFFFF;
 
-// A message at a line counted from the chunk's first line (0-based).
+// A text at a line: counted from the chunk's first line (0-based) in a chunk's data, from the
+// file's (1-based) after.
 struct LocalMessage {
   uint64_t line = 0;
   std::string text;
@@ -53,9 +54,6 @@ struct ChunkData {
   BigVector<float> colors;     // r g b per v, or empty while no v of the chunk has a colour
   BigVector<float> texcoords;  // u v per vt
   BigVector<float> normals;    // x y z per vn
-  uint32_t position_count() const { return static_cast<uint32_t>(positions.size() / 3); }
-  uint32_t texcoord_count() const { return static_cast<uint32_t>(texcoords.size() / 2); }
-  uint32_t normal_count() const { return static_cast<uint32_t>(normals.size() / 3); }
 
   // Three fields per corner (v, vt, vn): a positive index minus one (final), kNoIndex for a missing
   // vt or vn, or — for a relative (negative) index — the 1-based element it denotes counted from the

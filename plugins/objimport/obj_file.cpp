@@ -18,36 +18,6 @@ struct Descriptor {
   ~Descriptor() { if (fd >= 0) ::close(fd); }
 };
 
-bool read_all(int fd, std::string* out) {
-  char buffer[1 << 16];
-  for (;;) {
-    ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n == 0) return true;
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    out->append(buffer, static_cast<size_t>(n));
-  }
-}
-
-bool open_for_reading(const std::string& path, Descriptor* file, struct stat* info, std::string* error) {
-  file->fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (file->fd < 0) {
-    *error = path + ": " + (errno == ENOENT ? std::string("no such file") : std::strerror(errno));
-    return false;
-  }
-  if (::fstat(file->fd, info) != 0) {
-    *error = path + ": " + std::strerror(errno);
-    return false;
-  }
-  if (S_ISDIR(info->st_mode)) {
-    *error = path + ": is a folder, not a file";
-    return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 FileBytes::~FileBytes() {
@@ -55,26 +25,32 @@ FileBytes::~FileBytes() {
 }
 
 bool FileBytes::open(const std::string& path, std::string* error) {
-  Descriptor file{-1};
+  Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   struct stat info {};
-  if (!open_for_reading(path, &file, &info, error)) return false;
+  if (file.fd < 0 || ::fstat(file.fd, &info) != 0 || S_ISDIR(info.st_mode)) {
+    *error = path + ": " + (file.fd >= 0 && S_ISDIR(info.st_mode) ? std::string("is a folder, not a file")
+                            : errno == ENOENT ? std::string("no such file") : std::strerror(errno));
+    return false;
+  }
   if (S_ISREG(info.st_mode) && info.st_size > 0) {
-    size_ = static_cast<size_t>(info.st_size);
     // Not populated up front: the reading threads fault the pages in as they read, in parallel.
-    void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, file.fd, 0);
+    void* mapping = ::mmap(nullptr, static_cast<size_t>(info.st_size), PROT_READ, MAP_PRIVATE, file.fd, 0);
     if (mapping != MAP_FAILED) {
-      // The parser reads front to back, each chunk by one thread.
-      ::madvise(mapping, size_, MADV_SEQUENTIAL);
+      size_ = static_cast<size_t>(info.st_size);
+      ::madvise(mapping, size_, MADV_SEQUENTIAL);  // the parser reads front to back, each chunk by one thread
       ::madvise(mapping, size_, MADV_WILLNEED);
       mapping_ = mapping;
       data_ = static_cast<const char*>(mapping);
       return true;
     }
-    size_ = 0;
   }
-  if (!read_all(file.fd, &copy_)) {
-    *error = path + ": " + std::strerror(errno);
-    return false;
+  char buffer[1 << 16];  // not a regular file (a pipe, /dev/stdin), or not mappable: read whole
+  for (ssize_t n; (n = ::read(file.fd, buffer, sizeof buffer)) != 0;) {
+    if (n > 0) copy_.append(buffer, static_cast<size_t>(n));
+    if (n < 0 && errno != EINTR) {
+      *error = path + ": " + std::strerror(errno);
+      return false;
+    }
   }
   data_ = copy_.data();
   size_ = copy_.size();

@@ -23,7 +23,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -42,11 +41,6 @@
 namespace pfx_obj {
 
 namespace {
-
-struct Located {
-  uint64_t line;  // 1-based, in the OBJ file
-  std::string text;
-};
 
 // Cuts "a.mtl b.mtl" into files; a name with blanks ("my materials.mtl") is taken whole when a
 // file of that whole name exists.
@@ -196,13 +190,13 @@ class Importer {
       return false;
     }
     ChunkStart& next = starts_[c + 1];
-    const uint32_t counts[3] = {chunk.position_count(), chunk.texcoord_count(), chunk.normal_count()};
+    const uint64_t counts[3] = {chunk.positions.size() / 3, chunk.texcoords.size() / 2, chunk.normals.size() / 3};
     for (int k = 0; k < 3; ++k) {
       if (uint64_t{start.bases[k]} + counts[k] > uint64_t(kMaxWrittenIndex) || start.face + chunk.faces.size() > uint64_t(kMaxWrittenIndex)) {
         *error = name_ + ": more than 2^31 - 1 elements of one kind (v, vt, vn or f): too large";
         return false;
       }
-      next.bases[k] = start.bases[k] + counts[k];
+      next.bases[k] = static_cast<uint32_t>(start.bases[k] + counts[k]);
     }
     next.line = start.line + chunk.line_ends;
     next.face = start.face + chunk.faces.size();
@@ -364,7 +358,7 @@ class Importer {
 
   void load_materials() {
     // Every library first, in file order: a usemtl may come before its mtllib.
-    for (const Located& library : libraries_) {
+    for (const LocalMessage& library : libraries_) {
       if (directory_.empty()) {
         warn(library.line, "mtllib " + library.text + ": not read (the model was given as bytes without a file name)");
         continue;
@@ -385,11 +379,10 @@ class Importer {
     std::unordered_map<std::string, uint32_t> by_name;
     for (size_t i = 0; i < out_->materials.size(); ++i)
       by_name.emplace(out_->materials[i].name, static_cast<uint32_t>(i));
-    for (const Located& name : names_) {
+    for (const LocalMessage& name : names_) {
       auto [it, fresh] = by_name.emplace(name.text, static_cast<uint32_t>(out_->materials.size()));
       if (fresh) {
-        out_->materials.push_back(Material{});
-        out_->materials.back().name = name.text;
+        out_->materials.push_back(Material{name.text});
         warn(name.line, "usemtl " + name.text + ": no material of that name in the material libraries (defaults used)");
       }
       name_slots_.push_back(it->second);
@@ -465,23 +458,13 @@ class Importer {
       gather<2>(&texcoords_, &VertexKey::vt, &out_->texcoords);
     gather<3>(&normals_, &VertexKey::vn, &out_->normals);  // those without are generated later
     for (BigVector<float>* data : {&positions_, &texcoords_, &normals_, &colors_}) free_array(data);
-    // Per block of vertices, combined after (min and max do not depend on the order).
-    const size_t count = keys.size(), blocks = (count + kBlock - 1) / kBlock;
-    std::vector<std::array<float, 6>> block_bounds(blocks);
-    run_parallel(options_.pool, threads_, blocks, [&](size_t b, unsigned) {
-      std::array<float, 6> bounds = {HUGE_VALF, HUGE_VALF, HUGE_VALF, -HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
-      for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i)
-        for (int k = 0; k < 3; ++k) {  // as std::min and std::max: a NaN coordinate is passed over
-          bounds[k] = std::min(bounds[k], out_->positions[3 * i + k]);
-          bounds[3 + k] = std::max(bounds[3 + k], out_->positions[3 * i + k]);
-        }
-      block_bounds[b] = bounds;
-    });
-    for (size_t b = 0; b < blocks; ++b)
-      for (int k = 0; k < 3; ++k) {
-        out_->bounds_min[k] = b == 0 ? block_bounds[b][k] : std::min(out_->bounds_min[k], block_bounds[b][k]);
-        out_->bounds_max[k] = b == 0 ? block_bounds[b][3 + k] : std::max(out_->bounds_max[k], block_bounds[b][3 + k]);
-      }
+    if (keys.empty()) return;  // the bounds stay zero
+    std::fill_n(out_->bounds_min, 3, HUGE_VALF);
+    std::fill_n(out_->bounds_max, 3, -HUGE_VALF);
+    for (size_t i = 0; i < out_->positions.size(); ++i) {
+      out_->bounds_min[i % 3] = std::min(out_->bounds_min[i % 3], out_->positions[i]);
+      out_->bounds_max[i % 3] = std::max(out_->bounds_max[i % 3], out_->positions[i]);
+    }
   }
 
   // Each vertex's kWidth floats of `source` at the element its key's `field` names (zeros for
@@ -509,7 +492,7 @@ class Importer {
                                    std::to_string(ignored.count) + " ignored");
     const uint64_t last_line = starts_.back().line;
     if (out_->faces == 0) warn(last_line > 1 ? last_line - 1 : 1, "no faces: the mesh is empty");
-    std::stable_sort(warnings_.begin(), warnings_.end(), [](const Located& a, const Located& b) { return a.line < b.line; });
+    std::stable_sort(warnings_.begin(), warnings_.end(), [](const LocalMessage& a, const LocalMessage& b) { return a.line < b.line; });
     out_->warning_total = warnings_.size();
     for (size_t i = 0; i < warnings_.size() && i < kMaxWarnings; ++i) out_->warnings.push_back(at(warnings_[i].line, warnings_[i].text));
   }
@@ -535,12 +518,12 @@ class Importer {
   std::vector<uint32_t> polygon_, clipped_;  // a polygon's vertex numbers; its triangles as corner numbers
   std::vector<const float*> corners_;        // a polygon's positions
   TriangulationScratch scratch_;
-  std::vector<Located> names_;   // usemtl names in order of first use, at that line
+  std::vector<LocalMessage> names_;   // usemtl names in order of first use, at that line
   std::unordered_map<std::string, uint32_t> name_index_;
   std::vector<uint32_t> name_slots_;  // per name: its material's index
-  std::vector<Located> libraries_;    // mtllib lines
+  std::vector<LocalMessage> libraries_;    // mtllib lines
   std::map<std::string, IgnoredKeyword> ignored_;
-  std::vector<Located> warnings_;
+  std::vector<LocalMessage> warnings_;
   BigVector<float> positions_, texcoords_, normals_, colors_;  // the file's vertex data, as written
 };
 

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include <pfx/importer.h>
 #include <pfx/services.h>
 
 #include "obj_buffer.hpp"
@@ -27,10 +28,7 @@ struct ObjMesh {
   BigVector<float> texcoords;  // 2 per vertex, or empty when no corner has one
   BigVector<float> colors;     // 3 per vertex, or empty when no v has a colour
   BigVector<uint32_t> indices;
-  struct Submesh {
-    uint32_t first_index, index_count, material;  // material: index or kNoIndex (no usemtl)
-  };
-  std::vector<Submesh> submeshes;
+  std::vector<pfx_import_submesh> submeshes;  // material: index or kNoIndex (no usemtl)
   std::vector<Material> materials;
   float bounds_min[3] = {0, 0, 0}, bounds_max[3] = {0, 0, 0};
   uint64_t lines_skipped = 0, points_skipped = 0, faces = 0;

@@ -1,5 +1,6 @@
 #include "obj_mtl.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -17,9 +18,7 @@ class MtlParser {
         materials_(materials), warnings_(warnings) {}
 
   void run() {
-    if (cursor_.end - cursor_.p >= 3 && static_cast<unsigned char>(cursor_.p[0]) == 0xEF &&
-        static_cast<unsigned char>(cursor_.p[1]) == 0xBB && static_cast<unsigned char>(cursor_.p[2]) == 0xBF)
-      cursor_.p += 3;
+    if (std::string_view(cursor_.p, 3) == "\xEF\xBB\xBF") cursor_.p += 3;  // (the copy holds 3 bytes)
     while (cursor_.p < cursor_.end) {
       line_ = cursor_.line_ends + 1;
       statement();
@@ -43,7 +42,7 @@ class MtlParser {
   }
 
   Material* current(std::string_view keyword) {
-    if (materials_->size() > first_ && current_) return &materials_->back();
+    if (current_) return &materials_->back();
     warn(std::string(keyword) + " before any newmtl: ignored");
     return nullptr;
   }
@@ -52,27 +51,19 @@ class MtlParser {
     cursor_.skip_blanks();
     if (cursor_.at_statement_end()) return;
     std::string_view keyword = cursor_.token();
-    for (char c : keyword) {
-      unsigned char byte = static_cast<unsigned char>(c);
-      if (byte < 0x20 || byte == 0x7f) {
-        warn("binary data: not a material library; the rest of the file is ignored");
-        cursor_.p = cursor_.end;
-        return;
-      }
+    if (std::any_of(keyword.begin(), keyword.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; })) {
+      warn("binary data: not a material library; the rest of the file is ignored");
+      cursor_.p = cursor_.end;
+      return;
     }
     if (keyword == "newmtl") {
       cursor_.skip_blanks();
       std::string name = cursor_.rest_of_line();
-      if (name.empty()) { warn("newmtl: needs a name"); current_ = false; return; }
-      for (size_t i = 0; i < materials_->size(); ++i)
-        if ((*materials_)[i].name == name) {
-          warn("material '" + name + "' defined again: the first definition is kept");
-          current_ = false;
-          return;
-        }
-      materials_->push_back(Material{});
-      materials_->back().name = name;
-      current_ = true;
+      const bool again = std::any_of(materials_->begin(), materials_->end(), [&](const Material& m) { return m.name == name; });
+      if (name.empty()) warn("newmtl: needs a name");
+      else if (again) warn("material '" + name + "' defined again: the first definition is kept");
+      else materials_->push_back(Material{name});
+      current_ = !name.empty() && !again;
     } else if (keyword == "Kd" || keyword == "Ks" || keyword == "Ke") {
       float rgb[3];
       if (!color(keyword, rgb)) return;
@@ -173,7 +164,6 @@ class MtlParser {
   const std::string& directory_;
   std::vector<Material>* materials_;
   std::vector<std::string>* warnings_;
-  size_t first_ = 0;
   bool current_ = false;
   uint64_t line_ = 0;
 };

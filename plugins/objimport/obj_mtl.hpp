@@ -10,6 +10,7 @@
 namespace pfx_obj {
 
 struct Material {
+  explicit Material(std::string material_name = "") : name(std::move(material_name)) {}
   std::string name;
   float diffuse[3] = {0.8f, 0.8f, 0.8f};
   float specular[3] = {0.0f, 0.0f, 0.0f};

@@ -14,23 +14,16 @@ void generate_normals(const BigVector<VertexKey>& keys, const BigVector<float>& 
   const size_t count = keys.size();
   const unsigned workers = threads < 1 ? 1 : threads;
   BigVector<float>& n = *normals;
-  // Which vertices get a generated normal (their sums zeroed), found in blocks on every thread:
-  // in a file that gives every corner a normal this is all the stage does.
+  // Which vertices get a generated normal (their sums zeroed): in a file that gives every corner a
+  // normal, none, and this is all the stage does.
   std::vector<uint8_t> generated(count);
-  constexpr size_t kBlock = size_t{1} << 16;
-  const size_t blocks = (count + kBlock - 1) / kBlock;
-  std::vector<uint8_t> block_any(blocks, 0), block_texcoords(blocks, 0);
-  run_parallel(pool, workers, blocks, [&](size_t b, unsigned) {
-    for (size_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
-      generated[i] = keys[i].vn == kNoIndex;
-      if (!generated[i]) continue;
-      block_any[b] = 1;
-      block_texcoords[b] |= keys[i].vt != kNoIndex;
-      n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;
-    }
-  });
-  const bool any = std::find(block_any.begin(), block_any.end(), 1) != block_any.end();
-  const bool with_texcoords = std::find(block_texcoords.begin(), block_texcoords.end(), 1) != block_texcoords.end();
+  bool any = false, with_texcoords = false;
+  for (size_t i = 0; i < count; ++i) {
+    if (!(generated[i] = keys[i].vn == kNoIndex)) continue;
+    any = true;
+    with_texcoords |= keys[i].vt != kNoIndex;
+    n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;
+  }
   if (!any) return;
 
   // Each worker owns a range of vertices and adds every triangle's normal to the ones it owns, in

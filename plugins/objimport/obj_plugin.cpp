@@ -23,7 +23,6 @@ struct ResultStorage {
   pfx_import_result result{};
   ObjMesh mesh;
   std::string error;
-  std::vector<pfx_import_submesh> submeshes;
   std::vector<pfx_import_material> materials;
   std::vector<const char*> warnings;
 };
@@ -46,10 +45,8 @@ void publish(ResultStorage* s) {
   r.colors = m.colors.empty() ? nullptr : m.colors.data();
   r.index_count = static_cast<uint32_t>(m.indices.size());
   r.indices = m.indices.empty() ? nullptr : m.indices.data();
-  for (const auto& sub : m.submeshes)
-    s->submeshes.push_back(pfx_import_submesh{sub.first_index, sub.index_count, sub.material});
-  r.submesh_count = static_cast<uint32_t>(s->submeshes.size());
-  r.submeshes = s->submeshes.empty() ? nullptr : s->submeshes.data();
+  r.submesh_count = static_cast<uint32_t>(m.submeshes.size());
+  r.submeshes = m.submeshes.empty() ? nullptr : m.submeshes.data();
   for (const Material& material : m.materials) {
     pfx_import_material out{};
     out.struct_size = sizeof(pfx_import_material);
@@ -88,8 +85,7 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
   pfx_import_result& r = storage->result;
   r.struct_size = sizeof(pfx_import_result);
   try {
-    if (!request || request->struct_size < PFX_IMPORT_REQUEST_MIN_SIZE || (!request->path && !request->bytes) ||
-        (request->bytes && request->byte_count > 0 && !request->bytes) || (request->path && request->bytes)) {
+    if (!request || request->struct_size < PFX_IMPORT_REQUEST_MIN_SIZE || !request->path == !request->bytes) {
       r.status = PFX_INVALID_ARGUMENT;
       storage->error = "import request: give either path or bytes";
     } else {
@@ -101,19 +97,13 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
         void* user = request->progress_user;
         options.progress = [progress, user](float fraction) { progress(user, fraction); };
       }
-      bool ok;
-      if (request->path) {
-        ok = import_obj_file(request->path, options, &storage->mesh, &storage->error);
-      } else {
-        std::string name = request->name ? request->name : "<memory>";
-        std::string directory;
-        if (request->name) {
-          directory = std::filesystem::path(request->name).parent_path().string();
-          if (directory.empty()) directory = ".";
-        }
-        ok = import_obj_text(std::string_view(static_cast<const char*>(request->bytes), request->byte_count), name,
-                             directory, options, &storage->mesh, &storage->error);
-      }
+      // Bytes with a name: mtllib files are looked for beside it (without one, not at all).
+      const std::string name = request->name ? request->name : "<memory>";
+      std::string directory = request->name ? std::filesystem::path(name).parent_path().string() : "";
+      if (request->name && directory.empty()) directory = ".";
+      const bool ok = request->path ? import_obj_file(request->path, options, &storage->mesh, &storage->error)
+                                    : import_obj_text({static_cast<const char*>(request->bytes), request->byte_count},
+                                                      name, directory, options, &storage->mesh, &storage->error);
       r.status = ok ? PFX_OK : PFX_ERROR;
       if (ok) publish(storage);
     }
