@@ -158,13 +158,11 @@ class Reader : LineCursor {
   }
 
   bool other(std::string_view keyword) {
-    for (char c : keyword) {
-      const unsigned char byte = static_cast<unsigned char>(c);
-      if (byte < 0x20 || byte == 0x7f) {
-        const char* digits = "0123456789abcdef";
-        return fail(std::string("binary data (byte 0x") + digits[byte >> 4] + digits[byte & 15] +
-                    " in a keyword): not an OBJ text file");
-      }
+    const auto control = std::find_if(keyword.begin(), keyword.end(), [](char c) { return uint8_t(c) < 0x20 || c == 0x7f; });
+    if (control != keyword.end()) {
+      const unsigned byte = static_cast<unsigned char>(*control);
+      return fail(std::string("binary data (byte 0x") + "0123456789abcdef"[byte >> 4] + "0123456789abcdef"[byte & 15] +
+                  " in a keyword): not an OBJ text file");
     }
     IgnoredKeyword& ignored = out_->ignored[std::string(keyword.substr(0, 40))];
     if (ignored.count++ == 0) {
@@ -292,32 +290,23 @@ class Reader : LineCursor {
   // own copy of the chunk's (a local: stores of corners cannot change it, so it stays in registers).
   bool corner(const uint32_t counts[3], uint32_t* max_index) {
     const char* start = p;
-    int64_t value;
-    bool too_long;
-    const char* field = p;
-    if (!read_index(&value, &too_long) || (*p != '/' && !token_end(p))) return malformed_corner(start);
-    if (!store_index(value, too_long, field, start, 0, counts[0], max_index)) return false;
-    if (*p != '/') {
-      corner_at_[0] = corner_at_[1] = kNoIndex;
-      corner_at_ += 2;
-      return true;
+#pragma GCC unroll 3  // unrolled, each field's checks of `kind` fold away
+    for (int kind = 0; kind < 3; ++kind) {
+      if (kind > 0 && *p++ != '/') {  // v or v/vt: the rest are missing
+        for (--p; kind < 3; ++kind) *corner_at_++ = kNoIndex;
+        return true;
+      }
+      if (kind == 1 && *p == '/') {  // v//vn
+        *corner_at_++ = kNoIndex;
+        continue;
+      }
+      const char* field = p;
+      int64_t value;
+      bool too_long;
+      if (!read_index(&value, &too_long) || (!(kind < 2 && *p == '/') && !token_end(p))) return malformed_corner(start);
+      if (!store_index(value, too_long, field, start, kind, counts[kind], max_index)) return false;
     }
-    field = ++p;
-    if (*p == '/') {  // v//vn
-      field = ++p;
-      if (!read_index(&value, &too_long) || !token_end(p)) return malformed_corner(start);
-      *corner_at_++ = kNoIndex;
-      return store_index(value, too_long, field, start, 2, counts[2], max_index);
-    }
-    if (!read_index(&value, &too_long) || (*p != '/' && !token_end(p))) return malformed_corner(start);
-    if (!store_index(value, too_long, field, start, 1, counts[1], max_index)) return false;
-    if (*p != '/') {
-      *corner_at_++ = kNoIndex;
-      return true;
-    }
-    field = ++p;
-    if (!read_index(&value, &too_long) || !token_end(p)) return malformed_corner(start);
-    return store_index(value, too_long, field, start, 2, counts[2], max_index);
+    return true;
   }
 
   bool face() {
