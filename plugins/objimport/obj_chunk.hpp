@@ -68,15 +68,13 @@ struct ChunkData {
   BigVector<Face> faces;
   uint64_t triangles = 0;  // the n - 2 triangles of each face of n corners
   std::vector<StateChange> changes;
-  std::vector<std::string> material_names;    // usemtl names, in order of first use in the chunk
-  std::vector<uint64_t> material_name_lines;  // the line of each name's first usemtl
+  std::vector<LocalMessage> material_names;   // usemtl names in order of first use, at that line
   std::vector<LocalMessage> material_libraries;  // the rest of each mtllib line
 
   uint64_t lines_skipped = 0;   // `l` statements
   uint64_t points_skipped = 0;  // `p` statements
   std::map<std::string, IgnoredKeyword> ignored;
-  bool failed = false;
-  LocalMessage error;  // the first error: reading stops there
+  LocalMessage error;  // the first error, if any (a text): reading stops there
 };
 
 // The text cut into about `count` chunks of similar size (fewer when it has fewer line ends), each

@@ -1,9 +1,8 @@
-// One vertex per distinct face corner. A corner is keyed by its full 32-bit indices — position,
-// texture coordinate, normal — plus, for a corner without a normal, the normal group its normal
-// will be generated for (obj_normals.hpp). Nothing is packed, so nothing collides.
-//
-// Vertices are numbered in the order of their first corner in the file: one VertexNumbering sees
-// every corner in file order (obj_import.cpp), so the numbers never depend on the thread count.
+// One vertex per distinct face corner, keyed by its full 32-bit indices (position, texture
+// coordinate, normal) and, for a corner without a normal, the normal group its normal will be
+// generated for (obj_normals.hpp): nothing is packed, so nothing collides. Vertices are numbered in
+// the order of their first corner in the file, by one VertexNumbering that sees every corner in
+// file order (obj_import.cpp), so the numbers never depend on the thread count.
 #pragma once
 
 #include <cstdint>

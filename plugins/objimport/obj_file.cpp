@@ -65,11 +65,4 @@ void FileBytes::drop_pages(std::string_view range) const {
   if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
 }
 
-bool read_small_file(const std::string& path, std::string* out, std::string* error) {
-  FileBytes file;
-  if (!file.open(path, error)) return false;
-  out->assign(file.bytes());
-  return true;
-}
-
 }  // namespace pfx_obj

@@ -29,7 +29,4 @@ class FileBytes {
   std::string copy_;
 };
 
-// The whole of a small file (a material library) as a string; false when it cannot be read.
-bool read_small_file(const std::string& path, std::string* out, std::string* error);
-
 }  // namespace pfx_obj

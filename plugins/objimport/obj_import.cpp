@@ -185,7 +185,7 @@ class Importer {
   bool number_chunk(size_t c, uint64_t text_bytes, std::string* error) {
     ChunkData& chunk = chunks_[c];
     ChunkStart& start = starts_[c];
-    if (chunk.failed) {
+    if (!chunk.error.text.empty()) {
       *error = at(start.line + chunk.error.line, chunk.error.text);
       return false;
     }
@@ -304,9 +304,9 @@ class Importer {
     ChunkData& chunk = chunks_[c];
     ChunkStart& start = starts_[c];
     ChunkStart& next = starts_[c + 1];
-    for (size_t i = 0; i < chunk.material_names.size(); ++i) {
-      auto [it, fresh] = name_index_.emplace(chunk.material_names[i], static_cast<uint32_t>(names_.size()));
-      if (fresh) names_.push_back({start.line + chunk.material_name_lines[i], chunk.material_names[i]});
+    for (const LocalMessage& name : chunk.material_names) {
+      auto [it, fresh] = name_index_.emplace(name.text, static_cast<uint32_t>(names_.size()));
+      if (fresh) names_.push_back({start.line + name.line, name.text});
       start.names.push_back(it->second);
     }
     next.material = start.material;
@@ -363,15 +363,16 @@ class Importer {
         warn(library.line, "mtllib " + library.text + ": not read (the model was given as bytes without a file name)");
         continue;
       }
-      for (const std::string& file : material_library_names(directory_, library.text)) {
-        const std::string path = resolve_path(directory_, file);
-        std::string bytes, problem;
-        if (!read_small_file(path, &bytes, &problem)) {
+      for (const std::string& name : material_library_names(directory_, library.text)) {
+        const std::string path = resolve_path(directory_, name);
+        FileBytes file;
+        std::string problem;
+        if (!file.open(path, &problem)) {
           warn(library.line, "mtllib: " + problem + " (materials keep their defaults)");
           continue;
         }
         std::vector<std::string> mtl_warnings;
-        parse_mtl(bytes, path, std::filesystem::path(path).parent_path().string(), &out_->materials, &mtl_warnings);
+        parse_mtl(file.bytes(), path, std::filesystem::path(path).parent_path().string(), &out_->materials, &mtl_warnings);
         for (auto& w : mtl_warnings) warn(library.line, std::move(w));
       }
     }

@@ -1,8 +1,6 @@
 // The OBJ importer as a C++ function, for the plugin's C entry point and for the tests: text in,
-// one deduplicated, triangulated mesh out, or a message "FILE:LINE: reason".
-//
-// The text is cut into chunks at line ends, the chunks are parsed in parallel, and the merge runs
-// in file order, so the result is the same for every thread count (the tests compare bytes).
+// one deduplicated, triangulated mesh out, the same for every thread count, or a message
+// "FILE:LINE: reason". How: obj_import.cpp.
 #pragma once
 
 #include <algorithm>
@@ -21,8 +19,6 @@
 namespace pfx_obj {
 
 struct ObjMesh {
-  // BigVector: sized without zero-filling first (every element is written before the import
-  // returns), mapped directly when large.
   BigVector<float> positions;  // 3 per vertex
   BigVector<float> normals;    // 3 per vertex
   BigVector<float> texcoords;  // 2 per vertex, or empty when no corner has one

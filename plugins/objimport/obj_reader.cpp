@@ -128,7 +128,6 @@ class Reader : LineCursor {
     return token();
   }
   bool fail(std::string text) {
-    out_->failed = true;
     out_->error = {line_, std::move(text)};
     return false;
   }
@@ -330,10 +329,7 @@ class Reader : LineCursor {
     if (name.empty()) return fail("usemtl: needs a material name");
     // A map, not a scan: some exporters write a usemtl before every face, over many materials.
     auto [it, fresh] = material_index_.emplace(name, static_cast<uint32_t>(out_->material_names.size()));
-    if (fresh) {
-      out_->material_names.push_back(std::move(name));
-      out_->material_name_lines.push_back(line_);
-    }
+    if (fresh) out_->material_names.push_back({line_, std::move(name)});
     record_change(StateChange::kMaterial, it->second);
     return true;
   }
@@ -388,7 +384,7 @@ class Reader : LineCursor {
 
 void parse_chunk(std::string_view text, bool first_in_file, ChunkData* out, size_t reserve_bytes) {
   if (first_in_file && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  out->failed = false;
+  out->error = {};
   Reader reader(out, std::max(reserve_bytes, text.size()));
   const size_t tail = unterminated_tail(text);
   bool ok = reader.read(text.data(), text.data() + tail);
