@@ -41,6 +41,8 @@ class MtlParser {
     return nullptr;
   }
 
+  std::string_view rest() const { return {cursor_.p, static_cast<size_t>(cursor_.end - cursor_.p)}; }
+
   Material* current(std::string_view keyword) {
     if (current_) return &materials_->back();
     warn(std::string(keyword) + " before any newmtl: ignored");
@@ -73,7 +75,7 @@ class MtlParser {
       for (int i = 0; i < 3; ++i) into[i] = rgb[i];
     } else if (keyword == "Ns" || keyword == "d" || keyword == "Tr") {
       cursor_.skip_blanks();
-      if (keyword == "d" && cursor_.end - cursor_.p >= 5 && std::string_view(cursor_.p, 5) == "-halo") {
+      if (keyword == "d" && rest().substr(0, 5) == "-halo") {
         cursor_.token();
         cursor_.skip_blanks();
       }
@@ -109,20 +111,16 @@ class MtlParser {
   // "Kd r g b" or "Kd v" (grey); spectral and xyz forms are not supported.
   bool color(std::string_view keyword, float rgb[3]) {
     cursor_.skip_blanks();
-    if (cursor_.end - cursor_.p >= 8 && std::string_view(cursor_.p, 8) == "spectral") {
-      warn(std::string(keyword) + " spectral: not supported, ignored");
-      return false;
-    }
-    if (cursor_.end - cursor_.p >= 3 && std::string_view(cursor_.p, 3) == "xyz") {
-      warn(std::string(keyword) + " xyz: not supported, ignored");
-      return false;
-    }
+    for (std::string_view form : {"spectral", "xyz"})
+      if (rest().substr(0, form.size()) == form) {
+        warn(std::string(keyword) + " " + std::string(form) + ": not supported, ignored");
+        return false;
+      }
     int count = 0;
-    while (count < 3) {
+    for (; count < 3; ++count) {
       cursor_.skip_blanks();
       if (cursor_.at_statement_end()) break;
       if (!number(keyword, &rgb[count])) return false;
-      ++count;
     }
     cursor_.skip_blanks();
     if (count == 1) rgb[1] = rgb[2] = rgb[0];
@@ -135,9 +133,7 @@ class MtlParser {
 
   // The file name of a map statement after its options (-s 1 1 1, -bm 0.5, -clamp on, ...).
   std::string map_path(std::string_view keyword) {
-    for (;;) {
-      cursor_.skip_blanks();
-      if (cursor_.p >= cursor_.end || *cursor_.p != '-') break;
+    for (cursor_.skip_blanks(); *cursor_.p == '-'; cursor_.skip_blanks()) {
       std::string_view option = cursor_.token();
       int max_args = 1, min_args = 1;
       if (option == "-o" || option == "-s" || option == "-t") max_args = 3;

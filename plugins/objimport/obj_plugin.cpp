@@ -107,14 +107,10 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
       r.status = ok ? PFX_OK : PFX_ERROR;
       if (ok) publish(storage);
     }
-  } catch (const std::bad_alloc&) {
+  } catch (...) {  // import_obj_* catch their own failures: what is left is out of memory
     storage->mesh = ObjMesh{};
     storage->error = "out of memory";
     r.status = PFX_OUT_OF_MEMORY;
-  } catch (...) {
-    storage->mesh = ObjMesh{};
-    storage->error = "internal error";
-    r.status = PFX_ERROR;
   }
   if (r.status != PFX_OK) r.error = storage->error.c_str();
   r.parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -53,21 +53,15 @@ size_t unterminated_tail(std::string_view text) {
 std::vector<std::string_view> split_at_line_ends(std::string_view text, size_t count) {
   std::vector<std::string_view> chunks;
   size_t begin = 0;
-  for (size_t k = 1; k < count && begin < text.size(); ++k) {
-    size_t i = k * (text.size() / count), cut = text.size();
-    if (i <= begin) continue;
-    if (text[i] == '\n' && text[i - 1] == '\r') ++i;  // never between the CR and LF of one line end
-    for (; i < text.size(); ++i) {
-      if (!is_line_end(text[i])) continue;
-      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;  // to the line end's last byte
-      if (!continues_line(text, i)) {
-        cut = i + 1;
-        break;
-      }
-    }
-    if (cut >= text.size()) break;
-    chunks.push_back(text.substr(begin, cut - begin));
-    begin = cut;
+  for (size_t k = 1; k < count; ++k) {
+    // After the first line end from the k-th share on that ends its statement (a CRLF whole).
+    size_t i = std::max(begin, k * (text.size() / count));
+    while (i < text.size() && (!is_line_end(text[i]) || continues_line(text, i) ||
+                               (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n')))
+      ++i;
+    if (i + 1 >= text.size()) break;
+    chunks.push_back(text.substr(begin, i + 1 - begin));
+    begin = i + 1;
   }
   chunks.push_back(text.substr(begin));
   return chunks;

@@ -54,7 +54,15 @@ struct LineCursor {
   }
   // The rest of the line (a '#' included: names may hold one), blanks trimmed at both ends, each
   // continuation one space.
-  std::string rest_of_line();
+  std::string rest_of_line() {
+    std::string text;
+    while (!is_line_end(*p)) {
+      if (!continuation(p)) text += *p++;
+      else ++p, consume_line_end(), text += ' ';
+    }
+    const size_t first = text.find_first_not_of(" \t\f\v"), last = text.find_last_not_of(" \t\f\v");
+    return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  }
 };
 
 // 10^0 .. 10^22 are exact in a double: a mantissa below 2^53 times or divided by one of them is
@@ -111,16 +119,39 @@ inline const char* parse_number(const char* p, double* out) {
   return p;
 }
 
-// A whole token as a number (as parse_number, so the byte after it is read), rounded to double and
-// then to float; false for anything else (nan, inf, hex, a second '.', trailing letters), leaving
-// *out alone.
-bool parse_float(std::string_view token, float* out);
-// As parse_float, but keeps the double.
-bool parse_double(std::string_view token, double* out);
-// True when the token spells nan or inf/infinity in any case, with an optional sign.
-bool is_non_finite_word(std::string_view token);
+// A whole token as a number (as parse_number, so the byte after it is read); false for anything
+// else (nan, inf, hex, a second '.', trailing letters), leaving *out alone.
+inline bool parse_double(std::string_view token, double* out) {
+  double value;
+  if (token.empty() || parse_number(token.data(), &value) != token.data() + token.size()) return false;
+  *out = value;
+  return true;
+}
+// As parse_double, then rounded to float.
+inline bool parse_float(std::string_view token, float* out) {
+  double value;
+  if (!parse_double(token, &value)) return false;
+  *out = static_cast<float>(value);
+  return true;
+}
+
+// True when the token spells nan, nan(...), inf or infinity in any case, with an optional sign.
+inline bool is_non_finite_word(std::string_view token) {
+  if (!token.empty() && (token[0] == '+' || token[0] == '-')) token.remove_prefix(1);
+  std::string lower(token.substr(0, 9));
+  for (char& c : lower) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return lower == "nan" || lower == "inf" || lower == "infinity" || (token.size() > 3 && lower.substr(0, 4) == "nan(");
+}
 
 // A token shown in a message: at most 40 bytes, control and non-ASCII bytes as \xNN.
-std::string printable(std::string_view token);
+inline std::string printable(std::string_view token) {
+  std::string text;
+  for (size_t i = 0; i < token.size() && i < 40; ++i) {
+    const unsigned char c = static_cast<unsigned char>(token[i]);
+    if (c >= 0x20 && c < 0x7f) text += static_cast<char>(c);
+    else text += std::string("\\x") + "0123456789abcdef"[c >> 4] + "0123456789abcdef"[c & 15];
+  }
+  return token.size() > 40 ? text + "..." : text;
+}
 
 }  // namespace pfx_obj
