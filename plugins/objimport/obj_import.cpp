@@ -127,7 +127,15 @@ class Importer {
   // slots and go back to it once numbered, so later chunks reuse pages already written instead of
   // fresh ones.
   bool read_and_number(std::string_view text, std::string* error) {
-    texts_ = split_at_line_ends(text, chunk_count(text.size()));
+    // Room for the most the text can hold ("v 0 0 0", "vt 0", "vn 0 0 0"; a polygon's corner "1 "
+    // adds a triangle and a vertex): address space only (obj_buffer.hpp), and nothing is copied.
+    const size_t bytes = text.size();
+    positions_.reserve(room_for(3 * (bytes / 8 + 1), sizeof(float)));
+    texcoords_.reserve(room_for(2 * (bytes / 5 + 1), sizeof(float)));
+    normals_.reserve(room_for(3 * (bytes / 9 + 1), sizeof(float)));
+    triangles_.reserve(room_for(3 * (bytes / 2 + 1), sizeof(uint32_t)));
+    numbering_.reserve(room_for(bytes / 2 + 1, sizeof(VertexKey) + 4), room_for(bytes / 8 + 1, 4));
+    texts_ = split_at_line_ends(text, chunk_count(bytes));
     const size_t count = texts_.size();
     chunks_.resize(count);
     starts_.resize(count + 1);
@@ -165,13 +173,8 @@ class Importer {
 
   // Chunk c's vertex data appended to the file's (colours: white for a v without one, once any v
   // has one).
-  void append_vertex_data(size_t c, uint64_t text_bytes) {
+  void append_vertex_data(size_t c) {
     const ChunkData& chunk = chunks_[c];
-    if (c == 0) {  // room for the most the text can hold ("v 0 0 0", "vt 0", "vn 0 0 0")
-      positions_.reserve(room_for(3 * (text_bytes / 8 + 1), sizeof(float)));
-      texcoords_.reserve(room_for(2 * (text_bytes / 5 + 1), sizeof(float)));
-      normals_.reserve(room_for(3 * (text_bytes / 9 + 1), sizeof(float)));
-    }
     positions_.insert(positions_.end(), chunk.positions.begin(), chunk.positions.end());
     texcoords_.insert(texcoords_.end(), chunk.texcoords.begin(), chunk.texcoords.end());
     normals_.insert(normals_.end(), chunk.normals.begin(), chunk.normals.end());
@@ -203,7 +206,7 @@ class Importer {
     next.triangle = start.triangle + chunk.triangles;
     if (3 * next.triangle > kNoIndex) throw std::length_error(name_ + ": more than 2^32 - 1 triangle indices");
     collect_statements(c);
-    append_vertex_data(c, text_bytes);
+    append_vertex_data(c);
 
     // An index past what the rest of the text could still define cannot be satisfied: from the
     // chunk that may hold one, none is numbered and check_indices finds it. (A position index
@@ -212,10 +215,6 @@ class Importer {
     start.suspect |= chunk.max_index[0] > next.bases[0] + bytes_left / 8 + 1;
     any_suspect_ |= start.suspect;
     if (!any_suspect_) {
-      if (c == 0) {  // for the most the text can hold: a polygon's corner "1 " adds a triangle
-        triangles_.reserve(room_for(3 * (text_bytes / 2 + 1), sizeof(uint32_t)));
-        numbering_.reserve(room_for(text_bytes / 2 + 1, sizeof(VertexKey) + 4), room_for(text_bytes / 8 + 1, 4));
-      }
       triangles_.resize(3 * next.triangle);
       numbering_.cover(std::max(next.bases[0], chunk.max_index[0]));
       any_suspect_ = start.suspect = !number_faces(c, triangles_.data() + 3 * start.triangle);
