@@ -1,7 +1,7 @@
 // Running jobs on the host's thread pool (pfx/services.h): the importer starts no thread of its own
 // and leaves every thread's affinity, priority and signal mask alone — the host decides those.
 // Without a pool, or with one worker, the jobs run in order on the calling thread. An exception in
-// any job stops the run and is rethrown on the calling thread once every worker has stopped.
+// an ordered job stops the run and is rethrown on the calling thread once every worker has stopped.
 #pragma once
 
 #include <algorithm>
@@ -17,28 +17,15 @@
 namespace pfx_obj {
 
 // Calls work(worker) once for each of `threads` workers: the tasks of one pool run, which the pool
-// may run one after another, or in turn on the calling thread.
+// may run one after another, or in turn on the calling thread. On a pool, `work` must not throw (it
+// runs behind the pool's C interface); run_ordered_jobs catches for its jobs.
 inline void run_workers(const pfx_thread_pool* pool, unsigned threads, const std::function<void(unsigned)>& work) {
   if (!pool || threads <= 1) {
     for (unsigned worker = 0; worker < std::max(1u, threads); ++worker) work(worker);
     return;
   }
-  struct Run {
-    const std::function<void(unsigned)>& work;
-    std::exception_ptr failure;
-    std::mutex mutex;
-  } run{work, nullptr, {}};
-  auto task = [](void* user, uint32_t worker) {
-    Run& r = *static_cast<Run*>(user);
-    try {
-      r.work(worker);
-    } catch (...) {  // a pool task must not throw: the caller rethrows it
-      std::lock_guard<std::mutex> lock(r.mutex);
-      if (!r.failure) r.failure = std::current_exception();
-    }
-  };
-  pool->run(pool->pool_data, task, &run, threads, threads);
-  if (run.failure) std::rethrow_exception(run.failure);
+  auto task = [](void* user, uint32_t worker) noexcept { (*static_cast<const std::function<void(unsigned)>*>(user))(worker); };
+  pool->run(pool->pool_data, task, const_cast<std::function<void(unsigned)>*>(&work), threads, threads);
 }
 
 // Two jobs per item on a few workers: the first for any item on any worker at once (reading a

@@ -19,12 +19,9 @@ namespace {
 // Statements of OBJ's free-form geometry (curves, surfaces) and rendering attributes: valid OBJ we
 // do not mesh. They are counted and reported once per keyword.
 bool is_unsupported_obj_keyword(std::string_view k) {
-  static const char* const kKnown[] = {"vp",   "cstype", "deg",     "bmat",     "step",     "curv",
-                                       "curv2", "surf",  "parm",    "trim",     "hole",     "scrv",
-                                       "sp",   "end",    "con",     "mg",       "bevel",    "c_interp",
-                                       "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech",
-                                       "maplib", "usemap", "call",  "csh"};
-  return std::any_of(std::begin(kKnown), std::end(kKnown), [&](const char* known) { return k == known; });
+  static const std::string_view kKnown = " vp cstype deg bmat step curv curv2 surf parm trim hole scrv sp end con mg bevel "
+                                         "c_interp d_interp lod shadow_obj trace_obj ctech stech maplib usemap call csh ";
+  return kKnown.find(" " + std::string(k) + " ") != kKnown.npos;  // (a keyword holds no blank)
 }
 
 // The first byte of the line end whose last byte is text[i] (a CRLF is one line end).
