@@ -36,7 +36,8 @@ struct StateChange {
   enum Kind : uint32_t { kMaterial = 0, kSmoothing = 1 };
   uint32_t first_face;  // chunk-local
   Kind kind;
-  uint32_t value;  // kMaterial: index into ChunkData::material_names; kSmoothing: group, 0 = off
+  uint32_t value;  // kMaterial: index into ChunkData::material_names (the file's, once numbered);
+                   // kSmoothing: group, 0 = off
   uint64_t first_triangle;  // chunk-local: the triangles its faces before it make
 };
 

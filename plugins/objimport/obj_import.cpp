@@ -13,10 +13,10 @@
 //   4. index    sub-meshes in order of their material's first use, each chunk's triangles copied
 //               to their material's place
 //   5. vertices the vertex arrays from the numbered keys, and the bounds
-//   6. normals  where the file gives none (obj_normals.cpp)
+//   6. normals  where the file gives none (obj_normals.hpp)
 //   7. warnings in line order
 //
-// The file comes mapped (obj_file.cpp); large arrays are obj_buffer.hpp's. Parallel stages run on
+// The file comes mapped (obj_file.hpp); large arrays are obj_buffer.hpp's. Parallel stages run on
 // the host's thread pool (obj_parallel.hpp); without one, on the calling thread.
 #include "obj_import.hpp"
 
@@ -101,7 +101,6 @@ class Importer {
     uint64_t triangle = 0;          // where its triangles start in triangles_
     uint32_t material = kNoIndex;   // the usemtl name in force (index into names_), or none
     uint32_t smoothing = kDefaultSmoothing;
-    std::vector<uint32_t> names;    // the chunk's material names as indices into names_
     bool suspect = false;           // it may hold an index the file cannot satisfy
   };
 
@@ -297,21 +296,22 @@ class Importer {
     }
   }
 
-  // Chunk c's other statements: the state in force after it, its usemtl names, material libraries
-  // and skipped statements.
+  // Chunk c's other statements: the state in force after it, its usemtl names (each change's value
+  // made an index into names_), material libraries and skipped statements.
   void collect_statements(size_t c) {
     ChunkData& chunk = chunks_[c];
     ChunkStart& start = starts_[c];
     ChunkStart& next = starts_[c + 1];
+    std::vector<uint32_t> file_names;  // per chunk-local name
     for (const LocalMessage& name : chunk.material_names) {
       auto [it, fresh] = name_index_.emplace(name.text, static_cast<uint32_t>(names_.size()));
       if (fresh) names_.push_back({start.line + name.line, name.text});
-      start.names.push_back(it->second);
+      file_names.push_back(it->second);
     }
     next.material = start.material;
     next.smoothing = start.smoothing;
-    for (const StateChange& change : chunk.changes) {
-      if (change.kind == StateChange::kMaterial) next.material = start.names[change.value];
+    for (StateChange& change : chunk.changes) {
+      if (change.kind == StateChange::kMaterial) next.material = change.value = file_names[change.value];
       else next.smoothing = change.value;
     }
     for (const LocalMessage& library : chunk.material_libraries)
@@ -389,10 +389,8 @@ class Importer {
     }
   }
 
-  // The slot (material index, or the last slot for none) of chunk c's material m (0: the one in
-  // force at its start, i + 1: its i-th name).
-  uint32_t slot_of(size_t c, size_t m) const {
-    const uint32_t name = m == 0 ? starts_[c].material : starts_[c].names[m - 1];
+  // The slot of a usemtl name (index into names_): its material's index, or the last slot for none.
+  uint32_t slot_of(uint32_t name) const {
     return name == kNoIndex ? static_cast<uint32_t>(out_->materials.size()) : name_slots_[name];
   }
 
@@ -401,12 +399,12 @@ class Importer {
   template <typename Run>
   void for_each_run(size_t c, Run run) const {
     const uint64_t base = starts_[c].triangle;
-    uint32_t slot = slot_of(c, 0);
+    uint32_t slot = slot_of(starts_[c].material);
     uint64_t first = base;
     for (const StateChange& change : chunks_[c].changes) {
       if (change.kind != StateChange::kMaterial) continue;
       if (base + change.first_triangle > first) run(slot, first, base + change.first_triangle);
-      slot = slot_of(c, change.value + 1);
+      slot = slot_of(change.value);
       first = base + change.first_triangle;
     }
     if (starts_[c + 1].triangle > first) run(slot, first, starts_[c + 1].triangle);
