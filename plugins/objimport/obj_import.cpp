@@ -23,12 +23,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <new>
 #include <stdexcept>
+#include <thread>
 #include <unordered_map>
 
 #include "obj_chunk.hpp"
@@ -142,7 +142,8 @@ class Importer {
     for (std::string_view chunk : texts_) largest = std::max(largest, chunk.size());
     const size_t window = threads_ == 1 ? 1 : size_t{threads_} + 1;
     std::vector<ChunkData> slots(window);  // only their arrays are used
-    std::atomic<uint64_t> bytes_numbered{0};
+    const std::thread::id caller = std::this_thread::get_id();
+    uint64_t bytes_numbered = 0;  // (one in-order job at a time)
     auto read = [&](size_t c, unsigned) {
       swap_arrays(&chunks_[c], &slots[c % window]);
       parse_chunk(texts_[c], c == 0, &chunks_[c], largest);
@@ -152,11 +153,10 @@ class Importer {
       if (!number_chunk(c, text.size(), error)) return false;
       swap_arrays(&chunks_[c], &slots[c % window]);
       bytes_numbered += texts_[c].size();
+      if (std::this_thread::get_id() == caller) report(static_cast<float>(0.6 * double(bytes_numbered) / double(bytes)));
       return true;
     };
-    run_ordered_jobs(options_.pool, threads_, count, window, read, number, [&] {
-      report(static_cast<float>(0.6 * static_cast<double>(bytes_numbered.load()) / std::max<double>(1.0, text.size())));
-    });
+    run_ordered_jobs(options_.pool, threads_, count, window, read, number);
     numbering_.finish();
     return error->empty();
   }

@@ -69,10 +69,8 @@ class MtlParser {
     } else if (keyword == "Kd" || keyword == "Ks" || keyword == "Ke") {
       float rgb[3];
       if (!color(keyword, rgb)) return;
-      Material* m = current(keyword);
-      if (!m) return;
-      float* into = keyword == "Kd" ? m->diffuse : keyword == "Ks" ? m->specular : m->emissive;
-      for (int i = 0; i < 3; ++i) into[i] = rgb[i];
+      if (Material* m = current(keyword))
+        std::copy(rgb, rgb + 3, keyword == "Kd" ? m->diffuse : keyword == "Ks" ? m->specular : m->emissive);
     } else if (keyword == "Ns" || keyword == "d" || keyword == "Tr") {
       cursor_.skip_blanks();
       if (keyword == "d" && rest().substr(0, 5) == "-halo") {
@@ -81,17 +79,11 @@ class MtlParser {
       }
       float value;
       if (!number(keyword, &value)) return;
-      Material* m = current(keyword);
-      if (!m) return;
-      if (keyword == "Ns") m->shininess = value;
-      else if (keyword == "d") m->opacity = value;
-      else m->opacity = 1.0f - value;
+      if (Material* m = current(keyword))
+        (keyword == "Ns" ? m->shininess : m->opacity) = keyword == "Tr" ? 1.0f - value : value;
     } else if (Material probe; map_field(&probe, keyword)) {
-      std::string path = map_path(keyword);
-      if (path.empty()) return;
-      Material* m = current(keyword);
-      if (!m) return;
-      *map_field(m, keyword) = resolve_path(directory_, path);
+      const std::string path = map_path(keyword);
+      if (Material* m = path.empty() ? nullptr : current(keyword)) *map_field(m, keyword) = resolve_path(directory_, path);
     }
     // Everything else (Ka, Ni, illum, map_Ks, ...) is valid MTL that pfx does not use.
   }

@@ -9,7 +9,6 @@
 #include <exception>
 #include <functional>
 #include <mutex>
-#include <thread>
 #include <vector>
 
 #include <pfx/services.h>
@@ -35,19 +34,16 @@ inline void run_workers(const pfx_thread_pool* pool, unsigned threads, const std
 // in-order job's end, so item % window names working memory no other item in flight uses. A
 // worker waits only while another runs a job (when none runs, one of the two is ready), so a pool
 // that runs its tasks one after another still finishes. An in-order job returning false stops the
-// run. `worker` (below `threads`) names scratch memory of the worker's own; `after_own_job` runs
-// on the calling thread after each job it ran, for progress reports.
+// run. `worker` (below `threads`) names scratch memory of the worker's own.
 inline void run_ordered_jobs(const pfx_thread_pool* pool, unsigned threads, size_t count, size_t window,
                              const std::function<void(size_t item, unsigned worker)>& first,
-                             const std::function<bool(size_t item)>& in_order,
-                             const std::function<void()>& after_own_job = nullptr) {
+                             const std::function<bool(size_t item)>& in_order) {
   std::mutex mutex;
   std::condition_variable changed;
   std::vector<char> first_done(count, 0);
   size_t next_first = 0, next_in_order = 0;
   bool in_order_running = false, stop = false;
   std::exception_ptr failure;
-  const std::thread::id caller = std::this_thread::get_id();
   run_workers(pool, threads, [&](unsigned worker) {
     std::unique_lock<std::mutex> lock(mutex);
     while (!stop && next_in_order < count) {
@@ -67,7 +63,6 @@ inline void run_ordered_jobs(const pfx_thread_pool* pool, unsigned threads, size
       } catch (...) {
         thrown = std::current_exception();
       }
-      if (after_own_job && std::this_thread::get_id() == caller) after_own_job();
       lock.lock();
       if (thrown && !failure) failure = thrown;
       if (ordered) in_order_running = false, ++next_in_order;
