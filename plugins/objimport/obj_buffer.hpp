@@ -41,13 +41,9 @@ struct BigBufferAllocator {
 
   // Default-initialisation: nothing at all for the plain numbers and structs stored here.
   template <typename U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }
+  void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
   template <typename U, typename... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
+  void construct(U* p, Args&&... args) { ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...); }
 
   template <typename U>
   bool operator==(const BigBufferAllocator<U>&) const { return true; }

@@ -62,9 +62,7 @@ class VertexNumbering {
     head_.reserve(positions);
   }
   // Keys with v below position_count may be numbered from now on.
-  void cover(uint32_t position_count) {
-    if (position_count > head_.size()) head_.resize(position_count, kNoIndex);
-  }
+  void cover(uint32_t position_count) { if (position_count > head_.size()) head_.resize(position_count, kNoIndex); }
 
   // No more insertions: only the keys are kept.
   void finish() {

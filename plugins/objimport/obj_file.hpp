@@ -18,9 +18,7 @@ namespace pfx_obj {
 class FileBytes {
  public:
   FileBytes() = default;
-  ~FileBytes() {
-    if (mapping_) ::munmap(mapping_, size_);
-  }
+  ~FileBytes() { if (mapping_) ::munmap(mapping_, size_); }
   FileBytes(const FileBytes&) = delete;
   FileBytes& operator=(const FileBytes&) = delete;
 

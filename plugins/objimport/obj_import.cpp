@@ -104,18 +104,14 @@ class Importer {
     bool suspect = false;           // it may hold an index the file cannot satisfy
   };
 
-  void report(float fraction) {
-    if (options_.progress) options_.progress(fraction);
-  }
+  void report(float fraction) { if (options_.progress) options_.progress(fraction); }
   void warn(uint64_t line, std::string text) { warnings_.push_back({line, std::move(text)}); }
-  std::string at(uint64_t line, const std::string& text) const {
-    return name_ + ":" + std::to_string(line) + ": " + text;
-  }
+  std::string at(uint64_t line, const std::string& text) const { return name_ + ":" + std::to_string(line) + ": " + text; }
 
   size_t chunk_count(size_t bytes) const {
     if (options_.chunk_bytes > 0) return std::max<size_t>(1, (bytes + options_.chunk_bytes - 1) / options_.chunk_bytes);
-    // About eight chunks per thread of 1 to 4 MB, their count a multiple of the thread count so
-    // the threads finish together: a chunk's corners live from its reading to its numbering.
+    // About eight chunks per thread of 1 to 4 MB, their count a multiple of the thread count so the
+    // threads finish together.
     const size_t chunk_bytes = std::clamp<size_t>(bytes / (size_t{threads_} * 8), 1 << 20, 4 << 20);
     size_t chunks = (bytes + chunk_bytes - 1) / chunk_bytes;
     if (chunks > 1) chunks = (chunks + threads_ - 1) / threads_ * threads_;
@@ -192,14 +188,13 @@ class Importer {
       return false;
     }
     ChunkStart& next = starts_[c + 1];
-    const uint64_t counts[3] = {chunk.positions.size() / 3, chunk.texcoords.size() / 2, chunk.normals.size() / 3};
-    for (int k = 0; k < 3; ++k) {
-      if (uint64_t{start.bases[k]} + counts[k] > uint64_t(kMaxWrittenIndex) || start.face + chunk.faces.size() > uint64_t(kMaxWrittenIndex)) {
-        *error = name_ + ": more than 2^31 - 1 elements of one kind (v, vt, vn or f): too large";
-        return false;
-      }
-      next.bases[k] = static_cast<uint32_t>(start.bases[k] + counts[k]);
+    const uint64_t totals[4] = {start.bases[0] + chunk.positions.size() / 3, start.bases[1] + chunk.texcoords.size() / 2,
+                                start.bases[2] + chunk.normals.size() / 3, start.face + chunk.faces.size()};
+    if (*std::max_element(totals, totals + 4) > uint64_t(kMaxWrittenIndex)) {
+      *error = name_ + ": more than 2^31 - 1 elements of one kind (v, vt, vn or f): too large";
+      return false;
     }
+    std::copy(totals, totals + 3, next.bases);
     next.line = start.line + chunk.line_ends;
     next.face = start.face + chunk.faces.size();
     next.triangle = start.triangle + chunk.triangles;
@@ -488,8 +483,7 @@ class Importer {
       warn(ignored.first_line, (ignored.valid_obj ? "'" + keyword + "' statements are not supported: "
                                                   : "unknown statement '" + keyword + "': ") +
                                    std::to_string(ignored.count) + " ignored");
-    const uint64_t last_line = starts_.back().line;
-    if (out_->faces == 0) warn(last_line > 1 ? last_line - 1 : 1, "no faces: the mesh is empty");
+    if (out_->faces == 0) warn(std::max<uint64_t>(starts_.back().line - 1, 1), "no faces: the mesh is empty");
     std::stable_sort(warnings_.begin(), warnings_.end(), [](const LocalMessage& a, const LocalMessage& b) { return a.line < b.line; });
     out_->warning_total = warnings_.size();
     for (size_t i = 0; i < warnings_.size() && i < kMaxWarnings; ++i) out_->warnings.push_back(at(warnings_[i].line, warnings_[i].text));

@@ -40,12 +40,11 @@ struct ImportOptions {
   // runs on the calling thread alone. The importer starts no thread of its own.
   const pfx_thread_pool* pool = nullptr;
   unsigned threads = 0;                  // at most this many tasks at once; 0: the pool's concurrency
-
   std::function<void(float)> progress;   // 0..1, on the calling thread
   size_t chunk_bytes = 0;                // 0: chosen from the size and thread count (tests set it)
 };
 
-// How many tasks of an import run at once: the request's bound within what the pool offers, and 1 without a pool.
+// How many tasks run at once: the request's bound within what the pool offers; 1 without a pool.
 inline unsigned worker_count(const pfx_thread_pool* pool, unsigned requested) {
   if (!pool) return 1;
   const unsigned offered = std::max(1u, pool->concurrency(pool->pool_data));

@@ -27,9 +27,7 @@ class MtlParser {
   }
 
  private:
-  void warn(const std::string& text) {
-    warnings_->push_back(file_name_ + ":" + std::to_string(line_) + ": " + text);
-  }
+  void warn(const std::string& text) { warnings_->push_back(file_name_ + ":" + std::to_string(line_) + ": " + text); }
 
   // The material's path that a map statement sets; null for every other statement.
   static std::string* map_field(Material* m, std::string_view keyword) {

@@ -44,9 +44,8 @@ inline void generate_normals(const BigVector<VertexKey>& keys, const BigVector<f
     const uint64_t lo = count * w / workers, hi = count * (w + 1) / workers;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
       const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
-      const bool owns_a = a >= lo && a < hi && generated[a], owns_b = b >= lo && b < hi && generated[b],
-                 owns_c = c >= lo && c < hi && generated[c];
-      if (!owns_a && !owns_b && !owns_c) continue;
+      auto owns = [&](uint32_t v) { return v >= lo && v < hi && generated[v]; };
+      if (!owns(a) && !owns(b) && !owns(c)) continue;
       const float* pa = &positions[3 * size_t{a}];
       const float* pb = &positions[3 * size_t{b}];
       const float* pc = &positions[3 * size_t{c}];
@@ -54,10 +53,9 @@ inline void generate_normals(const BigVector<VertexKey>& keys, const BigVector<f
       const float e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
       const float cross[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
                               e1[0] * e2[1] - e1[1] * e2[0]};
-      for (uint32_t v : {a, b, c}) {
-        if (v < lo || v >= hi || !generated[v]) continue;
-        for (int k = 0; k < 3; ++k) n[3 * size_t{v} + k] += cross[k];
-      }
+      for (uint32_t v : {a, b, c})
+        if (owns(v))
+          for (int k = 0; k < 3; ++k) n[3 * size_t{v} + k] += cross[k];
     }
   });
 

@@ -92,11 +92,8 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
       ImportOptions options;
       options.pool = g_pool;
       options.threads = request->threads;
-      if (request->progress) {
-        pfx_import_progress_fn progress = request->progress;
-        void* user = request->progress_user;
-        options.progress = [progress, user](float fraction) { progress(user, fraction); };
-      }
+      if (request->progress)
+        options.progress = [fn = request->progress, user = request->progress_user](float fraction) { fn(user, fraction); };
       // Bytes with a name: mtllib files are looked for beside it (without one, not at all).
       const std::string name = request->name ? request->name : "<memory>";
       std::string directory = request->name ? std::filesystem::path(name).parent_path().string() : "";
@@ -125,8 +122,7 @@ pfx_status import(const pfx_import_request* request, pfx_import_result** out) {
   return r.status;
 }
 
-void release(pfx_import_result* result) {
-  if (!result) return;
+void release(pfx_import_result* result) {  // (null, like any pointer not handed out, is not found)
   ResultStorage* storage = nullptr;
   {
     std::lock_guard<std::mutex> lock(g_results_mutex);

@@ -77,7 +77,9 @@ class Reader : LineCursor {
     end = stop;
     while (p < end) {
       line_ = line_ends;
-      if (!statement()) return false;
+      skip_blanks();
+      if (!at_statement_end() && !keyword_statement(token())) return false;
+      skip_statement();
     }
     return true;
   }
@@ -114,23 +116,10 @@ class Reader : LineCursor {
   size_t faces_so_far() const { return static_cast<size_t>(face_at_ - out_->faces.data()); }
   uint32_t normals_so_far() const { return static_cast<uint32_t>((normal_at_ - out_->normals.data()) / 3); }
 
-  std::string_view token_at(const char* start) {
-    p = start;
-    return token();
-  }
-  bool fail(std::string text) {
-    out_->error = {line_, std::move(text)};
-    return false;
-  }
+  std::string_view token_at(const char* start) { p = start; return token(); }
+  bool fail(std::string text) { out_->error = {line_, std::move(text)}; return false; }
 
   // --- Statements ----------------------------------------------------------------------------
-  bool statement() {
-    skip_blanks();
-    if (!at_statement_end() && !keyword_statement(token())) return false;
-    skip_statement();
-    return true;
-  }
-
   bool keyword_statement(std::string_view keyword) {
     if (keyword == "f") return face();
     if (keyword == "v") return vertex();

@@ -70,10 +70,8 @@ struct LineCursor {
 inline constexpr double kExactPowersOf10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                               1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-inline bool digit(char c, uint32_t* value) {
-  *value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0';
-  return *value < 10;
-}
+// Whether c is a decimal digit, *value its value.
+inline bool digit(char c, uint32_t* value) { return (*value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0') < 10; }
 
 // Reads the decimal number at p — [+-] digits [. digits] [(e|E) [+-] digits], with a digit on at
 // least one side of the point — into *out (rounded once, to double) and returns where it ends, or
