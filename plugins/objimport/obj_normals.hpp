@@ -46,9 +46,7 @@ inline void generate_normals(const BigVector<VertexKey>& keys, const BigVector<f
       const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
       auto owns = [&](uint32_t v) { return v >= lo && v < hi && generated[v]; };
       if (!owns(a) && !owns(b) && !owns(c)) continue;
-      const float* pa = &positions[3 * size_t{a}];
-      const float* pb = &positions[3 * size_t{b}];
-      const float* pc = &positions[3 * size_t{c}];
+      const float *pa = &positions[3 * size_t{a}], *pb = &positions[3 * size_t{b}], *pc = &positions[3 * size_t{c}];
       const float e1[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
       const float e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
       const float cross[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],

@@ -367,8 +367,7 @@ void parse_chunk(std::string_view text, bool first_in_file, ChunkData* out, size
   out->error = {};
   Reader reader(out, std::max(reserve_bytes, text.size()));
   const size_t tail = unterminated_tail(text);
-  bool ok = reader.read(text.data(), text.data() + tail);
-  if (ok && tail < text.size()) {
+  if (reader.read(text.data(), text.data() + tail) && tail < text.size()) {
     // The last statement has no line end: read from a copy with one, and one more for the reads
     // just past a continuation that ends the file.
     const std::string last = std::string(text.substr(tail)) + "\n\n";

@@ -73,12 +73,22 @@ inline constexpr double kExactPowersOf10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,
 // Whether c is a decimal digit, *value its value.
 inline bool digit(char c, uint32_t* value) { return (*value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0') < 10; }
 
+// [start, end) read by std::from_chars (exact, locale-independent). Out of a double's range it is
+// inf or 0: `place` (digits + exponent, less leading zeros) is the first digit's power of ten + 1.
+[[gnu::cold, gnu::noinline]] inline bool parse_exactly(const char* start, const char* end, long place, double* value) {
+  const auto result = std::from_chars(start, end, *value);
+  if (result.ec != std::errc::result_out_of_range) return result.ec == std::errc() && result.ptr == end;
+  for (const char* q = start; *q == '0' || *q == '.'; ++q) place -= *q == '0';  // leading zeros
+  *value = place - 1 > 0 ? HUGE_VAL : 0.0;
+  return true;
+}
+
 // Reads the decimal number at p — [+-] digits [. digits] [(e|E) [+-] digits], with a digit on at
 // least one side of the point — into *out (rounded once, to double) and returns where it ends, or
 // null when none starts there; the caller checks what follows. The text must end with a byte that
 // is not part of a number (a line end, a blank, a NUL). Up to 19 digits with a small exponent take
-// Clinger's fast path; the rest, std::from_chars (exact, locale-independent).
-inline const char* parse_number(const char* p, double* out) {
+// Clinger's fast path; the rest, parse_exactly.
+[[gnu::always_inline]] inline const char* parse_number(const char* p, double* out) {
   const bool negative = *p == '-';
   if (*p == '-' || *p == '+') ++p;
   const char* const start = p;  // from_chars takes no sign
@@ -103,15 +113,8 @@ inline const char* parse_number(const char* p, double* out) {
   if (digits < 20 && mantissa < (uint64_t{1} << 53) && exponent >= -22 && exponent <= 22) {
     value = exponent < 0 ? static_cast<double>(mantissa) / kExactPowersOf10[-exponent]
                          : static_cast<double>(mantissa) * kExactPowersOf10[exponent];
-  } else {
-    const auto result = std::from_chars(start, p, value);
-    if (result.ec == std::errc::result_out_of_range) {  // too large or too small: the first digit's place says which
-      long zeros = 0;
-      for (const char* q = start; *q == '0' || *q == '.'; ++q) zeros += *q == '0';
-      value = digits - zeros - 1 + exponent > 0 ? HUGE_VAL : 0.0;
-    } else if (result.ec != std::errc() || result.ptr != p) {
-      return nullptr;
-    }
+  } else if (!parse_exactly(start, p, digits + exponent, &value)) {
+    return nullptr;
   }
   *out = negative ? -value : value;
   return p;
