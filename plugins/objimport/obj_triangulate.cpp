@@ -18,8 +18,8 @@ void fan(uint32_t first, const std::vector<uint32_t>& next, uint32_t remaining, 
 
 // The polygon projected to 2D (xy) along the largest axis of its Newell normal, which is robust for
 // non-planar and concave polygons; false when it has no area (all corners on a line or a point).
-// *orientation: +1 or -1, the polygon's winding in the projection (the axis order flips it for
-// some dropped axes). kCorners: n known when compiled (4), or 0.
+// *orientation: +1 or -1, the polygon's winding in the projection. kCorners: n known when
+// compiled (4), or 0.
 template <uint32_t kCorners>
 [[gnu::always_inline]] inline bool project(const float* const* corners, uint32_t n, double* xy, double* orientation) {
   if (kCorners) n = kCorners;
@@ -28,33 +28,32 @@ template <uint32_t kCorners>
   for (uint32_t i = 0; i < n; ++i) {
     const float* a = corners[i];
     const float* b = corners[i + 1 == n ? 0 : i + 1];
-    normal[0] += (double(a[1]) - b[1]) * (double(a[2]) + b[2]);
-    normal[1] += (double(a[2]) - b[2]) * (double(a[0]) + b[0]);
-    normal[2] += (double(a[0]) - b[0]) * (double(a[1]) + b[1]);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0, k1 = 1, k2 = 2; k < 3; ++k, k1 = (k + 1) % 3, k2 = (k + 2) % 3) {
+      if (kCorners != 4) normal[k] += (double(a[k1]) - b[k1]) * (double(a[k2]) + b[k2]);
       lo[k] = std::min(lo[k], double(a[k]));  // as fmin and fmax: a NaN is passed over
       hi[k] = std::max(hi[k], double(a[k]));
     }
+  }
+  if (kCorners == 4) {  // the same normal, as the cross product of the diagonals: fewer operations
+    const float *p0 = corners[0], *p1 = corners[1], *p2 = corners[2], *p3 = corners[3];
+    for (int k = 0, k1 = 1, k2 = 2; k < 3; ++k, k1 = (k + 1) % 3, k2 = (k + 2) % 3)
+      normal[k] = (double(p2[k1]) - p0[k1]) * (double(p3[k2]) - p1[k2]) - (double(p2[k2]) - p0[k2]) * (double(p3[k1]) - p1[k1]);
   }
   int drop = 2;
   if (std::fabs(normal[0]) >= std::fabs(normal[1]) && std::fabs(normal[0]) >= std::fabs(normal[2])) drop = 0;
   else if (std::fabs(normal[1]) >= std::fabs(normal[2])) drop = 1;
   double extent2 = 0;
   for (int k = 0; k < 3; ++k) extent2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-  // Twice the projected area equals the dropped normal component; relative to the size squared it
-  // says whether the polygon has any area at all.
+  // The dropped normal component is twice the projected area (its sign the winding there, the
+  // other way round when y is dropped); relative to the size squared it says whether the polygon
+  // has any area at all.
   if (!(std::fabs(normal[drop]) > 1e-12 * extent2)) return false;
   const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
   for (uint32_t i = 0; i < n; ++i) {
     xy[2 * i] = corners[i][u];
     xy[2 * i + 1] = corners[i][v];
   }
-  double area2 = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t j = i + 1 == n ? 0 : i + 1;
-    area2 += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
-  }
-  *orientation = area2 > 0 ? 1.0 : -1.0;
+  *orientation = (normal[drop] > 0) == (drop != 1) ? 1.0 : -1.0;
   return true;
 }
 
