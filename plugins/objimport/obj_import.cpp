@@ -122,14 +122,16 @@ class Importer {
   // slots and go back to it once numbered, so later chunks reuse pages already written instead of
   // fresh ones.
   bool read_and_number(std::string_view text, std::string* error) {
-    // Room for the most the text can hold ("v 0 0 0", "vt 0", "vn 0 0 0"; a polygon's corner "1 "
-    // adds a triangle and a vertex): address space only (obj_buffer.hpp), and nothing is copied.
+    // Room, in address space only (obj_buffer.hpp), for the most the text can hold ("v 0 0 0",
+    // "vt 0", "vn 0 0 0") and for what files hold: a vertex per position, a triangle index per byte
+    // (a quad "f 1 2 3 4" holds 0.6). Past that (vertices split by seams, polygons of many short
+    // corners) an array grows by copying.
     const size_t bytes = text.size();
     positions_.reserve(room_for(3 * (bytes / 8 + 1), sizeof(float)));
     texcoords_.reserve(room_for(2 * (bytes / 5 + 1), sizeof(float)));
     normals_.reserve(room_for(3 * (bytes / 9 + 1), sizeof(float)));
-    triangles_.reserve(room_for(3 * (bytes / 2 + 1), sizeof(uint32_t)));
-    numbering_.reserve(room_for(bytes / 2 + 1, sizeof(VertexKey) + 4), room_for(bytes / 8 + 1, 4));
+    triangles_.reserve(room_for(bytes + 3, sizeof(uint32_t)));
+    numbering_.reserve(room_for(bytes / 8 + 1, sizeof(VertexKey) + 4), room_for(bytes / 8 + 1, 4));
     texts_ = split_at_line_ends(text, chunk_count(bytes));
     const size_t count = texts_.size();
     chunks_.resize(count);
