@@ -138,7 +138,7 @@ class Importer {
     starts_.resize(count + 1);
     size_t largest = 0;
     for (std::string_view chunk : texts_) largest = std::max(largest, chunk.size());
-    const size_t window = threads_ == 1 ? 1 : size_t{threads_} + 1;
+    const size_t window = threads_;  // chunks between reading and numbering: one per worker
     std::vector<ChunkData> slots(window);  // only their arrays are used
     const std::thread::id caller = std::this_thread::get_id();
     uint64_t bytes_numbered = 0;  // (one in-order job at a time)
