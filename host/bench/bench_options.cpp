@@ -107,13 +107,7 @@ bool parse_bench_options(const std::vector<std::string>& list, BenchOptions* out
       if (text != "auto" && text != "gpu" && text != "finish") return args.fail("--timing " + text + ": expected auto, gpu or finish");
       options.timing = text;
     } else if (arg == "--sizes") {
-      if (!args.value(&text)) return false;
-      options.sizes.clear();
-      for (const auto& item : pfx::app::split_list(text)) {
-        int w = 0, h = 0;
-        if (!pfx::app::parse_frame_size("--sizes", item, &w, &h, error)) return false;
-        options.sizes.push_back({w, h});
-      }
+      if (!args.value(&text) || !pfx::app::parse_frame_sizes("--sizes", text, &options.sizes, error)) return false;
       if (options.sizes.empty()) return args.fail("--sizes needs at least one size");
       sizes_given = true;
     } else {

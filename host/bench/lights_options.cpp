@@ -82,13 +82,7 @@ bool parse_lights_options(const std::vector<std::string>& list, LightsOptions* o
       o.dense_size = {64, 36};
       o.dense_counts = {1000};
     } else if (arg == "--sizes") {
-      if (!args.value(&text)) return false;
-      o.sizes.clear();
-      for (const auto& item : pfx::app::split_list(text)) {
-        int w = 0, h = 0;
-        if (!pfx::app::parse_frame_size("--sizes", item, &w, &h, error)) return false;
-        o.sizes.push_back({w, h});
-      }
+      if (!args.value(&text) || !pfx::app::parse_frame_sizes("--sizes", text, &o.sizes, error)) return false;
     } else if (arg == "--dense-size") {
       if (!args.value(&text) ||
           !pfx::app::parse_frame_size("--dense-size", text, &o.dense_size.first, &o.dense_size.second, error))

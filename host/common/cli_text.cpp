@@ -76,4 +76,15 @@ bool parse_frame_size(const std::string& option, const std::string& text, int* w
   return true;
 }
 
+bool parse_frame_sizes(const std::string& option, const std::string& text, std::vector<std::pair<int, int>>* sizes,
+                       std::string* error) {
+  sizes->clear();
+  for (const std::string& item : split_list(text)) {
+    int w = 0, h = 0;
+    if (!parse_frame_size(option, item, &w, &h, error)) return false;
+    sizes->push_back({w, h});
+  }
+  return true;
+}
+
 }  // namespace pfx::app
