@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <set>
 
@@ -102,6 +103,13 @@ struct DuringImport {
 }  // namespace
 
 void check_process_state(const std::string& path, CheckReporter& report) {
+  // A driver writes its on-disk shader cache from threads it starts when a program is first
+  // compiled and not found there: with a cold cache (a fresh machine, a new driver) the plugin's
+  // first create would seem to leave them running. This check runs in a child of its own, so it
+  // turns the caches of Mesa and NVIDIA's driver off for that child alone, before the context
+  // exists: the threads that can then appear are the plugin's.
+  setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+  setenv("__GL_SHADER_DISK_CACHE", "0", 1);
   RenderRig rig(report);
   if (!rig.open_context()) return;
   // The host's threads, and the driver's, exist before the first look: a thread that appears

@@ -170,13 +170,19 @@ void ViewerSession::poll_plugins(double now_seconds) {
     pfx::host::ReloadResult result;
     std::string message;
     const std::string path = registry_->find_plugin(id)->path;
+    const auto started = std::chrono::steady_clock::now();
     if (!pfx::host::reload_plugin(*registry_, params_, *chain_, id, &result, &message)) {
       error("reload failed: " + message + "; the previous version keeps running");
       continue;
     }
     ++reload_count_;
+    // The time the reload itself took (loading, creating the effects, compiling their shaders),
+    // apart from the wait for the file to settle: a slow plugin shows which of the two it is.
+    char took[32];
+    std::snprintf(took, sizeof took, " in %.2f s",
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
     std::string text = "reloaded " + id + " " + result.old_version + " -> " + result.new_version + " from " + path +
-                       " (parameter values kept)";
+                       took + " (parameter values kept)";
     for (const auto& dropped : result.effects_dropped) text += "; effect '" + dropped + "' is gone and left the chain";
     info(text);
   }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <pfx/host/plugin_registry.hpp>
@@ -32,15 +33,25 @@ pfx_import_request request_for_path(const char* path) {
   return request;
 }
 
-// This process's resident memory in bytes (/proc/self/status), 0 when unknown.
-uint64_t status_bytes(const char* field) {  // a "Vm...:" line of /proc/self/status
+// A "Vm..." or "Rss..." line of /proc/self/status in bytes, 0 when unknown.
+uint64_t status_bytes(const char* field) {
   std::ifstream in("/proc/self/status");
   std::string line;
   while (std::getline(in, line))
     if (line.rfind(field, 0) == 0) return std::stoull(line.substr(std::strlen(field))) * 1024;
   return 0;
 }
-uint64_t resident_bytes() { return status_bytes("VmRSS:"); }
+
+// The resident memory the importer's arrays and heap live in: anonymous pages. Not VmRSS, whose
+// file-backed part also grows by the code pages the first import touches and the neighbours the
+// kernel maps along with them (fault-around: how many depends on what the page cache holds).
+uint64_t anonymous_bytes() { return status_bytes("RssAnon:"); }
+
+// A kernel whose transparent huge pages are set to "always" backs a growing heap with whole 2 MiB
+// pages, as they are free or not: resident memory then moves in 2 MiB steps the importer did not
+// take. The memory tests ask for 4 KiB pages for this process, so that their figures are the
+// importer's on every machine, whatever its setting.
+void use_small_pages() { REQUIRE(::prctl(PR_SET_THP_DISABLE, 1, 0, 0, 0) == 0); }
 
 }  // namespace
 
@@ -175,7 +186,8 @@ TEST_CASE("obj plugin: a large result, imported on two threads, gives its memory
   request.bytes = text.data();
   request.byte_count = text.size();
   request.threads = 2;
-  const uint64_t before = resident_bytes();
+  use_small_pages();
+  const uint64_t before = anonymous_bytes();
   REQUIRE(before > 0);
   pfx_import_result* result = nullptr;
   const pfx_status status = importer->import(&request, &result);
@@ -187,16 +199,19 @@ TEST_CASE("obj plugin: a large result, imported on two threads, gives its memory
   const uint64_t arrays = uint64_t{result->vertex_count} * 8 * sizeof(float) + uint64_t{result->index_count} * sizeof(uint32_t);
   // The arrays are resident while the result lives (the last corner is the grid's x = n - 2,
   // y = n - 1) ...
-  CHECK(resident_bytes() >= before + arrays);
+  CHECK(anonymous_bytes() >= before + arrays);
   const uint32_t last = result->indices[result->index_count - 1];
   REQUIRE(last < result->vertex_count);
   CHECK(result->positions[3 * last] == float(n - 2));
   CHECK(result->positions[3 * last + 1] == float(n - 1));
   CHECK(result->texcoords[2 * last] == Approx(double(n - 2) / n));
   CHECK(result->normals[3 * last + 2] == 1.0f);
-  // ... and given back by release, all but a little bookkeeping (heap the allocator keeps).
+  // ... and given back by release, all but a little bookkeeping: the small blocks the import freed
+  // into the heap, which the allocator keeps (0.3 MB of 11.3 MB here). Not in the sanitizer pass:
+  // AddressSanitizer keeps every freed block in its quarantine (up to 256 MB) on purpose, so what
+  // stays resident there measures the quarantine, not the importer.
   importer->release(result);
-  CHECK(resident_bytes() < before + arrays / 4);
+  CHECK(anonymous_bytes() < before + arrays / 4);
 }
 
 TEST_CASE("obj plugin: a large file does not count whole towards resident memory while it is read", "[objimport][plugin][memory]") {
@@ -213,8 +228,9 @@ TEST_CASE("obj plugin: a large file does not count whole towards resident memory
   const pfx_importer_desc* importer = registry->find_importer("obj")->desc;
   const std::string name = path.string();
   pfx_import_request request = request_for_path(name.c_str());
+  use_small_pages();
   { std::ofstream("/proc/self/clear_refs") << "5"; }  // the peak starts again from what is resident now
-  const uint64_t before = resident_bytes();
+  const uint64_t before = status_bytes("VmRSS:");
   pfx_import_result* result = nullptr;
   CHECK(importer->import(&request, &result) == PFX_OK);
   REQUIRE(result);
@@ -222,6 +238,10 @@ TEST_CASE("obj plugin: a large file does not count whole towards resident memory
   const uint64_t peak = status_bytes("VmHWM:");
   importer->release(result);
   fs::remove(path);
+  // The peak counts the file's pages too: they are what this is about. A chunk is at most 4 MB and
+  // each of the two workers drops a chunk's pages once it has read it, so the file adds at most 8 MB
+  // at once; the bound is twice that, for the import's own heap and the pages the kernel maps
+  // around each fault. Keeping the pages would add the whole 48 MB.
   INFO("peak added " << (peak - before) / 1024 << " KiB");
-  CHECK(peak - before < uint64_t{16} << 20);
+  CHECK(peak - before < uint64_t{2 * 2 * 4} << 20);
 }

@@ -5,6 +5,7 @@
 #include <sched.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -162,7 +163,19 @@ TEST_CASE("broken_prints_to_stdout: printing in init fails the checks that call 
 }
 
 TEST_CASE("broken_hangs_in_declare: a check that runs too long is killed and reported", "[validate][fixtures]") {
-  const nlohmann::json plugin = validate_json(misbehaving("broken_hangs_in_declare"), "--timeout 1.5");
+  // The timeout must let every check reach the plugin's declare (a fork, a GL context, loading,
+  // create) and no more. How long that takes is measured here, now, on a plugin that does not hang:
+  // the minimal plugin's create/destroy check does all of it and more (a destroy, a second create
+  // and a render). Four times the longer of its two such checks, at least 1.5 s, keeps a machine
+  // whose load changes between the two runs from killing a check before it gets there.
+  double reach = 0;
+  const nlohmann::json minimal = validate_json(PFX_TEST_MINIMAL_PLUGIN, "", 0);
+  for (const auto& c : minimal["checks"])
+    if (c["check"] == "create/destroy") reach = std::max(reach, c["seconds"].get<double>());
+  REQUIRE(reach > 0);
+  const double timeout = std::max(1.5, 4 * reach);
+  INFO("the minimal plugin's create/destroy took " << reach << " s: --timeout " << timeout);
+  const nlohmann::json plugin = validate_json(misbehaving("broken_hangs_in_declare"), "--timeout " + std::to_string(timeout));
   const auto& defaults = check(plugin, "defaults", "broken_hangs_in_declare");
   CHECK(defaults["status"] == "TIMEOUT");
   CHECK(any_problem_contains(defaults, "did not finish in time and was killed during: rendering gradient 64x48 (defaults)"));
