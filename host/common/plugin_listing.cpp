@@ -31,20 +31,40 @@ nlohmann::ordered_json number(double value) {
 
 }  // namespace
 
-std::string default_value_text(const pfx_param_desc& p) {
+std::string value_text(const pfx_param_desc& p, const pfx_value& value) {
   if (p.type == PFX_PARAM_ENUM) {
-    auto index = static_cast<uint32_t>(p.default_value.v[0]);
+    auto index = static_cast<uint32_t>(value.v[0]);
     return index < p.item_count ? p.items[index].id : "?";
   }
-  if (p.type == PFX_PARAM_BOOL) return p.default_value.v[0] != 0 ? "true" : "false";
+  if (p.type == PFX_PARAM_BOOL) return value.v[0] != 0 ? "true" : "false";
   std::string text;
   for (int i = 0; i < components(p.type); ++i) {
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", p.default_value.v[i]);
+    std::snprintf(buffer, sizeof buffer, "%g", value.v[i]);
     text += (i ? "," : "") + std::string(buffer);
   }
   return text;
 }
+
+std::string default_value_text(const pfx_param_desc& p) { return value_text(p, p.default_value); }
+
+bool has_display_default(const pfx_param_desc& p) {
+  return (p.flags & PFX_PARAM_HAS_DISPLAY_DEFAULT) && PFX_STRUCT_HAS(&p, pfx_param_desc, display_default);
+}
+
+namespace {
+
+// A value as the JSON listing gives it: an enum's item id, a bool, a number, an array for vectors.
+nlohmann::ordered_json json_value(const pfx_param_desc& p, const pfx_value& value) {
+  if (p.type == PFX_PARAM_ENUM) return value_text(p, value);
+  if (p.type == PFX_PARAM_BOOL) return value.v[0] != 0;
+  if (components(p.type) == 1) return number(value.v[0]);
+  auto array = nlohmann::ordered_json::array();
+  for (int c = 0; c < components(p.type); ++c) array.push_back(number(value.v[c]));
+  return array;
+}
+
+}  // namespace
 
 std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors) {
   std::string out;
@@ -58,6 +78,8 @@ std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const
         std::snprintf(line, sizeof line, "    %s.%-18s %-6s default %-10s range [%g, %g] %s\n", effect->id, p.id,
                       type_name(p.type), default_value_text(p).c_str(), p.hard_min, p.hard_max, p.unit ? p.unit : "");
         out += line;
+        if (has_display_default(p))
+          out += "      default on display-referred (8-bit) frames: " + value_text(p, p.display_default) + "\n";
         if (p.type == PFX_PARAM_ENUM) {
           out += "      one of:";
           for (uint32_t k = 0; k < p.item_count; ++k) out += std::string(" ") + p.items[k].id;
@@ -105,18 +127,12 @@ std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const
         q["step"] = number(d.step);
         q["out_of_range"] = (d.flags & PFX_PARAM_REJECT_OUT_OF_RANGE) ? "reject" : "clamp";
         q["logarithmic"] = (d.flags & PFX_PARAM_LOGARITHMIC) != 0;
+        q["default"] = json_value(d, d.default_value);
+        if (has_display_default(d)) q["display_default"] = json_value(d, d.display_default);
         if (d.type == PFX_PARAM_ENUM) {
-          q["default"] = default_value_text(d);
           q["items"] = nlohmann::ordered_json::array();
           for (uint32_t k = 0; k < d.item_count; ++k)
             q["items"].push_back({{"id", d.items[k].id}, {"label", d.items[k].label ? d.items[k].label : d.items[k].id}});
-        } else if (d.type == PFX_PARAM_BOOL) {
-          q["default"] = d.default_value.v[0] != 0;
-        } else if (components(d.type) == 1) {
-          q["default"] = number(d.default_value.v[0]);
-        } else {
-          q["default"] = nlohmann::ordered_json::array();
-          for (int c = 0; c < components(d.type); ++c) q["default"].push_back(number(d.default_value.v[c]));
         }
         e["parameters"].push_back(q);
       }

@@ -9,8 +9,12 @@
 
 namespace pfx::app {
 
-// A parameter's default as text: the item id of an enum, true/false, "%g" numbers joined by ','.
+// A parameter's value as text: the item id of an enum, true/false, "%g" numbers joined by ','.
+std::string value_text(const pfx_param_desc& param, const pfx_value& value);
+// Its (scene-referred) default as text.
 std::string default_value_text(const pfx_param_desc& param);
+// Whether it has a default of its own for display-referred frames (pfx_param_desc.display_default).
+bool has_display_default(const pfx_param_desc& param);
 std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors);
 std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors);
 

@@ -36,8 +36,10 @@ bool desktop_gl_45(const host::GlProcLoader& loader, std::string* why) {
   return true;
 }
 
+// The back buffer is 8-bit and display-referred: effects start from the defaults they give for
+// such frames (bloom's threshold below 1.0), and a preset or --set overrides them as usual.
 std::unique_ptr<host::ParamStore> make_params(const host::PluginRegistry& registry) {
-  auto params = std::make_unique<host::ParamStore>();
+  auto params = std::make_unique<host::ParamStore>(host::DefaultSet::DISPLAY_REFERRED);
   for (const auto& effect : registry.effects()) params->add_effect(effect.desc);
   return params;
 }

@@ -9,35 +9,6 @@
 namespace pfx::inject {
 namespace {
 
-// The exact piecewise sRGB curves (IEC 61966-2-1), as host/image/tonemap does on the CPU. In
-// 32-bit float they put every 8-bit code back on itself through the RGBA16F texture between them:
-// a half holds the decoded value to 1/2048 of itself, which moves the code by at most 0.05.
-const char* kDecodeShader = R"(#version 450 core
-layout(binding = 0) uniform sampler2D back_buffer;
-layout(location = 0) uniform int srgb;
-layout(location = 0) out vec4 color;
-void main() {
-  vec4 value = texelFetch(back_buffer, ivec2(gl_FragCoord.xy), 0);
-  vec3 linear = mix(value.rgb / 12.92, pow((value.rgb + 0.055) / 1.055, vec3(2.4)), greaterThan(value.rgb, vec3(0.04045)));
-  color = vec4(srgb != 0 ? linear : value.rgb, value.a);
-}
-)";
-
-// Linear light to 8-bit: clamped to [0, 1] (what an 8-bit buffer can hold; the GL rounds to the
-// nearest code). Not-a-number becomes 0, so a broken pixel shows black, not whatever the
-// conversion makes of it.
-const char* kEncodeShader = R"(#version 450 core
-layout(binding = 0) uniform sampler2D chain_output;
-layout(location = 0) uniform int srgb;
-layout(location = 0) out vec4 color;
-void main() {
-  vec4 value = texelFetch(chain_output, ivec2(gl_FragCoord.xy), 0);
-  value = clamp(mix(value, vec4(0.0), isnan(value)), 0.0, 1.0);
-  vec3 encoded = mix(value.rgb * 12.92, 1.055 * pow(value.rgb, vec3(1.0 / 2.4)) - 0.055, greaterThan(value.rgb, vec3(0.0031308)));
-  color = vec4(srgb != 0 ? encoded : value.rgb, value.a);
-}
-)";
-
 const char* kCopyShader = R"(#version 450 core
 layout(binding = 0) uniform sampler2D source;
 layout(location = 0) out vec4 color;
@@ -55,9 +26,8 @@ GLuint make_texture(GLenum format, int width, int height) {
   return texture;
 }
 
-void draw_fullscreen(GLuint program, GLuint texture, int srgb_uniform) {
+void draw_fullscreen(GLuint program, GLuint texture) {
   glUseProgram(program);
-  if (srgb_uniform >= 0) glUniform1i(0, srgb_uniform);
   glBindTextureUnit(0, texture);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -65,12 +35,11 @@ void draw_fullscreen(GLuint program, GLuint texture, int srgb_uniform) {
 }  // namespace
 
 bool FrameCopy::create(std::string* error) {
+  if (!transfer_.create(error)) return false;
   std::string message;
-  decode_program_ = pfx::gl::build_fullscreen_program(kDecodeShader, &message);
-  if (decode_program_) encode_program_ = pfx::gl::build_fullscreen_program(kEncodeShader, &message);
-  if (encode_program_) copy_program_ = pfx::gl::build_fullscreen_program(kCopyShader, &message);
+  copy_program_ = pfx::gl::build_fullscreen_program(kCopyShader, &message);
   if (!copy_program_) {
-    *error = "the copy programs did not build: " + message;
+    *error = "the copy program did not build: " + message;
     return false;
   }
   glCreateVertexArrays(1, &vertex_array_);
@@ -85,7 +54,7 @@ FrameCopy::~FrameCopy() {
   const GLuint framebuffers[] = {read_framebuffer_, decode_framebuffer_, scratch_framebuffer_};
   glDeleteFramebuffers(3, framebuffers);
   glDeleteVertexArrays(1, &vertex_array_);
-  for (GLuint program : {decode_program_, encode_program_, copy_program_}) glDeleteProgram(program);
+  glDeleteProgram(copy_program_);
 }
 
 void FrameCopy::delete_targets() {
@@ -166,8 +135,7 @@ bool FrameCopy::copy_in(Transfer transfer, bool with_depth, std::string* error) 
   }
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, decode_framebuffer_);
   glViewport(0, 0, width_, height_);
-  glBindVertexArray(vertex_array_);
-  draw_fullscreen(decode_program_, back_buffer_copy_, transfer == Transfer::SRGB);
+  transfer_.decode(back_buffer_copy_, transfer);
   return true;
 }
 
@@ -177,8 +145,7 @@ void FrameCopy::copy_out(GLuint texture, Transfer transfer) {
   glGetIntegerv(GL_DRAW_BUFFER, &draw_buffer);
   glDrawBuffer(GL_BACK);
   glViewport(0, 0, width_, height_);
-  glBindVertexArray(vertex_array_);
-  draw_fullscreen(encode_program_, texture, transfer == Transfer::SRGB);
+  transfer_.encode(texture, transfer);
   glDrawBuffer(static_cast<GLenum>(draw_buffer));
 }
 
@@ -215,7 +182,7 @@ double FrameCopy::copy_pass_ms(int repeats) {
   for (int i = 0; i < repeats; ++i) {
     glFinish();
     const auto start = std::chrono::steady_clock::now();
-    draw_fullscreen(copy_program_, color_, -1);
+    draw_fullscreen(copy_program_, color_);
     glFinish();
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }

@@ -11,6 +11,7 @@
 
 #include "image.hpp"
 #include "inject_settings.hpp"
+#include "transfer_programs.hpp"
 
 namespace pfx::inject {
 
@@ -53,7 +54,8 @@ class FrameCopy {
  private:
   void delete_targets();
   void choose_depth_format();
-  GLuint decode_program_ = 0, encode_program_ = 0, copy_program_ = 0, vertex_array_ = 0;
+  gl::TransferPrograms transfer_;
+  GLuint copy_program_ = 0, vertex_array_ = 0;
   GLuint back_buffer_copy_ = 0;   // RGBA8: the back buffer's bytes as they are
   GLuint color_ = 0, output_ = 0; // RGBA16F
   GLuint depth_ = 0;              // the default framebuffer's depth format, or 0

@@ -79,7 +79,7 @@ bool parse_inject_options(const std::vector<std::string>& args, InjectOptions* o
       if (!parse_depth_plane(value, is_far, is_far ? &far_plane : &near_plane, error)) return reader.fail(arg + ": " + *error);
     } else if (arg == "--transfer") {
       if (!reader.value(&value)) return false;
-      if (!parse_transfer(value, &options.settings.transfer, error)) return reader.fail("--transfer: " + *error);
+      if (!app::parse_transfer(value, &options.settings.transfer, error)) return reader.fail("--transfer: " + *error);
     } else if (arg == "--capture") {
       if (!reader.value(&value)) return false;
       Capture capture;

@@ -64,16 +64,6 @@ bool parse_capture(const std::string& text, Capture* out, std::string* error) {
   return true;
 }
 
-bool parse_transfer(const std::string& text, Transfer* out, std::string* error) {
-  if (text == "srgb") *out = Transfer::SRGB;
-  else if (text == "linear") *out = Transfer::LINEAR;
-  else {
-    *error = "transfer '" + text + "': expected srgb or linear";
-    return false;
-  }
-  return true;
-}
-
 bool parse_depth_plane(const std::string& text, bool allow_infinity, double* out, std::string* error) {
   if (allow_infinity && text == "inf") {
     *out = std::numeric_limits<double>::infinity();
@@ -126,7 +116,7 @@ InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::stri
   } else {
     complain(env::kDepthNear, error);
   }
-  if (!text(env::kTransfer).empty() && !parse_transfer(text(env::kTransfer), &settings.transfer, &error))
+  if (!text(env::kTransfer).empty() && !app::parse_transfer(text(env::kTransfer), &settings.transfer, &error))
     complain(env::kTransfer, error);
   for (const auto& item : lines_of(text(env::kCapture))) {
     Capture capture;
@@ -160,7 +150,7 @@ std::vector<std::string> settings_to_environment(const InjectSettings& settings)
   if (!settings.plugin_dirs.empty()) put(env::kPlugins, join(settings.plugin_dirs, ":"));
   if (settings.depth_near != defaults.depth_near) put(env::kDepthNear, number_text(settings.depth_near));
   if (settings.depth_far != defaults.depth_far) put(env::kDepthFar, number_text(settings.depth_far));
-  if (settings.transfer != defaults.transfer) put(env::kTransfer, settings.transfer == Transfer::SRGB ? "srgb" : "linear");
+  if (settings.transfer != defaults.transfer) put(env::kTransfer, app::transfer_name(settings.transfer));
   std::vector<std::string> captures;
   for (const auto& capture : settings.captures)
     captures.push_back((capture.every_frame ? std::string("all") : std::to_string(capture.frame)) + ":" + capture.prefix);

@@ -8,14 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "display_transfer.hpp"
+
 namespace pfx::inject {
 
 // How the 8-bit values of the application's back buffer relate to light.
-enum class Transfer {
-  SRGB,    // sRGB-encoded (what almost every application presents): decoded with the exact
-           // piecewise sRGB curve, encoded back with its inverse
-  LINEAR,  // the values are linear light: divided by 255, multiplied back
-};
+using app::Transfer;
 
 struct Capture {
   uint64_t frame = 0;  // the N-th presented frame, from 1; 0 with every_frame
@@ -61,7 +59,6 @@ constexpr const char* kStats = "PFX_INJECT_STATS";
 
 // "12:shot" or "all:shot.%d"; false with *error saying what is wrong.
 bool parse_capture(const std::string& text, Capture* out, std::string* error);
-bool parse_transfer(const std::string& text, Transfer* out, std::string* error);
 // A depth plane: a positive number, or "inf" (far only).
 bool parse_depth_plane(const std::string& text, bool allow_infinity, double* out, std::string* error);
 // Checks near < far once both are known.

@@ -100,22 +100,27 @@ std::vector<std::string> param_descriptor_problems(const pfx_param_desc& p) {
   if (!(p.step >= 0) || !std::isfinite(p.step)) problem("step " + number(p.step) + " is not a finite number >= 0");
   if ((p.flags & PFX_PARAM_LOGARITHMIC) && !(p.display_min > 0))
     problem("logarithmic, but the display range does not start above 0");
-  if (p.flags & ~uint32_t(PFX_PARAM_REJECT_OUT_OF_RANGE | PFX_PARAM_LOGARITHMIC))
+  if (p.flags & ~uint32_t(PFX_PARAM_REJECT_OUT_OF_RANGE | PFX_PARAM_LOGARITHMIC | PFX_PARAM_HAS_DISPLAY_DEFAULT))
     problem("unknown flag bits " + std::to_string(p.flags));
 
   const int n = component_count(p.type);
-  for (int i = 0; i < 4; ++i) {
-    const double v = p.default_value.v[i];
-    const std::string which = n > 1 ? "default component " + std::to_string(i) : "default";
-    if (i >= n) {
-      if (v != 0) problem(which + " is " + number(v) + " but the type uses " + std::to_string(n) + " (unused ones must be 0)");
-      continue;
+  const auto check_default = [&](const pfx_value& value, const std::string& name) {
+    for (int i = 0; i < 4; ++i) {
+      const double v = value.v[i];
+      const std::string which = n > 1 ? name + " component " + std::to_string(i) : name;
+      if (i >= n) {
+        if (v != 0) problem(which + " is " + number(v) + " but the type uses " + std::to_string(n) + " (unused ones must be 0)");
+        continue;
+      }
+      if (std::isnan(v)) problem(which + " is NaN");
+      else if (v < p.hard_min) problem(which + " " + number(v) + " is below hard_min " + number(p.hard_min));
+      else if (v > p.hard_max) problem(which + " " + number(v) + " is above hard_max " + number(p.hard_max));
+      if (whole_type(p.type) && std::isfinite(v) && v != std::floor(v)) problem(which + " " + number(v) + " is not a whole number");
     }
-    if (std::isnan(v)) problem(which + " is NaN");
-    else if (v < p.hard_min) problem(which + " " + number(v) + " is below hard_min " + number(p.hard_min));
-    else if (v > p.hard_max) problem(which + " " + number(v) + " is above hard_max " + number(p.hard_max));
-    if (whole_type(p.type) && std::isfinite(v) && v != std::floor(v)) problem(which + " " + number(v) + " is not a whole number");
-  }
+  };
+  check_default(p.default_value, "default");
+  if ((p.flags & PFX_PARAM_HAS_DISPLAY_DEFAULT) && PFX_STRUCT_HAS(&p, pfx_param_desc, display_default))
+    check_default(p.display_default, "display-referred default");
   if (p.type == PFX_PARAM_BOOL && (p.hard_min != 0 || p.hard_max != 1)) problem("a bool's hard range must be [0, 1]");
   if (p.type == PFX_PARAM_INT && p.step != 0 && p.step != std::floor(p.step)) problem("an int's step must be whole");
 

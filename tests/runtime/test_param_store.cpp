@@ -132,3 +132,38 @@ TEST_CASE("re-registering a reloaded effect keeps values by id and type", "[para
   CHECK(f.store.values("bloom")[1].v[0] == 6);
   CHECK(f.store.revision("bloom") > before);
 }
+
+TEST_CASE("a display-referred store starts from the display defaults a descriptor gives", "[params]") {
+  ParamFixture f;
+  f.params[0].flags |= PFX_PARAM_HAS_DISPLAY_DEFAULT;
+  f.params[0].display_default.v[0] = 0.6;
+  pfx::host::ParamStore display(pfx::host::DefaultSet::DISPLAY_REFERRED);
+  display.add_effect(&f.effect);
+  pfx::host::ParamStore scene;
+  scene.add_effect(&f.effect);
+  CHECK(display.values("bloom")[0].v[0] == 0.6);
+  CHECK(scene.values("bloom")[0].v[0] == 1);
+  // Parameters without a display default start from their one default in both.
+  CHECK(display.values("bloom")[1].v[0] == 6);
+  // Reset and new instances go back to the store's own kind of default.
+  std::string error;
+  REQUIRE(display.set("bloom.threshold", "3", &error));
+  display.reset("bloom", "threshold");
+  CHECK(display.values("bloom")[0].v[0] == 0.6);
+  REQUIRE(display.set_instance_count("bloom", 2));
+  CHECK(display.values("bloom#2")[0].v[0] == 0.6);
+  // A set overrides it as any default.
+  REQUIRE(display.set("bloom.threshold", "0.25", &error));
+  CHECK(display.values("bloom")[0].v[0] == 0.25);
+}
+
+TEST_CASE("a display default is read only where the descriptor's size covers it", "[params][abi]") {
+  pfx_param_desc param = make_param("threshold", PFX_PARAM_FLOAT, 0, 100, 1);
+  param.flags |= PFX_PARAM_HAS_DISPLAY_DEFAULT;
+  param.display_default.v[0] = 0.6;
+  CHECK(pfx::host::default_for(param, pfx::host::DefaultSet::DISPLAY_REFERRED).v[0] == 0.6);
+  CHECK(pfx::host::default_for(param, pfx::host::DefaultSet::SCENE_REFERRED).v[0] == 1);
+  // Written by an ABI 1.3 plugin: the struct ends before display_default, whatever the flag says.
+  param.struct_size = PFX_STRUCT_SIZE_THROUGH(pfx_param_desc, item_count);
+  CHECK(pfx::host::default_for(param, pfx::host::DefaultSet::DISPLAY_REFERRED).v[0] == 1);
+}

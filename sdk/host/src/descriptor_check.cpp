@@ -28,10 +28,15 @@ std::string check_param_descriptor(const pfx_param_desc& param) {
   if (param.type > PFX_PARAM_VEC3) return name + "unknown type " + std::to_string(param.type);
   if (std::isnan(param.hard_min) || std::isnan(param.hard_max) || param.hard_min > param.hard_max)
     return name + "hard range is empty or NaN";
+  const bool display_default = (param.flags & PFX_PARAM_HAS_DISPLAY_DEFAULT) &&
+                               PFX_STRUCT_HAS(&param, pfx_param_desc, display_default);
   for (int i = 0; i < param_component_count(param.type); ++i) {
     double value = param.default_value.v[i];
     if (std::isnan(value) || value < param.hard_min || value > param.hard_max)
       return name + "default outside the hard range";
+    value = param.display_default.v[i];
+    if (display_default && (std::isnan(value) || value < param.hard_min || value > param.hard_max))
+      return name + "display-referred default outside the hard range";
   }
   if (param.type == PFX_PARAM_ENUM) {
     if (!param.items || param.item_count == 0) return name + "enum without items";
@@ -44,7 +49,8 @@ std::string check_param_descriptor(const pfx_param_desc& param) {
     }
   }
   if ((param.type == PFX_PARAM_INT || param.type == PFX_PARAM_ENUM || param.type == PFX_PARAM_BOOL) &&
-      param.default_value.v[0] != std::floor(param.default_value.v[0]))
+      (param.default_value.v[0] != std::floor(param.default_value.v[0]) ||
+       (display_default && param.display_default.v[0] != std::floor(param.display_default.v[0]))))
     return name + "default of a whole-number parameter is not whole";
   return "";
 }

@@ -25,7 +25,12 @@ std::unique_ptr<HostLayoutEffect> effect_in_host_layout(const pfx_effect_desc* p
     return nullptr;
   }
   effect->desc.struct_size = sizeof(pfx_effect_desc);
-  for (pfx_param_desc& param : effect->params) param.struct_size = sizeof(pfx_param_desc);
+  for (pfx_param_desc& param : effect->params) {
+    // A flag bit means nothing in a struct older than the field it announces.
+    if (param.struct_size < PFX_STRUCT_SIZE_THROUGH(pfx_param_desc, display_default))
+      param.flags &= ~static_cast<uint32_t>(PFX_PARAM_HAS_DISPLAY_DEFAULT);
+    param.struct_size = sizeof(pfx_param_desc);
+  }
   effect->desc.params = effect->params.empty() ? nullptr : effect->params.data();
   return effect;
 }

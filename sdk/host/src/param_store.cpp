@@ -34,9 +34,15 @@ nlohmann::ordered_json json_value(const pfx_param_desc& desc, const pfx_value& v
 
 }  // namespace
 
+pfx_value default_for(const pfx_param_desc& desc, DefaultSet set) {
+  const bool display = set == DefaultSet::DISPLAY_REFERRED && (desc.flags & PFX_PARAM_HAS_DISPLAY_DEFAULT) &&
+                       PFX_STRUCT_HAS(&desc, pfx_param_desc, display_default);
+  return display ? desc.display_default : desc.default_value;
+}
+
 ParamStore::Block ParamStore::defaults(const pfx_effect_desc* desc) {
   Block block;
-  for (uint32_t i = 0; i < desc->param_count; ++i) block.values.push_back(desc->params[i].default_value);
+  for (uint32_t i = 0; i < desc->param_count; ++i) block.values.push_back(default_for(desc->params[i], default_set_));
   block.revision = ++last_revision_;
   return block;
 }
@@ -237,7 +243,7 @@ void ParamStore::reset(const std::string& instance, const std::string& param) {
   uint32_t index = 0;
   std::string ignored;
   if (!find(instance + "." + param, &effect, &block, &index, &ignored)) return;
-  block->values[index] = effect->desc->params[index].default_value;
+  block->values[index] = default_for(effect->desc->params[index], default_set_);
   block->revision = ++last_revision_;
 }
 

@@ -25,7 +25,9 @@ enum {
   /* Out-of-range values are refused with an error instead of clamped to [hard_min, hard_max]. */
   PFX_PARAM_REJECT_OUT_OF_RANGE = 1u << 0,
   /* A UI should use a logarithmic slider over the display range (which must then be > 0). */
-  PFX_PARAM_LOGARITHMIC = 1u << 1
+  PFX_PARAM_LOGARITHMIC = 1u << 1,
+  /* Since 1.4: display_default holds this parameter's default for display-referred frames. */
+  PFX_PARAM_HAS_DISPLAY_DEFAULT = 1u << 2
 };
 
 /* Every value, whatever its type, travels as four doubles: exact for any int up to 2^53. */
@@ -53,6 +55,12 @@ typedef struct pfx_param_desc {
   pfx_value default_value;
   const pfx_enum_item* items;        /* ENUM only: item_count items, index = value */
   uint32_t item_count;
+  /* The default for a display-referred frame (values in [0, 1] shown as they are: an 8-bit video
+   * frame, an application's back buffer), where nothing is brighter than 1.0 and a threshold made
+   * for scene-linear light would never be reached. Read only with PFX_PARAM_HAS_DISPLAY_DEFAULT;
+   * otherwise default_value serves every frame. Hosts that know their frames are display-referred
+   * start from it (libpfxhost: ParamStore with DefaultSet::DISPLAY_REFERRED). */
+  pfx_value display_default; /* since 1.4 */
 } pfx_param_desc;
 #define PFX_PARAM_DESC_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_param_desc, item_count)
 

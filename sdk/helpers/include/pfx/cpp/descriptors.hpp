@@ -34,6 +34,14 @@ inline pfx_param_desc with_items(pfx_param_desc d, const pfx_enum_item* items, u
   return d;
 }
 
+// A parameter whose default for display-referred frames (8-bit video, an application's back
+// buffer: nothing above 1.0) differs from its scene-linear one.
+inline pfx_param_desc with_display_default(pfx_param_desc d, pfx_value display_default) {
+  d.flags |= PFX_PARAM_HAS_DISPLAY_DEFAULT;
+  d.display_default = display_default;
+  return d;
+}
+
 // A target of a fixed size (the effect computes it in declare from the frame's size).
 inline pfx_target_desc fixed_target(const char* name, pfx_format format, int width, int height) {
   pfx_target_desc t{};

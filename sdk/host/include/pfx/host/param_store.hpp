@@ -21,8 +21,24 @@
 
 namespace pfx::host {
 
+// Which of its defaults a parameter starts at. The frame decides: a renderer's HDR frame holds
+// scene-linear light, where 1.0 is diffuse white and highlights go far above; a display-referred
+// frame (8-bit video, an application's back buffer) holds nothing above 1.0, so thresholds made
+// for highlights would never be reached there.
+enum class DefaultSet {
+  SCENE_REFERRED,   // default_value
+  DISPLAY_REFERRED  // display_default where the descriptor has one (PFX_PARAM_HAS_DISPLAY_DEFAULT)
+};
+
+// The default `desc` gives for frames of that kind.
+PFX_HOST_API pfx_value default_for(const pfx_param_desc& desc, DefaultSet set);
+
 class PFX_HOST_API ParamStore {
  public:
+  explicit ParamStore(DefaultSet defaults = DefaultSet::SCENE_REFERRED) : default_set_(defaults) {}
+  // The defaults new instances, reset() and a reloaded plugin's new parameters start from.
+  DefaultSet default_set() const { return default_set_; }
+
   // Registers an effect's parameters at their defaults, with one instance. Registering an id
   // again (a reloaded plugin) keeps its instances and, in each, the value of every parameter whose
   // id and type are unchanged.
@@ -100,6 +116,7 @@ class PFX_HOST_API ParamStore {
   std::map<std::string, EffectParams> effects_;
   std::vector<std::string> order_;
   uint64_t last_revision_ = 0;
+  DefaultSet default_set_;
 };
 
 }  // namespace pfx::host

@@ -1,0 +1,20 @@
+// How the 8-bit values of a display-referred frame (an application's back buffer, a video frame)
+// relate to light. Every host that takes such frames (pfx-inject, the video-host adapters,
+// pfx-render with an 8-bit --input) names it the same way and converts with transfer_programs.
+#pragma once
+
+#include <string>
+
+namespace pfx::app {
+
+enum class Transfer {
+  SRGB,    // sRGB-encoded (what almost every application and video presents): decoded with the
+           // exact piecewise sRGB curve, encoded back with its inverse
+  LINEAR,  // the values are linear light: divided by 255, multiplied back
+};
+
+// "srgb" or "linear"; false with *error naming what was given.
+bool parse_transfer(const std::string& text, Transfer* out, std::string* error);
+const char* transfer_name(Transfer transfer);
+
+}  // namespace pfx::app
