@@ -153,8 +153,11 @@ TEST_CASE("an engine's leftover GL state, item by item, changes no pixel and sur
     for (const pfx::app::DirtyGlItem& item : dirty.items()) {
       INFO("engine state: " << item.name);
       rig.poison_output();
+      const std::vector<double> clean_value = item.read();
       item.make_dirty();
       const std::vector<double> engine_value = item.read();
+      // An item the driver ignored would leave the state as it was and test nothing below.
+      CHECK(engine_value != clean_value);
       const std::vector<std::vector<double>> everything = dirty.read_all();
       GLenum gl_error = GL_NO_ERROR;
       const bool ok = rig.render(&gl_error);
@@ -179,8 +182,13 @@ TEST_CASE("an engine's leftover GL state, every item at once, changes no pixel a
     const Image reference = clean_reference(rig);
     for (int frame = 0; frame < 2; ++frame) {  // the second with the plan and pool already made
       rig.poison_output();
+      const std::vector<std::vector<double>> clean_values = dirty.read_all();
       dirty.make_all_dirty();
       const std::vector<std::vector<double>> engine_values = dirty.read_all();
+      for (size_t i = 0; i < engine_values.size(); ++i) {
+        INFO("engine state: " << dirty.items()[i].name);
+        CHECK(engine_values[i] != clean_values[i]);  // really dirtied, or the checks below test nothing
+      }
       GLenum gl_error = GL_NO_ERROR;
       const bool ok = rig.render(&gl_error);
       const std::vector<std::vector<double>> after = dirty.read_all();
