@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "inject_options.hpp"
 #include "plugin_directory.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -55,6 +56,12 @@ std::string find_inject_library(std::string* error) {
   return "";
 }
 
+std::vector<std::string> plugin_folders(const InjectSettings& settings) {
+  if (!settings.plugin_dirs.empty()) return settings.plugin_dirs;
+  const std::string beside = app::default_plugin_directory();
+  return beside.empty() ? std::vector<std::string>{} : std::vector<std::string>{beside};
+}
+
 std::vector<std::string> child_environment(const InjectSettings& settings, const std::string& library) {
   std::vector<std::string> environment;
   const std::string runtime = sanitizer_runtime();
@@ -77,10 +84,7 @@ std::vector<std::string> child_environment(const InjectSettings& settings, const
   }
   environment.push_back("LD_PRELOAD=" + preload);
   InjectSettings complete = settings;
-  if (complete.plugin_dirs.empty()) {
-    const std::string beside = app::default_plugin_directory();
-    if (!beside.empty()) complete.plugin_dirs.push_back(beside);
-  }
+  complete.plugin_dirs = plugin_folders(settings);
   for (const auto& variable : settings_to_environment(complete)) environment.push_back(variable);
   return environment;
 }
@@ -95,12 +99,12 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
   int report[2];
   if (pipe2(report, O_CLOEXEC) != 0) {
     *error = std::string("pipe: ") + std::strerror(errno);
-    return 127;
+    return kExitNotStarted;
   }
   const pid_t child = fork();
   if (child < 0) {
     *error = std::string("fork: ") + std::strerror(errno);
-    return 127;
+    return kExitNotStarted;
   }
   if (child == 0) {
     close(report[0]);
@@ -108,7 +112,7 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
     // Only reached when exec failed: tell the parent why through the pipe, which exec would close.
     const int failure = errno;
     (void)!write(report[1], &failure, sizeof failure);
-    _exit(127);
+    _exit(kExitNotStarted);
   }
   close(report[1]);
   int failure = 0;
@@ -119,7 +123,7 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
   }
   if (exec_failed) {
     *error = "cannot run " + command[0] + ": " + std::strerror(failure);
-    return 127;
+    return kExitNotStarted;
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }

@@ -35,10 +35,15 @@ context or any failure leaves its frames untouched, with one line in the log.
   --bench-json FILE    also write the --bench results as JSON
   -h, --help           this text
 
-Every setting reaches the library as an environment variable (PFX_INJECT_*, docs/inject.md), so
-LD_PRELOAD=.../libpfxinject.so with those variables does the same without this program.
-Exit code: the application's (128 + signal when a signal ended it); 2 for a usage error, 127
-when APP could not be started.
+The plugins, the chain, the preset, every --set and every capture's folder are checked before
+APP starts; a mistake is refused and APP is not started. Every setting reaches the library as an
+environment variable (PFX_INJECT_*, docs/inject.md), so LD_PRELOAD=.../libpfxinject.so with those
+variables does the same without this program.
+
+Exit code: the application's own (128 + signal when a signal ended it), unchanged; pfx-inject's
+own errors use codes applications and shells leave alone: 240 a usage error (bad option, chain,
+preset, --set or capture), 241 libpfxinject.so or the effect plugins not found, 242 APP could not
+be started, 243 --bench could not measure or write its results.
 )";
 }
 

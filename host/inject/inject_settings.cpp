@@ -133,11 +133,29 @@ InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::stri
     if (app::parse_count(text(env::kFromFrame), &frame) && frame >= 1) settings.from_frame = static_cast<uint64_t>(frame);
     else complain(env::kFromFrame, "'" + text(env::kFromFrame) + "' is not a frame number from 1");
   }
-  settings.dry_run = text(env::kDryRun) == "1";
-  settings.bypass = text(env::kBypass) == "1";
+  auto flag = [&](const char* name) {
+    const std::string value = text(name);
+    if (value.empty() || value == "0") return false;
+    if (value == "1") return true;
+    complain(name, "'" + value + "' is not 1 or 0");
+    return false;
+  };
+  settings.dry_run = flag(env::kDryRun);
+  settings.bypass = flag(env::kBypass);
   settings.log_file = text(env::kLog);
   settings.stats_file = text(env::kStats);
   return settings;
+}
+
+std::vector<std::string> unknown_variables(const std::vector<std::string>& names) {
+  std::vector<std::string> problems;
+  for (const auto& name : names) {
+    if (name.rfind("PFX_INJECT_", 0) != 0) continue;
+    bool known = false;
+    for (const char* variable : env::kAll) known |= name == variable;
+    if (!known) problems.push_back(name + ": not a pfx-inject variable (docs/inject.md lists them)");
+  }
+  return problems;
 }
 
 std::vector<std::string> settings_to_environment(const InjectSettings& settings) {
