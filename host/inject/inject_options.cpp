@@ -29,6 +29,8 @@ context or any failure leaves its frames untouched, with one line in the log.
                        (a splash screen; or, in tests, a frame drawn with no pfx code ever run)
   --dry-run            run the chain every frame but present the application's own frame
   --log FILE           append the injector's messages to FILE (default: stderr)
+  --resources-at LIST  after each of these presented frames (e.g. 500,5000) log the application's
+                       resident memory and the GL objects of its context: a run that grows shows
   --bench FRAMES       run APP FRAMES frames alone, with an empty chain and with the chain, three
                        times each, and print each one's frame time and the cost in copy passes
   --bench-runs N       runs per configuration for --bench (default 3)
@@ -99,6 +101,9 @@ bool parse_inject_options(const std::vector<std::string>& args, InjectOptions* o
       else if (arg == "--from-frame") options.settings.from_frame = static_cast<uint64_t>(count);
       else if (arg == "--bench") options.bench_frames = static_cast<int>(count);
       else options.bench_runs = static_cast<int>(count);
+    } else if (arg == "--resources-at") {
+      if (!reader.value(&value)) return false;
+      if (!parse_frame_list(value, &options.settings.resources_at, error)) return reader.fail("--resources-at: " + *error);
     } else if (arg == "--bench-json") {
       if (!reader.value(&options.bench_json)) return false;
     } else if (arg == "--dry-run") {

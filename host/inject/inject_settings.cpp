@@ -64,6 +64,24 @@ bool parse_capture(const std::string& text, Capture* out, std::string* error) {
   return true;
 }
 
+bool parse_frame_list(const std::string& text, std::vector<uint64_t>* out, std::string* error) {
+  std::vector<uint64_t> frames;
+  for (const auto& item : app::split_list(text)) {
+    long long frame = 0;
+    if (!app::parse_count(item, &frame) || frame < 1) {
+      *error = "'" + item + "' is not a frame number from 1";
+      return false;
+    }
+    frames.push_back(static_cast<uint64_t>(frame));
+  }
+  if (frames.empty()) {
+    *error = "expected frame numbers, e.g. 500,5000";
+    return false;
+  }
+  *out = std::move(frames);
+  return true;
+}
+
 bool parse_depth_plane(const std::string& text, bool allow_infinity, double* out, std::string* error) {
   if (allow_infinity && text == "inf") {
     *out = std::numeric_limits<double>::infinity();
@@ -144,6 +162,14 @@ InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::stri
   settings.bypass = flag(env::kBypass);
   settings.log_file = text(env::kLog);
   settings.stats_file = text(env::kStats);
+  if (!text(env::kResourcesAt).empty()) {
+    // One item that does not parse is left out; the others stay.
+    for (const auto& item : app::split_list(text(env::kResourcesAt))) {
+      std::vector<uint64_t> frame;
+      if (parse_frame_list(item, &frame, &error)) settings.resources_at.push_back(frame[0]);
+      else complain(env::kResourcesAt, error);
+    }
+  }
   return settings;
 }
 
@@ -179,6 +205,9 @@ std::vector<std::string> settings_to_environment(const InjectSettings& settings)
   if (settings.bypass) put(env::kBypass, "1");
   if (!settings.log_file.empty()) put(env::kLog, settings.log_file);
   if (!settings.stats_file.empty()) put(env::kStats, settings.stats_file);
+  std::vector<std::string> frames;
+  for (uint64_t frame : settings.resources_at) frames.push_back(std::to_string(frame));
+  if (!frames.empty()) put(env::kResourcesAt, join(frames, ","));
   return vars;
 }
 

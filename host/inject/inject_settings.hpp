@@ -37,6 +37,9 @@ struct InjectSettings {
   bool bypass = false;               // hook the present and count frames, touch no GL (bench)
   std::string log_file;              // empty: stderr
   std::string stats_file;            // JSON of frame times written at exit (bench); empty: none
+  // After each of these presented frames, log the process's resident memory and the GL objects
+  // of the presenting context (to see that a long run does not grow).
+  std::vector<uint64_t> resources_at;
 };
 
 // The variable names, for the launcher, the library and the docs.
@@ -55,12 +58,15 @@ constexpr const char* kDryRun = "PFX_INJECT_DRY_RUN";       // "1"
 constexpr const char* kBypass = "PFX_INJECT_BYPASS";        // "1"
 constexpr const char* kLog = "PFX_INJECT_LOG";
 constexpr const char* kStats = "PFX_INJECT_STATS";
-constexpr const char* kAll[] = {kChain,     kPreset,    kSet,       kPlugins, kDepthNear, kDepthFar, kTransfer,
-                                kCapture,   kQuitAfter, kFromFrame, kDryRun,  kBypass,    kLog,      kStats};
+constexpr const char* kResourcesAt = "PFX_INJECT_RESOURCES_AT";  // frame numbers separated by ','
+constexpr const char* kAll[] = {kChain,   kPreset,    kSet,       kPlugins, kDepthNear, kDepthFar, kTransfer, kCapture,
+                                kQuitAfter, kFromFrame, kDryRun,  kBypass,  kLog,       kStats,    kResourcesAt};
 }  // namespace env
 
 // "12:shot" or "all:shot.%d"; false with *error saying what is wrong.
 bool parse_capture(const std::string& text, Capture* out, std::string* error);
+// "500,5000": presented frame numbers from 1; false with *error naming the item that is not one.
+bool parse_frame_list(const std::string& text, std::vector<uint64_t>* out, std::string* error);
 // A depth plane: a positive number, or "inf" (far only).
 bool parse_depth_plane(const std::string& text, bool allow_infinity, double* out, std::string* error);
 // Checks near < far once both are known.

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "frame_capture.hpp"
+#include "resource_report.hpp"
 #include "real_symbols.hpp"
 
 extern char** environ;
@@ -135,7 +136,10 @@ void Injector::present(const PresentCall& call) {
     log_.line("frame " + std::to_string(presented_) + ": " + reason + "; this context's frames pass through untouched from now on");
     entry.pipeline.reset();
     entry.aside = reason;
+    return;
   }
+  for (uint64_t frame : settings_.resources_at)
+    if (frame == presented_) log_.line("frame " + std::to_string(presented_) + ": " + resource_text(count_resources()));
 }
 
 void Injector::say_captures_skipped(const std::string& why) {
