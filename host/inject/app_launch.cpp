@@ -1,6 +1,7 @@
 #include "app_launch.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -40,6 +41,33 @@ std::string sanitizer_runtime() {
 #else
 std::string sanitizer_runtime() { return ""; }
 #endif
+
+volatile pid_t forward_to = 0;
+
+void forward_signal(int signal) {
+  if (forward_to > 0) kill(forward_to, signal);
+}
+
+// While it lives, SIGINT, SIGTERM and SIGHUP sent to this program go to `child` instead.
+class ForwardSignals {
+ public:
+  explicit ForwardSignals(pid_t child) {
+    forward_to = child;
+    struct sigaction action {};
+    action.sa_handler = forward_signal;
+    action.sa_flags = SA_RESTART;
+    sigemptyset(&action.sa_mask);
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &action, &previous_[i]);
+  }
+  ~ForwardSignals() {
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+    forward_to = 0;
+  }
+
+ private:
+  static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction previous_[3] {};
+};
 
 }  // namespace
 
@@ -115,6 +143,8 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
     _exit(kExitNotStarted);
   }
   close(report[1]);
+  // Ending pfx-inject (Ctrl+C, a script's kill) ends the application: the signal is passed on.
+  ForwardSignals forward(child);
   int failure = 0;
   const bool exec_failed = read(report[0], &failure, sizeof failure) == sizeof failure;
   close(report[0]);

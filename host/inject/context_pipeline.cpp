@@ -7,6 +7,7 @@
 #include <pfx/host/gl_state_guard.hpp>
 
 #include "camera_options.hpp"
+#include "timing_choice.hpp"
 #include "frame_capture.hpp"
 
 namespace pfx::inject {
@@ -78,6 +79,8 @@ std::unique_ptr<ContextPipeline> ContextPipeline::create(const host::PluginRegis
     return nullptr;
   }
   std::unique_ptr<ContextPipeline> pipeline(new ContextPipeline(registry, settings));
+  const GLubyte* renderer = glGetString(GL_RENDERER);
+  pipeline->renderer_ = renderer ? reinterpret_cast<const char*>(renderer) : "";
   if (!pipeline->copy_.create(reason) || !pipeline->depth_check_.create(reason)) return nullptr;
   if (!pipeline->rebuild(recipe, notes, reason)) return nullptr;
   return pipeline;
@@ -117,6 +120,8 @@ bool ContextPipeline::rebuild(const ChainRecipe& recipe, std::vector<std::string
   const int width = copy_.width() ? copy_.width() : 64, height = copy_.height() ? copy_.height() : 64;
   if (!fit.start(*chain, !recipe.chosen, frame_for(width, height, PFX_INPUT_COLOR | PFX_INPUT_DEPTH), notes, reason))
     return false;
+  // Times only for the control panel: on llvmpipe timing serialises the passes.
+  if (!settings_.timings_file.empty()) chain->set_timing(app::default_timing(renderer_));
   chain_.reset();
   params_ = std::move(params);
   chain_ = std::move(chain);

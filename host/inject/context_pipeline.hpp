@@ -48,6 +48,8 @@ class ContextPipeline {
   // The copy-pass unit measured on the last frame that asked (0 before).
   double copy_pass_ms() const { return copy_pass_ms_; }
   std::string chain_text() const;
+  // The chain's report of its last frame (times there when the settings ask for a timings file).
+  const host::FrameReport& report() const { return chain_->report(); }
 
  private:
   ContextPipeline(const host::PluginRegistry& registry, const InjectSettings& settings);
@@ -63,6 +65,7 @@ class ContextPipeline {
   FrameCopy copy_;
   DepthCheck depth_check_;
   bool depth_said_ = false;
+  std::string renderer_;  // GL_RENDERER, to choose how passes are timed
   double copy_pass_ms_ = 0;
 };
 

@@ -7,6 +7,7 @@
 #include "inject_bench.hpp"
 #include "inject_options.hpp"
 #include "launch_check.hpp"
+#include "panel_launch.hpp"
 
 using namespace pfx::inject;
 
@@ -36,7 +37,14 @@ int main(int argc, char** argv) {
     return kExitSetup;
   }
   if (options.bench_frames) return run_bench(options, library);
+  PanelSession panel;
+  if (options.panel && (!prepare_panel(&options, &panel, &error) || !start_panel(options, &panel, &error))) {
+    std::fprintf(stderr, "pfx-inject: %s\n", error.c_str());
+    end_panel(&panel);
+    return kExitSetup;
+  }
   const int code = run_application(options.command, child_environment(options.settings, library), &error);
   if (!error.empty()) std::fprintf(stderr, "pfx-inject: %s\n", error.c_str());
+  if (options.panel) end_panel(&panel);
   return code;
 }

@@ -27,6 +27,9 @@ context or any failure leaves its frames untouched, with one line in the log.
   --quit-after N       end the application after N presented frames
   --from-frame N       leave the first N-1 presented frames alone: the chain starts at frame N
                        (a splash screen; or, in tests, a frame drawn with no pfx code ever run)
+  --panel              open the live control panel beside APP (pfx-view --attach): every effect on
+                       or off, every parameter, presets saved and loaded, the chain's pass times
+  --panel-option ARG   pass ARG to the panel's pfx-view (repeatable), e.g. --window 500x800
   --dry-run            run the chain every frame but present the application's own frame
   --log FILE           append the injector's messages to FILE (default: stderr)
   --resources-at LIST  after each of these presented frames (e.g. 500,5000) log the application's
@@ -106,6 +109,10 @@ bool parse_inject_options(const std::vector<std::string>& args, InjectOptions* o
       if (!parse_frame_list(value, &options.settings.resources_at, error)) return reader.fail("--resources-at: " + *error);
     } else if (arg == "--bench-json") {
       if (!reader.value(&options.bench_json)) return false;
+    } else if (arg == "--panel") {
+      options.panel = true;
+    } else if (arg == "--panel-option") {
+      if (!reader.value(&options.panel_options)) return false;
     } else if (arg == "--dry-run") {
       options.settings.dry_run = true;
     } else if (arg == "--log") {
@@ -119,6 +126,8 @@ bool parse_inject_options(const std::vector<std::string>& args, InjectOptions* o
   options.settings.depth_far = far_plane;
   if (!options.help && options.command.empty()) return reader.fail("no application given: pfx-inject [options] -- APP [ARGS...]");
   if (options.bench_frames && options.bench_frames < 20) return reader.fail("--bench needs at least 20 frames per run");
+  if (options.bench_frames && options.panel) return reader.fail("--bench and --panel do not go together");
+  if (!options.panel_options.empty() && !options.panel) return reader.fail("--panel-option goes with --panel");
   if (options.bench_frames && options.settings.quit_after)
     return reader.fail("--bench sets the frame count itself: leave out --quit-after");
   *out = std::move(options);

@@ -23,6 +23,8 @@ struct InjectOptions {
   int bench_frames = 0;              // > 0: --bench, frames per run
   int bench_runs = 3;
   std::string bench_json;
+  bool panel = false;                      // --panel: the live control panel beside the application
+  std::vector<std::string> panel_options;  // --panel-option ARG: passed on to pfx-view
   bool help = false;
 };
 

@@ -162,6 +162,7 @@ InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::stri
   settings.bypass = flag(env::kBypass);
   settings.log_file = text(env::kLog);
   settings.stats_file = text(env::kStats);
+  settings.timings_file = text(env::kTimings);
   if (!text(env::kResourcesAt).empty()) {
     // One item that does not parse is left out; the others stay.
     for (const auto& item : app::split_list(text(env::kResourcesAt))) {
@@ -205,6 +206,7 @@ std::vector<std::string> settings_to_environment(const InjectSettings& settings)
   if (settings.bypass) put(env::kBypass, "1");
   if (!settings.log_file.empty()) put(env::kLog, settings.log_file);
   if (!settings.stats_file.empty()) put(env::kStats, settings.stats_file);
+  if (!settings.timings_file.empty()) put(env::kTimings, settings.timings_file);
   std::vector<std::string> frames;
   for (uint64_t frame : settings.resources_at) frames.push_back(std::to_string(frame));
   if (!frames.empty()) put(env::kResourcesAt, join(frames, ","));

@@ -40,6 +40,9 @@ struct InjectSettings {
   // After each of these presented frames, log the process's resident memory and the GL objects
   // of the presenting context (to see that a long run does not grow).
   std::vector<uint64_t> resources_at;
+  // The live control panel's channel: the chain times its passes and writes them here as JSON
+  // a few times a second. Empty: no timing at all.
+  std::string timings_file;
 };
 
 // The variable names, for the launcher, the library and the docs.
@@ -59,8 +62,10 @@ constexpr const char* kBypass = "PFX_INJECT_BYPASS";        // "1"
 constexpr const char* kLog = "PFX_INJECT_LOG";
 constexpr const char* kStats = "PFX_INJECT_STATS";
 constexpr const char* kResourcesAt = "PFX_INJECT_RESOURCES_AT";  // frame numbers separated by ','
-constexpr const char* kAll[] = {kChain,   kPreset,    kSet,       kPlugins, kDepthNear, kDepthFar, kTransfer, kCapture,
-                                kQuitAfter, kFromFrame, kDryRun,  kBypass,  kLog,       kStats,    kResourcesAt};
+constexpr const char* kTimings = "PFX_INJECT_TIMINGS";
+constexpr const char* kAll[] = {kChain,     kPreset,    kSet,    kPlugins, kDepthNear, kDepthFar,    kTransfer, kCapture,
+                                kQuitAfter, kFromFrame, kDryRun, kBypass,  kLog,       kStats,       kResourcesAt,
+                                kTimings};
 }  // namespace env
 
 // "12:shot" or "all:shot.%d"; false with *error saying what is wrong.

@@ -75,7 +75,10 @@ Injector::LoadedSettings Injector::load_settings() {
 Injector::Injector() : Injector(load_settings()) {}
 
 Injector::Injector(LoadedSettings loaded)
-    : settings_(std::move(loaded.settings)), log_(settings_.log_file), preset_watch_(settings_.preset) {
+    : settings_(std::move(loaded.settings)),
+      log_(settings_.log_file),
+      preset_watch_(settings_.preset),
+      timings_(settings_.timings_file) {
   for (const auto& problem : loaded.problems) log_.line("ignored " + problem);
 }
 
@@ -138,6 +141,9 @@ void Injector::present(const PresentCall& call) {
     entry.aside = reason;
     return;
   }
+  std::string error;
+  if (!timings_.offer(presented_, entry.pipeline->chain_text(), entry.pipeline->report(), &error))
+    log_.once("timings", "the pass times for the panel could not be written: " + error);
   for (uint64_t frame : settings_.resources_at)
     if (frame == presented_) log_.line("frame " + std::to_string(presented_) + ": " + resource_text(count_resources()));
 }

@@ -20,6 +20,7 @@
 #include "inject_settings.hpp"
 #include "present_stats.hpp"
 #include "preset_watch.hpp"
+#include "timings_channel.hpp"
 #include "window_system.hpp"
 
 namespace pfx::inject {
@@ -70,6 +71,7 @@ class Injector {
   ChainRecipe recipe_;
   uint64_t recipe_generation_ = 0;  // 0: no recipe read yet
   PresetWatch preset_watch_;
+  TimingsChannel timings_;
   std::map<ContextKey, ContextEntry> contexts_;
   // Pipelines of contexts destroyed while not current: their GL objects died with the context,
   // and their instances cannot be destroyed without it, so they are kept, unused.
