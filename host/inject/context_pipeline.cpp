@@ -1,5 +1,6 @@
 #include "context_pipeline.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -107,7 +108,37 @@ pfx_frame ContextPipeline::frame_for(int width, int height, uint32_t inputs) con
   return frame;
 }
 
+bool ContextPipeline::same_effects(const ChainRecipe& recipe) const {
+  if (!chain_ || recipe.chosen != built_.chosen || recipe.effects.size() != built_.effects.size()) return false;
+  for (size_t i = 0; i < recipe.effects.size(); ++i)
+    if (recipe.effects[i].id != built_.effects[i].id) return false;
+  return true;
+}
+
+bool ContextPipeline::update_values(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason) {
+  // A store shaped like the chain, filled as a new one would be, then put in place of the old:
+  // the chain reads its values through the same store.
+  auto params = make_params(registry_);
+  for (size_t i = 0; i < chain_->size(); ++i)
+    params->set_instance_count(chain_->effect_id(i), std::max(params->instance_count(chain_->effect_id(i)),
+                                                              chain_->instance_number(i)));
+  if (!recipe.parameters_json.empty() && !params->from_json(recipe.parameters_json, reason)) return false;
+  for (const auto& assignment : recipe.sets)
+    if (!params->set_assignment(assignment, reason)) return false;
+  *params_ = std::move(*params);
+  // The flags the recipe gives (a default chain has every effect on); InputFit takes them as the
+  // user's and fits them to the frame again.
+  for (size_t i = 0; i < chain_->size(); ++i) chain_->set_enabled(i, !recipe.chosen || recipe.effects[i].enabled);
+  const int width = copy_.width() ? copy_.width() : 64, height = copy_.height() ? copy_.height() : 64;
+  if (!fit_.start(*chain_, false, frame_for(width, height, PFX_INPUT_COLOR | PFX_INPUT_DEPTH), notes, reason))
+    return false;
+  built_ = recipe;
+  return true;
+}
+
 bool ContextPipeline::rebuild(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason) {
+  // Only values or on/off flags changed (the live panel's sliders): no effect is created again.
+  if (same_effects(recipe)) return update_values(recipe, notes, reason);
   auto params = make_params(registry_);
   auto chain = std::make_unique<host::Chain>(registry_, *params);
   InputFit fit;
@@ -126,6 +157,7 @@ bool ContextPipeline::rebuild(const ChainRecipe& recipe, std::vector<std::string
   params_ = std::move(params);
   chain_ = std::move(chain);
   fit_ = std::move(fit);
+  built_ = recipe;
   return true;
 }
 

@@ -57,11 +57,16 @@ class ContextPipeline {
   pfx_frame frame_for(int width, int height, uint32_t inputs) const;
   // Whether the user switched any effect on (InputFit may have switched some off for now).
   bool wanted_any() const;
+  // Whether `recipe` names the effects the chain was built from, in the same order.
+  bool same_effects(const ChainRecipe& recipe) const;
+  // Puts the recipe's values and on/off flags into the chain that runs; false with *reason.
+  bool update_values(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason);
   const host::PluginRegistry& registry_;
   const InjectSettings& settings_;
   std::unique_ptr<host::ParamStore> params_;
   std::unique_ptr<host::Chain> chain_;
   InputFit fit_;
+  ChainRecipe built_;  // what the chain was built or last updated from
   FrameCopy copy_;
   DepthCheck depth_check_;
   bool depth_said_ = false;
