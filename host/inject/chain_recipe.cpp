@@ -1,5 +1,6 @@
 #include "chain_recipe.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "default_chain.hpp"
@@ -21,6 +22,17 @@ std::vector<app::PresetEffect> loaded_only(const std::vector<app::PresetEffect>&
 }
 
 }  // namespace
+
+host::ParamStore store_for(const std::vector<app::PresetEffect>& effects, const host::PluginRegistry& registry) {
+  host::ParamStore store(host::DefaultSet::DISPLAY_REFERRED);
+  std::map<std::string, size_t> instances;
+  for (const auto& effect : effects) ++instances[effect.id];
+  for (const auto& effect : registry.effects()) {
+    store.add_effect(effect.desc);
+    store.set_instance_count(effect.desc->id, std::max<size_t>(1, instances[effect.desc->id]));
+  }
+  return store;
+}
 
 std::string loaded_effect_ids(const host::PluginRegistry& registry) {
   std::string ids;
@@ -54,13 +66,7 @@ ChainRecipe make_recipe(const InjectSettings& settings, const host::PluginRegist
 
   // Values are checked in a store shaped like the chain ("bloom#2" needs a second bloom), the
   // way the pipeline's own store will be.
-  host::ParamStore store(host::DefaultSet::DISPLAY_REFERRED);
-  std::map<std::string, size_t> instances;
-  for (const auto& effect : recipe.effects) ++instances[effect.id];
-  for (const auto& effect : registry.effects()) {
-    store.add_effect(effect.desc);
-    store.set_instance_count(effect.desc->id, std::max<size_t>(1, instances[effect.desc->id]));
-  }
+  host::ParamStore store = store_for(recipe.effects, registry);
   if (!preset.parameters_json.empty()) {
     if (store.from_json(preset.parameters_json, &error)) recipe.parameters_json = preset.parameters_json;
     else problems->push_back({RecipeProblem::PRESET, settings.preset + ": parameters: " + error});

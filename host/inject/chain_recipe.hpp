@@ -45,6 +45,9 @@ ChainRecipe make_recipe(const InjectSettings& settings, const host::PluginRegist
 bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error);
 // Whether any effect of the chain is switched on: with none, the copy in and out is all there is.
 bool any_enabled(const host::Chain& chain);
+// Every loaded effect's values at the display-referred defaults, with as many instances of each as
+// `effects` holds (at least one): the store an injected chain of those effects starts from.
+host::ParamStore store_for(const std::vector<app::PresetEffect>& effects, const host::PluginRegistry& registry);
 // "bloom, dof, glare": the loaded effects' ids, for messages.
 std::string loaded_effect_ids(const host::PluginRegistry& registry);
 

@@ -8,8 +8,8 @@
 #include <pfx/host/gl_state_guard.hpp>
 
 #include "camera_options.hpp"
-#include "timing_choice.hpp"
 #include "frame_capture.hpp"
+#include "timing_choice.hpp"
 
 namespace pfx::inject {
 namespace {

@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "frame_capture.hpp"
-#include "resource_report.hpp"
 #include "real_symbols.hpp"
+#include "resource_report.hpp"
 
 extern char** environ;
 
@@ -160,13 +160,15 @@ void Injector::say_captures_skipped(const std::string& why) {
 
 void Injector::reread_preset_if_changed() {
   if (!preset_watch_.changed()) return;
-  // A change is all or nothing: an edit that leaves out anything keeps the chain that runs.
+  // A change of the preset is all or nothing: an edit that leaves out anything keeps the chain
+  // that runs. (What the variables left out was said at the start.)
   std::vector<RecipeProblem> problems;
   std::vector<std::string> notes;
   ChainRecipe recipe = make_recipe(settings_, *registry_, &problems, &notes);
-  if (!problems.empty()) {
-    std::string why;
-    for (const auto& problem : problems) why += (why.empty() ? "" : "; ") + problem.message;
+  std::string why;
+  for (const auto& problem : problems)
+    if (problem.source == RecipeProblem::PRESET) why += (why.empty() ? "" : "; ") + problem.message;
+  if (!why.empty()) {
     log_.line("the changed preset could not be applied (" + why + "); the previous chain keeps running");
     return;
   }

@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <map>
 
 #include <pfx/host/param_store.hpp>
 
@@ -41,13 +40,7 @@ bool prepare_panel(InjectOptions* options, PanelSession* session, std::string* e
   std::vector<RecipeProblem> problems;
   std::vector<std::string> notes;
   const ChainRecipe recipe = make_recipe(settings, registry, &problems, &notes);
-  host::ParamStore store(host::DefaultSet::DISPLAY_REFERRED);
-  std::map<std::string, size_t> instances;
-  for (const auto& effect : recipe.effects) ++instances[effect.id];
-  for (const auto& effect : registry.effects()) {
-    store.add_effect(effect.desc);
-    store.set_instance_count(effect.desc->id, std::max<size_t>(1, instances[effect.desc->id]));
-  }
+  host::ParamStore store = store_for(recipe.effects, registry);
   if (!recipe.parameters_json.empty() && !store.from_json(recipe.parameters_json, error)) return false;
   for (const auto& assignment : recipe.sets)
     if (!store.set_assignment(assignment, error)) return false;
