@@ -155,3 +155,28 @@ TEST_CASE("depth judged before it is trusted: one value, the far plane, reversed
   const std::vector<float> with_nan = {NAN, 1, 0.9f, INFINITY};
   CHECK(judge_depth(with_nan.data(), with_nan.size()).usable());
 }
+
+TEST_CASE("--resources-at and --panel: parsed, passed on, and refused where they do not fit") {
+  InjectOptions options;
+  std::string error;
+  REQUIRE(parse({"--resources-at", "500,5000", "--panel", "--panel-option", "--window", "--panel-option", "400x600",
+                 "--", "app"},
+                &options, &error));
+  CHECK(options.panel);
+  CHECK(options.panel_options == std::vector<std::string>{"--window", "400x600"});
+  std::vector<std::string> problems;
+  const InjectSettings read = through_environment(options.settings, &problems);
+  CHECK(problems.empty());
+  CHECK(read.resources_at == std::vector<uint64_t>{500, 5000});
+  CHECK_FALSE(parse({"--resources-at", "500,x", "--", "app"}, &options, &error));
+  CHECK(error.find("'x' is not a frame number") != std::string::npos);
+  CHECK_FALSE(parse({"--panel-option", "--window", "--", "app"}, &options, &error));
+  CHECK(error.find("--panel-option goes with --panel") != std::string::npos);
+  CHECK_FALSE(parse({"--panel", "--bench", "50", "--", "app"}, &options, &error));
+  // By hand: the frame that does not parse is named and left out, the other kept.
+  variables = {{env::kResourcesAt, "10,zero,30"}};
+  const InjectSettings by_hand = settings_from_environment(lookup, &problems);
+  CHECK(by_hand.resources_at == std::vector<uint64_t>{10, 30});
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].rfind("PFX_INJECT_RESOURCES_AT: 'zero'", 0) == 0);
+}
