@@ -156,7 +156,7 @@ TEST_CASE("depth judged before it is trusted: one value, the far plane, reversed
   CHECK(judge_depth(with_nan.data(), with_nan.size()).usable());
 }
 
-TEST_CASE("--resources-at and --panel: parsed, passed on, and refused where they do not fit") {
+TEST_CASE("the options --resources-at and --panel: parsed, passed on, and refused where they do not fit") {
   InjectOptions options;
   std::string error;
   REQUIRE(parse({"--resources-at", "500,5000", "--panel", "--panel-option", "--window", "--panel-option", "400x600",
