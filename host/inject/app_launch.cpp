@@ -1,6 +1,7 @@
 #include "app_launch.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -8,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "inject_options.hpp"
 #include "plugin_directory.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -40,6 +42,33 @@ std::string sanitizer_runtime() {
 std::string sanitizer_runtime() { return ""; }
 #endif
 
+volatile pid_t forward_to = 0;
+
+void forward_signal(int signal) {
+  if (forward_to > 0) kill(forward_to, signal);
+}
+
+// While it lives, SIGINT, SIGTERM and SIGHUP sent to this program go to `child` instead.
+class ForwardSignals {
+ public:
+  explicit ForwardSignals(pid_t child) {
+    forward_to = child;
+    struct sigaction action {};
+    action.sa_handler = forward_signal;
+    action.sa_flags = SA_RESTART;
+    sigemptyset(&action.sa_mask);
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &action, &previous_[i]);
+  }
+  ~ForwardSignals() {
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+    forward_to = 0;
+  }
+
+ private:
+  static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction previous_[3] {};
+};
+
 }  // namespace
 
 std::string find_inject_library(std::string* error) {
@@ -53,6 +82,12 @@ std::string find_inject_library(std::string* error) {
     if (fs::is_regular_file(path, ec)) return fs::weakly_canonical(path, ec).string();
   *error = "libpfxinject.so not found at " + installed.string() + " (build it: cmake --build build --target pfxinject)";
   return "";
+}
+
+std::vector<std::string> plugin_folders(const InjectSettings& settings) {
+  if (!settings.plugin_dirs.empty()) return settings.plugin_dirs;
+  const std::string beside = app::default_plugin_directory();
+  return beside.empty() ? std::vector<std::string>{} : std::vector<std::string>{beside};
 }
 
 std::vector<std::string> child_environment(const InjectSettings& settings, const std::string& library) {
@@ -77,10 +112,7 @@ std::vector<std::string> child_environment(const InjectSettings& settings, const
   }
   environment.push_back("LD_PRELOAD=" + preload);
   InjectSettings complete = settings;
-  if (complete.plugin_dirs.empty()) {
-    const std::string beside = app::default_plugin_directory();
-    if (!beside.empty()) complete.plugin_dirs.push_back(beside);
-  }
+  complete.plugin_dirs = plugin_folders(settings);
   for (const auto& variable : settings_to_environment(complete)) environment.push_back(variable);
   return environment;
 }
@@ -95,12 +127,12 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
   int report[2];
   if (pipe2(report, O_CLOEXEC) != 0) {
     *error = std::string("pipe: ") + std::strerror(errno);
-    return 127;
+    return kExitNotStarted;
   }
   const pid_t child = fork();
   if (child < 0) {
     *error = std::string("fork: ") + std::strerror(errno);
-    return 127;
+    return kExitNotStarted;
   }
   if (child == 0) {
     close(report[0]);
@@ -108,9 +140,11 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
     // Only reached when exec failed: tell the parent why through the pipe, which exec would close.
     const int failure = errno;
     (void)!write(report[1], &failure, sizeof failure);
-    _exit(127);
+    _exit(kExitNotStarted);
   }
   close(report[1]);
+  // Ending pfx-inject (Ctrl+C, a script's kill) ends the application: the signal is passed on.
+  ForwardSignals forward(child);
   int failure = 0;
   const bool exec_failed = read(report[0], &failure, sizeof failure) == sizeof failure;
   close(report[0]);
@@ -119,7 +153,7 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
   }
   if (exec_failed) {
     *error = "cannot run " + command[0] + ": " + std::strerror(failure);
-    return 127;
+    return kExitNotStarted;
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }

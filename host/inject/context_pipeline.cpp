@@ -1,12 +1,15 @@
 #include "context_pipeline.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include <glad/gl.h>
 #include <pfx/host/gl_state_guard.hpp>
 
 #include "camera_options.hpp"
 #include "frame_capture.hpp"
+#include "timing_choice.hpp"
 
 namespace pfx::inject {
 namespace {
@@ -44,6 +47,12 @@ std::unique_ptr<host::ParamStore> make_params(const host::PluginRegistry& regist
   return params;
 }
 
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 std::string gl_error_text(GLenum error) {
   char text[16];
   std::snprintf(text, sizeof text, "0x%04x", error);
@@ -71,7 +80,9 @@ std::unique_ptr<ContextPipeline> ContextPipeline::create(const host::PluginRegis
     return nullptr;
   }
   std::unique_ptr<ContextPipeline> pipeline(new ContextPipeline(registry, settings));
-  if (!pipeline->copy_.create(reason)) return nullptr;
+  const GLubyte* renderer = glGetString(GL_RENDERER);
+  pipeline->renderer_ = renderer ? reinterpret_cast<const char*>(renderer) : "";
+  if (!pipeline->copy_.create(reason) || !pipeline->depth_check_.create(reason)) return nullptr;
   if (!pipeline->rebuild(recipe, notes, reason)) return nullptr;
   return pipeline;
 }
@@ -82,61 +93,121 @@ ContextPipeline::~ContextPipeline() {
   params_.reset();
 }
 
+pfx_frame ContextPipeline::frame_for(int width, int height, uint32_t inputs) const {
+  pfx_frame frame{};
+  frame.struct_size = sizeof frame;
+  frame.width = static_cast<uint32_t>(width);
+  frame.height = static_cast<uint32_t>(height);
+  frame.inputs = inputs;
+  frame.depth_encoding = (inputs & PFX_INPUT_DEPTH) ? PFX_DEPTH_HARDWARE : PFX_DEPTH_NONE;
+  app::CameraOptions camera;
+  camera.near_plane = settings_.depth_near;
+  camera.far_plane = settings_.depth_far;
+  frame.camera = app::make_camera(camera, width, height);
+  frame.light_struct_size = sizeof(pfx_light);
+  return frame;
+}
+
+bool ContextPipeline::same_effects(const ChainRecipe& recipe) const {
+  if (!chain_ || recipe.chosen != built_.chosen || recipe.effects.size() != built_.effects.size()) return false;
+  for (size_t i = 0; i < recipe.effects.size(); ++i)
+    if (recipe.effects[i].id != built_.effects[i].id) return false;
+  return true;
+}
+
+bool ContextPipeline::update_values(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason) {
+  // A store shaped like the chain, filled as a new one would be, then put in place of the old:
+  // the chain reads its values through the same store.
+  auto params = make_params(registry_);
+  for (size_t i = 0; i < chain_->size(); ++i)
+    params->set_instance_count(chain_->effect_id(i), std::max(params->instance_count(chain_->effect_id(i)),
+                                                              chain_->instance_number(i)));
+  if (!recipe.parameters_json.empty() && !params->from_json(recipe.parameters_json, reason)) return false;
+  for (const auto& assignment : recipe.sets)
+    if (!params->set_assignment(assignment, reason)) return false;
+  *params_ = std::move(*params);
+  // The flags the recipe gives (a default chain has every effect on); InputFit takes them as the
+  // user's and fits them to the frame again.
+  for (size_t i = 0; i < chain_->size(); ++i) chain_->set_enabled(i, !recipe.chosen || recipe.effects[i].enabled);
+  const int width = copy_.width() ? copy_.width() : 64, height = copy_.height() ? copy_.height() : 64;
+  if (!fit_.start(*chain_, false, frame_for(width, height, PFX_INPUT_COLOR | PFX_INPUT_DEPTH), notes, reason))
+    return false;
+  built_ = recipe;
+  return true;
+}
+
 bool ContextPipeline::rebuild(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason) {
+  // Only values or on/off flags changed (the live panel's sliders): no effect is created again.
+  if (same_effects(recipe)) return update_values(recipe, notes, reason);
   auto params = make_params(registry_);
   auto chain = std::make_unique<host::Chain>(registry_, *params);
+  InputFit fit;
   {
     // Effects compile programs and make textures as they are created: the application's
     // bindings survive that too.
     host::GlStateGuard guard(*chain);
-    if (!build_chain(recipe, chain.get(), params.get(), reason, notes)) return false;
+    if (!build_chain(recipe, chain.get(), params.get(), reason)) return false;
   }
+  const int width = copy_.width() ? copy_.width() : 64, height = copy_.height() ? copy_.height() : 64;
+  if (!fit.start(*chain, !recipe.chosen, frame_for(width, height, PFX_INPUT_COLOR | PFX_INPUT_DEPTH), notes, reason))
+    return false;
+  // Times only for the control panel: on llvmpipe timing serialises the passes.
+  if (!settings_.timings_file.empty()) chain->set_timing(app::default_timing(renderer_));
   chain_.reset();
   params_ = std::move(params);
   chain_ = std::move(chain);
+  fit_ = std::move(fit);
+  built_ = recipe;
   return true;
 }
 
 std::string ContextPipeline::chain_text() const {
   std::string text;
   for (size_t i = 0; i < chain_->size(); ++i)
-    text += (text.empty() ? "" : ",") + chain_->instance_name(i) + (chain_->enabled(i) ? "" : " (off)");
+    text += (text.empty() ? "" : ",") + chain_->instance_name(i) + (fit_.wanted(i) ? "" : " (off)");
   return text.empty() ? "none (the copy in and out only)" : text;
+}
+
+bool ContextPipeline::wanted_any() const {
+  for (size_t i = 0; i < chain_->size(); ++i)
+    if (fit_.wanted(i)) return true;
+  return false;
 }
 
 bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* messages, std::string* reason) {
   host::GlStateGuard guard(*chain_);
   copy_.resize(work.width, work.height);
-  if (!depth_said_) {
-    depth_said_ = true;
-    messages->push_back(copy_.has_depth() ? "depth: " + copy_.depth_description() + ", read as hardware depth"
-                                          : "depth: none (" + copy_.depth_description() + ")");
-  }
+  if (!depth_said_ && !copy_.has_depth()) messages->push_back("depth: none (" + copy_.depth_description() + ")");
+  depth_said_ = true;
   // With every effect off the chain would only copy: the frame goes straight back out, and its
   // depth is not needed.
-  const bool chain_runs = any_enabled(*chain_);
-  if (!copy_.copy_in(settings_.transfer, chain_runs, reason)) return false;
+  const bool chain_may_run = wanted_any();
+  if (!copy_.copy_in(settings_.transfer, chain_may_run, reason)) return false;
   if (copy_.take_depth_lost()) messages->push_back("depth: " + copy_.depth_description());
 
-  pfx_frame frame{};
-  frame.struct_size = sizeof frame;
-  frame.width = static_cast<uint32_t>(work.width);
-  frame.height = static_cast<uint32_t>(work.height);
-  frame.inputs = PFX_INPUT_COLOR;
-  if (copy_.has_depth()) frame.inputs |= PFX_INPUT_DEPTH;
-  frame.depth_encoding = copy_.has_depth() ? PFX_DEPTH_HARDWARE : PFX_DEPTH_NONE;
-  app::CameraOptions camera;
-  camera.near_plane = settings_.depth_near;
-  camera.far_plane = settings_.depth_far;
-  frame.camera = app::make_camera(camera, work.width, work.height);
+  uint32_t inputs = PFX_INPUT_COLOR;
+  if (chain_may_run) {
+    std::optional<DepthFinding> change;
+    if (depth_check_.update(work.frame, copy_.depth(), work.width, work.height, &change)) inputs |= PFX_INPUT_DEPTH;
+    if (change)
+      messages->push_back("frame " + std::to_string(work.frame) + ": depth: " + copy_.depth_description() + ": " +
+                          change->what +
+                          (change->usable() ? ": read as hardware depth (near " + number_text(settings_.depth_near) +
+                                                  " m, far " + number_text(settings_.depth_far) + " m)"
+                                            : ": not used"));
+    const std::string lacking_depth = !copy_.has_depth() ? "the default framebuffer has none"
+                                                         : "the depth buffer holds " + depth_check_.finding().what;
+    if (!fit_.fit(*chain_, frame_for(work.width, work.height, inputs), lacking_depth, messages, reason)) return false;
+  }
+  pfx_frame frame = frame_for(work.width, work.height, inputs);
   frame.time_seconds = work.time_seconds;
   frame.frame_index = work.frame;
-  frame.light_struct_size = sizeof(pfx_light);
   host::FrameTextures textures;
   textures.color = copy_.color();
-  textures.depth = copy_.depth();
+  if (inputs & PFX_INPUT_DEPTH) textures.depth = copy_.depth();
 
   GLuint result = copy_.color();
+  const bool chain_runs = chain_may_run && any_enabled(*chain_);
   if (chain_runs) {
     if (!chain_->render(frame, textures, copy_.output(), reason)) return false;
     result = copy_.output();
@@ -144,18 +215,21 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
   if (!work.captures.empty() && chain_runs) {
     std::string skipped;
     for (const auto& id : chain_->report().effects_skipped) skipped += (skipped.empty() ? "" : ",") + id;
-    if (!skipped.empty()) messages->push_back("frame " + std::to_string(work.frame) + ": skipped as no-ops: " + skipped);
+    if (!skipped.empty()) messages->push_back("frame " + std::to_string(work.frame) + ": skipped as no-ops or off: " + skipped);
   }
+  // Every file that fails is named: one missing does not hide another.
+  auto say = [&](const std::string& path, const std::string& error) {
+    messages->push_back("frame " + std::to_string(work.frame) + ": capture " + path + " not written: " + error);
+  };
   for (const auto& prefix : work.captures) {
     std::string error;
-    if (!write_texture_exr(copy_.color(), work.width, work.height, prefix + ".app.exr", &error) ||
-        !write_texture_exr(result, work.width, work.height, prefix + ".out.exr", &error))
-      messages->push_back("capture: " + error);
+    if (!write_texture_exr(copy_.color(), work.width, work.height, prefix + ".app.exr", &error)) say(prefix + ".app.exr", error);
+    if (!write_texture_exr(result, work.width, work.height, prefix + ".out.exr", &error)) say(prefix + ".out.exr", error);
   }
   if (!settings_.dry_run) copy_.copy_out(result, settings_.transfer);
   for (const auto& prefix : work.captures) {
     std::string error;
-    if (!write_presented_png(copy_.read_back_buffer(), prefix + ".png", &error)) messages->push_back("capture: " + error);
+    if (!write_presented_png(copy_.read_back_buffer(), prefix + ".png", &error)) say(prefix + ".png", error);
   }
   if (work.measure_copy_pass) copy_pass_ms_ = copy_.copy_pass_ms(9);
   const GLenum error = glGetError();

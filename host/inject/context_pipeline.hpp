@@ -13,7 +13,9 @@
 #include <pfx/host/plugin_registry.hpp>
 
 #include "chain_recipe.hpp"
+#include "depth_check.hpp"
 #include "frame_copy.hpp"
+#include "input_fit.hpp"
 #include "inject_settings.hpp"
 
 namespace pfx::inject {
@@ -36,7 +38,8 @@ class ContextPipeline {
                                                  std::string* reason);
   ~ContextPipeline();
 
-  // Replaces the chain and its values (a changed preset). False with *reason, keeping the old.
+  // Replaces the chain and its values (a changed preset). *notes gets the effects a default chain
+  // leaves out. False with *reason, keeping the old.
   bool rebuild(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason);
   // Runs the chain over the back buffer and, unless a dry run, encodes the result into it. Every
   // piece of GL state it touches is put back. False with *reason when it failed: the caller then
@@ -45,15 +48,29 @@ class ContextPipeline {
   // The copy-pass unit measured on the last frame that asked (0 before).
   double copy_pass_ms() const { return copy_pass_ms_; }
   std::string chain_text() const;
+  // The chain's report of its last frame (times there when the settings ask for a timings file).
+  const host::FrameReport& report() const { return chain_->report(); }
 
  private:
   ContextPipeline(const host::PluginRegistry& registry, const InjectSettings& settings);
+  // The frame the chain gets at that size with those inputs: the camera from the depth planes.
+  pfx_frame frame_for(int width, int height, uint32_t inputs) const;
+  // Whether the user switched any effect on (InputFit may have switched some off for now).
+  bool wanted_any() const;
+  // Whether `recipe` names the effects the chain was built from, in the same order.
+  bool same_effects(const ChainRecipe& recipe) const;
+  // Puts the recipe's values and on/off flags into the chain that runs; false with *reason.
+  bool update_values(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason);
   const host::PluginRegistry& registry_;
   const InjectSettings& settings_;
   std::unique_ptr<host::ParamStore> params_;
   std::unique_ptr<host::Chain> chain_;
+  InputFit fit_;
+  ChainRecipe built_;  // what the chain was built or last updated from
   FrameCopy copy_;
+  DepthCheck depth_check_;
   bool depth_said_ = false;
+  std::string renderer_;  // GL_RENDERER, to choose how passes are timed
   double copy_pass_ms_ = 0;
 };
 

@@ -27,18 +27,28 @@ context or any failure leaves its frames untouched, with one line in the log.
   --quit-after N       end the application after N presented frames
   --from-frame N       leave the first N-1 presented frames alone: the chain starts at frame N
                        (a splash screen; or, in tests, a frame drawn with no pfx code ever run)
+  --panel              open the live control panel beside APP (pfx-view --attach): every effect on
+                       or off, every parameter, presets saved and loaded, the chain's pass times
+  --panel-option ARG   pass ARG to the panel's pfx-view (repeatable), e.g. --window 500x800
   --dry-run            run the chain every frame but present the application's own frame
   --log FILE           append the injector's messages to FILE (default: stderr)
+  --resources-at LIST  after each of these presented frames (e.g. 500,5000) log the application's
+                       resident memory and the GL objects of its context: a run that grows shows
   --bench FRAMES       run APP FRAMES frames alone, with an empty chain and with the chain, three
                        times each, and print each one's frame time and the cost in copy passes
   --bench-runs N       runs per configuration for --bench (default 3)
   --bench-json FILE    also write the --bench results as JSON
   -h, --help           this text
 
-Every setting reaches the library as an environment variable (PFX_INJECT_*, docs/inject.md), so
-LD_PRELOAD=.../libpfxinject.so with those variables does the same without this program.
-Exit code: the application's (128 + signal when a signal ended it); 2 for a usage error, 127
-when APP could not be started.
+The plugins, the chain, the preset, every --set and every capture's folder are checked before
+APP starts; a mistake is refused and APP is not started. Every setting reaches the library as an
+environment variable (PFX_INJECT_*, docs/inject.md), so LD_PRELOAD=.../libpfxinject.so with those
+variables does the same without this program.
+
+Exit code: the application's own (128 + signal when a signal ended it), unchanged; pfx-inject's
+own errors use codes applications and shells leave alone: 240 a usage error (bad option, chain,
+preset, --set or capture), 241 libpfxinject.so or the effect plugins not found, 242 APP could not
+be started, 243 --bench could not measure or write its results.
 )";
 }
 
@@ -94,8 +104,15 @@ bool parse_inject_options(const std::vector<std::string>& args, InjectOptions* o
       else if (arg == "--from-frame") options.settings.from_frame = static_cast<uint64_t>(count);
       else if (arg == "--bench") options.bench_frames = static_cast<int>(count);
       else options.bench_runs = static_cast<int>(count);
+    } else if (arg == "--resources-at") {
+      if (!reader.value(&value)) return false;
+      if (!parse_frame_list(value, &options.settings.resources_at, error)) return reader.fail("--resources-at: " + *error);
     } else if (arg == "--bench-json") {
       if (!reader.value(&options.bench_json)) return false;
+    } else if (arg == "--panel") {
+      options.panel = true;
+    } else if (arg == "--panel-option") {
+      if (!reader.value(&options.panel_options)) return false;
     } else if (arg == "--dry-run") {
       options.settings.dry_run = true;
     } else if (arg == "--log") {
@@ -109,6 +126,8 @@ bool parse_inject_options(const std::vector<std::string>& args, InjectOptions* o
   options.settings.depth_far = far_plane;
   if (!options.help && options.command.empty()) return reader.fail("no application given: pfx-inject [options] -- APP [ARGS...]");
   if (options.bench_frames && options.bench_frames < 20) return reader.fail("--bench needs at least 20 frames per run");
+  if (options.bench_frames && options.panel) return reader.fail("--bench and --panel do not go together");
+  if (!options.panel_options.empty() && !options.panel) return reader.fail("--panel-option goes with --panel");
   if (options.bench_frames && options.settings.quit_after)
     return reader.fail("--bench sets the frame count itself: leave out --quit-after");
   *out = std::move(options);

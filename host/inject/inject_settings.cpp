@@ -64,6 +64,24 @@ bool parse_capture(const std::string& text, Capture* out, std::string* error) {
   return true;
 }
 
+bool parse_frame_list(const std::string& text, std::vector<uint64_t>* out, std::string* error) {
+  std::vector<uint64_t> frames;
+  for (const auto& item : app::split_list(text)) {
+    long long frame = 0;
+    if (!app::parse_count(item, &frame) || frame < 1) {
+      *error = "'" + item + "' is not a frame number from 1";
+      return false;
+    }
+    frames.push_back(static_cast<uint64_t>(frame));
+  }
+  if (frames.empty()) {
+    *error = "expected frame numbers, e.g. 500,5000";
+    return false;
+  }
+  *out = std::move(frames);
+  return true;
+}
+
 bool parse_depth_plane(const std::string& text, bool allow_infinity, double* out, std::string* error) {
   if (allow_infinity && text == "inf") {
     *out = std::numeric_limits<double>::infinity();
@@ -133,11 +151,38 @@ InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::stri
     if (app::parse_count(text(env::kFromFrame), &frame) && frame >= 1) settings.from_frame = static_cast<uint64_t>(frame);
     else complain(env::kFromFrame, "'" + text(env::kFromFrame) + "' is not a frame number from 1");
   }
-  settings.dry_run = text(env::kDryRun) == "1";
-  settings.bypass = text(env::kBypass) == "1";
+  auto flag = [&](const char* name) {
+    const std::string value = text(name);
+    if (value.empty() || value == "0") return false;
+    if (value == "1") return true;
+    complain(name, "'" + value + "' is not 1 or 0");
+    return false;
+  };
+  settings.dry_run = flag(env::kDryRun);
+  settings.bypass = flag(env::kBypass);
   settings.log_file = text(env::kLog);
   settings.stats_file = text(env::kStats);
+  settings.timings_file = text(env::kTimings);
+  if (!text(env::kResourcesAt).empty()) {
+    // One item that does not parse is left out; the others stay.
+    for (const auto& item : app::split_list(text(env::kResourcesAt))) {
+      std::vector<uint64_t> frame;
+      if (parse_frame_list(item, &frame, &error)) settings.resources_at.push_back(frame[0]);
+      else complain(env::kResourcesAt, error);
+    }
+  }
   return settings;
+}
+
+std::vector<std::string> unknown_variables(const std::vector<std::string>& names) {
+  std::vector<std::string> problems;
+  for (const auto& name : names) {
+    if (name.rfind("PFX_INJECT_", 0) != 0) continue;
+    bool known = false;
+    for (const char* variable : env::kAll) known |= name == variable;
+    if (!known) problems.push_back(name + ": not a pfx-inject variable (docs/inject.md lists them)");
+  }
+  return problems;
 }
 
 std::vector<std::string> settings_to_environment(const InjectSettings& settings) {
@@ -161,6 +206,10 @@ std::vector<std::string> settings_to_environment(const InjectSettings& settings)
   if (settings.bypass) put(env::kBypass, "1");
   if (!settings.log_file.empty()) put(env::kLog, settings.log_file);
   if (!settings.stats_file.empty()) put(env::kStats, settings.stats_file);
+  if (!settings.timings_file.empty()) put(env::kTimings, settings.timings_file);
+  std::vector<std::string> frames;
+  for (uint64_t frame : settings.resources_at) frames.push_back(std::to_string(frame));
+  if (!frames.empty()) put(env::kResourcesAt, join(frames, ","));
   return vars;
 }
 

@@ -37,6 +37,12 @@ struct InjectSettings {
   bool bypass = false;               // hook the present and count frames, touch no GL (bench)
   std::string log_file;              // empty: stderr
   std::string stats_file;            // JSON of frame times written at exit (bench); empty: none
+  // After each of these presented frames, log the process's resident memory and the GL objects
+  // of the presenting context (to see that a long run does not grow).
+  std::vector<uint64_t> resources_at;
+  // The live control panel's channel: the chain times its passes and writes them here as JSON
+  // a few times a second. Empty: no timing at all.
+  std::string timings_file;
 };
 
 // The variable names, for the launcher, the library and the docs.
@@ -55,20 +61,33 @@ constexpr const char* kDryRun = "PFX_INJECT_DRY_RUN";       // "1"
 constexpr const char* kBypass = "PFX_INJECT_BYPASS";        // "1"
 constexpr const char* kLog = "PFX_INJECT_LOG";
 constexpr const char* kStats = "PFX_INJECT_STATS";
+constexpr const char* kResourcesAt = "PFX_INJECT_RESOURCES_AT";  // frame numbers separated by ','
+constexpr const char* kTimings = "PFX_INJECT_TIMINGS";
+constexpr const char* kAll[] = {kChain,     kPreset,    kSet,    kPlugins, kDepthNear, kDepthFar,    kTransfer, kCapture,
+                                kQuitAfter, kFromFrame, kDryRun, kBypass,  kLog,       kStats,       kResourcesAt,
+                                kTimings};
 }  // namespace env
 
 // "12:shot" or "all:shot.%d"; false with *error saying what is wrong.
 bool parse_capture(const std::string& text, Capture* out, std::string* error);
+// "500,5000": presented frame numbers from 1; false with *error naming the item that is not one.
+bool parse_frame_list(const std::string& text, std::vector<uint64_t>* out, std::string* error);
 // A depth plane: a positive number, or "inf" (far only).
 bool parse_depth_plane(const std::string& text, bool allow_infinity, double* out, std::string* error);
 // Checks near < far once both are known.
 bool check_depth_planes(double near_plane, double far_plane, std::string* error);
 
 // Reads the settings from variables; `lookup` returns the value of one or null (getenv).
-// Values that do not parse are reported in *problems and the default is kept: inside somebody
-// else's application a bad variable must not stop it, only be said once.
+// One rule for every variable, since inside somebody else's application a typo must not stop it:
+// a value that does not parse, or an item of a list (a capture, an assignment, an effect of the
+// chain) that does not, is reported in *problems ("NAME: why") and left out; what is left applies,
+// and a variable with nothing usable left keeps its default. Effects and assignments are checked
+// against the plugins later (chain_recipe.hpp), by the same rule.
 using EnvLookup = const char* (*)(const char* name);
 InjectSettings settings_from_environment(EnvLookup lookup, std::vector<std::string>* problems);
+// The problems of variables named PFX_INJECT_* that pfx-inject does not know (a misspelt name),
+// from the names of the process's variables.
+std::vector<std::string> unknown_variables(const std::vector<std::string>& names);
 // The variables that give `settings` (those not at their default), as NAME=VALUE strings.
 std::vector<std::string> settings_to_environment(const InjectSettings& settings);
 

@@ -8,6 +8,9 @@
 
 #include "frame_capture.hpp"
 #include "real_symbols.hpp"
+#include "resource_report.hpp"
+
+extern char** environ;
 
 namespace pfx::inject {
 namespace {
@@ -28,6 +31,15 @@ std::vector<std::string> plugin_dirs_beside_library() {
        {library_dir / ".." / "plugins", library_dir / "pfx" / "plugins", library_dir / ".." / "pfx" / "plugins"})
     if (fs::is_directory(candidate, ec)) return {fs::weakly_canonical(candidate, ec).string()};
   return {};
+}
+
+const char* variable_of(RecipeProblem::Source source) {
+  switch (source) {
+    case RecipeProblem::CHAIN: return env::kChain;
+    case RecipeProblem::PRESET: return env::kPreset;
+    case RecipeProblem::SET: return env::kSet;
+  }
+  return "";
 }
 
 std::string reach_text(const std::string& via) {
@@ -51,13 +63,22 @@ Injector& Injector::instance() {
 Injector::LoadedSettings Injector::load_settings() {
   LoadedSettings loaded;
   loaded.settings = settings_from_environment(lookup_environment, &loaded.problems);
+  std::vector<std::string> names;
+  for (char** entry = environ; *entry; ++entry) {
+    const std::string variable = *entry;
+    names.push_back(variable.substr(0, variable.find('=')));
+  }
+  for (auto& problem : unknown_variables(names)) loaded.problems.push_back(std::move(problem));
   return loaded;
 }
 
 Injector::Injector() : Injector(load_settings()) {}
 
 Injector::Injector(LoadedSettings loaded)
-    : settings_(std::move(loaded.settings)), log_(settings_.log_file), preset_watch_(settings_.preset) {
+    : settings_(std::move(loaded.settings)),
+      log_(settings_.log_file),
+      preset_watch_(settings_.preset),
+      timings_(settings_.timings_file) {
   for (const auto& problem : loaded.problems) log_.line("ignored " + problem);
 }
 
@@ -65,7 +86,8 @@ void Injector::before_present(const PresentCall& call) noexcept {
   try {
     std::lock_guard<std::mutex> lock(mutex_);
     if (++presented_ == 1) first_present_ = std::chrono::steady_clock::now();
-    if (settings_.bypass || presented_ < settings_.from_frame) return;
+    if (settings_.bypass) return;
+    if (presented_ < settings_.from_frame) return say_captures_skipped("frames before --from-frame pass through");
     present(call);
   } catch (const std::exception& e) {
     log_.once(std::string("exception ") + e.what(), std::string("internal error: ") + e.what() +
@@ -80,27 +102,28 @@ void Injector::present(const PresentCall& call) {
   void* context = current_context(call.system);
   if (!context) {
     log_.once("no context " + system, "a present with no current " + system + " context: passed through");
-    return;
+    return say_captures_skipped("there was no current context");
   }
   if (!presents_current_surface(call)) {
     log_.once("other surface " + system,
               "a present of a surface the current context does not draw to: passed through");
-    return;
+    return say_captures_skipped("it presented a surface the current context does not draw to");
   }
   ContextEntry& entry = entry_for(call, context);
-  if (!entry.pipeline) return;
+  if (!entry.pipeline) return say_captures_skipped("its context's frames pass through (" + entry.aside + ")");
   if (entry.recipe_generation != recipe_generation_) {
     std::vector<std::string> notes;
     std::string reason;
-    if (entry.pipeline->rebuild(recipe_, &notes, &reason)) log_.line("preset applied: chain " + entry.pipeline->chain_text());
-    else log_.line("the changed preset could not be applied (" + reason + "); the previous chain keeps running");
+    const std::string frame = "frame " + std::to_string(presented_) + ": ";
+    if (entry.pipeline->rebuild(recipe_, &notes, &reason)) log_.line(frame + "preset applied: chain " + entry.pipeline->chain_text());
+    else log_.line(frame + "the changed preset could not be applied (" + reason + "); the previous chain keeps running");
     for (const auto& note : notes) log_.line(note);
     entry.recipe_generation = recipe_generation_;
   }
   FrameWork work;
   if (!surface_size(call, &work.width, &work.height)) {
     log_.once("no size " + system, "the size of a presented " + system + " surface is unknown: passed through");
-    return;
+    return say_captures_skipped("the size of its surface is unknown");
   }
   work.frame = presented_;
   work.time_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - first_present_).count();
@@ -115,17 +138,41 @@ void Injector::present(const PresentCall& call) {
   if (!ok) {
     log_.line("frame " + std::to_string(presented_) + ": " + reason + "; this context's frames pass through untouched from now on");
     entry.pipeline.reset();
+    entry.aside = reason;
+    return;
+  }
+  std::string error;
+  if (!timings_.offer(presented_, entry.pipeline->chain_text(), entry.pipeline->report(), &error))
+    log_.once("timings", "the pass times for the panel could not be written: " + error);
+  for (uint64_t frame : settings_.resources_at)
+    if (frame == presented_) log_.line("frame " + std::to_string(presented_) + ": " + resource_text(count_resources()));
+}
+
+void Injector::say_captures_skipped(const std::string& why) {
+  for (const auto& capture : settings_.captures) {
+    if (capture.every_frame)
+      log_.once("capture " + capture.prefix + why, "frame " + std::to_string(presented_) + ": captures all:" +
+                                                       capture.prefix + " are not written while " + why);
+    else if (capture.frame == presented_)
+      log_.line("frame " + std::to_string(presented_) + ": capture " + capture.prefix + " not written: " + why);
   }
 }
 
 void Injector::reread_preset_if_changed() {
   if (!preset_watch_.changed()) return;
-  ChainRecipe recipe;
-  std::string error;
-  if (!make_recipe(settings_, *registry_, &recipe, &error)) {
-    log_.line("preset changed but not applied: " + error);
+  // A change of the preset is all or nothing: an edit that leaves out anything keeps the chain
+  // that runs. (What the variables left out was said at the start.)
+  std::vector<RecipeProblem> problems;
+  std::vector<std::string> notes;
+  ChainRecipe recipe = make_recipe(settings_, *registry_, &problems, &notes);
+  std::string why;
+  for (const auto& problem : problems)
+    if (problem.source == RecipeProblem::PRESET) why += (why.empty() ? "" : "; ") + problem.message;
+  if (!why.empty()) {
+    log_.line("the changed preset could not be applied (" + why + "); the previous chain keeps running");
     return;
   }
+  for (const auto& note : notes) log_.line(note);
   recipe_ = std::move(recipe);
   ++recipe_generation_;
 }
@@ -146,11 +193,12 @@ bool Injector::load_plugins(WindowSystem system) {
               ", and PFX_PLUGIN_PATH); frames pass through untouched");
     return false;
   }
-  std::string error;
-  if (!make_recipe(settings_, *registry, &recipe_, &error)) {
-    log_.line(error + "; frames pass through untouched");
-    return false;
-  }
+  // Settings a user set by hand: what does not apply is named and left out, the rest runs.
+  std::vector<RecipeProblem> problems;
+  std::vector<std::string> notes;
+  recipe_ = make_recipe(settings_, *registry, &problems, &notes);
+  for (const auto& problem : problems) log_.line("ignored " + std::string(variable_of(problem.source)) + ": " + problem.message);
+  for (const auto& note : notes) log_.line(note);
   recipe_generation_ = 1;
   registry_ = std::move(registry);
   plugins_refused_ = false;
@@ -170,7 +218,10 @@ Injector::ContextEntry& Injector::entry_for(const PresentCall& call, void* conte
   const std::string name = system + " context " + std::to_string(entry.number);
   const std::string present_name = call.system == WindowSystem::GLX ? "glXSwapBuffers" : "eglSwapBuffers";
   const std::string hooked = "hooked " + present_name + " (" + reach_text(reached_through(present_name.c_str())) + ")";
-  if (!load_plugins(call.system)) return entry;
+  if (!load_plugins(call.system)) {
+    entry.aside = "no effect plugins";
+    return entry;
+  }
   std::string reason;
   std::vector<std::string> notes;
   const std::string other_api = other_client_api(call.system);
@@ -179,6 +230,7 @@ Injector::ContextEntry& Injector::entry_for(const PresentCall& call, void* conte
   for (const auto& note : notes) log_.line(note);
   if (!entry.pipeline) {
     log_.line(hooked + " in " + name + ": " + reason + "; its frames pass through untouched");
+    entry.aside = reason;
     return entry;
   }
   entry.recipe_generation = recipe_generation_;

@@ -20,6 +20,7 @@
 #include "inject_settings.hpp"
 #include "present_stats.hpp"
 #include "preset_watch.hpp"
+#include "timings_channel.hpp"
 #include "window_system.hpp"
 
 namespace pfx::inject {
@@ -49,12 +50,15 @@ class Injector {
     std::unique_ptr<ContextPipeline> pipeline;  // null: frames of this context pass through
     uint64_t recipe_generation = 0;
     int number = 0;  // in the order contexts first presented, from 1, for the log
+    std::string aside;  // without a pipeline: why its frames pass through
   };
   using ContextKey = std::pair<WindowSystem, void*>;
 
   void present(const PresentCall& call);
   bool load_plugins(WindowSystem system);
   void reread_preset_if_changed();
+  // Logs that this frame's captures will not be written, and why.
+  void say_captures_skipped(const std::string& why);
   ContextEntry& entry_for(const PresentCall& call, void* context);
   // Writes the frame times and frees the current context's pipeline; the caller then exits.
   void prepare_to_quit();
@@ -67,6 +71,7 @@ class Injector {
   ChainRecipe recipe_;
   uint64_t recipe_generation_ = 0;  // 0: no recipe read yet
   PresetWatch preset_watch_;
+  TimingsChannel timings_;
   std::map<ContextKey, ContextEntry> contexts_;
   // Pipelines of contexts destroyed while not current: their GL objects died with the context,
   // and their instances cannot be destroyed without it, so they are kept, unused.

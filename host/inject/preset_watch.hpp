@@ -12,8 +12,8 @@ namespace pfx::inject {
 class PresetWatch {
  public:
   explicit PresetWatch(std::string path);
-  // True once after each change (a new modification time or size, or the file appearing or
-  // disappearing) seen since the last call that returned true.
+  // True once after each change (a new modification time, size or inode, or the file appearing
+  // or disappearing) seen since the last call that returned true.
   bool changed();
 
  private:
@@ -21,6 +21,7 @@ class PresetWatch {
   std::chrono::steady_clock::time_point next_look_;
   int presents_since_look_ = 0;
   long long stamp_ = -1, size_ = -1;
+  unsigned long long inode_ = 0;
 };
 
 }  // namespace pfx::inject

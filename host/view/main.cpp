@@ -13,6 +13,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "attach_loop.hpp"
 #include "camera_controller.hpp"
 #include "camera_input.hpp"
 #include "display_pass.hpp"
@@ -162,7 +163,7 @@ int main(int argc, char** argv) {
     return kOk;
   }
   try {
-    return run(options);
+    return options.attach.empty() ? run(options) : run_attached(options);
   } catch (const std::exception& e) {
     return error_exit(kInternal, std::string("internal error: ") + e.what());
   }

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "app_timings.hpp"
 #include "viewer_session.hpp"
 
 namespace pfx::app {
@@ -24,8 +25,15 @@ void draw_chain_panel(ViewerSession& session);
 void draw_parameters_panel(ViewerSession& session, UiState& ui);
 // Per-pass times, frame time, peak target memory, skipped effects, the effects' own figures.
 void draw_timing_panel(ViewerSession& session, UiState& ui);
+// A table of pass times (effect, pass, ms) and their total.
+void draw_pass_table(const pfx::host::FrameTimes& times);
+// Attached to an application's chain (--attach): the preset it watches, save and load of the
+// user's preset, the application's per-pass times, the messages.
+void draw_application_panel(ViewerSession& session, const AppTimingsReader& timings, const std::string& attached);
 // Input, display, camera, presets, screenshots, hot reload, messages and the controls.
 void draw_view_panel(ViewerSession& session, UiState& ui);
+// The session's messages, newest last, errors in red, in a scrolling box.
+void draw_messages(const ViewerSession& session);
 // A red line at the top while frames fail.
 void draw_error_overlay(const ViewerSession& session);
 

@@ -24,6 +24,26 @@ void draw_effect_figures(const std::string& effect, const std::string& members) 
 
 }  // namespace
 
+void draw_pass_table(const pfx::host::FrameTimes& times) {
+  if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    ImGui::TableSetupColumn("effect");
+    ImGui::TableSetupColumn("pass");
+    ImGui::TableSetupColumn("ms");
+    ImGui::TableHeadersRow();
+    for (const auto& pass : times.passes) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(pass.effect.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(pass.pass.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%8.3f", pass.ms);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::Text("total %.3f ms over %zu passes", times.total_ms, times.passes.size());
+}
+
 void draw_timing_panel(ViewerSession& session, UiState& ui) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - 370, 10), ImGuiCond_FirstUseEver);
@@ -44,23 +64,7 @@ void draw_timing_panel(ViewerSession& session, UiState& ui) {
   else
     ImGui::Text("pass times: %s, %llu frame(s) ago", report.timing.c_str(),
                 static_cast<unsigned long long>(report.frame - times.frame));
-  if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-    ImGui::TableSetupColumn("effect");
-    ImGui::TableSetupColumn("pass");
-    ImGui::TableSetupColumn("ms");
-    ImGui::TableHeadersRow();
-    for (const auto& pass : times.passes) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(pass.effect.c_str());
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(pass.pass.c_str());
-      ImGui::TableNextColumn();
-      ImGui::Text("%8.3f", pass.ms);
-    }
-    ImGui::EndTable();
-  }
-  ImGui::Text("total %.3f ms over %zu passes", times.total_ms, times.passes.size());
+  draw_pass_table(times);
   ImGui::Text("peak target memory %llu bytes (%.2f MiB)", static_cast<unsigned long long>(report.peak_target_bytes),
               double(report.peak_target_bytes) / (1024.0 * 1024.0));
   ImGui::TextDisabled("without pooling %llu bytes", static_cast<unsigned long long>(report.unpooled_target_bytes));

@@ -67,6 +67,13 @@ std::string view_usage() {
       "  --shots DIR          where F12 (or SIGUSR1) writes pfx-view-NNNN.exr/.png/.json (default .)\n"
       "  -v, --verbose        also print debug messages\n"
       "\n"
+      "live control panel of an application's chain (pfx-inject --panel starts it so)\n"
+      "  --attach FILE        no picture: the chain and parameter panels edit FILE, the preset the\n"
+      "                       injected library watches (values start at the display-referred\n"
+      "                       defaults); --preset names the file \"save\" and \"load\" use\n"
+      "  --timings FILE       the per-pass times the injected library writes, shown in a panel\n"
+      "  --edit N:E.P=V       scripted (--frames): at frame N set E.P as its widget would (repeatable)\n"
+      "\n"
       "signals: SIGUSR1 takes a screenshot as F12 does; SIGINT and SIGTERM close the window cleanly.\n"
       "exit codes: 0 ok, 1 internal error (no window or no OpenGL 4.5 context), 2 usage, 3 bad input\n"
       "            file, 4 plugin or effect error (at start, or any frame of a scripted run)\n";
@@ -129,6 +136,20 @@ bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, 
     } else if (arg == "--seed") {
       if (!args.value(&text) || !parse_seed(text, &options.seed, error)) return false;
       seed_given = true;
+    } else if (arg == "--attach") {
+      if (!args.value(&options.attach)) return false;
+    } else if (arg == "--timings") {
+      if (!args.value(&options.timings)) return false;
+    } else if (arg == "--edit") {
+      std::string text;
+      if (!args.value(&text)) return false;
+      const size_t colon = text.find(':');
+      ViewOptions::Edit edit;
+      if (colon == std::string::npos || !parse_count(text.substr(0, colon), &edit.frame) || edit.frame < 1 ||
+          text.find('=', colon) == std::string::npos)
+        return args.fail("--edit " + text + ": expected FRAME:EFFECT.PARAM=VALUE");
+      edit.assignment = text.substr(colon + 1);
+      options.edits.push_back(edit);
     } else if (arg == "--frames") {
       if (!args.value(&text)) return false;
       if (!parse_count(text, &options.frames) || options.frames < 1 || options.frames > 1000000)
@@ -158,6 +179,11 @@ bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, 
   if (options.size_given && !options.window_given) options.window_width = options.width, options.window_height = options.height;
   if ((!options.screenshot.empty() || !options.window_shot.empty()) && options.frames == 0)
     return args.fail("--screenshot and --window-shot go with --frames N");
+  if (!options.attach.empty() && (inputs_given || options.size_given || !options.screenshot.empty()))
+    return args.fail("--attach shows no picture: leave out the input, --size and --screenshot");
+  if ((!options.timings.empty() || !options.edits.empty()) && options.attach.empty())
+    return args.fail("--timings and --edit go with --attach");
+  if (!options.edits.empty() && options.frames == 0) return args.fail("--edit goes with --frames N");
   *out = options;
   return true;
 }

@@ -44,6 +44,17 @@ struct ViewOptions {
   bool watch = true;            // --no-watch turns hot reload off
   bool hide_panels = false;     // --hide-panels: start with the panels hidden (Tab shows them)
   bool verbose = false;
+  // --attach FILE: the live control panel of a chain injected into an application (pfx-inject
+  // --panel): no picture of its own; every change is written to FILE, the preset the injected
+  // library watches. --timings FILE: where that library writes its per-pass times.
+  std::string attach, timings;
+  // --edit N:KEY=VALUE (scripted, with --attach and --frames): at panel frame N, set KEY as its
+  // widget would.
+  struct Edit {
+    long long frame = 0;
+    std::string assignment;
+  };
+  std::vector<Edit> edits;
 };
 
 // Parses argv (without argv[0]). False with *error for a usage error (exit code 2).

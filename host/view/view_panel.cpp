@@ -44,6 +44,8 @@ void draw_camera(ViewerSession& session, UiState& ui) {
   }
 }
 
+}  // namespace
+
 void draw_messages(const ViewerSession& session) {
   ImGui::BeginChild("messages", ImVec2(0, 110), true);
   for (const auto& message : session.messages()) {
@@ -54,8 +56,6 @@ void draw_messages(const ViewerSession& session) {
   if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);
   ImGui::EndChild();
 }
-
-}  // namespace
 
 void draw_view_panel(ViewerSession& session, UiState& ui) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;

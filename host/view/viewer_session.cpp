@@ -47,11 +47,15 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   self->registry_ = std::make_unique<pfx::host::PluginRegistry>(std::move(gl_loader), sink, "pfx-view " PFX_VERSION);
   for (const auto& message : load_plugins(*self->registry_, options.plugin_dirs))
     self->warning("plugin not loaded: " + message);
+  // Attached to an application's chain, values start where the injected library starts them: at
+  // the defaults for its display-referred frames.
+  if (!options.attach.empty()) self->params_ = pfx::host::ParamStore(pfx::host::DefaultSet::DISPLAY_REFERRED);
   for (const auto& effect : self->registry_->effects()) self->params_.add_effect(effect.desc);
 
   Preset preset;
   std::string message;
-  if (!options.preset.empty() && !read_preset(options.preset, &preset, &message)) return fail(3, message);
+  const std::string& start = options.attach.empty() ? options.preset : options.attach;
+  if (!start.empty() && !read_preset(start, &preset, &message)) return fail(3, message);
 
   self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
   self->chain_->set_timing(default_timing(renderer));
@@ -71,6 +75,13 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
     if (!note.empty()) self->info("--set " + assignment + ": " + note);
   }
 
+  self->preset_path_ = !options.save_preset.empty() ? options.save_preset
+                       : !options.preset.empty()     ? options.preset
+                                                     : "pfx-preset.json";
+  self->shots_dir_ = options.shots_dir;
+  self->set_watching(options.watch);
+  if (!options.attach.empty()) return self;  // no picture of its own
+
   bool bad_input = false;
   self->source_ = FrameSource::create(options, *self->registry_, &message, &bad_input);
   if (!self->source_) return fail(bad_input ? 3 : 1, message);
@@ -85,12 +96,6 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   self->tone_ = options.tone;
   if (preset.exposure_ev && !options.exposure_given) self->tone_.exposure_ev = *preset.exposure_ev;
   if (preset.tone && !options.tone_given) self->tone_.curve = *preset.tone;
-
-  self->preset_path_ = !options.save_preset.empty() ? options.save_preset
-                       : !options.preset.empty()     ? options.preset
-                                                     : "pfx-preset.json";
-  self->shots_dir_ = options.shots_dir;
-  self->set_watching(options.watch);
   return self;
 }
 
@@ -122,6 +127,7 @@ uint64_t ViewerSession::state_stamp(int width, int height) const {
     mix(&h, uint64_t(chain_->enabled(i)));
     mix(&h, params_.revision(chain_->instance_name(i)));
   }
+  if (!source_) return h;
   const Camera& c = source_->camera();
   for (double v : {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y,
                    c.up.z, c.fovy_radians, c.near_plane, c.far_plane})
@@ -193,6 +199,7 @@ Preset ViewerSession::current_preset() const {
   preset.chain.emplace();
   for (size_t i = 0; i < chain_->size(); ++i) preset.chain->push_back({chain_->effect_id(i), chain_->enabled(i)});
   preset.parameters_json = params_.to_json();
+  if (!source_) return preset;  // attached: the chain and its values are the whole look
   const Camera& camera = source_->camera();
   preset.camera = preset_camera_of(camera);
   if (!source_->has_scene()) preset.camera.position.reset(), preset.camera.target.reset(), preset.camera.up.reset();
@@ -223,18 +230,21 @@ bool ViewerSession::apply_preset(const Preset& preset, std::string* error) {
     *error = "parameters: " + *error;
     return false;
   }
-  Camera camera = source_->camera();
-  apply_preset_camera(preset.camera, &camera);
-  if (!source_->has_scene()) camera.position = source_->camera().position, camera.target = source_->camera().target, camera.up = source_->camera().up;
-  if (!(camera.far_plane > camera.near_plane)) {
-    *error = "camera: far must be greater than near";
-    return false;
+  Camera camera;
+  if (source_) {
+    camera = source_->camera();
+    apply_preset_camera(preset.camera, &camera);
+    if (!source_->has_scene()) camera.position = source_->camera().position, camera.target = source_->camera().target, camera.up = source_->camera().up;
+    if (!(camera.far_plane > camera.near_plane)) {
+      *error = "camera: far must be greater than near";
+      return false;
+    }
   }
   // The chain first: rebuilding it drops the values of instances it removes, which the new ones
   // then get from `values` (shaped alike, so the chain and the store agree).
   if (preset.chain && !build_chain(*preset.chain, error)) return false;
   params_ = values;
-  source_->camera() = camera;
+  if (source_) source_->camera() = camera;
   if (preset.exposure_ev) tone_.exposure_ev = *preset.exposure_ev;
   if (preset.tone) tone_.curve = *preset.tone;
   return true;

@@ -29,8 +29,10 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                     "Gaussian at a downscale; mgf: Kawase's sum of Gaussians on 1/4, 1/8 ... buffers.",
                     "", "Bloom", PFX_PARAM_ENUM, 0, MODE_COUNT - 1, 0, MODE_COUNT - 1, 1, {{MODE_CHAIN}}),
                kModeItems, MODE_COUNT),
-    threshold_param(),
-    knee_param(),
+    // On a display-referred frame: 0.6 is linear light of sRGB code 204 (80 % grey); the knee
+    // eases in from 0.4 (code 170), so the top of the range glows while mid-tones stay.
+    threshold_param(0.6),
+    knee_param(0.2),
     pfx::desc::param("strength", "Strength",
          "How much light the bloom adds: 1 spreads exactly the light above the threshold. 0 adds "
          "nothing (no pass runs, unless the gaussian mode's tone scale is not 1).",

@@ -19,28 +19,27 @@ const pfx_enum_item kNonfiniteItems[] = {
 // and knee stop at the half-float maximum: no stored colour is brighter than that.
 //
 // Display-referred frames (8-bit video, a back buffer) hold nothing above 1.0, so the scene-linear
-// threshold of diffuse white would never be passed there. Their defaults let the top of the range
-// glow: 0.6 is linear light of sRGB code 204 (80 % grey), and the knee of 0.2 eases in from code
-// 170 (0.4), so highlights, skies and light text spread while mid-tones and skin stay as they are.
-// docs/effects/bloom.md gives the same account to users.
-pfx_param_desc threshold_param() {
+// threshold of diffuse white would never be passed there: each effect gives its own start for such
+// frames (bloom lets the top of the range glow, glare only near-white highlights). docs/effects/
+// bloom.md says how they were chosen, with the shares of pixels they reach in real frames.
+pfx_param_desc threshold_param(double display_default) {
   return pfx::desc::with_display_default(
       pfx::desc::param("threshold", "Threshold",
                        "Brightness above which light spreads. Scene-linear: 1 is the brightness of diffuse white. "
                        "On display-referred frames (8-bit video, an application's window), where nothing passes "
-                       "1, it starts at 0.6.",
+                       "1, it starts lower (the effect's documentation says where).",
                        "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 8, 0.05, {{1.0}}),
-      {{0.6}});
+      {{display_default}});
 }
 
-pfx_param_desc knee_param() {
+pfx_param_desc knee_param(double display_default) {
   return pfx::desc::with_display_default(
       pfx::desc::param("knee", "Knee",
                        "Width of the soft transition around the threshold: brightness from threshold - knee to "
                        "threshold + knee spreads gradually (quadratic). 0 is the seeds' hard threshold; the knee "
-                       "is never wider than the threshold. On display-referred frames it starts at 0.2.",
+                       "is never wider than the threshold. On display-referred frames it starts wider than 0.",
                        "", "Bright pass", PFX_PARAM_FLOAT, 0, kHalfMax, 0, 2, 0.05, {{0.0}}),
-      {{0.2}});
+      {{display_default}});
 }
 
 pfx_param_desc measure_param(const char* tooltip) {

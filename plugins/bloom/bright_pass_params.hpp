@@ -7,8 +7,9 @@
 
 namespace pfx_bloom {
 
-pfx_param_desc threshold_param();
-pfx_param_desc knee_param();
+// display_default: the value display-referred frames start from (pfx_param_desc.display_default).
+pfx_param_desc threshold_param(double display_default);
+pfx_param_desc knee_param(double display_default);
 // tooltip: the effect's own (which modes use the measure differs).
 pfx_param_desc measure_param(const char* tooltip);
 pfx_param_desc firefly_clamp_param();

@@ -18,8 +18,11 @@ const pfx_enum_item kResolutionItems[] = {
 }  // namespace
 
 const pfx_param_desc kGlareParams[GLARE_PARAM_COUNT] = {
-    threshold_param(),
-    knee_param(),
+    // On a display-referred frame streaks come only from near-white highlights: 0.85 is linear
+    // light of sRGB code 237, eased in from 0.75 (code 225). Bloom's 0.6 there would put a star on
+    // every lit surface.
+    threshold_param(0.85),
+    knee_param(0.1),
     measure_param("How a pixel's brightness is measured against the threshold: the largest of R, G, B or "
                   "Rec. 709 luminance."),
     firefly_clamp_param(),

@@ -41,12 +41,18 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
         "Distance from the lens to the plane in perfect focus, in metres along the view axis. Ignored while "
         "autofocus is on. 'inf' focuses at infinity (clamped to 1e9 m, which is the same to within 1e-6 px).",
         "m", "Camera", PFX_PARAM_FLOAT, kMinFocusDistance, kMaxFocusDistance, 0.1, 100, 0.01, {{10.0}})),
-    pfx::desc::with_items(
-        pfx::desc::param("autofocus", "Autofocus",
-                         "point: focus at the depth found under the focus point each frame (the sky focuses at "
-                         "infinity). off: use the focus distance.",
-                         "", "Camera", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{AUTOFOCUS_OFF}}),
-        kAutofocusItems, 2),
+    // A display-referred frame comes from a program whose camera the host does not know (an
+    // application's window, a video), so a focus distance in metres means nothing there: such
+    // frames start focused on whatever is under the focus point, the centre of the picture.
+    pfx::desc::with_display_default(
+        pfx::desc::with_items(
+            pfx::desc::param("autofocus", "Autofocus",
+                             "point: focus at the depth found under the focus point each frame (the sky focuses "
+                             "at infinity). off: use the focus distance. On display-referred frames (an "
+                             "application's window, a video), whose camera is unknown, it starts at point.",
+                             "", "Camera", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{AUTOFOCUS_OFF}}),
+            kAutofocusItems, 2),
+        {{AUTOFOCUS_POINT}}),
     pfx::desc::param("focus_point", "Focus point",
                      "Where autofocus reads the depth: 0..1 across the frame from the top-left corner "
                      "(0.5, 0.5 is the centre).",

@@ -54,11 +54,15 @@ InjectRun run_injected(const ScratchFolder& folder, const std::string& name, con
   argv.insert(argv.end(), app_args.begin(), app_args.end());
   InjectRun run;
   run.result = run_program(argv, 120);
-  std::ifstream file(log);
+  run.log = read_text_file(log);
+  return run;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream file(path);
   std::stringstream text;
   text << file.rdbuf();
-  run.log = text.str();
-  return run;
+  return text.str();
 }
 
 std::string plugin_folder_with(const ScratchFolder& folder, const std::string& plugin) {

@@ -39,6 +39,8 @@ std::string plugin_folder_with(const ScratchFolder& folder, const std::string& p
 // glmark2 at a small window size, one scene.
 std::vector<std::string> glmark2_scene(const std::string& scene);
 
+// The whole file as text; empty when it cannot be read.
+std::string read_text_file(const std::string& path);
 app::Image read_exr_file(const std::string& path);
 app::DisplayImage read_png_file(const std::string& path);
 // Exactly equal pixels (bit for bit, NaN included) and sizes.

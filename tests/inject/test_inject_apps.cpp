@@ -84,15 +84,18 @@ TEST_CASE("a captured frame run through pfx-render gives the injector's output, 
   CHECK(difference.mean >= 1.0);
 }
 
-TEST_CASE("glmark2-es2's OpenGL ES context passes through with one log line and the application runs on") {
+TEST_CASE("glmark2-es2's OpenGL ES context passes through with one log line, says its capture is not written, and the application runs on") {
   ScratchFolder folder("es2");
-  const InjectRun run = run_injected(folder, "es2", {"--chain", "bloom", "--quit-after", "5"},
+  const InjectRun run = run_injected(folder, "es2", {"--chain", "bloom", "--quit-after", "5", "--capture", "3:" + folder.file("shot")},
                                      {PFX_GLMARK2_ES2, "-s", "96x64", "-b", "shading"}, false);
   INFO(run.result.output << run.log);
   CHECK(run.result.exit_code == 0);
   CHECK(run.log.find("hooked eglSwapBuffers") != std::string::npos);
   CHECK(run.log.find("an OpenGL ES context: pfx needs desktop OpenGL 4.5; its frames pass through untouched") !=
         std::string::npos);
+  // A capture asked for there is said not to be written, with the reason.
+  CHECK(run.log.find("frame 3: capture " + folder.file("shot") +
+                     " not written: its context's frames pass through (an OpenGL ES context") != std::string::npos);
   CHECK(run.log.find("quitting after 5 presented frames") != std::string::npos);
 }
 

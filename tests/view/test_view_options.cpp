@@ -57,3 +57,26 @@ TEST_CASE("pfx-view usage errors name the option", "[view][options][errors]") {
   CHECK(usage_error({"--camera", "near=0"}) == "--camera: near must be a positive finite distance");
   CHECK(usage_error({"--preset"}) == "--preset needs a value");
 }
+
+TEST_CASE("pfx-view --attach: the panel of an injected chain, scripted edits, and what does not go with it",
+          "[view][options]") {
+  pfx::app::ViewOptions options;
+  std::string error;
+  REQUIRE(pfx::app::parse_view_options({"--attach", "s.json", "--timings", "t.json", "--frames", "9", "--edit",
+                                        "3:bloom.strength=2", "--edit", "4:bloom#2.tint=1,0.5,0"},
+                                       &options, &error));
+  CHECK(options.attach == "s.json");
+  CHECK(options.timings == "t.json");
+  REQUIRE(options.edits.size() == 2);
+  CHECK(options.edits[0].frame == 3);
+  CHECK(options.edits[0].assignment == "bloom.strength=2");
+  CHECK(options.edits[1].assignment == "bloom#2.tint=1,0.5,0");
+  CHECK(usage_error({"--attach", "s.json", "--demo-image"}) ==
+        "--attach shows no picture: leave out the input, --size and --screenshot");
+  CHECK(usage_error({"--timings", "t.json"}) == "--timings and --edit go with --attach");
+  CHECK(usage_error({"--attach", "s.json", "--edit", "3:bloom.strength=2"}) == "--edit goes with --frames N");
+  CHECK(usage_error({"--attach", "s.json", "--frames", "5", "--edit", "bloom.strength=2"}) ==
+        "--edit bloom.strength=2: expected FRAME:EFFECT.PARAM=VALUE");
+  CHECK(usage_error({"--attach", "s.json", "--frames", "5", "--edit", "0:bloom.strength=2"}) ==
+        "--edit 0:bloom.strength=2: expected FRAME:EFFECT.PARAM=VALUE");
+}

@@ -200,6 +200,36 @@ bool Chain::refresh(std::vector<std::string>* dropped, std::string* error) {
   return true;
 }
 
+bool Chain::declare(const Instance& instance, const pfx_frame& frame, Declaration* out, std::string* error) const {
+  const std::string& id = instance.name;
+  pfx_declaration raw{};
+  raw.struct_size = sizeof raw;
+  const pfx_value* values = params_.values(instance.info.desc->id, instance.number);
+  if (!values) {
+    // The store was changed behind the chain (set_instance_count, remove_effect, assignment).
+    *error = "effect '" + id + "': the parameter store has no values for it";
+    return false;
+  }
+  pfx_status status = instance.info.desc->declare(instance.handle, &frame, values, &raw);
+  if (status != PFX_OK) {
+    *error = "effect '" + id + "': declare failed (status " + std::to_string(status) + ")";
+    return false;
+  }
+  std::string message;
+  if (!copy_declaration(raw, frame.width, frame.height, out, &message)) {
+    *error = "effect '" + id + "': " + message;
+    return false;
+  }
+  return true;
+}
+
+bool Chain::inputs_needed(size_t index, const pfx_frame& frame, uint32_t* inputs, std::string* error) const {
+  Declaration declaration;
+  if (!declare(*instances_.at(index), frame, &declaration, error)) return false;
+  *inputs = declared_frame_inputs(declaration);
+  return true;
+}
+
 bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error) {
   report_.effects_skipped.clear();
   report_.effects_run.clear();
@@ -211,25 +241,8 @@ bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::s
       continue;
     }
     // declare is cheap by contract, so it runs every frame; only a changed answer re-plans.
-    pfx_declaration raw{};
-    raw.struct_size = sizeof raw;
-    const pfx_value* values = params_.values(instance.info.desc->id, instance.number);
-    if (!values) {
-      // The store was changed behind the chain (set_instance_count, remove_effect, assignment).
-      *error = "effect '" + id + "': the parameter store has no values for it";
-      return false;
-    }
-    pfx_status status = instance.info.desc->declare(instance.handle, &frame, values, &raw);
-    if (status != PFX_OK) {
-      *error = "effect '" + id + "': declare failed (status " + std::to_string(status) + ")";
-      return false;
-    }
     Declaration declaration;
-    std::string message;
-    if (!copy_declaration(raw, frame.width, frame.height, &declaration, &message)) {
-      *error = "effect '" + id + "': " + message;
-      return false;
-    }
+    if (!declare(instance, frame, &declaration, error)) return false;
     if (!instance.has_declaration || !(declaration == instance.declaration)) {
       instance.declaration = std::move(declaration);
       instance.has_declaration = true;
@@ -306,8 +319,9 @@ bool Chain::execute(const pfx_frame& frame, const FrameTextures& textures, uint3
     return false;
   }
 
-  // The state every pass starts from (docs/sdk.md §1.5), and the engine's back on every return.
-  GlStateScope state_scope(gl_->limits);
+  // The state every pass starts from (docs/sdk.md §1.5), and the engine's back on every return,
+  // unless a GlStateGuard of the host saved it already and will put it back.
+  GlStateScope state_scope(gl_->limits, guards_ > 0 ? GlStateScope::SET_ONLY : GlStateScope::SAVE);
 
   auto frame_input_texture = [&](const std::string& name) -> GLuint {
     if (name == PFX_INPUT_NAME_COLOR) return textures.color;

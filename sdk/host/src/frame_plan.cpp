@@ -29,7 +29,14 @@ const FrameInputName* find_frame_input(const std::string& name) {
   return nullptr;
 }
 
-std::string input_names(uint32_t bits) {
+uint32_t resolve_size(float scale, uint32_t frame) {
+  double size = std::round(double(frame) * double(scale));
+  return size < 1 ? 1u : static_cast<uint32_t>(size);
+}
+
+}  // namespace
+
+std::string frame_input_names(uint32_t bits) {
   std::string names;
   const char* all[] = {"color", "depth", "normal", "albedo", "emissive", "lights"};
   for (int i = 0; i < 6; ++i)
@@ -37,12 +44,13 @@ std::string input_names(uint32_t bits) {
   return names;
 }
 
-uint32_t resolve_size(float scale, uint32_t frame) {
-  double size = std::round(double(frame) * double(scale));
-  return size < 1 ? 1u : static_cast<uint32_t>(size);
+uint32_t declared_frame_inputs(const Declaration& declaration) {
+  uint32_t bits = declaration.inputs;
+  for (const auto& pass : declaration.passes)
+    for (const auto& input : pass.inputs)
+      if (const FrameInputName* frame_input = find_frame_input(input.name)) bits |= frame_input->bit;
+  return bits;
 }
-
-}  // namespace
 
 uint64_t format_bytes_per_pixel(pfx_format format) {
   switch (format) {
@@ -166,7 +174,7 @@ bool plan_frame(const std::vector<PlanInput>& effects, uint32_t frame_width, uin
     const bool last_effect = e + 1 == effects.size();
     if (decl.passes.empty()) return fail(effect_label + ": planned with no passes");
     uint32_t missing = decl.inputs & ~available_inputs;
-    if (missing) return fail(effect_label + " needs " + input_names(missing) + ", which this frame does not provide");
+    if (missing) return fail(effect_label + " needs " + frame_input_names(missing) + ", which this frame does not provide");
 
     // Name -> resource for this effect: its targets, created when first written.
     std::map<std::string, int> local;

@@ -154,13 +154,16 @@ GlLimits GlLimits::query() {
   return limits;
 }
 
-GlStateScope::GlStateScope(const GlLimits& limits) : limits_(limits) {
-  save();
+GlStateScope::GlStateScope(const GlLimits& limits, Mode mode) : limits_(limits), mode_(mode) {
+  if (mode_ == SAVE) save();
   set_chain_state();
-  if (limits_.compatibility_profile) legacy_ = std::make_unique<LegacyStateScope>(true);
+  // The fixed-function items are only saved and turned off; a host holding a guard has them off.
+  if (mode_ == SAVE && limits_.compatibility_profile) legacy_ = std::make_unique<LegacyStateScope>(true);
 }
 
-GlStateScope::~GlStateScope() { restore(); }
+GlStateScope::~GlStateScope() {
+  if (mode_ == SAVE) restore();
+}
 
 void GlStateScope::save() {
   for (const Capability& c : kCapabilities) enables_.push_back(glIsEnabled(c.cap));

@@ -65,7 +65,11 @@ class GlBindings {
 // Raster, per-fragment and pixel-store state, and the bindings, for the life of one render().
 class GlStateScope {
  public:
-  explicit GlStateScope(const GlLimits& limits);
+  // SAVE: save the engine's values, set the chain's, put the engine's back at the end.
+  // SET_ONLY: set the chain's values and nothing else, for a render() inside a GlStateGuard,
+  // which saved the engine's values already and puts them back itself.
+  enum Mode { SAVE, SET_ONLY };
+  explicit GlStateScope(const GlLimits& limits, Mode mode = SAVE);
   ~GlStateScope();
   GlStateScope(const GlStateScope&) = delete;
   GlStateScope& operator=(const GlStateScope&) = delete;
@@ -76,6 +80,7 @@ class GlStateScope {
   void restore() const;
 
   const GlLimits& limits_;
+  Mode mode_;
   std::vector<GLboolean> enables_;            // per capability in the fixed list
   std::vector<GLboolean> clip_distances_;
   std::vector<GLboolean> blend_enabled_, scissor_enabled_;

@@ -106,6 +106,14 @@ class PFX_HOST_API Chain {
   // fails the old ones stay and *error names the effect. The old version must still be loaded.
   bool refresh(std::vector<std::string>* dropped, std::string* error);
 
+  // The PFX_INPUT_* bits the instance at `index` needs with its current values over a frame like
+  // `frame` (give it the inputs the host has: an effect may adapt to them): what its declaration
+  // names, beside the textures its passes read (a declaration without passes may still name
+  // inputs). Enabled or not. For a host that cannot give every input (pfx-inject has no normals
+  // or lights) to leave out the effects that need them instead of failing the frame. False with
+  // *error when declare fails.
+  bool inputs_needed(size_t index, const pfx_frame& frame, uint32_t* inputs, std::string* error) const;
+
   // Changing the scheme drops the times of frames still in flight.
   void set_timing(Timing timing);
   Timing timing() const { return timing_; }
@@ -132,12 +140,13 @@ class PFX_HOST_API Chain {
   const FramePlan& plan() const { return plan_; }
 
  private:
-  friend class GlStateGuard;  // saves state with the limits the chain queried
+  friend class GlStateGuard;  // saves state with the limits the chain queried, and counts itself
   struct Instance;
   struct GlResources;
   // The implementation limits queried when the chain was made; null without GL.
   const GlLimits* gl_limits() const;
   void renumber();
+  bool declare(const Instance& instance, const pfx_frame& frame, Declaration* out, std::string* error) const;
   bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
   bool execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
                const std::vector<int>& active, std::string* error);
@@ -156,6 +165,9 @@ class PFX_HOST_API Chain {
   FrameTimes times_;                // the newest complete times, kept across frames
   FrameReport report_;
   PassHook pass_hook_;
+  // GlStateGuards of this chain alive now: while there is one, render() leaves saving the
+  // engine's state to it.
+  mutable int guards_ = 0;
 };
 
 }  // namespace pfx::host

@@ -45,6 +45,10 @@ struct Declaration {
 PFX_HOST_API bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t frame_height,
                                    Declaration* out, std::string* error);
 PFX_HOST_API bool operator==(const Declaration& a, const Declaration& b);
+// The PFX_INPUT_* bits a declaration needs: its `inputs` and each frame input a pass reads.
+PFX_HOST_API uint32_t declared_frame_inputs(const Declaration& declaration);
+// "normal, albedo, lights": the names of PFX_INPUT_* bits, for messages.
+PFX_HOST_API std::string frame_input_names(uint32_t bits);
 PFX_HOST_API uint64_t format_bytes_per_pixel(pfx_format format);
 
 // What a pass reads or writes, after planning.

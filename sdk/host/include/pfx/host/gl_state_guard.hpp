@@ -3,6 +3,11 @@
 // and restores (docs/sdk.md §1.5) is saved and set to the chain's starting values; the destructor
 // puts the saved values back. The host's own copy passes then start from known state and leave
 // the application's as they found it. On the GL thread, with the chain's context current.
+//
+// The state is saved once: while a guard of the chain lives, render() only sets the chain's
+// starting values again (the host's passes may have moved bindings) and leaves its own state
+// behind when it returns; the guard puts the engine's values back when it ends. The chain must
+// outlive its guards.
 #pragma once
 
 #include <memory>
@@ -23,6 +28,7 @@ class PFX_HOST_API GlStateGuard {
   GlStateGuard& operator=(const GlStateGuard&) = delete;
 
  private:
+  const Chain& chain_;
   std::unique_ptr<GlStateScope> scope_;
 };
 
