@@ -173,8 +173,6 @@ std::string resolve_path(const std::string& directory, std::string path) {
   return (std::filesystem::path(directory) / p).lexically_normal().string();
 }
 
-// ---- Stage 4 of an import (obj_stages.hpp): the file's mtllib lines read, its usemtl names resolved.
-
 namespace {
 
 // Cuts "a.mtl b.mtl" into files; a name with blanks ("my materials.mtl") is taken whole when a
@@ -214,18 +212,21 @@ void read_libraries(const LocalMessage& library, const std::string& directory, M
 
 }  // namespace
 
+// Stage 4 of an import (obj_stages.hpp).
 MaterialTable load_materials(const FileStatements& statements, const std::string& directory) {
   MaterialTable table;
   // Every library first, in file order: a usemtl may come before its mtllib.
   for (const LocalMessage& library : statements.material_libraries) read_libraries(library, directory, &table);
   // Each usemtl name's material; an unknown name gets a default material of that name.
   std::unordered_map<std::string, uint32_t> by_name;
-  for (size_t i = 0; i < table.materials.size(); ++i) by_name.emplace(table.materials[i].name, static_cast<uint32_t>(i));
+  for (size_t i = 0; i < table.materials.size(); ++i)
+    by_name.emplace(table.materials[i].name, static_cast<uint32_t>(i));
   for (const LocalMessage& name : statements.material_names) {
     const auto [it, fresh] = by_name.emplace(name.text, static_cast<uint32_t>(table.materials.size()));
     if (fresh) {
       table.materials.push_back(Material{name.text});
-      table.warnings.push_back({name.line, "usemtl " + name.text + ": no material of that name in the material libraries (defaults used)"});
+      table.warnings.push_back(
+          {name.line, "usemtl " + name.text + ": no material of that name in the material libraries (defaults used)"});
     }
     table.of_name.push_back(it->second);
   }

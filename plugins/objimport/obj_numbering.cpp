@@ -22,30 +22,29 @@ uint64_t room_for(uint64_t most, size_t element_bytes) {
   return pages > 0 && page > 0 && most * element_bytes <= uint64_t(pages) * uint64_t(page) / 8 ? most : 0;
 }
 
-// Polygons of vertex numbers cut into triangles by ear clipping (obj_triangulate.hpp), with a
-// warning for each one that had to be cut as a fan.
-class PolygonCutter {
+// A polygon to cut into triangles by ear clipping (obj_triangulate.hpp): its corners' vertex
+// numbers and positions; the memory is reused from one polygon to the next.
+class Polygon {
  public:
-  // Polygon `ids` (n vertex numbers, their positions at `corners`) as n - 2 triangles from `out`
-  // on. Returns the end of what it wrote.
-  uint32_t* cut(const uint32_t* ids, const float* const* corners, uint32_t n, uint64_t line, uint32_t* out,
-                std::vector<LocalMessage>* warnings) {
+  std::vector<uint32_t> ids;
+  std::vector<const float*> corners;
+  // Its n - 2 triangles, as vertex numbers, from `out` on, with a warning at `line` when it had to
+  // be cut as a fan. Returns the end of what it wrote.
+  uint32_t* cut(uint64_t line, uint32_t* out, std::vector<LocalMessage>* warnings) {
+    const uint32_t n = static_cast<uint32_t>(ids.size());
     clipped_.clear();
-    const Triangulation how = triangulate_polygon(corners, n, &clipped_, &scratch_);
+    const Triangulation how = triangulate_polygon(corners.data(), n, &clipped_, &scratch_);
     for (uint32_t k : clipped_) *out++ = ids[k];
-    if (how != Triangulation::kEarClipped) warnings->push_back({line, fan_warning(how, n)});
+    if (how == Triangulation::kEarClipped) return out;
+    const char* why = how == Triangulation::kFanDegenerate ? "has no area"
+                      : how == Triangulation::kFanTooLarge ? "is too large for ear clipping (over 4096 corners)"
+                                                           : "is self-intersecting";
+    warnings->push_back({line, "f: polygon of " + std::to_string(n) + " corners " + why + ": triangulated as a fan"});
     return out;
   }
 
  private:
-  static std::string fan_warning(Triangulation how, uint32_t n) {
-    const char* why = how == Triangulation::kFanDegenerate  ? "has no area"
-                      : how == Triangulation::kFanTooLarge ? "is too large for ear clipping (over 4096 corners)"
-                                                           : "is self-intersecting";
-    return "f: polygon of " + std::to_string(n) + " corners " + why + ": triangulated as a fan";
-  }
-
-  std::vector<uint32_t> clipped_;  // a polygon's triangles as corner numbers
+  std::vector<uint32_t> clipped_;  // its triangles as corner numbers
   TriangulationScratch scratch_;
 };
 
@@ -62,45 +61,14 @@ void swap_arrays(ChunkData* a, ChunkData* b) {
 // back once numbered, so later chunks reuse pages already written instead of fresh ones.
 class ChunkNumberer {
  public:
-  ChunkNumberer(const std::vector<std::string_view>& texts, const NumberingInput& input)
-      : texts_(texts), input_(input), text_bytes_(texts.back().data() + texts.back().size() - texts.front().data()) {
-    reserve();
-  }
-
-  NumberedFile run() {
-    const size_t count = texts_.size();
-    read_.resize(count);
-    out_.chunks.resize(count);
-    size_t largest = 0;
-    for (std::string_view text : texts_) largest = std::max(largest, text.size());
-    const size_t window = input_.threads;  // chunks between reading and numbering: one per worker
-    std::vector<ChunkData> slots(window);  // only their arrays are used
-    const std::thread::id caller = std::this_thread::get_id();
-    uint64_t bytes_numbered = 0;  // (one in-order job at a time)
-    auto read = [&](size_t c, unsigned) {
-      swap_arrays(&read_[c], &slots[c % window]);
-      parse_chunk(texts_[c], c == 0, &read_[c], largest);
-      if (input_.file) input_.file->drop_pages(texts_[c]);
-    };
-    auto number = [&](size_t c) {
-      number_chunk(c);
-      swap_arrays(&read_[c], &slots[c % window]);
-      read_[c] = ChunkData{};
-      bytes_numbered += texts_[c].size();
-      if (input_.numbered && text_bytes_ > 0 && std::this_thread::get_id() == caller)
-        input_.numbered(double(bytes_numbered) / double(text_bytes_));
-    };
-    run_ordered_jobs(input_.pool, input_.threads, count, window, read, number);
-    out_.keys = std::move(numbering_.keys());
-    return std::move(out_);
-  }
-
- private:
-  // Room, in address space only (obj_buffer.hpp), for the most the text can hold ("v 0 0 0",
-  // "vt 0", "vn 0 0 0") and for what files hold: a vertex per position, a triangle index per byte
-  // (a quad "f 1 2 3 4" holds 0.6). Past that (vertices split by seams, polygons of many short
-  // corners) an array grows by copying.
-  void reserve() {
+  ChunkNumberer(const std::vector<std::string_view>& texts, const ImportContext& context,
+                const std::function<void(double)>& numbered)
+      : texts_(texts), context_(context), numbered_(numbered),
+        text_bytes_(texts.back().data() + texts.back().size() - texts.front().data()) {
+    // Room, in address space only (obj_buffer.hpp), for the most the text can hold ("v 0 0 0",
+    // "vt 0", "vn 0 0 0") and for what files hold: a vertex per position, a triangle index per
+    // byte (a quad "f 1 2 3 4" holds 0.6). Past that (vertices split by seams, polygons of many
+    // short corners) an array grows by copying.
     FileVertices& vertices = out_.vertices;
     vertices.positions.reserve(room_for(3 * (text_bytes_ / 8 + 1), sizeof(float)));
     vertices.texcoords.reserve(room_for(2 * (text_bytes_ / 5 + 1), sizeof(float)));
@@ -109,25 +77,45 @@ class ChunkNumberer {
     numbering_.reserve(room_for(text_bytes_ / 8 + 1, sizeof(VertexKey) + 4), room_for(text_bytes_ / 8 + 1, 4));
   }
 
-  // Chunk c, read, after every chunk before it: where it ends, its statements and vertex data
-  // added to the file's, and its faces numbered into triangles. Throws at a chunk that failed to
-  // read, and past the limits on elements and triangles.
+  NumberedFile run() {
+    const size_t count = texts_.size();
+    read_.resize(count);
+    out_.chunks.resize(count);
+    size_t largest = 0;
+    for (std::string_view text : texts_) largest = std::max(largest, text.size());
+    const size_t window = context_.threads;  // chunks between reading and numbering: one per worker
+    std::vector<ChunkData> slots(window);  // only their arrays are used
+    const std::thread::id caller = std::this_thread::get_id();
+    uint64_t bytes_numbered = 0;  // (one in-order job at a time)
+    auto read = [&](size_t c, unsigned) {
+      swap_arrays(&read_[c], &slots[c % window]);
+      parse_chunk(texts_[c], c == 0, &read_[c], largest);
+      if (context_.file) context_.file->drop_pages(texts_[c]);
+    };
+    auto number = [&](size_t c) {
+      number_chunk(c);
+      swap_arrays(&read_[c], &slots[c % window]);
+      read_[c] = ChunkData{};
+      bytes_numbered += texts_[c].size();
+      if (numbered_ && text_bytes_ > 0 && std::this_thread::get_id() == caller)
+        numbered_(double(bytes_numbered) / double(text_bytes_));
+    };
+    run_ordered_jobs(context_.pool, context_.threads, count, window, read, number);
+    out_.keys = numbering_.take_keys();
+    return std::move(out_);
+  }
+
+ private:
+  // Chunk c, read, after every chunk before it: its statements and vertex data added to the
+  // file's, and its faces numbered into triangles. Throws at a chunk that failed to read.
   void number_chunk(size_t c) {
     const ChunkData& chunk = read_[c];
     NumberedChunk& numbered = out_.chunks[c];
     if (c > 0) numbered.start = out_.chunks[c - 1].end;
     const FileSoFar& start = numbered.start;
-    if (!chunk.error.text.empty()) throw ImportError(input_.name, start.line + chunk.error.line, chunk.error.text);
-    FileSoFar& end = numbered.end;
-    const uint64_t totals[4] = {start.bases[0] + chunk.positions.size() / 3, start.bases[1] + chunk.texcoords.size() / 2,
-                                start.bases[2] + chunk.normals.size() / 3, start.faces + chunk.faces.size()};
-    if (*std::max_element(totals, totals + 4) > uint64_t(kMaxWrittenIndex))
-      throw ImportError(input_.name, "more than 2^31 - 1 elements of one kind (v, vt, vn or f): too large");
-    std::copy(totals, totals + 3, end.bases);
-    end.line = start.line + chunk.line_ends;
-    end.faces = totals[3];
-    end.triangles = start.triangles + chunk.triangles;
-    if (3 * end.triangles > kNoIndex) throw ImportError(input_.name, "more than 2^32 - 1 triangle indices");
+    if (!chunk.error.text.empty())
+      throw ImportError(at_line(context_.name, start.line + chunk.error.line, chunk.error.text));
+    const FileSoFar& end = numbered.end = end_of(chunk, start);
     std::copy(chunk.max_index, chunk.max_index + 3, numbered.max_index);
     collect_statements(&read_[c], &numbered);
     append_vertex_data(chunk, start);
@@ -145,6 +133,24 @@ class ChunkNumberer {
     any_suspect_ = numbered.suspect;
   }
 
+  // Where the chunk ends: its start and what it holds (the state in force: as at its start, until
+  // collect_statements). Throws past the limits on elements and triangles.
+  FileSoFar end_of(const ChunkData& chunk, const FileSoFar& start) const {
+    FileSoFar end = start;
+    const uint64_t totals[4] = {start.bases[0] + chunk.positions.size() / 3,  // v
+                                start.bases[1] + chunk.texcoords.size() / 2,  // vt
+                                start.bases[2] + chunk.normals.size() / 3,    // vn
+                                start.faces + chunk.faces.size()};
+    if (*std::max_element(totals, totals + 4) > uint64_t(kMaxWrittenIndex))
+      throw ImportError(context_.name + ": more than 2^31 - 1 elements of one kind (v, vt, vn or f): too large");
+    std::copy(totals, totals + 3, end.bases);
+    end.line = start.line + chunk.line_ends;
+    end.faces = totals[3];
+    end.triangles = start.triangles + chunk.triangles;
+    if (3 * end.triangles > kNoIndex) throw ImportError(context_.name + ": more than 2^32 - 1 triangle indices");
+    return end;
+  }
+
   // The chunk's statements that make no geometry: the state in force after it, its usemtl names
   // (each change's value made an index into the file's), material libraries and skipped statements.
   void collect_statements(ChunkData* chunk, NumberedChunk* numbered) {
@@ -157,8 +163,6 @@ class ChunkNumberer {
       file_names.push_back(it->second);
     }
     numbered->changes = std::move(chunk->changes);
-    numbered->end.material = numbered->start.material;
-    numbered->end.smoothing = numbered->start.smoothing;
     for (StateChange& change : numbered->changes) {
       if (change.kind == StateChange::kMaterial) {
         change.value = file_names[change.value];
@@ -200,7 +204,7 @@ class ChunkNumberer {
     const uint32_t positions_read = numbered.end.bases[0];
     uint64_t field = 0;
     // A face's n corners from `field` on, relative indices made final, each numbered into ids. For
-    // a polygon, corners_ gets their positions while each is read so far (*all_read: all were).
+    // a polygon, polygon_.corners gets their positions while each is read so far (*all_read: all were).
     auto number_corners = [&](uint32_t n, uint32_t group, uint32_t* ids, bool* all_read) {
       for (uint32_t k = 0; k < n; ++k) {
         uint32_t index[3];
@@ -214,7 +218,7 @@ class ChunkNumberer {
         ids[k] = numbering_.find_or_insert({index[0], index[1], index[2], index[2] == kNoIndex ? group : 0});
         if (n == 3) continue;
         *all_read = *all_read && index[0] < positions_read;
-        if (*all_read) corners_[k] = &out_.vertices.positions[3 * size_t{index[0]}];
+        if (*all_read) polygon_.corners[k] = &out_.vertices.positions[3 * size_t{index[0]}];
       }
       return true;
     };
@@ -233,35 +237,31 @@ class ChunkNumberer {
         out += 3;
         continue;
       }
-      polygon_.resize(n);
-      corners_.resize(n);
-      if (!number_corners(n, group, polygon_.data(), &all_read)) return false;
+      polygon_.ids.resize(n);
+      polygon_.corners.resize(n);
+      if (!number_corners(n, group, polygon_.ids.data(), &all_read)) return false;
       const uint64_t line = start.line + chunk.faces[f].line;
       if (all_read) {
-        out = cutter_.cut(polygon_.data(), corners_.data(), n, line, out, &out_.warnings);
+        out = polygon_.cut(line, out, &out_.warnings);
         continue;
       }
       out_.deferred.push_back({static_cast<uint64_t>(out - out_.triangles.data()), n, line});
-      for (uint32_t k = 1; k + 1 < n; ++k) {  // a fan from the first corner
-        *out++ = polygon_[0];
-        *out++ = polygon_[k];
-        *out++ = polygon_[k + 1];
-      }
+      for (uint32_t k = 1; k + 1 < n; ++k)  // a fan from the first corner
+        for (uint32_t corner : {0u, k, k + 1}) *out++ = polygon_.ids[corner];
     }
     return true;
   }
 
   const std::vector<std::string_view>& texts_;
-  const NumberingInput& input_;
+  const ImportContext& context_;
+  const std::function<void(double)>& numbered_;
   const uint64_t text_bytes_;
   std::vector<ChunkData> read_;  // per chunk: as read, until numbered
   NumberedFile out_;
   VertexNumbering numbering_;
   std::unordered_map<std::string, uint32_t> name_index_;  // usemtl name -> index into material_names
   bool any_suspect_ = false;     // a chunk so far may hold a bad index: none after it is numbered
-  std::vector<uint32_t> polygon_;      // a polygon's vertex numbers
-  std::vector<const float*> corners_;  // its positions
-  PolygonCutter cutter_;
+  Polygon polygon_;
 };
 
 // The message for a corner's index that is outside the file's `total` of its kind.
@@ -274,11 +274,12 @@ std::string bad_index_reason(int kind, int64_t one_based, uint32_t total) {
 
 }  // namespace
 
-NumberedFile number_chunks(const std::vector<std::string_view>& texts, const NumberingInput& input) {
-  return ChunkNumberer(texts, input).run();
+NumberedFile number_chunks(const std::vector<std::string_view>& texts, const ImportContext& context,
+                           const std::function<void(double)>& numbered) {
+  return ChunkNumberer(texts, context, numbered).run();
 }
 
-void check_indices(const std::vector<std::string_view>& texts, const NumberedFile& file, const std::string& name) {
+void check_indices(const std::vector<std::string_view>& texts, const NumberedFile& file, const ImportContext& context) {
   const uint32_t* totals = file.totals().bases;
   for (size_t c = 0; c < file.chunks.size(); ++c) {
     const NumberedChunk& numbered = file.chunks[c];
@@ -288,33 +289,32 @@ void check_indices(const std::vector<std::string_view>& texts, const NumberedFil
     ChunkData chunk;
     parse_chunk(texts[c], c == 0, &chunk);
     uint64_t field = 0;
-    for (const Face& face : chunk.faces) {
+    for (const Face& face : chunk.faces)
       for (uint32_t j = 0; j < 3 * face.corner_count; ++j, ++field) {
         const int kind = static_cast<int>(field % 3);
         const bool relative = chunk.is_relative(field);
-        if (!relative && chunk.corners[field] == kNoIndex) continue;
-        const int64_t one_based = relative ? int64_t{numbered.start.bases[kind]} + static_cast<int32_t>(chunk.corners[field])
-                                           : int64_t{chunk.corners[field]} + 1;
-        if (one_based < 1 || one_based > totals[kind])
-          throw ImportError(name, numbered.start.line + face.line, bad_index_reason(kind, one_based, totals[kind]));
+        const uint32_t written = chunk.corners[field];
+        if (!relative && written == kNoIndex) continue;
+        const int64_t one_based =
+            relative ? int64_t{numbered.start.bases[kind]} + static_cast<int32_t>(written) : int64_t{written} + 1;
+        if (one_based >= 1 && one_based <= totals[kind]) continue;
+        const uint64_t line = numbered.start.line + face.line;
+        throw ImportError(at_line(context.name, line, bad_index_reason(kind, one_based, totals[kind])));
       }
-    }
   }
 }
 
 // A fan (0 1 2) (0 2 3) ... holds the polygon's corners 0 and 1, then one in each triangle's third
 // place.
 void clip_deferred_polygons(NumberedFile* file) {
-  PolygonCutter cutter;
-  std::vector<uint32_t> ids;
-  std::vector<const float*> corners;
-  for (const DeferredPolygon& polygon : file->deferred) {
-    uint32_t* fan = file->triangles.data() + polygon.at;
-    ids.assign({fan[0], fan[1]});
-    for (uint32_t k = 0; k + 2 < polygon.corners; ++k) ids.push_back(fan[3 * k + 2]);
-    corners.resize(polygon.corners);
-    for (uint32_t k = 0; k < polygon.corners; ++k) corners[k] = &file->vertices.positions[3 * size_t{file->keys[ids[k]].v}];
-    cutter.cut(ids.data(), corners.data(), polygon.corners, polygon.line, fan, &file->warnings);
+  Polygon polygon;
+  for (const DeferredPolygon& deferred : file->deferred) {
+    uint32_t* fan = file->triangles.data() + deferred.at;
+    polygon.ids.assign({fan[0], fan[1]});
+    for (uint32_t k = 0; k + 2 < deferred.corners; ++k) polygon.ids.push_back(fan[3 * k + 2]);
+    polygon.corners.clear();
+    for (uint32_t id : polygon.ids) polygon.corners.push_back(&file->vertices.positions[3 * size_t{file->keys[id].v}]);
+    polygon.cut(deferred.line, fan, &file->warnings);
   }
 }
 

@@ -64,12 +64,9 @@ inline void run_ordered_jobs(const pfx_thread_pool* pool, unsigned threads, size
       }
       lock.lock();
       if (thrown && !failure) failure = thrown;
-      if (ordered) {
-        in_order_running = false;
-        ++next_in_order;
-      } else {
-        first_done[item] = 1;
-      }
+      in_order_running &= !ordered;
+      if (ordered) ++next_in_order;
+      else first_done[item] = 1;
       stop = stop || thrown;
       changed.notify_all();
     }

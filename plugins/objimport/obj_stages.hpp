@@ -12,14 +12,13 @@
 //   3. check     NumberedFile -> nothing, or an ImportError naming the first bad index; then the
 //                polygons that reached past the positions read so far clipped (obj_numbering.cpp)
 //   4. materials FileStatements -> MaterialTable: the material libraries read (obj_mtl.cpp)
-//   5. index     triangles, by material -> TriangleIndex: sub-meshes (obj_mesh_arrays.cpp)
-//   6. vertices  keys and FileVertices -> MeshVertices, and the bounds (obj_mesh_arrays.cpp)
+//   5. index     triangles, by material -> TriangleIndex: sub-meshes (obj_import.cpp)
+//   6. vertices  keys and FileVertices -> MeshVertices, and the bounds (obj_import.cpp)
 //   7. normals   where the file gives none (obj_normals.hpp)
 //   8. warnings  every stage's, in line order (obj_import.cpp)
 //
-// Every stage fails by throwing an ImportError (or std::bad_alloc); the public functions turn it
-// into their false and message. Large arrays are obj_buffer.hpp's; the parallel stages run on the
-// host's thread pool (obj_parallel.hpp), or without one on the calling thread.
+// Large arrays are obj_buffer.hpp's; the parallel stages run on the host's thread pool
+// (obj_parallel.hpp), or without one on the calling thread.
 #pragma once
 
 #include <cstdint>
@@ -46,23 +45,19 @@ inline std::string at_line(const std::string& name, uint64_t line, const std::st
   return name + ":" + std::to_string(line) + ": " + text;
 }
 
-// Why an import failed, the message whole: "FILE:LINE: reason" or "FILE: reason".
-class ImportError : public std::runtime_error {
- public:
-  ImportError(const std::string& name, uint64_t line, const std::string& reason)
-      : std::runtime_error(at_line(name, line, reason)) {}
-  ImportError(const std::string& name, const std::string& reason) : std::runtime_error(name + ": " + reason) {}
+// Why an import failed, the message whole: "FILE:LINE: reason" (at_line) or "FILE: reason". Every
+// stage fails by throwing one (or std::bad_alloc); the public functions turn it into a message.
+struct ImportError : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
-// ---- 2. number --------------------------------------------------------------------------------
-
-// What stage 2 works with besides the chunks' texts.
-struct NumberingInput {
+// What the stages of one import share besides their inputs: where the text came from, where they run.
+struct ImportContext {
   const std::string& name;       // the file name in messages
-  const pfx_thread_pool* pool;   // null: every chunk read and numbered on the calling thread
-  unsigned threads;              // workers at once
+  const std::string& directory;  // where mtllib files are looked for; empty: not at all
   const FileBytes* file;         // the text's mapping, whose pages are dropped as chunks are read; or null
-  std::function<void(double)> numbered;  // the fraction of the text numbered so far, on the calling thread
+  const pfx_thread_pool* pool;   // null: every stage on the calling thread
+  unsigned threads;              // workers at once
 };
 
 // The file up to a chunk boundary: what came before it, and the state in force there.
@@ -93,18 +88,13 @@ struct FileStatements {
 
 // The file's vertex data as written: x y z per v, u v per vt, x y z per vn, and r g b per v (white
 // for a v without one) or none when no v has a colour.
-struct FileVertices {
-  BigVector<float> positions, texcoords, normals, colors;
-};
+struct FileVertices { BigVector<float> positions, texcoords, normals, colors; };
 
 // A polygon with a corner whose position comes later in the file: cut as a fan at `at` (its first
 // triangle's place in NumberedFile::triangles) until the positions are read.
-struct DeferredPolygon {
-  uint64_t at;
-  uint32_t corners;
-  uint64_t line;
-};
+struct DeferredPolygon { uint64_t at; uint32_t corners; uint64_t line; };
 
+// Stage 2's output.
 struct NumberedFile {
   std::vector<NumberedChunk> chunks;  // one per text, in file order
   FileVertices vertices;
@@ -116,19 +106,18 @@ struct NumberedFile {
   const FileSoFar& totals() const { return chunks.back().end; }
 };
 
-NumberedFile number_chunks(const std::vector<std::string_view>& texts, const NumberingInput& input);
+// numbered: the fraction of the text numbered so far, on the calling thread.
+NumberedFile number_chunks(const std::vector<std::string_view>& texts, const ImportContext& context,
+                           const std::function<void(double)>& numbered);
 
-// ---- 3. check ---------------------------------------------------------------------------------
-
-// Throws an ImportError at the first index, in file order, outside the file's totals. The chunks
+// Stage 3: throws an ImportError at the first index, in file order, outside the file's totals. The chunks
 // that may hold one are read again from their texts (an error path only).
-void check_indices(const std::vector<std::string_view>& texts, const NumberedFile& file, const std::string& name);
+void check_indices(const std::vector<std::string_view>& texts, const NumberedFile& file, const ImportContext& context);
 
 // The deferred polygons' fans replaced by their ear-clipped triangles (warnings to file->warnings).
 void clip_deferred_polygons(NumberedFile* file);
 
-// ---- 4. materials -----------------------------------------------------------------------------
-
+// Stage 4's output.
 struct MaterialTable {
   std::vector<Material> materials;    // the libraries', then a default one per unknown usemtl name
   std::vector<uint32_t> of_name;      // per usemtl name (FileStatements::material_names): its material
@@ -138,8 +127,7 @@ struct MaterialTable {
 // directory: where the libraries are looked for; empty: none is read (a warning says so).
 MaterialTable load_materials(const FileStatements& statements, const std::string& directory);
 
-// ---- 5. index ---------------------------------------------------------------------------------
-
+// Stage 5's output.
 struct TriangleIndex {
   BigVector<uint32_t> indices;
   std::vector<pfx_import_submesh> submeshes;  // in order of their material's first triangle
@@ -149,8 +137,7 @@ struct TriangleIndex {
 TriangleIndex index_by_material(const std::vector<NumberedChunk>& chunks, const MaterialTable& materials,
                                 BigVector<uint32_t> triangles);
 
-// ---- 6. vertices ------------------------------------------------------------------------------
-
+// Stage 6's output.
 struct MeshVertices {
   BigVector<float> positions, normals, texcoords, colors;  // texcoords, colors: empty when none given
   float bounds_min[3] = {0, 0, 0}, bounds_max[3] = {0, 0, 0};
@@ -158,7 +145,6 @@ struct MeshVertices {
 
 // Each vertex's data gathered by its key (normals: zero where the file gives none), each kind of
 // `file` freed as soon as it is gathered.
-MeshVertices gather_vertices(const BigVector<VertexKey>& keys, FileVertices file, const pfx_thread_pool* pool,
-                             unsigned threads);
+MeshVertices gather_vertices(const BigVector<VertexKey>& keys, FileVertices file, const ImportContext& context);
 
 }  // namespace pfx_obj

@@ -32,10 +32,7 @@ struct LineCursor {
     ++p;
     ++line_ends;
   }
-  void consume_continuation() {  // the backslash and its line end
-    ++p;
-    consume_line_end();
-  }
+  void consume_continuation() { ++p; consume_line_end(); }  // the backslash and its line end
   void skip_blanks() {
     for (;;) {
       if (is_blank(*p)) ++p;
@@ -61,12 +58,9 @@ struct LineCursor {
   std::string rest_of_line() {
     std::string text;
     while (!is_line_end(*p)) {
-      if (continuation(p)) {
-        consume_continuation();
-        text += ' ';
-      } else {
-        text += *p++;
-      }
+      const bool joined = continuation(p);
+      if (joined) consume_continuation();
+      text += joined ? ' ' : *p++;
     }
     const size_t first = text.find_first_not_of(" \t\f\v"), last = text.find_last_not_of(" \t\f\v");
     return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
