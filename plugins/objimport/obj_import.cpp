@@ -109,6 +109,7 @@ ObjMesh run_stages(std::string_view text, const ImportContext& context, const Im
   generate_normals(file.keys, vertices.positions, index.indices, context.pool, context.threads, &vertices.normals);
   free_array(&file.keys);
   ObjMesh mesh;
+  mesh.warnings = mesh_warnings(file, materials, context.name, &mesh.warning_total);
   mesh.positions = std::move(vertices.positions);
   mesh.normals = std::move(vertices.normals);
   mesh.texcoords = std::move(vertices.texcoords);
@@ -121,7 +122,6 @@ ObjMesh run_stages(std::string_view text, const ImportContext& context, const Im
   mesh.faces = file.totals().faces;
   mesh.lines_skipped = file.statements.lines_skipped;
   mesh.points_skipped = file.statements.points_skipped;
-  mesh.warnings = mesh_warnings(file, materials, context.name, &mesh.warning_total);
   report(1.0);
   return mesh;
 }

@@ -115,7 +115,7 @@ class ChunkNumberer {
     const FileSoFar& start = numbered.start;
     if (!chunk.error.text.empty())
       throw ImportError(at_line(context_.name, start.line + chunk.error.line, chunk.error.text));
-    const FileSoFar& end = numbered.end = end_of(chunk, start);
+    numbered.end = end_of(chunk, start);
     std::copy(chunk.max_index, chunk.max_index + 3, numbered.max_index);
     collect_statements(&read_[c], &numbered);
     append_vertex_data(chunk, start);
@@ -124,11 +124,11 @@ class ChunkNumberer {
     // chunk that may hold one, none is numbered and check_indices finds it. (A position index
     // sizes an array here.)
     const uint64_t bytes_left = text_bytes_ - uint64_t(texts_[c].data() + texts_[c].size() - texts_[0].data());
-    numbered.suspect = chunk.max_index[0] > end.bases[0] + bytes_left / 8 + 1;
+    numbered.suspect = chunk.max_index[0] > numbered.end.bases[0] + bytes_left / 8 + 1;
     any_suspect_ = any_suspect_ || numbered.suspect;
     if (any_suspect_) return;
-    out_.triangles.resize(3 * end.triangles);
-    numbering_.cover(std::max(end.bases[0], chunk.max_index[0]));
+    out_.triangles.resize(3 * numbered.end.triangles);
+    numbering_.cover(std::max(numbered.end.bases[0], chunk.max_index[0]));
     numbered.suspect = !number_faces(chunk, numbered, out_.triangles.data() + 3 * start.triangles);
     any_suspect_ = numbered.suspect;
   }
