@@ -189,12 +189,14 @@ MeshVertices gather_vertices(const BigVector<VertexKey>& keys, FileVertices file
   mesh.normals = gather<3>(keys, &file.normals, &VertexKey::vn, context);  // those without: generated later
   free_array(&file.texcoords);  // when no corner used one
   if (keys.empty()) return mesh;  // the bounds stay zero
-  std::fill_n(mesh.bounds_min, 3, HUGE_VALF);
-  std::fill_n(mesh.bounds_max, 3, -HUGE_VALF);
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    mesh.bounds_min[i % 3] = std::min(mesh.bounds_min[i % 3], mesh.positions[i]);
-    mesh.bounds_max[i % 3] = std::max(mesh.bounds_max[i % 3], mesh.positions[i]);
-  }
+  float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};
+  for (size_t i = 0; i < mesh.positions.size(); i += 3)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], mesh.positions[i + k]);
+      hi[k] = std::max(hi[k], mesh.positions[i + k]);
+    }
+  std::copy(lo, lo + 3, mesh.bounds_min);
+  std::copy(hi, hi + 3, mesh.bounds_max);
   return mesh;
 }
 

@@ -219,8 +219,7 @@ MaterialTable load_materials(const FileStatements& statements, const std::string
   for (const LocalMessage& library : statements.material_libraries) read_libraries(library, directory, &table);
   // Each usemtl name's material; an unknown name gets a default material of that name.
   std::unordered_map<std::string, uint32_t> by_name;
-  for (size_t i = 0; i < table.materials.size(); ++i)
-    by_name.emplace(table.materials[i].name, static_cast<uint32_t>(i));
+  for (uint32_t i = 0; i < table.materials.size(); ++i) by_name.emplace(table.materials[i].name, i);
   for (const LocalMessage& name : statements.material_names) {
     const auto [it, fresh] = by_name.emplace(name.text, static_cast<uint32_t>(table.materials.size()));
     if (fresh) {

@@ -31,8 +31,9 @@ inline void generate_normals(const BigVector<VertexKey>& keys, const BigVector<f
   std::vector<uint8_t> generated(count);
   bool any = false, with_texcoords = false;
   for (size_t i = 0; i < count; ++i) {
-    generated[i] = keys[i].vn == kNoIndex;
-    if (!generated[i]) continue;
+    const bool generate = keys[i].vn == kNoIndex;
+    generated[i] = generate;
+    if (!generate) continue;
     any = true;
     with_texcoords |= keys[i].vt != kNoIndex;
     n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;

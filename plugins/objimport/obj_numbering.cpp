@@ -304,8 +304,7 @@ void check_indices(const std::vector<std::string_view>& texts, const NumberedFil
   }
 }
 
-// A fan (0 1 2) (0 2 3) ... holds the polygon's corners 0 and 1, then one in each triangle's third
-// place.
+// A fan (0 1 2) (0 2 3) ... holds the polygon's corners 0 and 1, then one in each triangle's third.
 void clip_deferred_polygons(NumberedFile* file) {
   Polygon polygon;
   for (const DeferredPolygon& deferred : file->deferred) {
