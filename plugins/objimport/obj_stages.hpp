@@ -110,8 +110,8 @@ struct NumberedFile {
 NumberedFile number_chunks(const std::vector<std::string_view>& texts, const ImportContext& context,
                            const std::function<void(double)>& numbered);
 
-// Stage 3: throws an ImportError at the first index, in file order, outside the file's totals. The chunks
-// that may hold one are read again from their texts (an error path only).
+// Stage 3: throws an ImportError at the first index, in file order, outside the file's totals.
+// The chunks that may hold one are read again from their texts (an error path only).
 void check_indices(const std::vector<std::string_view>& texts, const NumberedFile& file, const ImportContext& context);
 
 // The deferred polygons' fans replaced by their ear-clipped triangles (warnings to file->warnings).
