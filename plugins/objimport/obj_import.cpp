@@ -16,8 +16,8 @@ namespace pfx_obj {
 
 namespace {
 
-// Progress: the share of an import's time done by the end of a stage. Reading and numbering take
-// most of it; the checks and the materials, the index array, and the vertex arrays the rest.
+// Progress: the share of an import's time done when a stage ends. Reading and numbering take most;
+// the checks with the materials, the index array, and the vertices with their normals the rest.
 constexpr double kShareNumbered = 0.6, kShareMaterialsRead = 0.7, kShareIndexed = 0.85;
 
 // Stage 1's cut: chunks of about chunk_bytes when that is given, else about eight per thread of 1 to
