@@ -2,7 +2,7 @@
 // coordinate, normal) and, for a corner without a normal, the normal group its normal will be
 // generated for (obj_normals.hpp): nothing is packed, so nothing collides. Vertices are numbered in
 // the order of their first corner in the file, by one VertexNumbering that sees every corner in
-// file order (obj_import.cpp), so the numbers never depend on the thread count.
+// file order (obj_numbering.cpp), so the numbers never depend on the thread count.
 #pragma once
 
 #include <cstdint>
@@ -64,15 +64,8 @@ class VertexNumbering {
   // Keys with v below position_count may be numbered from now on.
   void cover(uint32_t position_count) { if (position_count > head_.size()) head_.resize(position_count, kNoIndex); }
 
-  // No more insertions: only the keys are kept.
-  void finish() {
-    free_array(&head_);
-    free_array(&next_);
-    free_array(&overflow_);
-  }
-
-  // The distinct keys, in order of first insertion.
-  BigVector<VertexKey>& keys() { return keys_; }
+  // The distinct keys, in order of first insertion, taken once the last is inserted.
+  BigVector<VertexKey> take_keys() { return std::move(keys_); }
 
  private:
   static constexpr uint32_t kMaxChain = 8;

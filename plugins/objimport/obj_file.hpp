@@ -63,7 +63,7 @@ class FileBytes {
       }
     }
     char buffer[1 << 16];  // not a regular file (a pipe, /dev/stdin), or not mappable: read whole
-    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) != 0;) {
+    while (const ssize_t n = ::read(fd, buffer, sizeof buffer)) {  // (0: the end)
       if (n > 0) copy_.append(buffer, static_cast<size_t>(n));
       if (n < 0 && errno != EINTR) {
         *error = path + ": " + std::strerror(errno);

@@ -1,6 +1,6 @@
 // The OBJ importer as a C++ function, for the plugin's C entry point and for the tests: text in,
 // one deduplicated, triangulated mesh out, the same for every thread count, or a message
-// "FILE:LINE: reason". How: obj_import.cpp.
+// "FILE:LINE: reason". How: obj_stages.hpp.
 #pragma once
 
 #include <algorithm>

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <unordered_map>
 
+#include "obj_stages.hpp"
 #include "obj_text.hpp"
 
 namespace pfx_obj {
@@ -169,6 +171,65 @@ std::string resolve_path(const std::string& directory, std::string path) {
   std::filesystem::path p(path);
   if (p.is_absolute() || directory.empty()) return p.lexically_normal().string();
   return (std::filesystem::path(directory) / p).lexically_normal().string();
+}
+
+namespace {
+
+// Cuts "a.mtl b.mtl" into files; a name with blanks ("my materials.mtl") is taken whole when a
+// file of that whole name exists.
+std::vector<std::string> material_library_names(const std::string& directory, const std::string& text) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(resolve_path(directory, text), ec)) return {text};
+  std::vector<std::string> names;
+  for (size_t start = text.find_first_not_of(" \t"); start != std::string::npos;) {
+    const size_t end = std::min(text.find_first_of(" \t", start), text.size());
+    names.push_back(text.substr(start, end - start));
+    start = text.find_first_not_of(" \t", end);
+  }
+  return names;
+}
+
+// The materials of one mtllib line's libraries appended to table->materials.
+void read_libraries(const LocalMessage& library, const std::string& directory, MaterialTable* table) {
+  if (directory.empty()) {
+    table->warnings.push_back(
+        {library.line, "mtllib " + library.text + ": not read (the model was given as bytes without a file name)"});
+    return;
+  }
+  for (const std::string& name : material_library_names(directory, library.text)) {
+    const std::string path = resolve_path(directory, name);
+    FileBytes file;
+    std::string problem;
+    if (!file.open(path, &problem)) {
+      table->warnings.push_back({library.line, "mtllib: " + problem + " (materials keep their defaults)"});
+      continue;
+    }
+    std::vector<std::string> warnings;
+    parse_mtl(file.bytes(), path, std::filesystem::path(path).parent_path().string(), &table->materials, &warnings);
+    for (std::string& warning : warnings) table->warnings.push_back({library.line, std::move(warning)});
+  }
+}
+
+}  // namespace
+
+// Stage 4 of an import (obj_stages.hpp).
+MaterialTable load_materials(const FileStatements& statements, const std::string& directory) {
+  MaterialTable table;
+  // Every library first, in file order: a usemtl may come before its mtllib.
+  for (const LocalMessage& library : statements.material_libraries) read_libraries(library, directory, &table);
+  // Each usemtl name's material; an unknown name gets a default material of that name.
+  std::unordered_map<std::string, uint32_t> by_name;
+  for (uint32_t i = 0; i < table.materials.size(); ++i) by_name.emplace(table.materials[i].name, i);
+  for (const LocalMessage& name : statements.material_names) {
+    const auto [it, fresh] = by_name.emplace(name.text, static_cast<uint32_t>(table.materials.size()));
+    if (fresh) {
+      table.materials.push_back(Material{name.text});
+      table.warnings.push_back(
+          {name.line, "usemtl " + name.text + ": no material of that name in the material libraries (defaults used)"});
+    }
+    table.of_name.push_back(it->second);
+  }
+  return table;
 }
 
 }  // namespace pfx_obj

@@ -31,7 +31,9 @@ inline void generate_normals(const BigVector<VertexKey>& keys, const BigVector<f
   std::vector<uint8_t> generated(count);
   bool any = false, with_texcoords = false;
   for (size_t i = 0; i < count; ++i) {
-    if (!(generated[i] = keys[i].vn == kNoIndex)) continue;
+    const bool generate = keys[i].vn == kNoIndex;
+    generated[i] = generate;
+    if (!generate) continue;
     any = true;
     with_texcoords |= keys[i].vt != kNoIndex;
     n[3 * i] = n[3 * i + 1] = n[3 * i + 2] = 0.0f;
@@ -83,7 +85,8 @@ inline void generate_normals(const BigVector<VertexKey>& keys, const BigVector<f
       if (length > 0 && std::isfinite(length)) {
         for (int k = 0; k < 3; ++k) v[k] = static_cast<float>(v[k] / length);
       } else {
-        v[0] = 0.0f, v[1] = 0.0f, v[2] = 1.0f;
+        v[0] = v[1] = 0.0f;
+        v[2] = 1.0f;
       }
     }
   });

@@ -1,7 +1,7 @@
 // Running jobs on the host's thread pool (pfx/services.h): the importer starts no thread of its own
 // and leaves every thread's affinity, priority and signal mask alone — the host decides those.
 // Without a pool, or with one worker, the jobs run in order on the calling thread. An exception in
-// an ordered job stops the run and is rethrown on the calling thread once every worker has stopped.
+// a job stops the run and is rethrown on the calling thread once every worker has stopped.
 #pragma once
 
 #include <algorithm>
@@ -33,11 +33,11 @@ inline void run_workers(const pfx_thread_pool* pool, unsigned threads, const std
 // first job. At most `window` consecutive items are between their first job's start and their
 // in-order job's end, so item % window names working memory no other item in flight uses. A
 // worker waits only while another runs a job (when none runs, one of the two is ready), so a pool
-// that runs its tasks one after another still finishes. An in-order job returning false stops the
-// run. `worker` (below `threads`) names scratch memory of the worker's own.
+// that runs its tasks one after another still finishes. `worker` (below `threads`) names scratch
+// memory of the worker's own.
 inline void run_ordered_jobs(const pfx_thread_pool* pool, unsigned threads, size_t count, size_t window,
                              const std::function<void(size_t item, unsigned worker)>& first,
-                             const std::function<bool(size_t item)>& in_order) {
+                             const std::function<void(size_t item)>& in_order) {
   std::mutex mutex;
   std::condition_variable changed;
   std::vector<char> first_done(count, 0);
@@ -55,19 +55,19 @@ inline void run_ordered_jobs(const pfx_thread_pool* pool, unsigned threads, size
       const size_t item = ordered ? next_in_order : next_first++;
       in_order_running |= ordered;
       lock.unlock();
-      bool go = true;
       std::exception_ptr thrown;
       try {
-        if (ordered) go = !in_order || in_order(item);
-        else first(item, worker);
+        if (!ordered) first(item, worker);
+        else if (in_order) in_order(item);
       } catch (...) {
         thrown = std::current_exception();
       }
       lock.lock();
       if (thrown && !failure) failure = thrown;
-      if (ordered) in_order_running = false, ++next_in_order;
+      in_order_running &= !ordered;
+      if (ordered) ++next_in_order;
       else first_done[item] = 1;
-      stop |= !go || thrown;
+      stop = stop || thrown;
       changed.notify_all();
     }
   });

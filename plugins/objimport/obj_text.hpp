@@ -32,10 +32,11 @@ struct LineCursor {
     ++p;
     ++line_ends;
   }
+  void consume_continuation() { ++p; consume_line_end(); }  // the backslash and its line end
   void skip_blanks() {
     for (;;) {
       if (is_blank(*p)) ++p;
-      else if (continuation(p)) ++p, consume_line_end();
+      else if (continuation(p)) consume_continuation();
       else return;
     }
   }
@@ -43,7 +44,7 @@ struct LineCursor {
   void skip_statement() {
     for (;;) {
       if (is_line_end(*p)) return consume_line_end();
-      if (continuation(p)) ++p, consume_line_end();
+      if (continuation(p)) consume_continuation();
       else ++p;
     }
   }
@@ -57,8 +58,9 @@ struct LineCursor {
   std::string rest_of_line() {
     std::string text;
     while (!is_line_end(*p)) {
-      if (!continuation(p)) text += *p++;
-      else ++p, consume_line_end(), text += ' ';
+      const bool joined = continuation(p);
+      if (joined) consume_continuation();
+      text += joined ? ' ' : *p++;
     }
     const size_t first = text.find_first_not_of(" \t\f\v"), last = text.find_last_not_of(" \t\f\v");
     return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
@@ -71,7 +73,10 @@ inline constexpr double kExactPowersOf10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,
                                               1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 // Whether c is a decimal digit, *value its value.
-inline bool digit(char c, uint32_t* value) { return (*value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0') < 10; }
+inline bool digit(char c, uint32_t* value) {
+  *value = static_cast<uint32_t>(static_cast<unsigned char>(c)) - '0';
+  return *value < 10;
+}
 
 // [start, end) read by std::from_chars (exact, locale-independent). Out of a double's range it is
 // inf or 0: `place` (digits + exponent, less leading zeros) is the first digit's power of ten + 1.

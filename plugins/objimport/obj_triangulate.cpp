@@ -28,7 +28,8 @@ template <uint32_t kCorners>
   for (uint32_t i = 0; i < n; ++i) {
     const float* a = corners[i];
     const float* b = corners[i + 1 == n ? 0 : i + 1];
-    for (int k = 0, k1 = 1, k2 = 2; k < 3; ++k, k1 = (k + 1) % 3, k2 = (k + 2) % 3) {
+    for (int k = 0; k < 3; ++k) {
+      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
       if (kCorners != 4) normal[k] += (double(a[k1]) - b[k1]) * (double(a[k2]) + b[k2]);
       lo[k] = std::min(lo[k], double(a[k]));  // as fmin and fmax: a NaN is passed over
       hi[k] = std::max(hi[k], double(a[k]));
@@ -36,8 +37,10 @@ template <uint32_t kCorners>
   }
   if (kCorners == 4) {  // the same normal, as the cross product of the diagonals: fewer operations
     const float *p0 = corners[0], *p1 = corners[1], *p2 = corners[2], *p3 = corners[3];
-    for (int k = 0, k1 = 1, k2 = 2; k < 3; ++k, k1 = (k + 1) % 3, k2 = (k + 2) % 3)
+    for (int k = 0; k < 3; ++k) {
+      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
       normal[k] = (double(p2[k1]) - p0[k1]) * (double(p3[k2]) - p1[k2]) - (double(p2[k2]) - p0[k2]) * (double(p3[k1]) - p1[k1]);
+    }
   }
   int drop = 2;
   if (std::fabs(normal[0]) >= std::fabs(normal[1]) && std::fabs(normal[0]) >= std::fabs(normal[2])) drop = 0;
