@@ -1,9 +1,6 @@
 // The frei0r entry points (frei0r.h, version 1.2) of pfx_chain.so and every pfx_<effect>.so.
 // What each does inside the host is in frei0r_library.hpp and frei0r_instance.hpp; nothing here
 // may throw into the host, whose code is C.
-#include <dlfcn.h>
-
-#include <cstring>
 #include <exception>
 #include <new>
 
@@ -22,15 +19,9 @@ using pfx::frei0r::library;
 // The largest frame an instance accepts: GL textures of 4.5 contexts reach 16384 on every side.
 constexpr unsigned kMaxSide = 16384;
 
-// The string of a string parameter. frei0r passes a pointer to the char*, which ffmpeg and MLT
-// do; GStreamer's frei0r bridge passes the char* itself. Which one the caller meant is told from
-// the library the call came from.
-const char* string_argument(const void* param, const void* caller) {
-  if (!param) return nullptr;
-  Dl_info info{};
-  const bool passes_string = dladdr(caller, &info) && info.dli_fname && std::strstr(info.dli_fname, "libgstfrei0r");
-  return passes_string ? static_cast<const char*>(param) : *static_cast<const char* const*>(param);
-}
+// A string parameter's value arrives as a pointer to the char* (frei0r.h: f0r_param_string),
+// which is what ffmpeg, MLT and GStreamer 1.22's frei0r bridge pass.
+const char* string_argument(const void* param) { return *static_cast<const char* const*>(param); }
 
 }  // namespace
 
@@ -86,7 +77,7 @@ PFX_FREI0R_EXPORT void f0r_set_param_value(f0r_instance_t instance, f0r_param_t 
     const auto& lib = *library();
     const bool is_string = param_index >= 0 && static_cast<size_t>(param_index) < lib.params.size() &&
                            lib.params[param_index].type == F0R_PARAM_STRING;
-    const char* text = is_string ? string_argument(param, __builtin_return_address(0)) : nullptr;
+    const char* text = is_string ? string_argument(param) : nullptr;
     static_cast<Instance*>(instance)->set_param(param_index, param, text);
   } catch (const std::exception&) {
   }
