@@ -94,7 +94,7 @@ std::string context_problem(GstGLContext* context) {
   gst_gl_context_get_gl_version(context, &major, &minor);
   const std::string version = std::to_string(major) + "." + std::to_string(minor);
   if (!(api & (GST_GL_API_OPENGL | GST_GL_API_OPENGL3)))
-    return "GStreamer's GL context is OpenGL ES " + version + " (GST_GL_API?): pfx needs desktop OpenGL 4.5";
+    return "GStreamer's GL context is OpenGL ES " + version + ": pfx needs desktop OpenGL 4.5 (GST_GL_API picks the API)";
   if (major * 10 + minor < 45) return "GStreamer's GL context is OpenGL " + version + ": pfx needs OpenGL 4.5";
   return "";
 }
