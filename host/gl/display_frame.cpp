@@ -1,20 +1,10 @@
 #include "display_frame.hpp"
 
+#include "image_texture.hpp"
+
 namespace pfx::gl {
-namespace {
 
-GLuint make_texture(GLenum format, int width, int height) {
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, format, width, height);
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return texture;
-}
-
-}  // namespace
+using app::create_texture;
 
 bool DisplayFrame::create(std::string* error) {
   if (!transfer_.create(error)) return false;
@@ -40,9 +30,9 @@ void DisplayFrame::resize(int width, int height) {
   delete_textures();
   width_ = width;
   height_ = height;
-  staging_ = make_texture(GL_RGBA8, width, height);
-  color_ = make_texture(GL_RGBA16F, width, height);
-  output_ = make_texture(GL_RGBA16F, width, height);
+  staging_ = create_texture(GL_RGBA8, width, height);
+  color_ = create_texture(GL_RGBA16F, width, height);
+  output_ = create_texture(GL_RGBA16F, width, height);
   glNamedFramebufferTexture(decode_framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
 }
 

@@ -1,6 +1,7 @@
 #include "frame_chain.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "camera_options.hpp"
 
@@ -48,6 +49,15 @@ bool FrameChain::render(gl::DisplayFrame& frame, double time_seconds, uint64_t f
   if (!chain_->render(description, textures, frame.output(), error)) return false;
   *result = frame.output();
   return true;
+}
+
+bool no_gl_error(std::string* error) {
+  const GLenum gl_error = glGetError();
+  if (gl_error == GL_NO_ERROR) return true;
+  char text[64];
+  std::snprintf(text, sizeof text, "GL error 0x%04x while running the chain", gl_error);
+  *error = text;
+  return false;
 }
 
 }  // namespace pfx::adapters

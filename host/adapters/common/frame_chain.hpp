@@ -43,4 +43,8 @@ class FrameChain {
   std::unique_ptr<host::Chain> chain_;
 };
 
+// After a frame: false with *error ("GL error 0x0505 while running the chain") when the GL
+// reports an error.
+bool no_gl_error(std::string* error);
+
 }  // namespace pfx::adapters

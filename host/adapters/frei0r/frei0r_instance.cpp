@@ -144,14 +144,7 @@ bool Instance::render(double time, const uint32_t* in, uint32_t* out, std::strin
     GLuint result = 0;
     if (!gl_->chain->render(gl_->frame, time, frames_ + 1, &result, error)) return false;
     gl_->frame.encode_bytes(result, gl_->transfer, reinterpret_cast<uint8_t*>(out));
-    const GLenum gl_error = glGetError();
-    if (gl_error != GL_NO_ERROR) {
-      char text[64];
-      std::snprintf(text, sizeof text, "GL error 0x%04x while running the chain", gl_error);
-      *error = text;
-      return false;
-    }
-    return true;
+    return adapters::no_gl_error(error);
   } catch (const std::exception& e) {
     *error = std::string("internal error: ") + e.what();
     return false;

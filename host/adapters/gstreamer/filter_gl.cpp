@@ -106,14 +106,7 @@ bool FilterGl::process(const adapters::ChainSettings& settings, uint64_t revisio
       copy_through();
     }
   }
-  const GLenum gl_error = glGetError();
-  if (gl_error != GL_NO_ERROR) {
-    char text[64];
-    std::snprintf(text, sizeof text, "GL error 0x%04x while running the chain", gl_error);
-    *error = text;
-    return false;
-  }
-  return true;
+  return adapters::no_gl_error(error);
 }
 
 }  // namespace pfx::gst

@@ -4,7 +4,10 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
+#include "cli_text.hpp"
 #include "png_io.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -94,6 +97,18 @@ size_t occurrences(const std::string& text, const std::string& what) {
   size_t count = 0;
   for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++count;
   return count;
+}
+
+std::vector<uint8_t> read_bytes(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::vector<uint8_t>(std::istreambuf_iterator<char>(file), {});
+}
+
+RunResult gst_launch(const std::string& pipeline, bool quiet, const std::vector<std::string>& extra) {
+  std::vector<std::string> argv = {PFX_GST_LAUNCH};
+  if (quiet) argv.push_back("-q");
+  for (const auto& word : app::split_list(pipeline, ' ')) argv.push_back(word);
+  return run_host(argv, extra);
 }
 
 }  // namespace pfx::test

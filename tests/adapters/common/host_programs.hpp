@@ -29,5 +29,10 @@ app::DisplayImage read_rgba(const std::string& path);
 std::vector<uint8_t> rgb_of(const app::DisplayImage& image);
 // How often `what` occurs in `text`.
 size_t occurrences(const std::string& text, const std::string& what);
+// A file's bytes (empty when it cannot be read).
+std::vector<uint8_t> read_bytes(const std::string& path);
+// gst-launch-1.0 [-q] with a pipeline written as on its command line, words split at blanks
+// (nothing in the tests' pipelines needs quoting); -q hides the element warnings it prints.
+RunResult gst_launch(const std::string& pipeline, bool quiet = true, const std::vector<std::string>& extra = {});
 
 }  // namespace pfx::test

@@ -3,9 +3,6 @@
 // branch the frames one instance gives.
 #include <catch2/catch.hpp>
 
-#include <fstream>
-#include <iterator>
-
 #include "host_programs.hpp"
 #include "memory_watch.hpp"
 #include "render_process.hpp"
@@ -41,27 +38,16 @@ TEST_CASE("GStreamer's frei0r bridge: two instances on two streaming threads (te
   const std::string source =
       "videotestsrc num-buffers=5 pattern=smpte ! video/x-raw,format=RGBA,width=64,height=48,framerate=25/1";
   auto run = [&](const std::string& pipeline) {
-    std::vector<std::string> argv = {PFX_GST_LAUNCH, "-q"};
-    size_t start = 0;
-    while (start < pipeline.size()) {
-      size_t end = pipeline.find(' ', start);
-      if (end == std::string::npos) end = pipeline.size();
-      if (end > start) argv.push_back(pipeline.substr(start, end - start));
-      start = end + 1;
-    }
-    auto r = pfx::test::run_host(argv);
+    auto r = pfx::test::gst_launch(pipeline);
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
   };
-  auto bytes = [](const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    return std::vector<uint8_t>(std::istreambuf_iterator<char>(file), {});
-  };
+  using pfx::test::read_bytes;
   const std::string branch = "queue ! frei0r-filter-pfx-chain chain=bloom set=bloom.threshold=0.5 ! filesink location=";
   run(source + " ! " + branch + scratch / "one.rgba");
   run(source + " ! tee name=t t. ! " + branch + scratch / "a.rgba" + " t. ! " + branch + scratch / "b.rgba");
-  const auto one = bytes(scratch / "one.rgba");
+  const auto one = read_bytes(scratch / "one.rgba");
   REQUIRE(one.size() == 5 * 64 * 48 * 4);
-  CHECK(bytes(scratch / "a.rgba") == one);
-  CHECK(bytes(scratch / "b.rgba") == one);
+  CHECK(read_bytes(scratch / "a.rgba") == one);
+  CHECK(read_bytes(scratch / "b.rgba") == one);
 }

@@ -5,12 +5,12 @@
 
 #include <cmath>
 #include <fstream>
-#include <iterator>
 
 #include "host_programs.hpp"
 #include "render_process.hpp"
 
 using pfx::test::pfx_render;
+using pfx::test::read_bytes;
 using pfx::test::read_rgba;
 using pfx::test::run_host;
 using pfx::test::RunResult;
@@ -46,11 +46,6 @@ RunResult gst_frame(const std::string& in, const std::vector<std::string>& eleme
   argv.insert(argv.end(), element.begin(), element.end());
   argv.insert(argv.end(), {"!", "pngenc", "!", "filesink", "location=" + out});
   return run_host(argv);
-}
-
-std::vector<uint8_t> read_bytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::vector<uint8_t>(std::istreambuf_iterator<char>(file), {});
 }
 
 // The frames of ffmpeg's testsrc2 (64x48, 25 fps) as a lossless clip melt can read.

@@ -4,43 +4,18 @@
 // its end.
 #include <catch2/catch.hpp>
 
-#include <fstream>
-#include <iterator>
-
 #include "host_programs.hpp"
 #include "render_process.hpp"
 
+using pfx::test::gst_launch;
 using pfx::test::pfx_render;
+using pfx::test::read_bytes;
 using pfx::test::read_rgba;
 using pfx::test::run_host;
 using pfx::test::RunResult;
 using pfx::test::Scratch;
 
 namespace {
-
-std::vector<std::string> split_words(const std::string& text) {
-  std::vector<std::string> words;
-  size_t start = 0;
-  while (start < text.size()) {
-    size_t end = text.find(' ', start);
-    if (end == std::string::npos) end = text.size();
-    if (end > start) words.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return words;
-}
-
-// gst-launch-1.0 -q with a pipeline written as on the command line (no quoting needed in it).
-RunResult gst_launch(const std::string& pipeline, const std::vector<std::string>& environment = {}) {
-  std::vector<std::string> argv = {PFX_GST_LAUNCH, "-q"};
-  for (const auto& word : split_words(pipeline)) argv.push_back(word);
-  return run_host(argv, environment);
-}
-
-std::vector<uint8_t> read_bytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::vector<uint8_t>(std::istreambuf_iterator<char>(file), {});
-}
 
 // testsrc frames of 64x48 RGBA into GL, through `middle`, back out to a raw file.
 std::string gl_pipeline(int frames, const std::string& middle, const std::string& out,
@@ -146,10 +121,7 @@ TEST_CASE("pfxfilter: bad settings pass frames through with a warning naming the
   for (const auto& [setting, reason] : cases) {
     INFO(setting);
     // Without -q: gst-launch prints the element's warnings.
-    std::vector<std::string> argv = {PFX_GST_LAUNCH};
-    for (const auto& word : split_words(gl_pipeline(3, "pfxfilter " + setting + " !", scratch / "out.rgba")))
-      argv.push_back(word);
-    RunResult r = run_host(argv);
+    RunResult r = gst_launch(gl_pipeline(3, "pfxfilter " + setting + " !", scratch / "out.rgba"), false);
     INFO(r.output);
     CHECK(r.exit_code == 0);
     CHECK(read_bytes(scratch / "out.rgba") == plain);
@@ -161,9 +133,7 @@ TEST_CASE("pfxfilter: bad settings pass frames through with a warning naming the
 TEST_CASE("pfxfilter refuses a GLES context with an element error naming the reason, without crashing",
           "[adapters][gstreamer][pfxfilter][errors]") {
   Scratch scratch;
-  std::vector<std::string> argv = {PFX_GST_LAUNCH};
-  for (const auto& word : split_words(gl_pipeline(3, "pfxfilter !", scratch / "out.rgba"))) argv.push_back(word);
-  RunResult r = run_host(argv, {"GST_GL_API=gles2"});
+  RunResult r = gst_launch(gl_pipeline(3, "pfxfilter !", scratch / "out.rgba"), false, {"GST_GL_API=gles2"});
   INFO(r.output);
   CHECK(r.exit_code == 1);  // gst-launch's error exit, not a signal
   CHECK(r.output.find("ERROR: from element /GstPipeline:pipeline0/GstPfxFilter:pfxfilter0: pfxfilter: GStreamer's GL "

@@ -2,8 +2,6 @@
 // pfxfilter instances in the branches of a tee (two streaming threads) give the frames of one.
 #include <catch2/catch.hpp>
 
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "host_programs.hpp"
@@ -45,14 +43,11 @@ TEST_CASE("pfxfilter: two instances in the branches of a tee give the frames of 
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
   };
-  auto bytes = [](const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    return std::vector<uint8_t>(std::istreambuf_iterator<char>(file), {});
-  };
+  using pfx::test::read_bytes;
   run(source + " ! " + branch + scratch / "one.rgba");
   run(source + " ! tee name=t t. ! " + branch + scratch / "a.rgba" + " t. ! " + branch + scratch / "b.rgba");
-  const auto one = bytes(scratch / "one.rgba");
+  const auto one = read_bytes(scratch / "one.rgba");
   REQUIRE(one.size() == 5 * 64 * 48 * 4);
-  CHECK(bytes(scratch / "a.rgba") == one);
-  CHECK(bytes(scratch / "b.rgba") == one);
+  CHECK(read_bytes(scratch / "a.rgba") == one);
+  CHECK(read_bytes(scratch / "b.rgba") == one);
 }
