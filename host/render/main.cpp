@@ -46,8 +46,6 @@ int error_exit(int code, const std::string& message) {
   return code;
 }
 
-// The --input file (or the demo image) read into *image; an 8-bit input is decoded into
-// display's textures instead, and *image gets only its size.
 Transfer input_transfer(const RenderOptions& options) {
   Transfer transfer = Transfer::SRGB;
   std::string unused;
@@ -55,6 +53,8 @@ Transfer input_transfer(const RenderOptions& options) {
   return transfer;
 }
 
+// The --input file (or the demo image) read into *image; an 8-bit input is decoded into
+// display's textures instead, and *image gets only its size.
 bool load_input(const RenderOptions& options, DisplayInput* display, Image* image, InputReport* report,
                 std::string* error) {
   if (options.demo_image) {
