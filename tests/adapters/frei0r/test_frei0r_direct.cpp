@@ -68,14 +68,15 @@ struct Frei0r {
   }
 };
 
-// A frame with detail and a few bright spots, different for each seed.
+// A frame with detail, a few bright spots and alpha of every value, different for each seed.
 std::vector<uint32_t> frame(int width, int height, int seed) {
   std::vector<uint32_t> pixels(static_cast<size_t>(width) * height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const uint32_t r = (x * 7 + seed * 31) % 256, g = (y * 5 + seed * 17) % 256, b = ((x ^ y) * 3) % 256;
+      const uint32_t a = (x * 3 + y * 5 + seed) % 256;  // every alpha a frame may carry
       const bool spot = (x + seed) % 13 == 0 && (y + seed) % 11 == 0;
-      pixels[static_cast<size_t>(y) * width + x] = spot ? 0xffffffffu : (0xffu << 24) | (b << 16) | (g << 8) | r;
+      pixels[static_cast<size_t>(y) * width + x] = spot ? 0xffffffffu : (a << 24) | (b << 16) | (g << 8) | r;
     }
   return pixels;
 }
@@ -108,7 +109,7 @@ std::vector<std::vector<uint32_t>> bloom_frames(Frei0r& plugin, int width, int h
 
 }  // namespace
 
-TEST_CASE("frei0r: construct starts no thread and no GL, the first frame starts the plugin's GL thread, destruct ends it",
+TEST_CASE("frei0r: construct starts no thread and no GL, the first frame starts the plugin's GL thread and keeps alpha, destruct ends it",
           "[adapters][frei0r][direct]") {
   Frei0r plugin("pfx_chain.so");
   // The GL driver starts threads of its own at its first use and keeps them: one frame first,
@@ -125,6 +126,9 @@ TEST_CASE("frei0r: construct starts no thread and no GL, the first frame starts 
   plugin.update(small, 0, in.data(), out.data());
   CHECK(thread_count() == before + 1);
   CHECK(out != in);  // bloom by default
+  bool alpha_kept = true;
+  for (size_t i = 0; i < in.size(); ++i) alpha_kept &= (in[i] >> 24) == (out[i] >> 24);
+  CHECK(alpha_kept);
   for (auto instance : instances) plugin.destruct(instance);
   CHECK(thread_count() == before + 1);  // the instance that rendered still holds it
   plugin.destruct(small);
