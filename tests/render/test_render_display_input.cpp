@@ -92,7 +92,7 @@ TEST_CASE("an 8-bit input with no effect comes back code for code, alpha include
   }
 }
 
-TEST_CASE("an 8-bit input is decoded with the exact sRGB curve, or as linear codes; alpha is never curved",
+TEST_CASE("an 8-bit input is decoded with the exact sRGB curve, or as linear codes, and alpha is never curved",
           "[render][display]") {
   Scratch scratch;
   const DisplayImage input = every_code(4);
@@ -119,7 +119,7 @@ TEST_CASE("an 8-bit input is decoded with the exact sRGB curve, or as linear cod
   }
 }
 
-TEST_CASE("an 8-bit input starts from the display-referred defaults; --defaults scene keeps the scene ones",
+TEST_CASE("an 8-bit input starts from the display-referred defaults, and --defaults scene keeps the scene ones",
           "[render][display]") {
   Scratch scratch;
   const DisplayImage input = white_square();
@@ -161,7 +161,7 @@ TEST_CASE("an EXR made from an 8-bit frame gives, with --defaults display, what 
   CHECK(scene.rgba != from_png.rgba);  // an EXR alone is scene-referred
 }
 
-TEST_CASE("options that do not fit an 8-bit input, or its absence, are usage errors; a damaged PNG exits 3",
+TEST_CASE("options that do not fit an 8-bit input, or its absence, are usage errors, and a damaged PNG exits 3",
           "[render][display][errors]") {
   Scratch scratch;
   const std::string in = write(scratch, "codes.png", every_code(3));

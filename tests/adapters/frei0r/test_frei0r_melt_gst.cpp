@@ -31,8 +31,10 @@ std::string square_profile(const Scratch& scratch, int width, int height) {
 // throughout (no conversion the filter could be blamed for).
 RunResult melt_frame(const Scratch& scratch, const std::string& in, int width, int height,
                      const std::vector<std::string>& filter, const std::string& out) {
-  std::vector<std::string> argv = {PFX_MELT, "-quiet", "-profile", square_profile(scratch, width, height), in, "out=0",
-                                   "-filter"};
+  // MLT's avformat producer reads the PNG (its default for pictures, gdk-pixbuf, deadlocks in
+  // glibc's locale lock when AddressSanitizer's runtime is preloaded, as the sanitizer pass does).
+  std::vector<std::string> argv = {PFX_MELT, "-quiet", "-profile", square_profile(scratch, width, height),
+                                   "avformat:" + in, "out=0", "-filter"};
   argv.insert(argv.end(), filter.begin(), filter.end());
   argv.insert(argv.end(), {"-consumer", "avformat:" + out, "vcodec=png", "pix_fmt=rgba", "mlt_image_format=rgba",
                            "update=1"});
