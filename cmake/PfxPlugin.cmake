@@ -24,5 +24,7 @@ function(pfx_add_plugin name)
     "LINKER:--no-undefined" "LINKER:--as-needed")
   if(shipped)
     install(TARGETS ${name} LIBRARY DESTINATION ${PFX_INSTALL_PLUGINDIR})
+    # For what is made from the shipped plugins once they are built (the per-effect frei0r plugins).
+    set_property(GLOBAL APPEND PROPERTY PFX_SHIPPED_PLUGINS ${name})
   endif()
 endfunction()

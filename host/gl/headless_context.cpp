@@ -28,7 +28,7 @@ pfx_gl_proc HeadlessContext::get_proc_address(void*, const char* name) {
   return reinterpret_cast<pfx_gl_proc>(eglGetProcAddress(name));
 }
 
-std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* error) {
+std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* error, Display display_use) {
   auto fail = [&](const std::string& message) -> std::unique_ptr<HeadlessContext> {
     if (error) *error = "cannot create a headless OpenGL 4.5 core context: " + message;
     return nullptr;
@@ -44,6 +44,7 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* error) {
   if (!get_platform_display) return fail("eglGetPlatformDisplayEXT is missing");
 
   std::unique_ptr<HeadlessContext> self(new HeadlessContext);
+  self->terminate_ = display_use == Display::OWN;
   EGLDisplay display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (display == EGL_NO_DISPLAY) return fail(egl_error_text("eglGetPlatformDisplayEXT"));
   EGLint major = 0, minor = 0;
@@ -75,7 +76,7 @@ HeadlessContext::~HeadlessContext() {
   if (display != EGL_NO_DISPLAY && display) {
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_) eglDestroyContext(display, static_cast<EGLContext>(context_));
-    eglTerminate(display);
+    if (terminate_) eglTerminate(display);
   }
 }
 

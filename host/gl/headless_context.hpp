@@ -11,9 +11,16 @@ namespace pfx::app {
 
 class HeadlessContext {
  public:
+  // What the destructor does with the EGL display. EGL gives every caller in a process the same
+  // display for the same platform, so a library running inside somebody else's program (a frei0r
+  // plugin) must not terminate it: the program, or another plugin, may have contexts on it.
+  enum class Display {
+    OWN,    // our programs: eglTerminate when the context goes
+    SHARED  // a guest in another program: only the context is destroyed
+  };
   // Creates the context, makes it current on this thread and loads the GL functions of this
   // program. On failure returns null and says why in *error (no EGL, no 4.5 core context...).
-  static std::unique_ptr<HeadlessContext> create(std::string* error);
+  static std::unique_ptr<HeadlessContext> create(std::string* error, Display display = Display::OWN);
   ~HeadlessContext();
   HeadlessContext(const HeadlessContext&) = delete;
   HeadlessContext& operator=(const HeadlessContext&) = delete;
@@ -28,6 +35,7 @@ class HeadlessContext {
   HeadlessContext() = default;
   void* display_ = nullptr;
   void* context_ = nullptr;
+  bool terminate_ = true;
   std::string renderer_;
 };
 

@@ -14,9 +14,7 @@ std::vector<float> flip_rows(const std::vector<float>& data, int width, int heig
   return flipped;
 }
 
-namespace {
-
-GLuint make_texture(GLenum internal_format, int width, int height) {
+uint32_t create_texture(uint32_t internal_format, int width, int height) {
   GLuint texture = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &texture);
   glTextureStorage2D(texture, 1, internal_format, width, height);
@@ -25,10 +23,8 @@ GLuint make_texture(GLenum internal_format, int width, int height) {
   return texture;
 }
 
-}  // namespace
-
 uint32_t upload_color_texture(const Image& img) {
-  GLuint texture = make_texture(GL_RGBA16F, img.width, img.height);
+  GLuint texture = create_texture(GL_RGBA16F, img.width, img.height);
   std::vector<float> flipped = flip_rows(img.rgba, img.width, img.height, 4);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(texture, 0, 0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, flipped.data());
@@ -37,14 +33,14 @@ uint32_t upload_color_texture(const Image& img) {
 
 uint32_t upload_depth_texture(const Image& img) {
   if (!img.has_depth()) return 0;
-  GLuint texture = make_texture(GL_R32F, img.width, img.height);
+  GLuint texture = create_texture(GL_R32F, img.width, img.height);
   std::vector<float> flipped = flip_rows(img.depth, img.width, img.height, 1);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(texture, 0, 0, 0, img.width, img.height, GL_RED, GL_FLOAT, flipped.data());
   return texture;
 }
 
-uint32_t create_color_texture(int width, int height) { return make_texture(GL_RGBA16F, width, height); }
+uint32_t create_color_texture(int width, int height) { return create_texture(GL_RGBA16F, width, height); }
 
 Image download_color_texture(uint32_t texture, int width, int height) {
   std::vector<float> data(static_cast<size_t>(width) * height * 4);

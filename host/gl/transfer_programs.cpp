@@ -11,9 +11,12 @@ namespace {
 const char* kDecodeShader = R"(#version 450 core
 layout(binding = 0) uniform sampler2D display_frame;
 layout(location = 0) uniform int srgb;
+layout(location = 1) uniform int flip_rows;  // the frame's height, or 0: no flip
 layout(location = 0) out vec4 color;
 void main() {
-  vec4 value = texelFetch(display_frame, ivec2(gl_FragCoord.xy), 0);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  if (flip_rows != 0) texel.y = flip_rows - 1 - texel.y;
+  vec4 value = texelFetch(display_frame, texel, 0);
   vec3 linear = mix(value.rgb / 12.92, pow((value.rgb + 0.055) / 1.055, vec3(2.4)), greaterThan(value.rgb, vec3(0.04045)));
   color = vec4(srgb != 0 ? linear : value.rgb, value.a);
 }
@@ -25,18 +28,22 @@ void main() {
 const char* kEncodeShader = R"(#version 450 core
 layout(binding = 0) uniform sampler2D chain_output;
 layout(location = 0) uniform int srgb;
+layout(location = 1) uniform int flip_rows;  // the frame's height, or 0: no flip
 layout(location = 0) out vec4 color;
 void main() {
-  vec4 value = texelFetch(chain_output, ivec2(gl_FragCoord.xy), 0);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  if (flip_rows != 0) texel.y = flip_rows - 1 - texel.y;
+  vec4 value = texelFetch(chain_output, texel, 0);
   value = clamp(mix(value, vec4(0.0), isnan(value)), 0.0, 1.0);
   vec3 encoded = mix(value.rgb * 12.92, 1.055 * pow(value.rgb, vec3(1.0 / 2.4)) - 0.055, greaterThan(value.rgb, vec3(0.0031308)));
   color = vec4(srgb != 0 ? encoded : value.rgb, value.a);
 }
 )";
 
-void draw(GLuint program, GLuint vertex_array, GLuint source, app::Transfer transfer) {
+void draw(GLuint program, GLuint vertex_array, GLuint source, app::Transfer transfer, int flip_rows) {
   glUseProgram(program);
   glUniform1i(0, transfer == app::Transfer::SRGB);
+  glUniform1i(1, flip_rows);
   glBindVertexArray(vertex_array);
   glBindTextureUnit(0, source);
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -63,12 +70,12 @@ TransferPrograms::~TransferPrograms() {
   if (vertex_array_) glDeleteVertexArrays(1, &vertex_array_);
 }
 
-void TransferPrograms::decode(GLuint source, app::Transfer transfer) const {
-  draw(decode_program_, vertex_array_, source, transfer);
+void TransferPrograms::decode(GLuint source, app::Transfer transfer, int flip_rows) const {
+  draw(decode_program_, vertex_array_, source, transfer, flip_rows);
 }
 
-void TransferPrograms::encode(GLuint source, app::Transfer transfer) const {
-  draw(encode_program_, vertex_array_, source, transfer);
+void TransferPrograms::encode(GLuint source, app::Transfer transfer, int flip_rows) const {
+  draw(encode_program_, vertex_array_, source, transfer, flip_rows);
 }
 
 }  // namespace pfx::gl

@@ -1,108 +1,11 @@
 #include "chain_recipe.hpp"
 
-#include <algorithm>
-#include <map>
-
-#include "default_chain.hpp"
-
 namespace pfx::inject {
-namespace {
-
-// The effects of `wanted` that are loaded; each other one is a problem from `source`.
-std::vector<app::PresetEffect> loaded_only(const std::vector<app::PresetEffect>& wanted,
-                                           const host::PluginRegistry& registry, RecipeProblem::Source source,
-                                           std::vector<RecipeProblem>* problems) {
-  std::vector<app::PresetEffect> kept;
-  for (const auto& effect : wanted) {
-    if (registry.find_effect(effect.id)) kept.push_back(effect);
-    else
-      problems->push_back({source, "effect '" + effect.id + "' is not loaded (loaded: " + loaded_effect_ids(registry) + ")"});
-  }
-  return kept;
-}
-
-}  // namespace
-
-host::ParamStore store_for(const std::vector<app::PresetEffect>& effects, const host::PluginRegistry& registry) {
-  host::ParamStore store(host::DefaultSet::DISPLAY_REFERRED);
-  std::map<std::string, size_t> instances;
-  for (const auto& effect : effects) ++instances[effect.id];
-  for (const auto& effect : registry.effects()) {
-    store.add_effect(effect.desc);
-    store.set_instance_count(effect.desc->id, std::max<size_t>(1, instances[effect.desc->id]));
-  }
-  return store;
-}
-
-std::string loaded_effect_ids(const host::PluginRegistry& registry) {
-  std::string ids;
-  for (const auto& effect : registry.effects()) ids += (ids.empty() ? "" : ", ") + std::string(effect.desc->id);
-  return ids.empty() ? "none" : ids;
-}
 
 ChainRecipe make_recipe(const InjectSettings& settings, const host::PluginRegistry& registry,
                         std::vector<RecipeProblem>* problems, std::vector<std::string>* notes) {
-  ChainRecipe recipe;
-  app::Preset preset;
-  std::string error;
-  if (!settings.preset.empty() && !app::read_preset(settings.preset, &preset, &error)) {
-    problems->push_back({RecipeProblem::PRESET, error});
-    preset = app::Preset{};
-  }
-  // The first chain that names something usable: --chain, then the preset's. An empty --chain
-  // ("none") is a choice too: the copy in and out only.
-  if (settings.chain) {
-    std::vector<app::PresetEffect> wanted;
-    for (const auto& id : *settings.chain) wanted.push_back({id, true});
-    recipe.effects = loaded_only(wanted, registry, RecipeProblem::CHAIN, problems);
-    recipe.chosen = wanted.empty() || !recipe.effects.empty();
-  }
-  if (!recipe.chosen && preset.chain) {
-    recipe.effects = loaded_only(*preset.chain, registry, RecipeProblem::PRESET, problems);
-    recipe.chosen = preset.chain->empty() || !recipe.effects.empty();
-  }
-  if (!recipe.chosen)
-    for (const auto& id : app::default_chain(registry)) recipe.effects.push_back({id, true});
-
-  // Values are checked in a store shaped like the chain ("bloom#2" needs a second bloom), the
-  // way the pipeline's own store will be.
-  host::ParamStore store = store_for(recipe.effects, registry);
-  if (!preset.parameters_json.empty()) {
-    if (store.from_json(preset.parameters_json, &error)) recipe.parameters_json = preset.parameters_json;
-    else problems->push_back({RecipeProblem::PRESET, settings.preset + ": parameters: " + error});
-  }
-  for (const auto& assignment : settings.sets) {
-    std::string note;
-    if (!store.set_assignment(assignment, &error, &note)) {
-      problems->push_back({RecipeProblem::SET, error});
-      continue;
-    }
-    recipe.sets.push_back(assignment);
-    if (!note.empty()) notes->push_back(assignment + ": " + note);
-  }
-  return recipe;
-}
-
-bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error) {
-  for (const auto& effect : recipe.effects) {
-    if (!chain->add(effect.id, error)) return false;
-    chain->set_enabled(chain->size() - 1, effect.enabled);
-  }
-  // Values after the chain: "bloom#2" exists once the chain holds a second bloom. They were
-  // checked in a store of the same shape, so they apply.
-  if (!recipe.parameters_json.empty() && !params->from_json(recipe.parameters_json, error)) {
-    *error = "preset parameters: " + *error;
-    return false;
-  }
-  for (const auto& assignment : recipe.sets)
-    if (!params->set_assignment(assignment, error)) return false;
-  return true;
-}
-
-bool any_enabled(const host::Chain& chain) {
-  for (size_t i = 0; i < chain.size(); ++i)
-    if (chain.enabled(i)) return true;
-  return false;
+  return app::make_chain_recipe(settings.preset, settings.chain, settings.sets, registry,
+                                app::WithoutChain::DEFAULT_CHAIN, problems, notes);
 }
 
 }  // namespace pfx::inject

@@ -17,6 +17,7 @@
 #include "default_chain.hpp"
 #include "demo_image.hpp"
 #include "demo_scene.hpp"
+#include "display_input.hpp"
 #include "import_scene.hpp"
 #include "exr_io.hpp"
 #include "gbuffer.hpp"
@@ -45,9 +46,27 @@ int error_exit(int code, const std::string& message) {
   return code;
 }
 
-bool load_input(const RenderOptions& options, Image* image, InputReport* report, std::string* error) {
+Transfer input_transfer(const RenderOptions& options) {
+  Transfer transfer = Transfer::SRGB;
+  std::string unused;
+  parse_transfer(options.transfer, &transfer, &unused);  // checked with the options
+  return transfer;
+}
+
+// The --input file (or the demo image) read into *image; an 8-bit input is decoded into
+// display's textures instead, and *image gets only its size.
+bool load_input(const RenderOptions& options, DisplayInput* display, Image* image, InputReport* report,
+                std::string* error) {
   if (options.demo_image) {
     *image = make_demo_image(options.width, options.height);
+    return true;
+  }
+  if (display) {
+    if (!display->load(options.input, input_transfer(options), options.max_input_pixels, error)) return false;
+    *image = Image{};
+    image->width = display->width();
+    image->height = display->height();
+    report->color = display->description();
     return true;
   }
   InputFiles files;
@@ -66,10 +85,12 @@ nlohmann::ordered_json input_json(const RenderOptions& options, const InputRepor
   return input;
 }
 
-bool write_outputs(const RenderOptions& options, const Image& result, std::string* error) {
+// PNG outputs are `encoded` when given (an 8-bit input's result, encoded back as it was decoded),
+// else the result tone-mapped.
+bool write_outputs(const RenderOptions& options, const Image& result, const DisplayImage* encoded, std::string* error) {
   for (const auto& path : options.outputs) {
     bool ok = ends_with(path, ".png")
-                  ? write_png(path, tonemap_to_srgb8(result, options.tone), error)
+                  ? write_png(path, encoded ? *encoded : tonemap_to_srgb8(result, options.tone), error)
                   : write_exr(path, result, options.float_exr ? ExrPixelType::Float : ExrPixelType::Half, error);
     if (!ok) return false;
   }
@@ -117,43 +138,59 @@ pfx_frame image_frame(const Image& input, const CameraOptions& camera) {
   return frame;
 }
 
-host::FrameTextures upload_image(const Image& input) {
+// The input's textures: uploaded from the image, or display's decoded colour.
+host::FrameTextures upload_image(const Image& input, const DisplayInput* display) {
   host::FrameTextures textures;
+  if (display) {
+    textures.color = display->color();
+    return textures;
+  }
   textures.color = upload_color_texture(input);
   textures.depth = upload_depth_texture(input);
   return textures;
 }
 
-// Runs the chain over one frame into a texture of its own and reads the result back.
-bool render_to_image(host::Chain& chain, const pfx_frame& frame, const host::FrameTextures& textures, Image* result,
+void release_textures(const host::FrameTextures& textures, const DisplayInput* display) {
+  if (display) return;  // display's own
+  delete_texture(textures.color);
+  delete_texture(textures.depth);
+}
+
+// Runs the chain over one frame and reads the result back: into display's output texture, and
+// then also *encoded, for an 8-bit input; else into a texture of its own.
+bool render_to_image(host::Chain& chain, const pfx_frame& frame, const host::FrameTextures& textures,
+                     DisplayInput* display, Transfer transfer, Image* result, DisplayImage* encoded,
                      std::string* error) {
   const int width = static_cast<int>(frame.width), height = static_cast<int>(frame.height);
-  uint32_t output = create_color_texture(width, height);
+  uint32_t output = display ? display->output() : create_color_texture(width, height);
   const bool rendered = chain.render(frame, textures, output, error);
   // The pixels are read back next anyway, so waiting for the frame's times costs nothing.
   if (rendered) chain.wait_for_timings();
   if (rendered) *result = download_color_texture(output, width, height);
-  delete_texture(output);
+  if (rendered && display) *encoded = display->encode_output(transfer);
+  if (!display) delete_texture(output);
   return rendered;
 }
 
 // One frame of a sequence: the frame's input (and depth) through the chain, which keeps its
 // plugins, programs and targets from the frame before, to the frame's outputs.
 bool render_sequence_frame(const RenderOptions& effective, const FrameFiles& files, host::Chain& chain,
-                           const std::string& renderer, nlohmann::ordered_json* report, std::string* error) {
+                           DisplayInput* display, const std::string& renderer, nlohmann::ordered_json* report,
+                           std::string* error) {
   RenderOptions options = effective;
   options.input = files.input;
   options.depth = files.depth;
   options.outputs = files.outputs;
   Image input, result;
+  DisplayImage encoded;
   InputReport input_report;
-  if (!load_input(options, &input, &input_report, error)) return false;
+  if (!load_input(options, display, &input, &input_report, error)) return false;
   const pfx_frame frame = image_frame(input, effective.camera);
-  const host::FrameTextures textures = upload_image(input);
-  const bool rendered = render_to_image(chain, frame, textures, &result, error);
-  delete_texture(textures.color);
-  delete_texture(textures.depth);
-  if (!rendered || !write_outputs(options, result, error)) return false;
+  const host::FrameTextures textures = upload_image(input, display);
+  const bool rendered =
+      render_to_image(chain, frame, textures, display, input_transfer(options), &result, &encoded, error);
+  release_textures(textures, display);
+  if (!rendered || !write_outputs(options, result, display ? &encoded : nullptr, error)) return false;
   *report = report_json(renderer, frame, chain.report(), compute_image_stats(result), options.outputs,
                         input_json(options, input_report));
   return true;
@@ -188,7 +225,10 @@ int run(const RenderOptions& options) {
   apply_preset_camera(preset.camera, &effective.camera);
   apply_camera_keys(options.camera, options.camera_keys, &effective.camera);
 
-  host::ParamStore params;
+  // An 8-bit input holds nothing above 1.0: effects start from their display-referred defaults
+  // (bloom's threshold below 1), unless --defaults says otherwise.
+  host::ParamStore params(uses_display_defaults(options) ? host::DefaultSet::DISPLAY_REFERRED
+                                                         : host::DefaultSet::SCENE_REFERRED);
   for (const auto& effect : registry.effects()) params.add_effect(effect.desc);
   host::Chain chain(registry, params);
   host::Timing timing = host::Timing::OFF;
@@ -213,9 +253,18 @@ int run(const RenderOptions& options) {
     if (!note.empty()) std::fprintf(stderr, "pfx-render: warning: --set %s: %s\n", assignment.c_str(), note.c_str());
   }
 
+  std::unique_ptr<DisplayInput> display;
+  if (has_display_input(options)) {
+    display = DisplayInput::create(&message);
+    if (!display) return error_exit(kInternal, message);
+    if (preset.exposure_ev || preset.tone)
+      std::fprintf(stderr, "pfx-render: note: %s: the display settings do not apply to an 8-bit input\n",
+                   options.preset.c_str());
+  }
+
   if (options.sequence.given) {
     return run_sequence(options, [&](const FrameFiles& files, nlohmann::ordered_json* report, std::string* error) {
-      return render_sequence_frame(effective, files, chain, context->renderer(), report, error);
+      return render_sequence_frame(effective, files, chain, display.get(), context->renderer(), report, error);
     });
   }
 
@@ -247,20 +296,19 @@ int run(const RenderOptions& options) {
     frame = make_scene_frame(scene, scene.camera, options.width, options.height);
     textures = scene_renderer->textures();
   } else {
-    if (!load_input(options, &input, &input_report, &message)) return error_exit(kBadInput, message);
+    if (!load_input(options, display.get(), &input, &input_report, &message)) return error_exit(kBadInput, message);
     frame = image_frame(input, effective.camera);
-    textures = upload_image(input);
+    textures = upload_image(input, display.get());
   }
 
   Image result;
-  const bool rendered = render_to_image(chain, frame, textures, &result, &message);
-  if (!scene_renderer) {
-    delete_texture(textures.color);
-    delete_texture(textures.depth);
-  }
+  DisplayImage encoded;
+  const bool rendered = render_to_image(chain, frame, textures, display.get(), input_transfer(options), &result,
+                                        &encoded, &message);
+  if (!scene_renderer) release_textures(textures, display.get());
   if (!rendered) return error_exit(kEffectError, message);
 
-  if (!write_outputs(effective, result, &message)) return error_exit(kInternal, message);
+  if (!write_outputs(effective, result, display ? &encoded : nullptr, &message)) return error_exit(kInternal, message);
   const host::FrameReport& report = chain.report();
   if (options.json) {
     const nlohmann::ordered_json input_read = options.input.empty() ? nlohmann::ordered_json() : input_json(options, input_report);

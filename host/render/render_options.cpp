@@ -2,7 +2,9 @@
 
 #include "arg_reader.hpp"
 #include "cli_text.hpp"
+#include "display_transfer.hpp"
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 
@@ -12,7 +14,8 @@ std::string render_usage() {
   return
       "usage: pfx-render [--plugins DIR]... (--demo [--lights N] [--seed S] | --demo-image\n"
       "                  | --scene FILE.obj [--lights N] [--seed S]\n"
-      "                  | --input IMG.exr [--layer NAME] [--depth DEPTH.exr]) [--size WxH]\n"
+      "                  | --input IMG.exr [--layer NAME] [--depth DEPTH.exr]\n"
+      "                  | --input IMG.png [--transfer srgb|linear]) [--size WxH]\n"
       "                  [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
       "                  [--preset FILE] [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
       "       pfx-render --input SHOT.%04d.exr [--depth Z.%04d.exr] --frames FIRST-LAST[xSTEP]\n"
@@ -43,6 +46,16 @@ std::string render_usage() {
       "  --layer NAME         with --input: read the part or layer NAME (e.g. diffuse for diffuse.R)\n"
       "  --depth DEPTH.exr    linear depth (m) from another EXR: its Z channel, else a 'depth' channel\n"
       "                       or the Z of a layer, else R, else Y, else its only channel\n"
+      "  --input IMG.png      an 8-bit PNG (RGB, RGBA or grey; 16-bit is reduced to 8): a display-\n"
+      "                       referred frame, as a video tool hands to the frei0r plugins and the\n"
+      "                       GStreamer element (docs/hosts.md). It is decoded to linear light on the\n"
+      "                       GPU by the same code as those hosts (--transfer), its PNG outputs are\n"
+      "                       encoded back the same way (not tone-mapped: --exposure and --tone do\n"
+      "                       not apply), so pfx-render gives the bytes they give; alpha is kept as\n"
+      "                       it was. Parameters start from their display-referred defaults\n"
+      "                       (--defaults)\n"
+      "  --transfer T         with an 8-bit --input: srgb (default: the exact sRGB curve, what almost\n"
+      "                       every video and picture holds) or linear (the codes are linear light)\n"
       "  --max-input-pixels N refuse an input EXR whose header declares more than N pixels, before\n"
       "                       reading or allocating anything (default 67108864 = 8192 x 8192)\n"
       "  --camera K=V,...     the camera the effects see: fovy (degrees, default 45), near (m, 0.1),\n"
@@ -62,10 +75,17 @@ std::string render_usage() {
       "  --preset FILE        a preset saved by pfx-view (docs/viewer.md): the chain with each effect\n"
       "                       on or off, parameter values, the camera and the display settings;\n"
       "                       --chain, --set, --camera, --exposure and --tone given as well override it\n"
+      "  --defaults D         the defaults parameters start from before --preset and --set: scene\n"
+      "                       (scene-linear HDR, where 1 is diffuse white and highlights go far\n"
+      "                       above) or display (display-referred frames holding nothing above 1,\n"
+      "                       e.g. bloom's threshold 0.6 instead of 1; --list shows both). Default:\n"
+      "                       display for an 8-bit --input, scene otherwise; give display for an\n"
+      "                       EXR made from an 8-bit source\n"
       "  --list               list plugins, effects and parameters (with --json: all metadata)\n"
       "\n"
       "output\n"
-      "  --out FILE           .exr (half; --float for 32-bit) or .png (tone-mapped, sRGB);\n"
+      "  --out FILE           .exr (half; --float for 32-bit) or .png (tone-mapped, sRGB; from an\n"
+      "                       8-bit --input: encoded back as --transfer says, with the input's alpha);\n"
       "                       repeatable; every file is written to a temporary name, then renamed\n"
       "  --float              32-bit float EXR output\n"
       "  --exposure EV        exposure for PNG output (default 0)\n"
@@ -116,6 +136,17 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
     else if (arg == "--preset") { if (!args.value(&options.preset)) return false; }
     else if (arg == "--depth") { if (!args.value(&options.depth)) return false; }
     else if (arg == "--layer") { if (!args.value(&options.layer)) return false; }
+    else if (arg == "--transfer") {
+      if (!args.value(&options.transfer)) return false;
+      Transfer transfer;
+      std::string why;
+      if (!parse_transfer(options.transfer, &transfer, &why)) return args.fail("--transfer: " + why);
+      options.transfer_given = true;
+    } else if (arg == "--defaults") {
+      if (!args.value(&options.defaults)) return false;
+      if (options.defaults != "scene" && options.defaults != "display")
+        return args.fail("--defaults " + options.defaults + ": expected scene or display");
+    }
     else if (arg == "--plugins") {
       if (!args.value(&options.plugin_dirs)) return false;
     } else if (arg == "--set") {
@@ -174,6 +205,15 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
     return args.fail("give exactly one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
   if (!options.depth.empty() && options.input.empty()) return args.fail("--depth goes with --input");
   if (!options.layer.empty() && options.input.empty()) return args.fail("--layer goes with --input");
+  if (has_display_input(options)) {
+    if (!options.depth.empty() || !options.layer.empty())
+      return args.fail("--depth and --layer go with an EXR --input (" + options.input + " is an 8-bit PNG)");
+    if (options.exposure_given || options.tone_given)
+      return args.fail("--exposure and --tone tone-map an HDR input; the PNG output of an 8-bit --input is "
+                       "encoded back as it was decoded (--transfer)");
+  } else if (options.transfer_given) {
+    return args.fail("--transfer goes with an 8-bit --input (IMG.png)");
+  }
   if (options.size_given && !options.input.empty())
     return args.fail("--size applies to --demo and --demo-image (an input image has its own size)");
   if ((options.lights_given || options.seed_given) && !options.demo && options.scene.empty())
@@ -185,6 +225,19 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
   if (options.outputs.empty() && !options.json) return args.fail("nothing to do: give --out FILE and/or --json");
   *out = options;
   return true;
+}
+
+bool is_display_input(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string extension = path.substr(path.size() - 4);
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".png";
+}
+
+bool has_display_input(const RenderOptions& options) { return is_display_input(options.input); }
+
+bool uses_display_defaults(const RenderOptions& options) {
+  return options.defaults.empty() ? has_display_input(options) : options.defaults == "display";
 }
 
 }  // namespace pfx::app

@@ -20,7 +20,7 @@ struct RenderOptions {
   int extra_lights = 0;                 // --lights N, --demo only
   uint64_t seed = 1;                    // --seed S, --demo only
   bool lights_given = false, seed_given = false;
-  std::string input, depth;             // --input IMG.exr [--depth DEPTH.exr]
+  std::string input, depth;             // --input IMG.exr|IMG.png [--depth DEPTH.exr]
   std::string layer;                    // --layer NAME: the part or layer of --input to read
   std::string scene;                    // --scene FILE.obj: an imported model, lit and framed
   int width = 1280, height = 720;       // --size, --demo and --demo-image only
@@ -36,6 +36,9 @@ struct RenderOptions {
   ToneMapSettings tone;
   bool exposure_given = false, tone_given = false;
   std::string preset;                    // --preset FILE (pfx-view saves them)
+  std::string transfer = "srgb";         // --transfer srgb|linear: how an 8-bit --input is decoded
+  bool transfer_given = false;
+  std::string defaults;                  // --defaults scene|display; empty: display for an 8-bit input
   long long max_input_pixels = 1LL << 26;  // --max-input-pixels: larger EXR inputs are refused unread
   std::string timing = "auto";           // auto | gpu | finish | off
   bool verbose = false;
@@ -44,6 +47,12 @@ struct RenderOptions {
 
 // Parses argv (without argv[0]). False with *error for a usage error (exit code 2).
 bool parse_render_options(const std::vector<std::string>& args, RenderOptions* out, std::string* error);
+// "x.png" (any case): the inputs pfx-render reads as 8-bit display-referred frames.
+bool is_display_input(const std::string& path);
+// Whether --input is an 8-bit display-referred frame (a PNG), which --transfer decodes.
+bool has_display_input(const RenderOptions& options);
+// Whether parameters start from their display-referred defaults: --defaults, else an 8-bit input.
+bool uses_display_defaults(const RenderOptions& options);
 std::string render_usage();
 
 }  // namespace pfx::app

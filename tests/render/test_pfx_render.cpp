@@ -17,7 +17,7 @@ TEST_CASE("help documents every option and exit code", "[render]") {
   Result r = pfx_render("--help", false);
   CHECK(r.exit_code == 0);
   for (const char* option : {"--plugins", "--demo", "--demo-image", "--lights", "--seed", "--input", "--layer", "--depth", "--size", "--camera", "--chain", "--set",
-                             "--out", "--json", "--list", "--float", "--exposure", "--tone", "--timing", "--preset",
+                             "--out", "--json", "--list", "--float", "--exposure", "--tone", "--timing", "--preset", "--transfer", "--defaults",
                              "exit codes: 0 ok, 1 internal", "2 usage", "3 bad input file", "4 plugin or effect error"})
     CHECK(r.out.find(option) != std::string::npos);
 }

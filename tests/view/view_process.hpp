@@ -37,6 +37,8 @@ class ViewerProcess {
   int wait_exit(double timeout_seconds);
   // Everything the program printed so far, for failure messages.
   const std::string& output() const { return output_; }
+  // The program's process id (to read its /proc entries while it runs).
+  pid_t pid() const { return pid_; }
 
  private:
   bool read_more(std::chrono::steady_clock::time_point deadline);

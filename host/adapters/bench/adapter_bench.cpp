@@ -1,0 +1,220 @@
+// pfx-adapter-bench: what the video-host adapters cost, measured in the real hosts. For each row
+// a host program (ffmpeg, gst-launch-1.0) runs the same clip twice, with a short and a long
+// frame count; the difference of the two wall times over the difference of the frame counts is
+// the time one more frame takes, without the program's start-up (plugin scan, GL context, shader
+// compiles). Each row runs --runs times and its median is kept. A plain full-screen RGBA16F copy
+// pass at the same size is timed in this process before and after the rows: the unit the adapters'
+// extra time is quoted in, since absolute times on a shared software renderer drift.
+//
+//   pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE]
+//
+// The adapters are the ones beside this program (BIN/../lib/frei0r-1, BIN/../lib/gstreamer-1.0);
+// ffmpeg's glow comes from Debian's frei0r-plugins, gleffects from gstreamer1.0-gl.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "cli_text.hpp"
+#include "copy_pass.hpp"
+#include "headless_context.hpp"
+#include "image_texture.hpp"
+#include "plugin_directory.hpp"
+
+namespace fs = std::filesystem;
+extern char** environ;
+
+namespace {
+
+struct Row {
+  std::string host, name, what;   // "ffmpeg", "pfx_bloom", the filter as given to the host
+  std::string baseline;           // the row whose time this one's extra is measured from ("" for none)
+  double ms_per_frame = 0;
+};
+
+struct Options {
+  int width = 1920, height = 1080;
+  int short_frames = 8, long_frames = 32;
+  int runs = 3;
+  std::string json;
+};
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values.empty() ? 0 : values[values.size() / 2];
+}
+
+// Runs argv with `environment` added, its output to /dev/null; the wall time in seconds, or -1
+// when it failed.
+double timed_run(const std::vector<std::string>& argv, const std::vector<std::string>& environment) {
+  std::vector<std::string> variables;
+  for (char** entry = environ; *entry; ++entry) variables.push_back(*entry);
+  variables.insert(variables.end(), environment.begin(), environment.end());
+  std::vector<char*> args, env;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  for (const auto& v : variables) env.push_back(const_cast<char*>(v.c_str()));
+  args.push_back(nullptr);
+  env.push_back(nullptr);
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execvpe(args[0], args.data(), env.data());
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? seconds : -1;
+}
+
+// The median over the copy passes of `repeats` timed draws (glFinish around each).
+double copy_pass_ms(int width, int height, int repeats) {
+  pfx::bench::CopyPass pass;
+  const uint32_t source = pfx::app::create_color_texture(width, height);
+  const uint32_t target = pfx::app::create_color_texture(width, height);
+  std::vector<double> times;
+  for (int i = 0; i < repeats + 3; ++i) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    pass.run(source, target, width, height);
+    glFinish();
+    if (i >= 3) times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  pfx::app::delete_texture(source);
+  pfx::app::delete_texture(target);
+  return median(times);
+}
+
+std::vector<std::string> words(const std::string& text) { return pfx::app::split_list(text, ' '); }
+
+bool parse(int argc, char** argv, Options* options) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    std::string error;
+    if (arg == "--size" && has_value) {
+      if (!pfx::app::parse_frame_size("--size", argv[++i], &options->width, &options->height, &error)) {
+        std::fprintf(stderr, "pfx-adapter-bench: %s\n", error.c_str());
+        return false;
+      }
+    } else if (arg == "--frames" && has_value) {
+      if (std::sscanf(argv[++i], "%d,%d", &options->short_frames, &options->long_frames) != 2 ||
+          options->short_frames < 1 || options->long_frames <= options->short_frames)
+        return false;
+    } else if (arg == "--runs" && has_value) {
+      options->runs = std::atoi(argv[++i]);
+      if (options->runs < 1) return false;
+    } else if (arg == "--json" && has_value) {
+      options->json = argv[++i];
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (!parse(argc, argv, &options)) {
+    std::fputs("usage: pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE]\n", stderr);
+    return 2;
+  }
+  std::string error;
+  auto context = pfx::app::HeadlessContext::create(&error);
+  if (!context) {
+    std::fprintf(stderr, "pfx-adapter-bench: %s\n", error.c_str());
+    return 1;
+  }
+  const fs::path lib = fs::path(pfx::app::executable_directory()) / ".." / "lib";
+  const std::vector<std::string> environment = {
+      "FREI0R_PATH=" + (lib / "frei0r-1").string() + ":/usr/lib/frei0r-1",
+      "GST_PLUGIN_PATH=" + (lib / "gstreamer-1.0").string(), "GST_GL_PLATFORM=egl", "GST_GL_WINDOW=egl-device"};
+  const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height);
+  const fs::path scratch = fs::temp_directory_path() / ("pfx-adapter-bench-" + std::to_string(getpid()));
+  fs::create_directories(scratch);
+  const std::string clip = (scratch / "clip.mkv").string();
+  if (timed_run({"ffmpeg", "-hide_banner", "-loglevel", "error", "-f", "lavfi", "-i", "testsrc2=size=" + size + ":rate=25",
+                 "-frames:v", std::to_string(options.long_frames), "-c:v", "ffv1", "-y", clip},
+                environment) < 0) {
+    std::fprintf(stderr, "pfx-adapter-bench: ffmpeg could not make the clip\n");
+    return 1;
+  }
+
+  std::vector<Row> rows = {
+      {"ffmpeg", "no filter (decode, to RGBA)", "format=rgba", ""},
+      {"ffmpeg", "pfx_chain chain=none", "format=rgba,frei0r=filter_name=pfx_chain:filter_params=none",
+       "no filter (decode, to RGBA)"},
+      {"ffmpeg", "pfx_bloom", "format=rgba,frei0r=filter_name=pfx_bloom", "no filter (decode, to RGBA)"},
+      {"ffmpeg", "frei0r glow", "format=rgba,frei0r=filter_name=glow", "no filter (decode, to RGBA)"},
+      {"ffmpeg", "gblur sigma=8", "format=rgba,gblur=sigma=8", "no filter (decode, to RGBA)"},
+      {"gst-launch-1.0", "no filter (upload, download)", "", ""},
+      {"gst-launch-1.0", "pfxfilter chain=none", "pfxfilter chain=none !", "no filter (upload, download)"},
+      {"gst-launch-1.0", "pfxfilter chain=bloom", "pfxfilter chain=bloom !", "no filter (upload, download)"},
+      {"gst-launch-1.0", "gleffects effect=glow", "gleffects effect=glow !", "no filter (upload, download)"},
+  };
+  auto command = [&](const Row& row, int frames) {
+    if (row.host == "ffmpeg")
+      return std::vector<std::string>{"ffmpeg", "-hide_banner", "-loglevel", "error", "-i", clip, "-frames:v",
+                                      std::to_string(frames), "-vf", row.what, "-f", "null", "-"};
+    std::vector<std::string> argv = {"gst-launch-1.0", "-q"};
+    const std::string pipeline = "videotestsrc num-buffers=" + std::to_string(frames) +
+                                 " pattern=smpte ! video/x-raw,format=RGBA,width=" + std::to_string(options.width) +
+                                 ",height=" + std::to_string(options.height) + " ! glupload ! " + row.what +
+                                 " gldownload ! fakesink sync=false";
+    for (const auto& word : words(pipeline)) argv.push_back(word);
+    return argv;
+  };
+
+  const double copy_before = copy_pass_ms(options.width, options.height, 15);
+  for (auto& row : rows) {
+    std::vector<double> per_frame;
+    for (int run = 0; run < options.runs; ++run) {
+      const double short_run = timed_run(command(row, options.short_frames), environment);
+      const double long_run = timed_run(command(row, options.long_frames), environment);
+      if (short_run < 0 || long_run < 0) {
+        std::fprintf(stderr, "pfx-adapter-bench: %s %s failed\n", row.host.c_str(), row.name.c_str());
+        return 1;
+      }
+      per_frame.push_back(1000 * (long_run - short_run) / (options.long_frames - options.short_frames));
+    }
+    row.ms_per_frame = median(per_frame);
+    std::fprintf(stderr, "%s %s: %.1f ms a frame\n", row.host.c_str(), row.name.c_str(), row.ms_per_frame);
+  }
+  const double copy_after = copy_pass_ms(options.width, options.height, 15);
+  const double copy = (copy_before + copy_after) / 2;
+  fs::remove_all(scratch);
+
+  std::printf("renderer: %s\nsize: %s, frames %d and %d, median of %d runs; copy pass %.2f ms (%.2f before, %.2f after)\n\n",
+              context->renderer().c_str(), size.c_str(), options.short_frames, options.long_frames, options.runs, copy,
+              copy_before, copy_after);
+  std::printf("| host | filter | frames/s | ms a frame | added ms a frame | added, in copy passes |\n|---|---|---|---|---|---|\n");
+  std::string json = "{\"renderer\": \"" + context->renderer() + "\", \"size\": \"" + size + "\", \"copy_pass_ms\": " +
+                     std::to_string(copy) + ", \"rows\": [";
+  for (const auto& row : rows) {
+    double base = 0;
+    for (const auto& other : rows)
+      if (other.host == row.host && other.name == row.baseline) base = other.ms_per_frame;
+    const double added = row.baseline.empty() ? 0 : row.ms_per_frame - base;
+    std::printf("| %s | %s | %.1f | %.1f | %s | %s |\n", row.host.c_str(), row.name.c_str(), 1000 / row.ms_per_frame,
+                row.ms_per_frame, row.baseline.empty() ? "" : std::to_string(added).substr(0, 6).c_str(),
+                row.baseline.empty() ? "" : std::to_string(added / copy).substr(0, 5).c_str());
+    json += std::string(&row == &rows.front() ? "" : ", ") + "{\"host\": \"" + row.host + "\", \"filter\": \"" + row.name +
+            "\", \"ms_per_frame\": " + std::to_string(row.ms_per_frame) + ", \"added_ms\": " + std::to_string(added) + "}";
+  }
+  json += "]}\n";
+  if (!options.json.empty()) std::ofstream(options.json) << json;
+  return 0;
+}

@@ -1,0 +1,56 @@
+#include "chain_settings.hpp"
+
+#include <optional>
+
+#include "cli_text.hpp"
+
+namespace pfx::adapters {
+namespace {
+
+std::string trimmed(const std::string& text) {
+  const size_t begin = text.find_first_not_of(" \t\r\n");
+  if (begin == std::string::npos) return "";
+  return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
+}  // namespace
+
+std::vector<std::string> split_assignments(const std::string& text) {
+  std::vector<std::string> items;
+  for (const auto& item : app::split_list(text, ';')) {
+    std::string assignment = trimmed(item);
+    if (!assignment.empty()) items.push_back(assignment);
+  }
+  return items;
+}
+
+bool resolve_chain_settings(const ChainSettings& settings, const host::PluginRegistry& registry,
+                            app::Transfer* transfer, app::ChainRecipe* recipe, std::string* error) {
+  // Empty is the default: ffmpeg's filter_params give every parameter before the last one named.
+  const std::string transfer_text = trimmed(settings.transfer);
+  if (!app::parse_transfer(transfer_text.empty() ? "srgb" : transfer_text, transfer, error)) return false;
+  std::optional<std::vector<std::string>> chain;
+  const std::string chain_text = trimmed(settings.chain);
+  if (chain_text == "none") {
+    chain.emplace();
+  } else if (!chain_text.empty()) {
+    chain.emplace();
+    for (const auto& id : app::split_list(chain_text)) chain->push_back(trimmed(id));
+  }
+  // A video host has nobody to tell what was left out while frames run: anything that does not
+  // apply is an error, and the filter passes frames through saying why.
+  std::vector<app::RecipeProblem> problems;
+  std::vector<std::string> notes;
+  *recipe = app::make_chain_recipe(trimmed(settings.preset), chain, split_assignments(settings.set), registry,
+                                   app::WithoutChain::NO_EFFECT, &problems, &notes);
+  if (problems.empty()) return true;
+  error->clear();
+  for (const auto& problem : problems) {
+    const char* origin = problem.source == app::RecipeProblem::CHAIN ? "chain" :
+                         problem.source == app::RecipeProblem::PRESET ? "preset" : "set";
+    *error += (error->empty() ? "" : "; ") + std::string(origin) + ": " + problem.message;
+  }
+  return false;
+}
+
+}  // namespace pfx::adapters

@@ -1,0 +1,63 @@
+#include "frame_chain.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "camera_options.hpp"
+
+namespace pfx::adapters {
+
+std::unique_ptr<FrameChain> FrameChain::build(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
+                                              const std::string& set_origin, std::vector<std::string>* notes,
+                                              std::string* error) {
+  std::unique_ptr<FrameChain> self(new FrameChain);
+  self->params_ = std::make_unique<host::ParamStore>(host::DefaultSet::DISPLAY_REFERRED);
+  for (const auto& effect : registry.effects()) self->params_->add_effect(effect.desc);
+  self->chain_ = std::make_unique<host::Chain>(registry, *self->params_);
+  if (!app::build_chain(recipe, self->chain_.get(), self->params_.get(), error, notes, set_origin)) return nullptr;
+  return self;
+}
+
+FrameChain::~FrameChain() {
+  // Instances before the store they read.
+  chain_.reset();
+  params_.reset();
+}
+
+bool FrameChain::runs_effects() const { return app::any_enabled(*chain_); }
+
+bool FrameChain::render(gl::DisplayFrame& frame, double time_seconds, uint64_t frame_index, GLuint* result,
+                        std::string* error) {
+  if (!runs_effects()) {
+    *result = frame.color();
+    return true;
+  }
+  // A video frame is colour alone: no depth, normals or lights arrive with it.
+  pfx_frame description{};
+  description.struct_size = sizeof description;
+  description.width = static_cast<uint32_t>(frame.width());
+  description.height = static_cast<uint32_t>(frame.height());
+  description.inputs = PFX_INPUT_COLOR;
+  description.depth_encoding = PFX_DEPTH_NONE;
+  description.camera = app::make_camera(app::CameraOptions{}, frame.width(), frame.height());
+  // As the host gives it (docs/hosts.md says what each host passes); a non-finite time is none.
+  description.time_seconds = std::isfinite(time_seconds) ? time_seconds : 0.0;
+  description.frame_index = frame_index;
+  description.light_struct_size = sizeof(pfx_light);
+  host::FrameTextures textures;
+  textures.color = frame.color();
+  if (!chain_->render(description, textures, frame.output(), error)) return false;
+  *result = frame.output();
+  return true;
+}
+
+bool no_gl_error(std::string* error) {
+  const GLenum gl_error = glGetError();
+  if (gl_error == GL_NO_ERROR) return true;
+  char text[64];
+  std::snprintf(text, sizeof text, "GL error 0x%04x while running the chain", gl_error);
+  *error = text;
+  return false;
+}
+
+}  // namespace pfx::adapters

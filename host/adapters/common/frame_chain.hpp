@@ -1,0 +1,50 @@
+// The chain an adapter runs over one 8-bit frame: effect instances and their values (starting at
+// the display-referred defaults, since such a frame holds nothing above 1.0), run from the
+// decoded frame to the texture that is encoded back. Made, used and destroyed on the thread where
+// the adapter's GL context is current.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pfx/host/chain.hpp>
+#include <pfx/host/param_store.hpp>
+#include <pfx/host/plugin_registry.hpp>
+
+#include "chain_builder.hpp"
+#include "display_frame.hpp"
+
+namespace pfx::adapters {
+
+class FrameChain {
+ public:
+  // Creates the effects (their programs compile now). Null with *error naming the effect or the
+  // assignment (which starts with set_origin, the setting that gave it); *notes gets values the
+  // store adjusted (clamped to their range).
+  static std::unique_ptr<FrameChain> build(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
+                                           const std::string& set_origin, std::vector<std::string>* notes,
+                                           std::string* error);
+  ~FrameChain();
+
+  host::ParamStore& params() { return *params_; }
+  host::Chain& chain() { return *chain_; }
+  // Whether any effect is on: without one the decoded frame goes straight back out.
+  bool runs_effects() const;
+
+  // Runs the chain over frame.color() into frame.output(); *result is the texture to encode
+  // (frame.color() when no effect is on). False with *error naming the effect or pass.
+  bool render(gl::DisplayFrame& frame, double time_seconds, uint64_t frame_index, GLuint* result, std::string* error);
+
+ private:
+  FrameChain() = default;
+  std::unique_ptr<host::ParamStore> params_;
+  std::unique_ptr<host::Chain> chain_;
+};
+
+// After a frame: false with *error ("GL error 0x0505 while running the chain") when the GL
+// reports an error.
+bool no_gl_error(std::string* error);
+
+}  // namespace pfx::adapters

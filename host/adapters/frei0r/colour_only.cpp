@@ -1,0 +1,76 @@
+#include "colour_only.hpp"
+
+#include <algorithm>
+
+#include <pfx/host/param_store.hpp>
+
+#include "camera_options.hpp"
+
+namespace pfx::frei0r {
+namespace {
+
+// The frame a renderer with every buffer would give: all inputs there, linear depth.
+pfx_frame full_frame() {
+  pfx_frame frame{};
+  frame.struct_size = sizeof frame;
+  frame.width = 64;
+  frame.height = 48;
+  frame.inputs = PFX_INPUT_COLOR | PFX_INPUT_DEPTH | PFX_INPUT_NORMAL | PFX_INPUT_ALBEDO | PFX_INPUT_EMISSIVE |
+                 PFX_INPUT_LIGHTS;
+  frame.depth_encoding = PFX_DEPTH_LINEAR;
+  frame.camera = app::make_camera(app::CameraOptions{}, 64, 48);
+  frame.light_struct_size = sizeof(pfx_light);
+  return frame;
+}
+
+void add_need(std::vector<std::string>* needs, const std::string& name) {
+  if (std::find(needs->begin(), needs->end(), name) == needs->end()) needs->push_back(name);
+}
+
+EffectInputs classify(const host::EffectInfo& effect) {
+  EffectInputs result;
+  result.id = effect.desc->id;
+  void* instance = nullptr;
+  if (effect.desc->create(effect.plugin->host, &instance) != PFX_OK || !instance) {
+    result.error = "create failed";
+    return result;
+  }
+  std::vector<pfx_value> values;
+  for (uint32_t i = 0; i < effect.desc->param_count; ++i)
+    values.push_back(host::default_for(effect.desc->params[i], host::DefaultSet::DISPLAY_REFERRED));
+  const pfx_frame frame = full_frame();
+  pfx_declaration declaration{};
+  declaration.struct_size = sizeof declaration;
+  if (effect.desc->declare(instance, &frame, values.data(), &declaration) != PFX_OK) {
+    result.error = "declare failed";
+  } else {
+    std::vector<std::string> targets;
+    for (uint32_t t = 0; t < declaration.target_count; ++t) targets.push_back(declaration.targets[t].name);
+    for (uint32_t p = 0; p < declaration.pass_count; ++p)
+      for (uint32_t i = 0; i < declaration.passes[p].input_count; ++i) {
+        const std::string name = declaration.passes[p].inputs[i].name;
+        if (name != PFX_INPUT_NAME_COLOR && std::find(targets.begin(), targets.end(), name) == targets.end())
+          add_need(&result.needs, name);
+      }
+    const struct {
+      uint32_t bit;
+      const char* name;
+    } bits[] = {{PFX_INPUT_DEPTH, "depth"}, {PFX_INPUT_NORMAL, "normal"}, {PFX_INPUT_ALBEDO, "albedo"},
+                {PFX_INPUT_EMISSIVE, "emissive"}, {PFX_INPUT_LIGHTS, "lights"}};
+    for (const auto& bit : bits)
+      if (declaration.inputs & bit.bit) add_need(&result.needs, bit.name);
+    result.colour_only = result.needs.empty();
+  }
+  effect.desc->destroy(instance);
+  return result;
+}
+
+}  // namespace
+
+std::vector<EffectInputs> classify_effects(const host::PluginRegistry& registry) {
+  std::vector<EffectInputs> results;
+  for (const auto& effect : registry.effects()) results.push_back(classify(effect));
+  return results;
+}
+
+}  // namespace pfx::frei0r

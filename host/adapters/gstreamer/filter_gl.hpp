@@ -1,0 +1,41 @@
+// What pfxfilter does on GStreamer's GL thread, apart from GStreamer's types: the plugins, the
+// frame's textures and the chain, run from the input texture to the output texture on
+// GStreamer's own context (no copy through the CPU). GL state the element finds is put back
+// (libpfxhost's GlStateGuard), so a GL element after it sees what it would without pfx.
+//
+// No GL header here: the element's file includes GStreamer's, which cannot meet glad's.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pfx/host/plugin_registry.hpp>
+
+#include "chain_settings.hpp"
+
+namespace pfx::gst {
+
+class FilterGl {
+ public:
+  // With the context current (desktop OpenGL 4.5, checked by the caller): loads GL through
+  // `loader` and the pfx plugins. Null with *error. *messages gets the plugins refused.
+  static std::unique_ptr<FilterGl> start(host::GlProcLoader loader, const std::string& library,
+                                         std::vector<std::string>* messages, std::string* error);
+  ~FilterGl();
+
+  // Runs the chain the settings name over `in` into `out` (textures of width x height, RGBA8 or
+  // RGB10_A2, row 0 at the top). Settings that do not build (an unknown effect, a bad
+  // assignment, a missing preset) copy the frame unchanged and put the reason in *warning, once
+  // per revision of the settings. False with *error only when GL itself failed.
+  bool process(const adapters::ChainSettings& settings, uint64_t revision, uint32_t in, uint32_t out, int width,
+               int height, double time_seconds, std::string* warning, std::string* error);
+
+ private:
+  struct Impl;
+  FilterGl();
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pfx::gst

@@ -1,0 +1,115 @@
+#include "chain_builder.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "default_chain.hpp"
+
+namespace pfx::app {
+namespace {
+
+// The effects of `wanted` that are loaded; each other one is a problem from `source`.
+std::vector<PresetEffect> loaded_only(const std::vector<PresetEffect>& wanted, const host::PluginRegistry& registry,
+                                      RecipeProblem::Source source, std::vector<RecipeProblem>* problems) {
+  std::vector<PresetEffect> kept;
+  for (const auto& effect : wanted) {
+    if (registry.find_effect(effect.id)) kept.push_back(effect);
+    else
+      problems->push_back({source, "effect '" + effect.id + "' is not loaded (loaded: " + loaded_effect_ids(registry) + ")"});
+  }
+  return kept;
+}
+
+}  // namespace
+
+host::ParamStore store_for(const std::vector<PresetEffect>& effects, const host::PluginRegistry& registry) {
+  host::ParamStore store(host::DefaultSet::DISPLAY_REFERRED);
+  std::map<std::string, size_t> instances;
+  for (const auto& effect : effects) ++instances[effect.id];
+  for (const auto& effect : registry.effects()) {
+    store.add_effect(effect.desc);
+    store.set_instance_count(effect.desc->id, std::max<size_t>(1, instances[effect.desc->id]));
+  }
+  return store;
+}
+
+std::string loaded_effect_ids(const host::PluginRegistry& registry) {
+  std::string ids;
+  for (const auto& effect : registry.effects()) ids += (ids.empty() ? "" : ", ") + std::string(effect.desc->id);
+  return ids.empty() ? "none" : ids;
+}
+
+ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optional<std::vector<std::string>>& chain,
+                              const std::vector<std::string>& sets, const host::PluginRegistry& registry,
+                              WithoutChain without, std::vector<RecipeProblem>* problems,
+                              std::vector<std::string>* notes) {
+  ChainRecipe recipe;
+  Preset preset;
+  std::string error;
+  if (!preset_path.empty() && !read_preset(preset_path, &preset, &error)) {
+    problems->push_back({RecipeProblem::PRESET, error});
+    preset = Preset{};
+  }
+  // The first chain that names something usable: the given one, then the preset's. An empty
+  // given chain ("none") is a choice too: the copy in and out only.
+  if (chain) {
+    std::vector<PresetEffect> wanted;
+    for (const auto& id : *chain) wanted.push_back({id, true});
+    recipe.effects = loaded_only(wanted, registry, RecipeProblem::CHAIN, problems);
+    recipe.chosen = wanted.empty() || !recipe.effects.empty();
+  }
+  if (!recipe.chosen && preset.chain) {
+    recipe.effects = loaded_only(*preset.chain, registry, RecipeProblem::PRESET, problems);
+    recipe.chosen = preset.chain->empty() || !recipe.effects.empty();
+  }
+  if (!recipe.chosen && without == WithoutChain::DEFAULT_CHAIN)
+    for (const auto& id : default_chain(registry)) recipe.effects.push_back({id, true});
+
+  // Values are checked in a store shaped like the chain ("bloom#2" needs a second bloom), the
+  // way the host's own store will be.
+  host::ParamStore store = store_for(recipe.effects, registry);
+  if (!preset.parameters_json.empty()) {
+    if (store.from_json(preset.parameters_json, &error)) recipe.parameters_json = preset.parameters_json;
+    else problems->push_back({RecipeProblem::PRESET, preset_path + ": parameters: " + error});
+  }
+  for (const auto& assignment : sets) {
+    std::string note;
+    if (!store.set_assignment(assignment, &error, &note)) {
+      problems->push_back({RecipeProblem::SET, error});
+      continue;
+    }
+    recipe.sets.push_back(assignment);
+    if (!note.empty()) notes->push_back(assignment + ": " + note);
+  }
+  return recipe;
+}
+
+bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error,
+                 std::vector<std::string>* notes, const std::string& set_origin) {
+  for (const auto& effect : recipe.effects) {
+    if (!chain->add(effect.id, error)) return false;
+    chain->set_enabled(chain->size() - 1, effect.enabled);
+  }
+  // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
+  if (!recipe.parameters_json.empty() && !params->from_json(recipe.parameters_json, error)) {
+    *error = "preset parameters: " + *error;
+    return false;
+  }
+  for (const auto& assignment : recipe.sets) {
+    std::string note;
+    if (!params->set_assignment(assignment, error, &note)) {
+      *error = set_origin + " " + *error;
+      return false;
+    }
+    if (!note.empty() && notes) notes->push_back(set_origin + " " + assignment + ": " + note);
+  }
+  return true;
+}
+
+bool any_enabled(const host::Chain& chain) {
+  for (size_t i = 0; i < chain.size(); ++i)
+    if (chain.enabled(i)) return true;
+  return false;
+}
+
+}  // namespace pfx::app

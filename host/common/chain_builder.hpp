@@ -1,0 +1,66 @@
+// Which effects a host runs and with what values, read the way every pfx host of 8-bit frames
+// reads them (pfx-inject, the video-host adapters): a preset gives the chain and values, an
+// explicit chain replaces the preset's, assignments ("effect.param=value") override values.
+//
+// A recipe is checked against the loaded effects' descriptors without any GL, so a launcher can
+// refuse a bad chain, preset or assignment before anything runs, and a host whose settings a user
+// may have set by hand can leave out only what is wrong and run the rest.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pfx/host/chain.hpp>
+#include <pfx/host/param_store.hpp>
+#include <pfx/host/plugin_registry.hpp>
+
+#include "preset.hpp"
+
+namespace pfx::app {
+
+struct ChainRecipe {
+  std::vector<PresetEffect> effects;
+  // False when nobody chose the chain (no chain given, none in the preset): the host's default
+  // (WithoutChain), and pfx-inject leaves out effects that need inputs an application cannot give.
+  bool chosen = false;
+  std::string parameters_json;    // the preset's values, or empty
+  std::vector<std::string> sets;  // assignments that apply, in order
+};
+
+// One thing of the settings that does not apply, and where it came from.
+struct RecipeProblem {
+  enum Source { CHAIN, PRESET, SET } source;
+  std::string message;
+};
+
+// What runs when neither the chain nor the preset names effects.
+enum class WithoutChain {
+  DEFAULT_CHAIN,  // every effect found, in the default order (default_chain.hpp)
+  NO_EFFECT       // nothing: the frame passes through
+};
+
+// Reads the preset (when preset_path is not empty) and checks the chain's effect ids, the preset's
+// values and every assignment against the loaded effects. What does not apply is left out and
+// described in *problems: an unknown effect leaves the chain (a chain left with none gives way to
+// the default), a preset that does not read or whose values do not apply is not used, an
+// assignment that does not apply is dropped. *notes gets the store's remarks on values it adjusted
+// (clamped). Hosts that must refuse rather than leave out treat any problem as an error.
+ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optional<std::vector<std::string>>& chain,
+                              const std::vector<std::string>& sets, const host::PluginRegistry& registry,
+                              WithoutChain without, std::vector<RecipeProblem>* problems,
+                              std::vector<std::string>* notes);
+// Fills an empty chain and its store; false with *error naming the effect or assignment (an
+// assignment's error starts with `set_origin`, the option that gave it). *notes, when given, gets
+// the store's remarks on assignments it adjusted.
+bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error,
+                 std::vector<std::string>* notes = nullptr, const std::string& set_origin = "--set");
+// Whether any effect of the chain is switched on: with none, the copy in and out is all there is.
+bool any_enabled(const host::Chain& chain);
+// Every loaded effect's values at the display-referred defaults, with as many instances of each as
+// `effects` holds (at least one): the store a chain of those effects on 8-bit frames starts from.
+host::ParamStore store_for(const std::vector<PresetEffect>& effects, const host::PluginRegistry& registry);
+// "bloom, dof, glare": the loaded effects' ids, for messages.
+std::string loaded_effect_ids(const host::PluginRegistry& registry);
+
+}  // namespace pfx::app
