@@ -5,6 +5,7 @@
 #include <glad/gl.h>
 
 #include "camera_options.hpp"
+#include "frame_description.hpp"
 #include "image_texture.hpp"
 #include "synthetic_inputs.hpp"
 
@@ -129,19 +130,12 @@ void RenderRig::remove_effect() {
 
 bool RenderRig::render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output) {
   const int w = input.width, h = input.height;
-  pfx_frame frame{};
-  frame.struct_size = sizeof frame;
-  frame.width = static_cast<uint32_t>(w);
-  frame.height = static_cast<uint32_t>(h);
-  frame.inputs = PFX_INPUT_COLOR | PFX_INPUT_DEPTH | PFX_INPUT_NORMAL | PFX_INPUT_ALBEDO | PFX_INPUT_EMISSIVE |
-                 PFX_INPUT_LIGHTS;
-  frame.depth_encoding = PFX_DEPTH_LINEAR;
-  frame.camera = pfx::app::make_camera(pfx::app::CameraOptions{}, w, h);
+  pfx_frame frame = pfx::app::describe_frame(w, h, pfx::app::kEveryInput, PFX_DEPTH_LINEAR,
+                                             pfx::app::make_camera(pfx::app::CameraOptions{}, w, h));
   frame.time_seconds = 0.5;
   frame.frame_index = 1;
   frame.lights = kLights;
   frame.light_count = sizeof kLights / sizeof kLights[0];
-  frame.light_struct_size = sizeof(pfx_light);
 
   pfx::host::FrameTextures textures;
   textures.color = pfx::app::upload_color_texture(input);
