@@ -1,8 +1,8 @@
 #include "frame_plan.hpp"
 
-#include <nlohmann/json.hpp>
+#include <filesystem>
 
-#include "whole_file.hpp"
+#include <nlohmann/json.hpp>
 
 namespace pfx::app {
 
@@ -22,8 +22,9 @@ FrameFiles frame_files(const RenderOptions& options, long long frame) {
 }
 
 bool frame_done(const FrameFiles& files) {
+  std::error_code error;
   for (const auto& path : files.outputs)
-    if (!image_file_is_whole(path)) return false;
+    if (!std::filesystem::is_regular_file(path, error)) return false;
   return true;
 }
 

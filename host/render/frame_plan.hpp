@@ -19,10 +19,10 @@ struct FrameFiles {
 
 FrameFiles frame_files(const RenderOptions& options, long long frame);
 
-// Done: every output exists and is whole (whole_file.hpp). pfx-render renames an output into
-// place only once it is complete, so for its own files existence is the answer; the wholeness
-// check reads a few bytes of each file, never its pixels, and catches a file something else cut
-// short. A frame without outputs is done.
+// Done: every output exists. pfx-render writes an output under a temporary name and renames it
+// into place only once it is complete (atomic_file.hpp), so an output that exists is whole; the
+// file is not read. pfx-farm asks the same question through --print-frames. A frame without
+// outputs is done.
 bool frame_done(const FrameFiles& files);
 
 // The plan --print-frames prints: one JSON object,
