@@ -13,7 +13,7 @@ namespace pfx::validate {
 namespace {
 
 // In front of the camera (which looks down -Z), one behind it and one at the near plane, so a
-// lighting effect meets the cases DESIGN.md §5 names.
+// lighting effect meets the light positions the ABI allows (docs/architecture.md).
 const pfx_light kLights[] = {
     {{0.0f, 1.0f, -5.0f}, 10.0f, {1.0f, 0.9f, 0.8f}, 4.0f},
     {{-2.0f, 0.0f, -20.0f}, 0.0f, {0.2f, 0.4f, 1.0f}, 50.0f},
