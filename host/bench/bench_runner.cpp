@@ -9,6 +9,7 @@
 
 #include "bench_timing.hpp"
 #include "camera_options.hpp"
+#include "frame_description.hpp"
 #include "halo_width.hpp"
 #include "image_texture.hpp"
 #include "timing_choice.hpp"
@@ -48,14 +49,9 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
       std::copy_n(input.halo_mask.begin() + static_cast<long>(y) * width, width,
                   mask_gl.begin() + static_cast<long>(height - 1 - y) * width);
 
-    pfx_frame frame{};
-    frame.struct_size = sizeof frame;
-    frame.width = static_cast<uint32_t>(width);
-    frame.height = static_cast<uint32_t>(height);
-    frame.inputs = PFX_INPUT_COLOR | (image.has_depth() ? static_cast<uint32_t>(PFX_INPUT_DEPTH) : 0u);
-    frame.depth_encoding = image.has_depth() ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
-    frame.camera = pfx::app::make_camera(options.camera, width, height);
-    frame.light_struct_size = sizeof(pfx_light);
+    pfx_frame frame = pfx::app::describe_frame(
+        width, height, PFX_INPUT_COLOR | (image.has_depth() ? static_cast<uint32_t>(PFX_INPUT_DEPTH) : 0u),
+        PFX_DEPTH_LINEAR, pfx::app::make_camera(options.camera, width, height));
     pfx::host::FrameTextures textures;
     textures.color = color;
     textures.depth = depth;

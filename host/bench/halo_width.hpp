@@ -1,4 +1,4 @@
-// The halo around a sharp object (issue 4): how wide a band just outside the object differs from
+// The halo around a sharp object: how wide a band just outside the object differs from
 // the ground truth. Rings of one pixel are taken outward from the object's outline (Euclidean
 // distance in (k - 1, k] for ring k); a ring belongs to the band when its mean error (the largest
 // of |output - truth| over R, G, B) exceeds the tolerance. The width is the number of rings in the

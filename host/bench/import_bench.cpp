@@ -14,6 +14,7 @@
 #include "bench_timing.hpp"
 #include "arg_reader.hpp"
 #include "cli_text.hpp"
+#include "exit_codes.hpp"
 #include "import_files.hpp"
 #include "import_loaders.hpp"
 #include "import_measure.hpp"
@@ -244,11 +245,11 @@ int import_bench_main(const std::vector<std::string>& args) {
   std::string message;
   if (!parse_import_bench_options(args, &options, &message)) {
     std::fprintf(stderr, "pfx-bench: %s\n\n%s", message.c_str(), import_bench_usage().c_str());
-    return 2;
+    return exit_code::kUsage;
   }
   if (options.help) {
     std::fputs(import_bench_usage().c_str(), stdout);
-    return 0;
+    return exit_code::kOk;
   }
   pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
                                      pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
@@ -262,11 +263,11 @@ int import_bench_main(const std::vector<std::string>& args) {
   fs::create_directories(options.work_dir, ec);
   if (ec) {
     std::fprintf(stderr, "pfx-bench: cannot create %s: %s\n", options.work_dir.c_str(), ec.message().c_str());
-    return 1;
+    return exit_code::kInternal;
   }
 
   std::vector<ImportRow> rows;
-  int code = 0;
+  int code = exit_code::kOk;
   for (ObjLayout layout : options.layouts)
   for (double size : options.sizes_mb) {
     if (code != 0) break;
@@ -275,7 +276,7 @@ int import_bench_main(const std::vector<std::string>& args) {
                  options.work_dir.c_str());
     if (!generate_obj(options.work_dir, layout, size, &file, &message) || !warm_file(file.path, &message)) {
       std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
-      code = 1;
+      code = exit_code::kInternal;
       break;
     }
     // Every row's loads in rounds — one load of each row per round — so that whatever changes on
@@ -331,7 +332,7 @@ int import_bench_main(const std::vector<std::string>& args) {
   if (!write_text(options.out_dir + "/import.json", json(rows).dump(2) + "\n", &message) ||
       !write_text(options.out_dir + "/import.md", text, &message)) {
     std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
-    return 1;
+    return exit_code::kInternal;
   }
   std::fputs(text.c_str(), stdout);
   std::fprintf(stderr, "pfx-bench: wrote %s/import.json, %s/import.md\n", options.out_dir.c_str(), options.out_dir.c_str());

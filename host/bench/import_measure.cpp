@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "exit_codes.hpp"
 #include "plugin_directory.hpp"
 
 namespace pfx::bench {
@@ -121,7 +122,7 @@ int import_load_main(const std::vector<std::string>& args) {
   if (!ok) {
     std::fprintf(stderr, "pfx-bench: --import-load LOADER FILE THREADS [--plugins DIR]...: an internal mode of "
                          "pfx-bench --import, which runs it once per load\n");
-    return 2;
+    return exit_code::kUsage;
   }
   pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
                                      pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
@@ -143,7 +144,7 @@ int import_load_main(const std::vector<std::string>& args) {
       << counts.vertices << ' ' << counts.triangles << '\n'
       << counts.error;
   write_all(STDOUT_FILENO, out.str());
-  return 0;
+  return exit_code::kOk;
 }
 
 bool warm_file(const std::string& path, std::string* error) {

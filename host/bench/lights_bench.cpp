@@ -13,6 +13,7 @@
 #include <pfx/host/chain.hpp>
 
 #include "demo_scene.hpp"
+#include "exit_codes.hpp"
 #include "bench_timing.hpp"
 #include "gbuffer.hpp"
 #include "headless_context.hpp"
@@ -310,16 +311,16 @@ int lights_bench_main(const std::vector<std::string>& args) {
   std::string message;
   if (!parse_lights_options(args, &options, &message)) {
     std::fprintf(stderr, "pfx-bench --lights: %s\n\n%s", message.c_str(), lights_usage().c_str());
-    return 2;
+    return exit_code::kUsage;
   }
   if (options.help) {
     std::fputs(lights_usage().c_str(), stdout);
-    return 0;
+    return exit_code::kOk;
   }
   auto context = pfx::app::HeadlessContext::create(&message);
   if (!context) {
     std::fprintf(stderr, "pfx-bench --lights: %s\n", message.c_str());
-    return 1;
+    return exit_code::kInternal;
   }
   pfx::host::PluginRegistry registry(
       [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); },
@@ -327,7 +328,7 @@ int lights_bench_main(const std::vector<std::string>& args) {
   pfx::app::load_plugins(registry, options.plugin_dirs);
   if (!registry.find_effect("tiledlights")) {
     std::fprintf(stderr, "pfx-bench --lights: the tiledlights effect is not loaded\n");
-    return 4;
+    return exit_code::kEffectError;
   }
   LightsResults results;
   results.renderer = context->renderer();
@@ -340,20 +341,20 @@ int lights_bench_main(const std::vector<std::string>& args) {
     run_dense(options, registry, &results);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pfx-bench --lights: %s\n", e.what());
-    return 1;
+    return exit_code::kInternal;
   }
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
   if (ec) {
     std::fprintf(stderr, "pfx-bench --lights: cannot create %s: %s\n", options.out_dir.c_str(), ec.message().c_str());
-    return 1;
+    return exit_code::kInternal;
   }
   if (!write_lights_reports(results, options.out_dir, &message)) {
     std::fprintf(stderr, "pfx-bench --lights: %s\n", message.c_str());
-    return 1;
+    return exit_code::kInternal;
   }
   std::fputs(lights_markdown(results).c_str(), stdout);
-  return 0;
+  return exit_code::kOk;
 }
 
 }  // namespace pfx::bench

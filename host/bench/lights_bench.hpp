@@ -1,4 +1,4 @@
-// pfx-bench --lights: the tiledlights effect against its light count (issue 5). For every size,
+// pfx-bench --lights: the tiledlights effect against its light count. For every size,
 // light count and mode: culling and shading time, total, ratio to the copy pass, speed-up over
 // brute force, list lengths, shader storage bytes; and the error against the un-windowed light sum
 // as the cutoff varies. Runs the light-field scene (host/scene/light_field_scene.hpp).

@@ -183,7 +183,7 @@ bool write_lights_reports(LightsResults& r, const std::string& dir, std::string*
                          "set xlabel 'time (x plain copy pass)'\nset ylabel 'RMSE vs un-windowed sum / RMS of its light'\n"
                          "set title 'tiledlights " + r.error_mode + ", cutoff labelled'\n"
                          "plot '-' using 1:2 with linespoints title 'cutoff rule', '-' using 1:2:3 with labels offset 1,1 "
-                         "notitle, '-' using 1:2 with points pointsize 2 title 'seed rule'\n";
+                         "notitle, '-' using 1:2 with points pointsize 2 title 'range 3 sqrt(max colour)'\n";
     std::string points, labels, seed;
     for (const auto& p : r.cutoffs) {
       const double y = p.error.change_relative_rmse > 0 ? p.error.change_relative_rmse : 1e-12;

@@ -29,7 +29,7 @@ struct LightsCell {
 };
 
 struct CutoffPoint {
-  std::string rule;  // "cutoff" or "seed"
+  std::string rule;  // the range_rule id: "cutoff" or "seed" (3 sqrt(max colour))
   double cutoff = 0;
   double total_ms = 0, ratio_to_copy = 0;
   double list_mean = 0;

@@ -11,6 +11,7 @@
 #include "bench_options.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
+#include "exit_codes.hpp"
 #include "import_bench.hpp"
 #include "import_measure.hpp"
 #include "lights_bench.hpp"
@@ -19,6 +20,7 @@
 #include "suite.hpp"
 
 using namespace pfx::bench;
+using namespace pfx::exit_code;
 
 namespace {
 
@@ -64,34 +66,34 @@ int main(int argc, char** argv) {
   std::string message;
   if (!parse_bench_options(std::vector<std::string>(argv + 1, argv + argc), &options, &message)) {
     std::fprintf(stderr, "pfx-bench: %s\n\n%s", message.c_str(), bench_usage().c_str());
-    return 2;
+    return kUsage;
   }
   if (options.help) {
     std::fputs(bench_usage().c_str(), stdout);
-    return 0;
+    return kOk;
   }
   std::string suite_text = default_suite_text();
   if (!options.suite_file.empty()) {
     std::ifstream in(options.suite_file);
-    if (!in) return error_exit(2, options.suite_file + ": cannot read the suite file");
+    if (!in) return error_exit(kUsage, options.suite_file + ": cannot read the suite file");
     std::stringstream buffer;
     buffer << in.rdbuf();
     suite_text = buffer.str();
   }
   std::vector<SuiteRow> suite;
-  if (!parse_suite(suite_text, &suite, &message)) return error_exit(2, message);
+  if (!parse_suite(suite_text, &suite, &message)) return error_exit(kUsage, message);
   std::vector<BenchFrame> frames;
-  if (!make_bench_frames(options, &frames, &message)) return error_exit(3, message);
+  if (!make_bench_frames(options, &frames, &message)) return error_exit(kBadInput, message);
 
   auto context = pfx::app::HeadlessContext::create(&message);
-  if (!context) return error_exit(1, message);
+  if (!context) return error_exit(kInternal, message);
   pfx::host::PluginRegistry registry(
       [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); },
       pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
   for (const auto& error : pfx::app::load_plugins(registry, options.plugin_dirs))
     std::fprintf(stderr, "pfx-bench: warning: plugin not loaded: %s\n", error.c_str());
   for (const auto& id : options.effects)
-    if (!registry.find_effect(id)) return error_exit(4, "--effects: effect '" + id + "' is not loaded");
+    if (!registry.find_effect(id)) return error_exit(kEffectError, "--effects: effect '" + id + "' is not loaded");
 
   std::vector<std::string> notes;
   std::vector<SuiteRow> rows = select_rows(suite, registry, options.effects, &notes);
@@ -106,16 +108,16 @@ int main(int argc, char** argv) {
 
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
-  if (ec) return error_exit(1, "cannot create " + options.out_dir + ": " + ec.message());
+  if (ec) return error_exit(kInternal, "cannot create " + options.out_dir + ": " + ec.message());
   const std::string dir = options.out_dir + "/";
   std::string skipped;
-  if (!write_error_plot(results, dir + "error_vs_time.png", &message, &skipped)) return error_exit(1, message);
+  if (!write_error_plot(results, dir + "error_vs_time.png", &message, &skipped)) return error_exit(kInternal, message);
   if (!skipped.empty()) results.notes.push_back(skipped);
   if (!write_bench_json(results, dir + "bench.json", &message) ||
       !write_bench_markdown(results, dir + "bench.md", &message))
-    return error_exit(1, message);
+    return error_exit(kInternal, message);
   std::fputs(bench_markdown(results).c_str(), stdout);
   std::fprintf(stderr, "pfx-bench: wrote %sbench.json, %sbench.md%s\n", dir.c_str(), dir.c_str(),
                skipped.empty() ? (", " + dir + "error_vs_time.png").c_str() : "");
-  return 0;
+  return kOk;
 }

@@ -1,5 +1,5 @@
 // How shift-invariant an effect is, measured on the GPU: a black frame holding one bright pixel,
-// moved 1 px at a time over 16 positions, each run through the chain. Two figures (issue 3): the
+// moved 1 px at a time over 16 positions, each run through the chain. Two figures: the
 // coefficient of variation of the total light the effect adds, and the relative RMS by which the
 // responses, aligned on their pixel, differ from their mean (0 for a shift-invariant effect; a
 // pyramid's half-size grids make it larger).

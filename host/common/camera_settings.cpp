@@ -12,20 +12,19 @@ std::array<double, 3> to_array(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 
-void apply_camera_keys(const CameraOptions& values, const std::vector<std::string>& keys, Camera* camera) {
+PresetCamera with_camera_keys(const PresetCamera& preset, const CameraOptions& values,
+                              const std::vector<std::string>& keys) {
+  PresetCamera camera = preset;
   for (const auto& key : keys) {
-    if (key == "fovy") camera->fovy_radians = values.fovy_degrees / kDegrees;
-    if (key == "near") camera->near_plane = values.near_plane;
-    if (key == "far") camera->far_plane = values.far_plane;
+    if (key == "fovy") camera.fovy_degrees = values.fovy_degrees;
+    if (key == "near") camera.near_plane = values.near_plane;
+    if (key == "far") camera.far_plane = values.far_plane;
   }
+  return camera;
 }
 
-void apply_camera_keys(const CameraOptions& values, const std::vector<std::string>& keys, CameraOptions* camera) {
-  for (const auto& key : keys) {
-    if (key == "fovy") camera->fovy_degrees = values.fovy_degrees;
-    if (key == "near") camera->near_plane = values.near_plane;
-    if (key == "far") camera->far_plane = values.far_plane;
-  }
+void apply_camera_keys(const CameraOptions& values, const std::vector<std::string>& keys, Camera* camera) {
+  apply_preset_camera(with_camera_keys(PresetCamera{}, values, keys), camera);
 }
 
 void apply_preset_camera(const PresetCamera& preset, Camera* camera) {

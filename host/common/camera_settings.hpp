@@ -14,7 +14,12 @@ namespace pfx::app {
 // The --camera keys given ("fovy", "near", "far") replace the camera's lens settings; its place
 // and aim stay.
 void apply_camera_keys(const CameraOptions& values, const std::vector<std::string>& keys, Camera* camera);
-void apply_camera_keys(const CameraOptions& values, const std::vector<std::string>& keys, CameraOptions* camera);
+
+// The preset's camera with the --camera keys given replacing its lens values: the camera
+// settings of a program that reads both, put together once and applied to whichever camera the
+// frame has (a scene's, or an image's lens) with apply_preset_camera.
+PresetCamera with_camera_keys(const PresetCamera& preset, const CameraOptions& values,
+                              const std::vector<std::string>& keys);
 
 // Every field the preset gives replaces the camera's.
 void apply_preset_camera(const PresetCamera& preset, Camera* camera);

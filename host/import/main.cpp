@@ -9,9 +9,12 @@
 
 #include <pfx/host/plugin_registry.hpp>
 
+#include "exit_codes.hpp"
 #include "import_options.hpp"
 #include "import_report.hpp"
 #include "plugin_directory.hpp"
+
+using namespace pfx::exit_code;
 
 namespace {
 
@@ -46,14 +49,14 @@ int main(int argc, char** argv) {
   std::string message;
   if (!pfx::import::parse_import_options(std::vector<std::string>(argv + 1, argv + argc), &options, &message)) {
     std::fprintf(stderr, "pfx-import: %s\n\n%s", message.c_str(), pfx::import::import_usage().c_str());
-    return 2;
+    return kUsage;
   }
   if (options.help) {
     std::fputs(pfx::import::import_usage().c_str(), stdout);
-    return 0;
+    return kOk;
   }
   std::error_code ec;
-  if (!std::filesystem::exists(options.file, ec)) return error_exit(3, options.file + ": no such file");
+  if (!std::filesystem::exists(options.file, ec)) return error_exit(kBadInput, options.file + ": no such file");
 
   // Importers make no GL calls: the registry gets no GL loader.
   pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
@@ -62,8 +65,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pfx-import: warning: plugin not loaded: %s\n", error.c_str());
   const pfx::host::ImporterInfo* importer = registry.find_importer_for_path(options.file);
   if (!importer)
-    return error_exit(4, options.file + ": no importer for this file's extension (importers loaded for: " +
-                             importer_list(registry) + ")");
+    return error_exit(kEffectError, options.file + ": no importer for this file's extension (importers loaded for: " +
+                                        importer_list(registry) + ")");
 
   pfx_import_request request{};
   request.struct_size = sizeof request;
@@ -78,15 +81,15 @@ int main(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();  // the call timed here, whatever the importer says
   importer->desc->import(&request, &result);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!result) return error_exit(1, options.file + ": out of memory");
-  int code = 0;
+  if (!result) return error_exit(kInternal, options.file + ": out of memory");
+  int code = kOk;
   if (result->status == PFX_OK) {
     const std::string text = options.json ? pfx::import::summary_json(options.file, *result, seconds)
                                           : pfx::import::summary_text(options.file, *result, seconds);
     std::fputs(text.c_str(), stdout);
   } else {
     if (last_percent >= 0 && last_percent < 100) std::fputc('\n', stderr);
-    code = result->status == PFX_ERROR ? 3 : result->status == PFX_OUT_OF_MEMORY ? 1 : 4;
+    code = result->status == PFX_ERROR ? kBadInput : result->status == PFX_OUT_OF_MEMORY ? kInternal : kEffectError;
     error_exit(code, result->error ? result->error : "import failed (status " + std::to_string(result->status) + ")");
   }
   importer->desc->release(result);

@@ -127,12 +127,12 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
   int report[2];
   if (pipe2(report, O_CLOEXEC) != 0) {
     *error = std::string("pipe: ") + std::strerror(errno);
-    return kExitNotStarted;
+    return exit_code::kInjectNotStarted;
   }
   const pid_t child = fork();
   if (child < 0) {
     *error = std::string("fork: ") + std::strerror(errno);
-    return kExitNotStarted;
+    return exit_code::kInjectNotStarted;
   }
   if (child == 0) {
     close(report[0]);
@@ -140,7 +140,7 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
     // Only reached when exec failed: tell the parent why through the pipe, which exec would close.
     const int failure = errno;
     (void)!write(report[1], &failure, sizeof failure);
-    _exit(kExitNotStarted);
+    _exit(exit_code::kInjectNotStarted);
   }
   close(report[1]);
   // Ending pfx-inject (Ctrl+C, a script's kill) ends the application: the signal is passed on.
@@ -153,9 +153,9 @@ int run_application(const std::vector<std::string>& command, const std::vector<s
   }
   if (exec_failed) {
     *error = "cannot run " + command[0] + ": " + std::strerror(failure);
-    return kExitNotStarted;
+    return exit_code::kInjectNotStarted;
   }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : exit_code::kSignalBase + WTERMSIG(status);
 }
 
 }  // namespace pfx::inject

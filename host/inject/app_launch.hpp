@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "exit_codes.hpp"
 #include "inject_settings.hpp"
 
 namespace pfx::inject {
@@ -17,8 +18,8 @@ std::vector<std::string> plugin_folders(const InjectSettings& settings);
 // `library` first in LD_PRELOAD (anything already preloaded, libfaketime say, stays after it).
 std::vector<std::string> child_environment(const InjectSettings& settings, const std::string& library);
 // Runs command[0] (looked up in PATH) with the arguments and environment; waits for it. Returns
-// its exit code, 128 + the signal that ended it, or kExitNotStarted with *error when it could not
-// start.
+// its exit code, 128 + the signal that ended it, or exit_code::kInjectNotStarted with *error
+// when it could not start.
 int run_application(const std::vector<std::string>& command, const std::vector<std::string>& environment,
                     std::string* error);
 

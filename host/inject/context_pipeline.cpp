@@ -9,6 +9,7 @@
 
 #include "camera_options.hpp"
 #include "frame_capture.hpp"
+#include "frame_description.hpp"
 #include "timing_choice.hpp"
 
 namespace pfx::inject {
@@ -94,18 +95,10 @@ ContextPipeline::~ContextPipeline() {
 }
 
 pfx_frame ContextPipeline::frame_for(int width, int height, uint32_t inputs) const {
-  pfx_frame frame{};
-  frame.struct_size = sizeof frame;
-  frame.width = static_cast<uint32_t>(width);
-  frame.height = static_cast<uint32_t>(height);
-  frame.inputs = inputs;
-  frame.depth_encoding = (inputs & PFX_INPUT_DEPTH) ? PFX_DEPTH_HARDWARE : PFX_DEPTH_NONE;
   app::CameraOptions camera;
   camera.near_plane = settings_.depth_near;
   camera.far_plane = settings_.depth_far;
-  frame.camera = app::make_camera(camera, width, height);
-  frame.light_struct_size = sizeof(pfx_light);
-  return frame;
+  return app::describe_frame(width, height, inputs, PFX_DEPTH_HARDWARE, app::make_camera(camera, width, height));
 }
 
 bool ContextPipeline::same_effects(const ChainRecipe& recipe) const {

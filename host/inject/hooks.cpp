@@ -1,16 +1,18 @@
 // The functions libpfxinject.so puts in front of the application's: the present calls, the
 // lookups an application can reach them through, and context destruction. Each hands its work to
 // the Injector and then calls the real function; nothing here can fail the application's call.
-// Only these symbols leave the library (exports.map).
+// Their names are listed once, in hook_table.hpp; only they and dlsym leave the library
+// (exports.map).
 #include <dlfcn.h>
 
 #include <cstring>
 
+#include "hook_table.hpp"
 #include "injector.hpp"
 #include "real_symbols.hpp"
 
+using pfx::inject::Hook;
 using pfx::inject::Injector;
-using pfx::inject::Library;
 using pfx::inject::Proc;
 using pfx::inject::PresentCall;
 using pfx::inject::WindowSystem;
@@ -38,48 +40,22 @@ using EglSwapWithDamage = unsigned (*)(void*, void*, int*, int);
 using EglGetProc = Proc (*)(const char*);
 using EglDestroy = unsigned (*)(void*, void*);
 
+// The application's function behind one of ours.
 template <typename Function>
-Function real(Library library, const char* name) {
-  return reinterpret_cast<Function>(pfx::inject::real_proc(library, name));
+Function real(Hook hook) {
+  const auto& name = pfx::inject::hook_name(hook);
+  return reinterpret_cast<Function>(pfx::inject::real_proc(name.library, name.name));
 }
 
 // Our function for a name an application looks up, or null for every other name.
 Proc ours(const char* name) {
-  struct Hook {
-    const char* name;
-    Proc function;
+  static const Proc functions[] = {
+#define PFX_INJECT_OUR_FUNCTION(function, library) reinterpret_cast<Proc>(&function),
+      PFX_INJECT_HOOKS(PFX_INJECT_OUR_FUNCTION)
+#undef PFX_INJECT_OUR_FUNCTION
   };
-  static const Hook hooks[] = {
-      {"glXSwapBuffers", reinterpret_cast<Proc>(&glXSwapBuffers)},
-      {"glXGetProcAddressARB", reinterpret_cast<Proc>(&glXGetProcAddressARB)},
-      {"glXGetProcAddress", reinterpret_cast<Proc>(&glXGetProcAddress)},
-      {"glXDestroyContext", reinterpret_cast<Proc>(&glXDestroyContext)},
-      {"eglSwapBuffers", reinterpret_cast<Proc>(&eglSwapBuffers)},
-      {"eglSwapBuffersWithDamageKHR", reinterpret_cast<Proc>(&eglSwapBuffersWithDamageKHR)},
-      {"eglGetProcAddress", reinterpret_cast<Proc>(&eglGetProcAddress)},
-      {"eglDestroyContext", reinterpret_cast<Proc>(&eglDestroyContext)},
-  };
-  if (!name) return nullptr;
-  for (const auto& hook : hooks)
-    if (std::strcmp(hook.name, name) == 0) return hook.function;
-  return nullptr;
-}
-
-// Whether `name` is one we hand out our own function for. Not instrumented, like every step of a
-// lookup of another name: AddressSanitizer's runtime finds the functions it wraps with dlsym while
-// it starts, before instrumented code may run.
-constexpr const char* kHookedNames[] = {"glXSwapBuffers",       "glXGetProcAddressARB",         "glXGetProcAddress",
-                                        "glXDestroyContext",    "eglSwapBuffers",               "eglSwapBuffersWithDamageKHR",
-                                        "eglGetProcAddress",    "eglDestroyContext"};
-
-__attribute__((no_sanitize_address, no_sanitize_undefined)) bool is_hooked_name(const char* name) {
-  if (!name) return false;
-  for (const char* hooked : kHookedNames) {
-    size_t i = 0;
-    while (hooked[i] && hooked[i] == name[i]) ++i;
-    if (hooked[i] == name[i]) return true;
-  }
-  return false;
+  const int hook = pfx::inject::hook_index(name);
+  return hook < 0 ? nullptr : functions[hook];
 }
 
 // A lookup found `found` for `name`: when it is one of ours, remember the real one and hand out
@@ -114,72 +90,72 @@ class PresentingFlag {
   ~PresentingFlag() { presenting = false; }
 };
 
+// What every present hook does: the injector runs the chain before the real present and hears
+// after it. `swap(chain_ran)` calls the real present; `found` says whether there is one (else
+// `none` is returned and nothing happens). A present reached again from within goes straight on.
+template <typename Result, typename Swap>
+Result present(const PresentCall& call, bool found, Result none, const Swap& swap) {
+  if (!found) return none;
+  if (presenting) return swap(false);
+  PresentingFlag flag;
+  Injector& injector = Injector::instance();
+  injector.before_present(call);
+  const Result result = swap(true);
+  injector.after_present();
+  return result;
+}
+
 }  // namespace
 
 extern "C" {
 
 __attribute__((visibility("default"))) void glXSwapBuffers(void* display, unsigned long drawable) {
-  auto swap = real<GlxSwap>(Library::GLX, "glXSwapBuffers");
-  if (!swap) return;
-  if (presenting) return swap(display, drawable);
-  PresentingFlag flag;
-  Injector& injector = Injector::instance();
-  injector.before_present(PresentCall{WindowSystem::GLX, display, drawable});
-  swap(display, drawable);
-  injector.after_present();
+  auto swap = real<GlxSwap>(Hook::glXSwapBuffers);
+  present(PresentCall{WindowSystem::GLX, display, drawable}, swap != nullptr, 0, [&](bool) {
+    swap(display, drawable);
+    return 0;
+  });
 }
 
 __attribute__((visibility("default"))) Proc glXGetProcAddressARB(const unsigned char* name) {
-  auto lookup = real<GetProc>(Library::GLX, "glXGetProcAddressARB");
+  auto lookup = real<GetProc>(Hook::glXGetProcAddressARB);
   return swap_in(reinterpret_cast<const char*>(name), lookup ? lookup(name) : nullptr, "glXGetProcAddressARB");
 }
 
 __attribute__((visibility("default"))) Proc glXGetProcAddress(const unsigned char* name) {
-  auto lookup = real<GetProc>(Library::GLX, "glXGetProcAddress");
+  auto lookup = real<GetProc>(Hook::glXGetProcAddress);
   return swap_in(reinterpret_cast<const char*>(name), lookup ? lookup(name) : nullptr, "glXGetProcAddress");
 }
 
 __attribute__((visibility("default"))) void glXDestroyContext(void* display, void* context) {
   Injector::instance().context_destroyed(WindowSystem::GLX, context);
-  if (auto destroy = real<GlxDestroy>(Library::GLX, "glXDestroyContext")) destroy(display, context);
+  if (auto destroy = real<GlxDestroy>(Hook::glXDestroyContext)) destroy(display, context);
 }
 
 __attribute__((visibility("default"))) unsigned eglSwapBuffers(void* display, void* surface) {
-  auto swap = real<EglSwap>(Library::EGL, "eglSwapBuffers");
-  if (!swap) return 0;
-  if (presenting) return swap(display, surface);
-  PresentingFlag flag;
-  Injector& injector = Injector::instance();
-  injector.before_present(PresentCall{WindowSystem::EGL, display, reinterpret_cast<unsigned long>(surface)});
-  const unsigned result = swap(display, surface);
-  injector.after_present();
-  return result;
+  auto swap = real<EglSwap>(Hook::eglSwapBuffers);
+  return present(PresentCall{WindowSystem::EGL, display, reinterpret_cast<unsigned long>(surface)}, swap != nullptr,
+                 0u, [&](bool) { return swap(display, surface); });
 }
 
 __attribute__((visibility("default"))) unsigned eglSwapBuffersWithDamageKHR(void* display, void* surface, int* rects,
                                                                              int count) {
-  auto swap = real<EglSwapWithDamage>(Library::EGL, "eglSwapBuffersWithDamageKHR");
-  if (!swap) return 0;
-  if (presenting) return swap(display, surface, rects, count);
-  PresentingFlag flag;
-  Injector& injector = Injector::instance();
-  injector.before_present(PresentCall{WindowSystem::EGL, display, reinterpret_cast<unsigned long>(surface)});
-  // The chain changed the whole frame, so the damage is the whole surface.
-  const unsigned result = swap(display, surface, nullptr, 0);
-  (void)rects;
-  (void)count;
-  injector.after_present();
-  return result;
+  auto swap = real<EglSwapWithDamage>(Hook::eglSwapBuffersWithDamageKHR);
+  return present(PresentCall{WindowSystem::EGL, display, reinterpret_cast<unsigned long>(surface)}, swap != nullptr,
+                 0u, [&](bool chain_ran) {
+                   // The chain changed the whole frame, so the damage is then the whole surface.
+                   return chain_ran ? swap(display, surface, nullptr, 0) : swap(display, surface, rects, count);
+                 });
 }
 
 __attribute__((visibility("default"))) Proc eglGetProcAddress(const char* name) {
-  auto lookup = real<EglGetProc>(Library::EGL, "eglGetProcAddress");
+  auto lookup = real<EglGetProc>(Hook::eglGetProcAddress);
   return swap_in(name, lookup ? lookup(name) : nullptr, "eglGetProcAddress");
 }
 
 __attribute__((visibility("default"))) unsigned eglDestroyContext(void* display, void* context) {
   Injector::instance().context_destroyed(WindowSystem::EGL, context);
-  auto destroy = real<EglDestroy>(Library::EGL, "eglDestroyContext");
+  auto destroy = real<EglDestroy>(Hook::eglDestroyContext);
   return destroy ? destroy(display, context) : 0;
 }
 
@@ -194,7 +170,7 @@ static __attribute__((noinline)) void* hand_out(void* found, const char* name, v
 __attribute__((visibility("hidden"), no_sanitize_address, no_sanitize_undefined)) void* pfx_inject_dlsym_hooked(
     void* handle, const char* name) {
   void* found = pfx::inject::real_dlsym(handle, name);
-  if (!is_hooked_name(name)) return found;
+  if (pfx::inject::hook_index(name) < 0) return found;
   return hand_out(found, name, __builtin_return_address(0));
 }
 

@@ -72,7 +72,7 @@ int run_bench(const InjectOptions& options, const std::string& library) {
         std::fprintf(stderr, "pfx-inject --bench: %s run failed (exit %d)%s%s\n", configuration.name.c_str(), code,
                      error.empty() ? "" : ": ", error.c_str());
         std::remove(stats_path.c_str());
-        return code ? code : kExitBench;
+        return code ? code : exit_code::kInjectBench;
       }
     }
   }
@@ -112,7 +112,7 @@ int run_bench(const InjectOptions& options, const std::string& library) {
     std::string error;
     if (!app::write_text_atomically(options.bench_json, json.dump(2) + "\n", &error)) {
       std::fprintf(stderr, "pfx-inject --bench: %s\n", error.c_str());
-      return kExitBench;
+      return exit_code::kInjectBench;
     }
   }
   return 0;

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   std::string error;
   if (!parse_inject_options(std::vector<std::string>(argv + 1, argv + argc), &options, &error)) {
     std::fprintf(stderr, "pfx-inject: %s\n\n%s", error.c_str(), inject_usage().c_str());
-    return kExitUsage;
+    return pfx::exit_code::kInjectUsage;
   }
   if (options.help) {
     std::fputs(inject_usage().c_str(), stdout);
@@ -28,20 +28,20 @@ int main(int argc, char** argv) {
   for (const auto& note : check.notes) std::fprintf(stderr, "pfx-inject: %s\n", note.c_str());
   for (const auto& problem : check.errors) std::fprintf(stderr, "pfx-inject: %s\n", problem.c_str());
   if (check.exit_code) {
-    if (check.exit_code == kExitUsage) std::fprintf(stderr, "pfx-inject: the application was not started\n");
+    if (check.exit_code == pfx::exit_code::kInjectUsage) std::fprintf(stderr, "pfx-inject: the application was not started\n");
     return check.exit_code;
   }
   const std::string library = find_inject_library(&error);
   if (library.empty()) {
     std::fprintf(stderr, "pfx-inject: %s\n", error.c_str());
-    return kExitSetup;
+    return pfx::exit_code::kInjectSetup;
   }
   if (options.bench_frames) return run_bench(options, library);
   PanelSession panel;
   if (options.panel && (!prepare_panel(&options, &panel, &error) || !start_panel(options, &panel, &error))) {
     std::fprintf(stderr, "pfx-inject: %s\n", error.c_str());
     end_panel(&panel);
-    return kExitSetup;
+    return pfx::exit_code::kInjectSetup;
   }
   const int code = run_application(options.command, child_environment(options.settings, library), &error);
   if (!error.empty()) std::fprintf(stderr, "pfx-inject: %s\n", error.c_str());

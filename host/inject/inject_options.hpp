@@ -5,17 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "exit_codes.hpp"
 #include "inject_settings.hpp"
 
 namespace pfx::inject {
-
-// pfx-inject's own exit codes. An application's own code passes through unchanged, so these sit
-// where applications and shells do not: 0-125 are the application's, 126 and 127 the shell's,
-// 128 + N a signal (N up to 64), 255 an exit(-1).
-constexpr int kExitUsage = 240;       // a bad option, chain, preset, --set or capture
-constexpr int kExitSetup = 241;       // libpfxinject.so or every effect plugin missing
-constexpr int kExitNotStarted = 242;  // the application could not be started
-constexpr int kExitBench = 243;       // --bench measured nothing, or could not write its results
 
 struct InjectOptions {
   InjectSettings settings;

@@ -109,7 +109,7 @@ void Injector::present(const PresentCall& call) {
               "a present of a surface the current context does not draw to: passed through");
     return say_captures_skipped("it presented a surface the current context does not draw to");
   }
-  ContextEntry& entry = entry_for(call, context);
+  ContextEntry& entry = prepare_context_chain(call, context);
   if (!entry.pipeline) return say_captures_skipped("its context's frames pass through (" + entry.aside + ")");
   if (entry.recipe_generation != recipe_generation_) {
     std::vector<std::string> notes;
@@ -205,7 +205,7 @@ bool Injector::load_plugins(WindowSystem system) {
   return true;
 }
 
-Injector::ContextEntry& Injector::entry_for(const PresentCall& call, void* context) {
+Injector::ContextEntry& Injector::prepare_context_chain(const PresentCall& call, void* context) {
   const ContextKey key{call.system, context};
   auto found = contexts_.find(key);
   if (found != contexts_.end()) {

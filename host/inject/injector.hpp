@@ -59,7 +59,10 @@ class Injector {
   void reread_preset_if_changed();
   // Logs that this frame's captures will not be written, and why.
   void say_captures_skipped(const std::string& why);
-  ContextEntry& entry_for(const PresentCall& call, void* context);
+  // The current context's entry, its chain made ready for this present: at the context's first
+  // present the plugins are loaded (once per process) and its pipeline built, or the reason it
+  // passes through kept; at a later one the preset file is read again when it changed.
+  ContextEntry& prepare_context_chain(const PresentCall& call, void* context);
   // Writes the frame times and frees the current context's pipeline; the caller then exits.
   void prepare_to_quit();
 

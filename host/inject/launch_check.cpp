@@ -58,7 +58,7 @@ LaunchCheck check_launch(const InjectOptions& options) {
     for (const auto& folder : host::PluginRegistry::search_path(folders)) searched += (searched.empty() ? "" : ", ") + folder;
     check.errors.push_back("no effect plugins found (searched: " + (searched.empty() ? "no folder" : searched) +
                            "): give --plugins DIR");
-    check.exit_code = kExitSetup;
+    check.exit_code = exit_code::kInjectSetup;
     return check;
   }
   std::vector<RecipeProblem> problems;
@@ -66,7 +66,7 @@ LaunchCheck check_launch(const InjectOptions& options) {
   make_recipe(settings, registry, &problems, &notes);
   for (const auto& problem : problems) check.errors.push_back(std::string(option_of(problem.source)) + ": " + problem.message);
   for (const auto& note : notes) check.notes.push_back("--set " + note);
-  if (!check.errors.empty()) check.exit_code = kExitUsage;
+  if (!check.errors.empty()) check.exit_code = exit_code::kInjectUsage;
   return check;
 }
 

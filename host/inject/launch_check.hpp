@@ -12,7 +12,7 @@
 namespace pfx::inject {
 
 struct LaunchCheck {
-  int exit_code = 0;                // 0, kExitUsage or kExitSetup
+  int exit_code = 0;                // 0, exit_code::kInjectUsage or exit_code::kInjectSetup
   std::vector<std::string> errors;  // one line each, naming the option
   std::vector<std::string> notes;   // values the parameter store adjusted (clamped), not errors
 };

@@ -83,7 +83,7 @@ bool start_panel(const InjectOptions& options, PanelSession* session, std::strin
   }
   if (child == 0) {
     execve(argv[0], argv.data(), envp.data());
-    _exit(kExitNotStarted);
+    _exit(exit_code::kInjectNotStarted);
   }
   session->pid = child;
   return true;

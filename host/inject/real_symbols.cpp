@@ -4,7 +4,8 @@
 
 #include <array>
 #include <atomic>
-#include <cstring>
+
+#include "hook_table.hpp"
 
 namespace pfx::inject {
 namespace {
@@ -20,26 +21,17 @@ __attribute__((no_sanitize_address, no_sanitize_undefined)) DlsymFunction find_r
   return reinterpret_cast<DlsymFunction>(dlvsym(RTLD_NEXT, "dlsym", "GLIBC_2.2.5"));
 }
 
-// Names whose real function an application's lookup found, in a fixed table: lookups happen on
-// any thread, and a remembered pointer never changes meaning.
+// The real function an application's lookup found for each of our hooks (hook_table.hpp), in a
+// fixed table: lookups happen on any thread, and a remembered pointer never changes meaning.
 struct Remembered {
-  const char* name;
   std::atomic<Proc> real{nullptr};
   std::atomic<const char*> via{nullptr};
 };
-std::array<Remembered, 8> remembered = {{{"glXSwapBuffers"},
-                                         {"glXGetProcAddress"},
-                                         {"glXGetProcAddressARB"},
-                                         {"glXDestroyContext"},
-                                         {"eglSwapBuffers"},
-                                         {"eglGetProcAddress"},
-                                         {"eglDestroyContext"},
-                                         {"eglSwapBuffersWithDamageKHR"}}};
+std::array<Remembered, kHookCount> remembered;
 
 Remembered* remembered_slot(const char* name) {
-  for (auto& slot : remembered)
-    if (std::strcmp(slot.name, name) == 0) return &slot;
-  return nullptr;
+  const int hook = hook_index(name);
+  return hook < 0 ? nullptr : &remembered[static_cast<size_t>(hook)];
 }
 
 Proc from_loaded_library(Library library, const char* name) {

@@ -1,5 +1,6 @@
 #include "frame_pattern.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 
@@ -70,6 +71,13 @@ bool parse_frame_range(const std::string& text, FrameRange* out, std::string* er
   }
   *out = frames;
   return true;
+}
+
+long long chunk_count(const FrameRange& range, long long size) { return (range.count() + size - 1) / size; }
+
+FrameRange chunk_of(const FrameRange& range, long long size, long long index) {
+  const long long first = index * size, last = std::min(first + size, range.count()) - 1;
+  return {range.at(first), range.at(last), range.step};
 }
 
 std::string FramePattern::path(long long frame) const {

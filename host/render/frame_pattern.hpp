@@ -18,6 +18,12 @@ struct FrameRange {
   long long at(long long index) const { return first + index * step; }
 };
 
+// The range cut into chunks of `size` frames (size >= 1), in order; the last may be shorter. What
+// pfx-farm hands each task of a job array: chunk `index` of the range, from 0.
+long long chunk_count(const FrameRange& range, long long size);
+// Chunk `index` (0 <= index < chunk_count) as a range of its own, with the same step.
+FrameRange chunk_of(const FrameRange& range, long long size, long long index);
+
 // The largest frame number accepted: nine digits, the widest padding VFX tools use.
 constexpr long long kMaxFrameNumber = 999999999;
 

@@ -19,14 +19,15 @@ std::string render_usage() {
       "                  [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...]\n"
       "                  [--preset FILE] [--set effect.param=value]... --out FILE.exr|FILE.png... [--json]\n"
       "       pfx-render --input SHOT.%04d.exr [--depth Z.%04d.exr] --frames FIRST-LAST[xSTEP]\n"
-      "                  [--overwrite] [--report R.%04d.json] [effects] --out OUT.%04d.exr|.png... [--json]\n"
+      "                  [--chunk N [--chunk-index I]] [--overwrite] [--report R.%04d.json]\n"
+      "                  [--print-frames] [effects] --out OUT.%04d.exr|.png... [--json]\n"
       "       pfx-render --list [--json] [--plugins DIR]...\n"
       "\n"
       "Runs a chain of pfx effects over one frame or a sequence, headless (EGL, no window), and writes the result.\n"
       "\n"
       "input\n"
       "  --demo               the built-in 3D scene, made in code: a floor, boxes and spheres, emissive\n"
-      "                       objects and 400 point lights (seed 003's grid); the host renders its\n"
+      "                       objects and 400 point lights on a 20x20 grid; the host renders its\n"
       "                       G-buffer, so effects get colour (emissive + ambient), linear depth,\n"
       "                       normal, albedo, emissive and the lights; --size WxH (default 1280x720)\n"
       "  --lights N           with --demo: N more lights at random inside the scene (default 0)\n"
@@ -104,10 +105,16 @@ std::string render_usage() {
       "                       kept between frames; --input, every --out and --report are then file\n"
       "                       name patterns: shot.%04d.exr, shot.####.exr or shot.@@@@.exr (each # or\n"
       "                       @ one digit; %d or a lone @: no padding); --depth a pattern or one file\n"
-      "  --overwrite          render every frame; without it a frame whose outputs all exist and read\n"
-      "                       back whole is skipped, so a rerun finishes what an interrupted run left\n"
+      "  --overwrite          render every frame; without it a frame whose outputs all exist is skipped\n"
+      "                       (outputs are written under a temporary name and renamed when complete,\n"
+      "                       so one that exists is whole): a rerun finishes what an interrupted run left\n"
       "  --report PATTERN     also write each frame's JSON report (status, error, times) to its own file\n"
       "                       (only for frames rendered or failed: a skipped frame keeps its report)\n"
+      "  --chunk N            the range in chunks of N frames, in order (the last may be shorter)\n"
+      "  --chunk-index I      render only chunk I of them, from 0: one task of a job array (pfx-farm)\n"
+      "  --print-frames       print the frame plan as one JSON object and render nothing: each frame's\n"
+      "                       input, depth, outputs and report file, its chunk (with --chunk), and\n"
+      "                       whether it is done; needs no GL (what pfx-farm reads)\n"
       "  A progress line (frame, time per frame, time left) goes to a terminal, a\n"
       "  line per frame to anything else; --json prints one JSON line per frame and a last one with the\n"
       "  summary. SIGINT or SIGTERM stops after the frame being written. A missing or damaged input\n"
@@ -238,6 +245,13 @@ bool has_display_input(const RenderOptions& options) { return is_display_input(o
 
 bool uses_display_defaults(const RenderOptions& options) {
   return options.defaults.empty() ? has_display_input(options) : options.defaults == "display";
+}
+
+Transfer input_transfer(const RenderOptions& options) {
+  Transfer transfer = Transfer::SRGB;
+  std::string unused;
+  parse_transfer(options.transfer, &transfer, &unused);  // checked with the options
+  return transfer;
 }
 
 }  // namespace pfx::app

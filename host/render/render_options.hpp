@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "camera_options.hpp"
+#include "display_transfer.hpp"
 #include "sequence_options.hpp"
 #include "tonemap.hpp"
 
@@ -53,6 +54,8 @@ bool is_display_input(const std::string& path);
 bool has_display_input(const RenderOptions& options);
 // Whether parameters start from their display-referred defaults: --defaults, else an 8-bit input.
 bool uses_display_defaults(const RenderOptions& options);
+// How an 8-bit input is decoded and its PNG outputs encoded back: --transfer.
+Transfer input_transfer(const RenderOptions& options);
 std::string render_usage();
 
 }  // namespace pfx::app

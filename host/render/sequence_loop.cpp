@@ -5,12 +5,9 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <filesystem>
 
 #include "atomic_file.hpp"
-#include "cli_text.hpp"
-#include "exr_io.hpp"
-#include "png_io.hpp"
+#include "exit_codes.hpp"
 
 namespace pfx::app {
 
@@ -93,38 +90,9 @@ std::string frame_list(const std::vector<long long>& frames) {
 
 }  // namespace
 
-FrameFiles frame_files(const RenderOptions& options, long long frame) {
-  auto expand = [&](const std::string& path) {
-    FramePattern pattern;
-    std::string ignored;
-    return parse_frame_pattern("", path, &pattern, &ignored) ? pattern.path(frame) : path;
-  };
-  FrameFiles files;
-  files.frame = frame;
-  files.input = expand(options.input);
-  if (!options.depth.empty()) files.depth = expand(options.depth);
-  if (!options.sequence.report.empty()) files.report = expand(options.sequence.report);
-  for (const auto& path : options.outputs) files.outputs.push_back(expand(path));
-  return files;
-}
-
-bool output_is_complete(const std::string& path, long long max_pixels) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return false;
-  std::string ignored;
-  if (ends_with(path, ".png")) {
-    DisplayImage image;
-    return read_png(path, &image, &ignored, max_pixels);
-  }
-  Image image;
-  ExrLimits limits;
-  limits.max_pixels = max_pixels;
-  return read_exr(path, &image, &ignored, limits);
-}
-
 int run_sequence(const RenderOptions& options, const RenderFrameFn& render) {
   using Clock = std::chrono::steady_clock;
-  const FrameRange& range = options.sequence.frames;
+  const FrameRange range = frames_to_render(options.sequence);
   StopOnSignal stop_on_signal;
   Progress progress(range.count());
   const auto start = Clock::now();
@@ -135,10 +103,8 @@ int run_sequence(const RenderOptions& options, const RenderFrameFn& render) {
     const FrameFiles files = frame_files(options, range.at(index));
     const auto frame_start = Clock::now();
     nlohmann::ordered_json line = {{"frame", files.frame}};
-    bool complete = !options.sequence.overwrite;
-    for (const auto& path : files.outputs) complete = complete && output_is_complete(path, options.max_input_pixels);
     std::string what;
-    if (complete) {
+    if (!options.sequence.overwrite && frame_done(files)) {
       ++skipped;
       what = "skipped (complete)";
       line["status"] = "skipped";
@@ -189,8 +155,8 @@ int run_sequence(const RenderOptions& options, const RenderFrameFn& render) {
                        {"stopped_by_signal", static_cast<int>(stop_signal)}};
     std::puts(last.dump().c_str());
   }
-  if (stop_signal) return 128 + stop_signal;
-  return failed.empty() ? 0 : kSomeFramesFailed;
+  if (stop_signal) return exit_code::kSignalBase + stop_signal;
+  return failed.empty() ? exit_code::kOk : exit_code::kSomeFramesFailed;
 }
 
 }  // namespace pfx::app

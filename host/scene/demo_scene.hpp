@@ -1,5 +1,5 @@
 // The built-in demo scene (pfx-render --demo, pfx-view), made in code: a textured floor, boxes and
-// spheres, a few emissive objects bright enough to bloom, and seed 003's 400 point lights (a 20x20
+// spheres, a few emissive objects bright enough to bloom, and 400 point lights (a 20x20
 // grid 2 m apart, 1 m above the floor, colours from the 7 non-black RGB corners, intensity 0.25..4),
 // seen by a camera that frames the grid. Everything depends only on the options.
 #pragma once
@@ -22,7 +22,7 @@ Scene make_demo_scene(const DemoSceneOptions& options = {});
 // every platform (no std:: distributions, whose output the standard leaves to the library).
 void add_random_lights(Scene* scene, int count, const glm::vec3& lo, const glm::vec3& hi, uint64_t seed);
 
-// The seed's grid: 20x20 lights, 2 m apart, centred on the origin, 1 m above y = 0.
+// The demo's light grid: 20x20 lights, 2 m apart, centred on the origin, 1 m above y = 0.
 void add_seed_light_grid(Scene* scene, uint64_t seed);
 
 }  // namespace pfx::app

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <pfx/cpp/gl_program.hpp>
 
+#include "frame_description.hpp"
 #include "scene_camera.hpp"
 
 namespace pfx::app {
@@ -288,17 +289,9 @@ pfx::host::FrameTextures SceneRenderer::textures() const {
 }
 
 pfx_frame make_scene_frame(const Scene& scene, const Camera& camera, int width, int height) {
-  pfx_frame frame{};
-  frame.struct_size = sizeof frame;
-  frame.width = static_cast<uint32_t>(width);
-  frame.height = static_cast<uint32_t>(height);
-  frame.inputs = PFX_INPUT_COLOR | PFX_INPUT_DEPTH | PFX_INPUT_NORMAL | PFX_INPUT_ALBEDO | PFX_INPUT_EMISSIVE |
-                 PFX_INPUT_LIGHTS;
-  frame.depth_encoding = PFX_DEPTH_LINEAR;
-  frame.camera = to_pfx_camera(camera, width, height);
+  pfx_frame frame = describe_frame(width, height, kEveryInput, PFX_DEPTH_LINEAR, to_pfx_camera(camera, width, height));
   frame.lights = scene.lights.empty() ? nullptr : scene.lights.data();
   frame.light_count = static_cast<uint32_t>(scene.lights.size());
-  frame.light_struct_size = sizeof(pfx_light);
   return frame;
 }
 

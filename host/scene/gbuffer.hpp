@@ -1,4 +1,4 @@
-// The G-buffer the host renders from a scene: the frame inputs of the ABI (DESIGN.md §3) as GL
+// The G-buffer the host renders from a scene: the frame inputs of the ABI (docs/architecture.md) as GL
 // textures of one size, written by one geometry pass.
 //
 //   color     RGBA16F  emissive + albedo x (sky/ground ambient + key light) where there is geometry

@@ -1,5 +1,5 @@
 // A scene for measuring lights against their count (pfx-bench --lights): the demo's objects on a
-// floor that grows with the light count so the lights' density stays the same (seed 003's grid
+// floor that grows with the light count so the lights' density stays the same (the demo grid's
 // density, one light per 4 m^2), seen from 20 m up and back by a camera whose view (with the
 // lights' ranges) takes in about 560 lights from 1,000 lights on: the floor then fills the view,
 // so more lights means more lights outside it, not more per pixel. Below 1,000 lights the floor

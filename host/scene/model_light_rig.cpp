@@ -30,7 +30,7 @@ const glm::dvec3 kGround(0.12, 0.11, 0.10);
 constexpr double kMidTone = 0.2;
 constexpr double kTypicalLight = 0.55 * kKeyRadiance + 0.3;  // mean cosine of lit faces, mean ambient
 // The point lights reach a fifth of the model's radius, and one at half that distance adds about
-// as much as a quarter of the key light (times its seed intensity of 0.25..4).
+// as much as a quarter of the key light (times its own intensity of 0.25..4).
 constexpr double kLightReach = 0.2;
 constexpr double kLightShare = 0.25;
 constexpr int kLightsAtFullShare = 400;
@@ -83,7 +83,7 @@ void add_model_light_rig(Scene* scene, const ModelLightRigOptions& options) {
   const double count_share = options.point_lights > kLightsAtFullShare
                                  ? double(kLightsAtFullShare) / options.point_lights
                                  : 1.0;
-  // Seed 003's falloff is 1 / (1 + d^2) in metres: at half the reach a light of intensity I adds
+  // The lights' falloff is 1 / (1 + d^2) in metres: at half the reach a light of intensity I adds
   // I / (1 + (reach/2)^2), so the intensity is multiplied by that denominator.
   const double intensity_scale =
       kLightShare * scale * count_share * (1.0 + 0.25 * reach * reach);

@@ -2,7 +2,7 @@
 // as model viewers light what they open:
 //   - a key light from above, to the right and in front (as the framing camera sees it), and a
 //     sky over a darker ground as ambient, all in the G-buffer's colour;
-//   - the point-light field (seed 003's colours and intensities) spread over and around the
+//   - the point-light field (the demo grid's colours and intensities) spread over and around the
 //     model's box rather than inside it, reaching a fraction of the model's size, for the lights
 //     effect (tiledlights) to add;
 //   - an exposure: all of it scaled by the model's mean albedo so that its mid-tones land in the

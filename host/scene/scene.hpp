@@ -1,4 +1,4 @@
-// The scene model our programs render (DESIGN.md §2, issue 5): meshes with materials, point lights
+// The scene model our programs render (docs/architecture.md): meshes with materials, point lights
 // and a camera. Nothing more than the effects need; no GL here (host/scene's renderer uploads it).
 // Units are metres, colours linear scene-referred, right-handed with +Y up.
 #pragma once

@@ -1,5 +1,5 @@
 // The built-in scenes' random numbers: SplitMix64, the same numbers on every platform (no std::
-// distributions, whose output the standard leaves to the library), and seed 003's point light.
+// distributions, whose output the standard leaves to the library), and the demo grid's point light.
 #pragma once
 
 #include <cstdint>
@@ -28,7 +28,7 @@ class SceneRandom {
   uint64_t state_;
 };
 
-// One of the seed's lights at position: intensity uniform in [0.25, 4), then a colour c in 1..7
+// One of the demo grid's lights at position: intensity uniform in [0.25, 4), then a colour c in 1..7
 // read as the bits (R, G, B); range 0 (derived by the effect).
 pfx_light seed_light(const glm::vec3& position, SceneRandom& random);
 

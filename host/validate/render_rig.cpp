@@ -5,6 +5,7 @@
 #include <glad/gl.h>
 
 #include "camera_options.hpp"
+#include "frame_description.hpp"
 #include "image_texture.hpp"
 #include "synthetic_inputs.hpp"
 
@@ -12,7 +13,7 @@ namespace pfx::validate {
 namespace {
 
 // In front of the camera (which looks down -Z), one behind it and one at the near plane, so a
-// lighting effect meets the cases DESIGN.md §5 names.
+// lighting effect meets the light positions the ABI allows (docs/architecture.md).
 const pfx_light kLights[] = {
     {{0.0f, 1.0f, -5.0f}, 10.0f, {1.0f, 0.9f, 0.8f}, 4.0f},
     {{-2.0f, 0.0f, -20.0f}, 0.0f, {0.2f, 0.4f, 1.0f}, 50.0f},
@@ -129,19 +130,12 @@ void RenderRig::remove_effect() {
 
 bool RenderRig::render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output) {
   const int w = input.width, h = input.height;
-  pfx_frame frame{};
-  frame.struct_size = sizeof frame;
-  frame.width = static_cast<uint32_t>(w);
-  frame.height = static_cast<uint32_t>(h);
-  frame.inputs = PFX_INPUT_COLOR | PFX_INPUT_DEPTH | PFX_INPUT_NORMAL | PFX_INPUT_ALBEDO | PFX_INPUT_EMISSIVE |
-                 PFX_INPUT_LIGHTS;
-  frame.depth_encoding = PFX_DEPTH_LINEAR;
-  frame.camera = pfx::app::make_camera(pfx::app::CameraOptions{}, w, h);
+  pfx_frame frame = pfx::app::describe_frame(w, h, pfx::app::kEveryInput, PFX_DEPTH_LINEAR,
+                                             pfx::app::make_camera(pfx::app::CameraOptions{}, w, h));
   frame.time_seconds = 0.5;
   frame.frame_index = 1;
   frame.lights = kLights;
   frame.light_count = sizeof kLights / sizeof kLights[0];
-  frame.light_struct_size = sizeof(pfx_light);
 
   pfx::host::FrameTextures textures;
   textures.color = pfx::app::upload_color_texture(input);

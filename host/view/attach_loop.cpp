@@ -7,6 +7,7 @@
 #include <glad/gl.h>
 
 #include "app_timings.hpp"
+#include "exit_codes.hpp"
 #include "panels.hpp"
 #include "signals.hpp"
 #include "viewer_session.hpp"
@@ -39,9 +40,9 @@ int run_attached(const ViewOptions& options) {
                                      "pfx-view: " + options.attach, &message);
   if (!window) {
     std::fprintf(stderr, "pfx-view: %s\n", message.c_str());
-    return 1;
+    return exit_code::kInternal;
   }
-  int code = 0;
+  int code = exit_code::kOk;
   auto session = ViewerSession::create(
       options, window->renderer(), [](const char* name) { return ViewerWindow::get_proc_address(nullptr, name); },
       &message, &code);
@@ -89,7 +90,7 @@ int run_attached(const ViewOptions& options) {
   if (scripted && timings.latest().frame)
     session->info("the application's pass times (frame " + std::to_string(timings.latest().frame) +
                   "): " + times_line(timings.latest()));
-  return 0;
+  return exit_code::kOk;
 }
 
 }  // namespace pfx::app

@@ -5,6 +5,7 @@
 #include "camera_settings.hpp"
 #include "demo_image.hpp"
 #include "demo_scene.hpp"
+#include "frame_description.hpp"
 #include "image_texture.hpp"
 #include "import_scene.hpp"
 #include "input_image.hpp"
@@ -120,18 +121,10 @@ void FrameSource::prepare(int width, int height, bool force) {
 }
 
 pfx_frame FrameSource::frame(double time_seconds, uint64_t frame_index) const {
-  pfx_frame frame{};
-  if (renderer_) {
-    frame = make_scene_frame(scene_, camera_, width_, height_);
-  } else {
-    frame.struct_size = sizeof frame;
-    frame.width = static_cast<uint32_t>(width_);
-    frame.height = static_cast<uint32_t>(height_);
-    frame.inputs = PFX_INPUT_COLOR | (has_depth_ ? uint32_t(PFX_INPUT_DEPTH) : 0u);
-    frame.depth_encoding = has_depth_ ? PFX_DEPTH_LINEAR : PFX_DEPTH_NONE;
-    frame.camera = make_camera(lens_of(camera_), width_, height_);
-    frame.light_struct_size = sizeof(pfx_light);
-  }
+  const uint32_t image_inputs = PFX_INPUT_COLOR | (has_depth_ ? uint32_t(PFX_INPUT_DEPTH) : 0u);
+  pfx_frame frame = renderer_ ? make_scene_frame(scene_, camera_, width_, height_)
+                              : describe_frame(width_, height_, image_inputs, PFX_DEPTH_LINEAR,
+                                               make_camera(lens_of(camera_), width_, height_));
   frame.time_seconds = time_seconds;
   frame.frame_index = frame_index;
   return frame;

@@ -17,6 +17,7 @@
 #include "camera_controller.hpp"
 #include "camera_input.hpp"
 #include "display_pass.hpp"
+#include "exit_codes.hpp"
 #include "frame_files.hpp"
 #include "panels.hpp"
 #include "preset.hpp"
@@ -26,10 +27,9 @@
 #include "viewer_window.hpp"
 
 using namespace pfx::app;
+using namespace pfx::exit_code;
 
 namespace {
-
-enum ExitCode { kOk = 0, kInternal = 1, kUsage = 2, kEffectError = 4 };
 
 int error_exit(int code, const std::string& message) {
   std::fprintf(stderr, "pfx-view: %s\n", message.c_str());

@@ -10,6 +10,7 @@
 
 #include "camera_settings.hpp"
 #include "default_chain.hpp"
+#include "exit_codes.hpp"
 #include "frame_files.hpp"
 #include "image_texture.hpp"
 #include "plugin_directory.hpp"
@@ -55,7 +56,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   Preset preset;
   std::string message;
   const std::string& start = options.attach.empty() ? options.preset : options.attach;
-  if (!start.empty() && !read_preset(start, &preset, &message)) return fail(3, message);
+  if (!start.empty() && !read_preset(start, &preset, &message)) return fail(exit_code::kBadInput, message);
 
   self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
   self->chain_->set_timing(default_timing(renderer));
@@ -64,14 +65,14 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
     for (const auto& id : options.chain_given ? options.chain : default_chain(*self->registry_)) effects.push_back({id, true});
   else
     effects = *preset.chain;
-  if (!self->build_chain(effects, &message)) return fail(4, message);
+  if (!self->build_chain(effects, &message)) return fail(exit_code::kEffectError, message);
 
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
   if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
-    return fail(3, options.preset + ": parameters: " + message);
+    return fail(exit_code::kBadInput, options.preset + ": parameters: " + message);
   for (const auto& assignment : options.sets) {
     std::string note;
-    if (!self->params_.set_assignment(assignment, &message, &note)) return fail(2, "--set " + message);
+    if (!self->params_.set_assignment(assignment, &message, &note)) return fail(exit_code::kUsage, "--set " + message);
     if (!note.empty()) self->info("--set " + assignment + ": " + note);
   }
 
@@ -84,14 +85,14 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
 
   bool bad_input = false;
   self->source_ = FrameSource::create(options, *self->registry_, &message, &bad_input);
-  if (!self->source_) return fail(bad_input ? 3 : 1, message);
+  if (!self->source_) return fail(bad_input ? exit_code::kBadInput : exit_code::kInternal, message);
   for (const auto& warning : self->source_->warnings()) self->warning(warning);
   Camera& camera = self->source_->camera();
   const Camera place = camera;
   apply_preset_camera(preset.camera, &camera);
   apply_camera_keys(options.camera, options.camera_keys, &camera);
   if (!self->source_->has_scene()) camera.position = place.position, camera.target = place.target, camera.up = place.up;
-  if (!(camera.far_plane > camera.near_plane)) return fail(2, "camera: far must be greater than near");
+  if (!(camera.far_plane > camera.near_plane)) return fail(exit_code::kUsage, "camera: far must be greater than near");
 
   self->tone_ = options.tone;
   if (preset.exposure_ev && !options.exposure_given) self->tone_.exposure_ev = *preset.exposure_ev;

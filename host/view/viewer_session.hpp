@@ -27,8 +27,9 @@ class ViewerSession {
  public:
   // Loads the plugins, builds the input, the chain (preset, then --chain / --set / --camera on
   // top) and the output. With --attach there is no input: the chain and values come from the
-  // attached preset, at the display-referred defaults, and source() must not be used. Null with *error and *exit_code (2 usage, 3 bad input file, 4 plugin or
-  // effect error, 1 GL) on failure.
+  // attached preset, at the display-referred defaults, and source() must not be used. Null with
+  // *error and *exit_code (exit_codes.hpp: usage, bad input file, effect error, internal for GL)
+  // on failure.
   static std::unique_ptr<ViewerSession> create(const ViewOptions& options, const std::string& renderer,
                                                pfx::host::GlProcLoader gl_loader, std::string* error,
                                                int* exit_code);

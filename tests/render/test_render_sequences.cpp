@@ -98,7 +98,8 @@ TEST_CASE("frame name patterns %04d %d #### @@@@ and a lone @ with %% and number
 
 TEST_CASE("pfx-render --frames: usage errors exit 2 and say what is wrong", "[render][sequence][errors]") {
   const Result help = pfx_render("--help", false);
-  for (const char* text : {"--frames A-B[xS]", "--overwrite", "--report PATTERN", "5 some frames of a sequence failed"})
+  for (const char* text : {"--frames A-B[xS]", "--overwrite", "--report PATTERN", "--chunk N", "--chunk-index I", "--print-frames",
+                           "5 some frames of a sequence failed"})
     CHECK(help.out.find(text) != std::string::npos);
   for (const auto& [args, message] :
        {std::pair{"--input in.%04d.exr --out out.exr", "--input in.%04d.exr names a frame sequence: give --frames"},
@@ -107,7 +108,12 @@ TEST_CASE("pfx-render --frames: usage errors exit 2 and say what is wrong", "[re
         std::pair{"--demo --frames 1-3 --out o.#.exr", "--frames goes with --input"},
         std::pair{"--input in.#.exr --frames 5-1 --out o.#.exr", "--frames 5-1: the last frame comes before"},
         std::pair{"--input in.exr --out o.exr --overwrite", "--overwrite goes with --frames"},
-        std::pair{"--input in.#.exr --frames 1-3 --out o.#.exr --report r.json", "--report r.json: no frame number"}}) {
+        std::pair{"--input in.#.exr --frames 1-3 --out o.#.exr --report r.json", "--report r.json: no frame number"},
+        std::pair{"--input in.#.exr --frames 1-3 --out o.#.exr --chunk 0", "--chunk 0: expected a whole number from 1"},
+        std::pair{"--input in.#.exr --frames 1-7 --out o.#.exr --chunk 3 --chunk-index 3",
+                  "--chunk-index 3: the 7 frames in chunks of 3 make chunks 0 to 2"},
+        std::pair{"--input in.#.exr --frames 1-3 --out o.#.exr --chunk-index 0", "--chunk-index goes with --chunk N"},
+        std::pair{"--input in.exr --out o.exr --print-frames", "--print-frames goes with --frames"}}) {
     INFO(args);
     const Result r = pfx_render(args);
     CHECK(r.exit_code == 2);
@@ -165,7 +171,7 @@ TEST_CASE("pfx-render --frames renders each frame as a single render would and a
   for (const auto& name : scratch.files()) CHECK(name.find(".tmp-") == std::string::npos);
 }
 
-TEST_CASE("pfx-render --frames again skips complete frames and renders missing or damaged outputs and "
+TEST_CASE("pfx-render --frames again skips frames whose outputs exist and renders missing outputs and "
           "--overwrite renders all",
           "[render][sequence]") {
   Scratch scratch;
@@ -176,14 +182,19 @@ TEST_CASE("pfx-render --frames again skips complete frames and renders missing o
   const std::string frame2 = read_bytes(scratch / "out.2.exr");
   struct stat before {};
   REQUIRE(::stat((scratch / "out.1.exr").c_str(), &before) == 0);
-  std::ofstream(scratch / "out.2.exr", std::ios::binary | std::ios::trunc) << frame2.substr(0, frame2.size() - 10);
+  fs::remove(scratch / "out.2.exr");
   fs::remove(scratch / "out.3.png");
+  // Outputs are renamed into place only when complete, so existence is what marks a frame done;
+  // a file something else cut short is not read and counts as done (--overwrite renders it).
+  const std::string frame4 = read_bytes(scratch / "out.4.exr");
+  std::ofstream(scratch / "out.4.exr", std::ios::binary | std::ios::trunc) << frame4.substr(0, frame4.size() / 2);
 
   Result r = pfx_render(args);
   CHECK(r.exit_code == 0);
   CHECK(statuses(json_lines(r.out)) == "1:skipped 2:rendered 3:rendered 4:skipped ");
   CHECK(read_bytes(scratch / "out.2.exr") == frame2);
   CHECK(fs::exists(scratch / "out.3.png"));
+  CHECK(read_bytes(scratch / "out.4.exr").size() == frame4.size() / 2);
   struct stat after {};
   REQUIRE(::stat((scratch / "out.1.exr").c_str(), &after) == 0);
   CHECK(after.st_ino == before.st_ino);  // a skipped frame's file is not even replaced
@@ -191,6 +202,52 @@ TEST_CASE("pfx-render --frames again skips complete frames and renders missing o
   r = pfx_render(args + " --overwrite");
   CHECK(r.exit_code == 0);
   CHECK(statuses(json_lines(r.out)) == "1:rendered 2:rendered 3:rendered 4:rendered ");
+  CHECK(read_bytes(scratch / "out.4.exr") == frame4);
+}
+
+TEST_CASE("pfx-render --print-frames gives each frame's files, chunk and done as a run sees them, and "
+          "--chunk-index renders that chunk alone",
+          "[render][sequence]") {
+  Scratch scratch;
+  for (int frame = 1; frame <= 7; ++frame) write_frame(scratch / ("in." + std::to_string(frame) + ".exr"), frame);
+  const std::string files = "--input " + scratch / "in.%d.exr" + " --out " + scratch / "out.####.exr" +
+                            " --report " + scratch / "r.%03d.json" + kGain;
+  // 1-7 in chunks of 3: {1,2,3} {4,5,6} {7}. Render the middle one only.
+  Result r = pfx_render(files + " --frames 1-7 --chunk 3 --chunk-index 1 --json");
+  REQUIRE(r.exit_code == 0);
+  CHECK(statuses(json_lines(r.out)) == "4:rendered 5:rendered 6:rendered ");
+  for (int frame = 1; frame <= 7; ++frame)
+    CHECK(fs::exists(scratch / ("out.000" + std::to_string(frame) + ".exr")) == (frame >= 4 && frame <= 6));
+
+  r = pfx_render(files + " --frames 1-7 --chunk 3 --print-frames");
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json plan = nlohmann::json::parse(r.out);
+  CHECK(plan["chunks"] == 3);
+  REQUIRE(plan["frames"].size() == 7);
+  for (int frame = 1; frame <= 7; ++frame) {
+    const nlohmann::json& entry = plan["frames"][frame - 1];
+    INFO(entry.dump());
+    CHECK(entry["frame"] == frame);
+    CHECK(entry["chunk"] == (frame - 1) / 3);
+    CHECK(entry["input"] == scratch / ("in." + std::to_string(frame) + ".exr"));
+    CHECK(entry["outputs"] == nlohmann::json::array({scratch / ("out.000" + std::to_string(frame) + ".exr")}));
+    CHECK(entry["report"] == scratch / ("r.00" + std::to_string(frame) + ".json"));
+    CHECK(entry["done"] == (frame >= 4 && frame <= 6));
+  }
+  // The run skips exactly the frames the plan calls done.
+  r = pfx_render(files + " --frames 1-7 --json");
+  CHECK(r.exit_code == 0);
+  CHECK(statuses(json_lines(r.out)) == "1:rendered 2:rendered 3:rendered 4:skipped 5:skipped 6:skipped 7:rendered ");
+
+  // A stepped range is chunked by its frames, not its numbers: 1-7x2 is 1 3 5 7, chunk 1 of 3 is 7.
+  r = pfx_render(files + " --frames 1-7x2 --chunk 3 --chunk-index 1 --print-frames");
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json stepped = nlohmann::json::parse(r.out);
+  CHECK(stepped["chunks"] == 2);
+  REQUIRE(stepped["frames"].size() == 1);
+  CHECK(stepped["frames"][0]["frame"] == 7);
+  CHECK(stepped["frames"][0]["chunk"] == 1);
+  CHECK(stepped["frames"][0]["done"] == true);
 }
 
 TEST_CASE("pfx-render --frames stops after a whole frame on SIGTERM (exit 143) and a rerun finishes the rest",

@@ -26,6 +26,7 @@
 
 #include "cli_text.hpp"
 #include "copy_pass.hpp"
+#include "exit_codes.hpp"
 #include "headless_context.hpp"
 #include "image_texture.hpp"
 #include "plugin_directory.hpp"
@@ -130,13 +131,13 @@ int main(int argc, char** argv) {
   Options options;
   if (!parse(argc, argv, &options)) {
     std::fputs("usage: pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE]\n", stderr);
-    return 2;
+    return pfx::exit_code::kUsage;
   }
   std::string error;
   auto context = pfx::app::HeadlessContext::create(&error);
   if (!context) {
     std::fprintf(stderr, "pfx-adapter-bench: %s\n", error.c_str());
-    return 1;
+    return pfx::exit_code::kInternal;
   }
   const fs::path lib = fs::path(pfx::app::executable_directory()) / ".." / "lib";
   const std::vector<std::string> environment = {
@@ -150,7 +151,7 @@ int main(int argc, char** argv) {
                  "-frames:v", std::to_string(options.long_frames), "-c:v", "ffv1", "-y", clip},
                 environment) < 0) {
     std::fprintf(stderr, "pfx-adapter-bench: ffmpeg could not make the clip\n");
-    return 1;
+    return pfx::exit_code::kInternal;
   }
 
   std::vector<Row> rows = {
@@ -186,7 +187,7 @@ int main(int argc, char** argv) {
       const double long_run = timed_run(command(row, options.long_frames), environment);
       if (short_run < 0 || long_run < 0) {
         std::fprintf(stderr, "pfx-adapter-bench: %s %s failed\n", row.host.c_str(), row.name.c_str());
-        return 1;
+        return pfx::exit_code::kInternal;
       }
       per_frame.push_back(1000 * (long_run - short_run) / (options.long_frames - options.short_frames));
     }
@@ -216,5 +217,5 @@ int main(int argc, char** argv) {
   }
   json += "]}\n";
   if (!options.json.empty()) std::ofstream(options.json) << json;
-  return 0;
+  return pfx::exit_code::kOk;
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "camera_options.hpp"
+#include "frame_description.hpp"
 
 namespace pfx::adapters {
 
@@ -33,17 +34,11 @@ bool FrameChain::render(gl::DisplayFrame& frame, double time_seconds, uint64_t f
     return true;
   }
   // A video frame is colour alone: no depth, normals or lights arrive with it.
-  pfx_frame description{};
-  description.struct_size = sizeof description;
-  description.width = static_cast<uint32_t>(frame.width());
-  description.height = static_cast<uint32_t>(frame.height());
-  description.inputs = PFX_INPUT_COLOR;
-  description.depth_encoding = PFX_DEPTH_NONE;
-  description.camera = app::make_camera(app::CameraOptions{}, frame.width(), frame.height());
+  pfx_frame description = app::describe_frame(frame.width(), frame.height(), PFX_INPUT_COLOR, PFX_DEPTH_NONE,
+                                              app::make_camera(app::CameraOptions{}, frame.width(), frame.height()));
   // As the host gives it (docs/hosts.md says what each host passes); a non-finite time is none.
   description.time_seconds = std::isfinite(time_seconds) ? time_seconds : 0.0;
   description.frame_index = frame_index;
-  description.light_struct_size = sizeof(pfx_light);
   host::FrameTextures textures;
   textures.color = frame.color();
   if (!chain_->render(description, textures, frame.output(), error)) return false;

@@ -5,22 +5,14 @@
 #include <pfx/host/param_store.hpp>
 
 #include "camera_options.hpp"
+#include "frame_description.hpp"
 
 namespace pfx::frei0r {
 namespace {
 
 // The frame a renderer with every buffer would give: all inputs there, linear depth.
 pfx_frame full_frame() {
-  pfx_frame frame{};
-  frame.struct_size = sizeof frame;
-  frame.width = 64;
-  frame.height = 48;
-  frame.inputs = PFX_INPUT_COLOR | PFX_INPUT_DEPTH | PFX_INPUT_NORMAL | PFX_INPUT_ALBEDO | PFX_INPUT_EMISSIVE |
-                 PFX_INPUT_LIGHTS;
-  frame.depth_encoding = PFX_DEPTH_LINEAR;
-  frame.camera = app::make_camera(app::CameraOptions{}, 64, 48);
-  frame.light_struct_size = sizeof(pfx_light);
-  return frame;
+  return app::describe_frame(64, 48, app::kEveryInput, PFX_DEPTH_LINEAR, app::make_camera(app::CameraOptions{}, 64, 48));
 }
 
 void add_need(std::vector<std::string>* needs, const std::string& name) {

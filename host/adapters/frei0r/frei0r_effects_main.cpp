@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "colour_only.hpp"
+#include "exit_codes.hpp"
 #include "frei0r_tables.hpp"
 #include "headless_context.hpp"
 #include "plugin_directory.hpp"
@@ -20,7 +21,7 @@ namespace {
 
 int usage() {
   std::fputs("usage: pfx-frei0r-effects [--plugins DIR]... (--list | --markdown | --copies LIBRARY DIR)\n", stderr);
-  return 2;
+  return pfx::exit_code::kUsage;
 }
 
 // Each copy is written under a temporary name and renamed: a host scanning the folder meanwhile
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
   auto context = pfx::app::HeadlessContext::create(&error);
   if (!context) {
     std::fprintf(stderr, "pfx-frei0r-effects: %s (the effects are told apart by running them)\n", error.c_str());
-    return 1;
+    return pfx::exit_code::kInternal;
   }
   pfx::host::PluginRegistry registry(
       [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); },
@@ -94,6 +95,6 @@ int main(int argc, char** argv) {
     tables += pfx::frei0r::markdown_table(*registry.find_effect(effect.id)->desc);
   }
   if (mode == "--markdown") std::fputs(tables.c_str(), stdout);
-  if (mode == "--copies" && !make_copies(colour_only, library, destination)) return 1;
-  return 0;
+  if (mode == "--copies" && !make_copies(colour_only, library, destination)) return pfx::exit_code::kInternal;
+  return pfx::exit_code::kOk;
 }

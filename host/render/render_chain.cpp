@@ -1,0 +1,48 @@
+#include "render_chain.hpp"
+
+#include <cstdio>
+
+#include "default_chain.hpp"
+#include "exit_codes.hpp"
+#include "timing_choice.hpp"
+
+namespace pfx::app {
+
+RenderChain::RenderChain(const host::PluginRegistry& registry, const RenderOptions& options,
+                         const std::string& gl_renderer)
+    : registry_(registry),
+      params_(uses_display_defaults(options) ? host::DefaultSet::DISPLAY_REFERRED : host::DefaultSet::SCENE_REFERRED),
+      chain_(registry, params_) {
+  for (const auto& effect : registry.effects()) params_.add_effect(effect.desc);
+  host::Timing timing = host::Timing::OFF;
+  parse_timing(options.timing, gl_renderer, &timing);  // the name was checked with the options
+  chain_.set_timing(timing);
+}
+
+int RenderChain::build(const RenderOptions& options, const Preset& preset, std::string* message) {
+  std::vector<PresetEffect> effects;
+  if (options.chain_given || !preset.chain)
+    for (const auto& id : options.chain_given ? options.chain : default_chain(registry_)) effects.push_back({id, true});
+  else
+    effects = *preset.chain;
+  for (const auto& effect : effects) {
+    if (!chain_.add(effect.id, message)) return exit_code::kEffectError;
+    chain_.set_enabled(chain_.size() - 1, effect.enabled);
+  }
+  // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
+  if (!preset.parameters_json.empty() && !params_.from_json(preset.parameters_json, message)) {
+    *message = options.preset + ": parameters: " + *message;
+    return exit_code::kBadInput;
+  }
+  for (const auto& assignment : options.sets) {
+    std::string note;
+    if (!params_.set_assignment(assignment, message, &note)) {
+      *message = "--set " + *message;
+      return exit_code::kUsage;
+    }
+    if (!note.empty()) std::fprintf(stderr, "pfx-render: warning: --set %s: %s\n", assignment.c_str(), note.c_str());
+  }
+  return exit_code::kOk;
+}
+
+}  // namespace pfx::app
