@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <pfx/host/import_result.hpp>
 #include <pfx/host/plugin_registry.hpp>
 
 #include "import_options.hpp"
@@ -74,9 +75,8 @@ int main(int argc, char** argv) {
     request.progress = show_progress;
     request.progress_user = &last_percent;
   }
-  pfx_import_result* result = nullptr;
   const auto start = std::chrono::steady_clock::now();  // the call timed here, whatever the importer says
-  importer->desc->import(&request, &result);
+  const pfx::host::ImportResult result(*importer->desc, request);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!result) return error_exit(1, options.file + ": out of memory");
   int code = 0;
@@ -89,6 +89,5 @@ int main(int argc, char** argv) {
     code = result->status == PFX_ERROR ? 3 : result->status == PFX_OUT_OF_MEMORY ? 1 : 4;
     error_exit(code, result->error ? result->error : "import failed (status " + std::to_string(result->status) + ")");
   }
-  importer->desc->release(result);
   return code;
 }
