@@ -11,6 +11,8 @@
 
 #include <filesystem>
 
+#include <pfx/host/import_result.hpp>
+
 namespace pfx::bench {
 
 namespace {
@@ -26,17 +28,15 @@ LoadCounts load_pfx(const std::string& path, unsigned threads, const pfx::host::
   request.struct_size = sizeof request;
   request.path = path.c_str();
   request.threads = threads;
-  pfx_import_result* result = nullptr;
-  importer->desc->import(&request, &result);
+  const pfx::host::ImportResult result(*importer->desc, request);
   if (!result) {
     counts.error = "out of memory";
     return counts;
   }
-  counts.ok = result->status == PFX_OK;
-  if (!counts.ok) counts.error = result->error ? result->error : "import failed";
+  counts.ok = result.ok();
+  if (!counts.ok) counts.error = result.error() ? result.error() : "import failed";
   counts.vertices = result->vertex_count;
   counts.triangles = result->index_count / 3;
-  importer->desc->release(result);
   return counts;
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include <glm/geometric.hpp>
+#include <pfx/host/import_result.hpp>
 
 #include "model_light_rig.hpp"
 #include "texture_maps.hpp"
@@ -65,11 +66,9 @@ bool load_scene_from_model(const pfx::host::PluginRegistry& registry, const std:
   request.struct_size = sizeof request;
   request.path = path.c_str();
   request.threads = options.threads;
-  pfx_import_result* result = nullptr;
-  importer->desc->import(&request, &result);
-  if (!result || result->status != PFX_OK) {
-    *error = result && result->error ? result->error : path + ": import failed";
-    importer->desc->release(result);
+  const pfx::host::ImportResult result(*importer->desc, request);
+  if (!result.ok()) {
+    *error = result.error() ? result.error() : path + ": import failed";
     return false;
   }
   const pfx_import_result& r = *result;
@@ -128,13 +127,9 @@ bool load_scene_from_model(const pfx::host::PluginRegistry& registry, const std:
     }
     out.meshes.push_back(std::move(mesh));
   }
-  const float lo[3] = {r.bounds_min[0], r.bounds_min[1], r.bounds_min[2]};
-  const float hi[3] = {r.bounds_max[0], r.bounds_max[1], r.bounds_max[2]};
-  importer->desc->release(result);
-
   pfx::app::update_bounds(&out);
   pfx::app::add_model_light_rig(&out, {options.lights, options.seed});
-  out.camera = frame_bounds(lo, hi, options.fovy_degrees * M_PI / 180.0);
+  out.camera = frame_bounds(r.bounds_min, r.bounds_max, options.fovy_degrees * M_PI / 180.0);
   *scene = std::move(out);
   return true;
 }

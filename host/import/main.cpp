@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <pfx/host/import_result.hpp>
 #include <pfx/host/plugin_registry.hpp>
 
 #include "exit_codes.hpp"
@@ -77,9 +78,8 @@ int main(int argc, char** argv) {
     request.progress = show_progress;
     request.progress_user = &last_percent;
   }
-  pfx_import_result* result = nullptr;
   const auto start = std::chrono::steady_clock::now();  // the call timed here, whatever the importer says
-  importer->desc->import(&request, &result);
+  const pfx::host::ImportResult result(*importer->desc, request);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!result) return error_exit(kInternal, options.file + ": out of memory");
   int code = kOk;
@@ -92,6 +92,5 @@ int main(int argc, char** argv) {
     code = result->status == PFX_ERROR ? kBadInput : result->status == PFX_OUT_OF_MEMORY ? kInternal : kEffectError;
     error_exit(code, result->error ? result->error : "import failed (status " + std::to_string(result->status) + ")");
   }
-  importer->desc->release(result);
   return code;
 }

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include <glad/gl.h>
+#include <pfx/host/gl_error.hpp>
 #include <pfx/host/gl_state_guard.hpp>
 
 #include "camera_options.hpp"
@@ -51,12 +52,6 @@ std::unique_ptr<host::ParamStore> make_params(const host::PluginRegistry& regist
 std::string number_text(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-std::string gl_error_text(GLenum error) {
-  char text[16];
-  std::snprintf(text, sizeof text, "0x%04x", error);
   return text;
 }
 
@@ -227,7 +222,7 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
   if (work.measure_copy_pass) copy_pass_ms_ = copy_.copy_pass_ms(9);
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR) {
-    *reason = "GL error " + gl_error_text(error) + " while copying the frame in or out";
+    *reason = "GL error " + host::gl_error_text(error) + " while copying the frame in or out";
     return false;
   }
   return true;

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <set>
 
+#include <pfx/host/import_result.hpp>
 #include <pfx/host/thread_pool.hpp>
 
 #include "process_state.hpp"
@@ -155,15 +156,14 @@ void check_process_state(const std::string& path, CheckReporter& report) {
     request.name = name.c_str();
     request.progress = DuringImport::progress;
     request.progress_user = &during;
-    pfx_import_result* result = nullptr;
     report.step("import of '" + id + "'");
     during.caller_before = snapshot_process_state();
-    info.desc->import(&request, &result);
+    pfx::host::ImportResult result(*info.desc, request);
     watch.after("import of '" + id + "'");
     for (const std::string& change : during.changes) report.problem("import of '" + id + "', " + change);
     during.changes.clear();
     report.step("release of '" + id + "'");
-    info.desc->release(result);
+    result.reset();
     watch.after("release of '" + id + "'");
   }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include <glad/gl.h>
+#include <pfx/host/gl_error.hpp>
 
 #include "camera_options.hpp"
 #include "frame_description.hpp"
@@ -12,20 +13,14 @@
 namespace pfx::validate {
 namespace {
 
-// In front of the camera (which looks down -Z), one behind it and one at the near plane, so a
-// lighting effect meets the light positions the ABI allows (docs/architecture.md).
+// In front of the camera (which looks down -Z), one behind it and one at the near plane: the
+// hard cases of a lighting effect, which must give a finite picture for each.
 const pfx_light kLights[] = {
     {{0.0f, 1.0f, -5.0f}, 10.0f, {1.0f, 0.9f, 0.8f}, 4.0f},
     {{-2.0f, 0.0f, -20.0f}, 0.0f, {0.2f, 0.4f, 1.0f}, 50.0f},
     {{1.0f, 0.0f, 3.0f}, 5.0f, {1.0f, 0.0f, 0.0f}, 2.0f},
     {{0.0f, 0.0f, -0.1f}, 1.0f, {0.0f, 1.0f, 0.0f}, 1.0f},
 };
-
-std::string gl_error_text(GLenum error) {
-  char buffer[16];
-  std::snprintf(buffer, sizeof buffer, "0x%04x", error);
-  return buffer;
-}
 
 std::string pixel_text(const float* p) {
   char buffer[96];
@@ -90,7 +85,7 @@ bool RenderRig::load(const std::string& plugin_path, const pfx_thread_pool* pool
 
 void RenderRig::check_gl_calls(const std::string& what, const GlStateSnapshot& before) {
   const GLenum error = glGetError();
-  if (error != GL_NO_ERROR) problem_once(what + " left GL error " + gl_error_text(error));
+  if (error != GL_NO_ERROR) problem_once(what + " left GL error " + pfx::host::gl_error_text(error));
   while (glGetError() != GL_NO_ERROR) {
   }
   for (const std::string& change : gl_state_changes(before, snapshot_gl_state()))

@@ -1,6 +1,7 @@
 // Two instances of one effect in a chain, each with its own values (the minimal fixture's "gain"):
 // each renders what a chain holding only it renders with that value, values move with their
-// instance and leave with it, and the report names instances as the store does.
+// instance and leave with it, the report names instances as the store does, and the store never
+// has fewer instances than the chain holds, whatever is done to it.
 #include <catch2/catch.hpp>
 
 #include "gl_test_support.hpp"
@@ -153,4 +154,73 @@ TEST_CASE("removing an instance drops its values and the others renumber", "[cha
   // A new second instance starts at the defaults.
   rig.add("gain");
   CHECK(rig.params.get_text("gain#2.gain") == "1");
+}
+
+TEST_CASE("a move or removal that gives a number other values changes its revision", "[chain][instances]") {
+  Rig rig;
+  for (int i = 0; i < 3; ++i) rig.add("gain");
+  rig.set("gain.gain=2");
+  rig.set("gain#2.gain=3");
+  rig.set("gain#3.gain=5");
+  const uint64_t first = rig.params.revision("gain"), second = rig.params.revision("gain#2"),
+                 third = rig.params.revision("gain#3");
+  rig.chain->move(2, 0);  // 5, 2, 3: every number holds other values
+  CHECK(rig.params.get_text("gain.gain") == "5");
+  CHECK(rig.params.get_text("gain#2.gain") == "2");
+  CHECK(rig.params.get_text("gain#3.gain") == "3");
+  CHECK(rig.params.revision("gain") != first);
+  CHECK(rig.params.revision("gain#2") != second);
+  CHECK(rig.params.revision("gain#3") != third);
+
+  // Removing the second: the third's values become gain#2, and a viewer watching revisions sees it.
+  const uint64_t kept = rig.params.revision("gain"), moved_down = rig.params.revision("gain#2");
+  rig.chain->remove(1);  // 5, 3
+  CHECK(rig.params.get_text("gain#2.gain") == "3");
+  CHECK(rig.params.revision("gain") == kept);
+  CHECK(rig.params.revision("gain#2") != moved_down);
+}
+
+TEST_CASE("the store keeps a block for every instance its chain holds", "[chain][instances]") {
+  Rig rig;
+  rig.add("gain");
+  rig.add("gain");
+  rig.set("gain.gain=2");
+  rig.set("gain#2.gain=0.5");
+  rig.chain->set_enabled(0, false);
+
+  // Neither shrinking nor forgetting takes the chain's values away.
+  CHECK_FALSE(rig.params.set_instance_count("gain", 1));
+  CHECK_FALSE(rig.params.remove_effect("gain"));
+  CHECK(rig.params.instance_count("gain") == 2);
+  REQUIRE(rig.params.set_instance_count("gain", 3));  // more than the chain holds: a preset's
+  REQUIRE(rig.params.set_instance_count("gain", 2));
+  CHECK(rig.render(input()).rgba == single_gain("0.5").rgba);
+
+  // A store assigned over the chain's keeps its instances: values from the assigned store where it
+  // has them, the defaults where it has none.
+  pfx::host::ParamStore one_gain;
+  one_gain.add_effect(rig.registry->find_effect("gain")->desc);
+  std::string error;
+  REQUIRE(one_gain.set_assignment("gain.gain=3", &error));
+  rig.params = one_gain;
+  CHECK(rig.params.instance_count("gain") == 2);
+  CHECK(rig.params.get_text("gain.gain") == "3");
+  CHECK(rig.params.get_text("gain#2.gain") == "1");
+  CHECK(rig.render(input()).rgba == single_gain("1").rgba);
+  // Even one without the effect at all: the chain keeps the values it had.
+  rig.set("gain#2.gain=0.5");
+  rig.params = pfx::host::ParamStore();
+  CHECK(rig.params.get_text("gain#2.gain") == "0.5");
+  CHECK(rig.render(input()).rgba == single_gain("0.5").rgba);
+
+  // A copy holds no instance of the chain's: it is shaped freely.
+  pfx::host::ParamStore copy = rig.params;
+  CHECK(copy.set_instance_count("gain", 1));
+  CHECK(copy.remove_effect("gain"));
+
+  // Once the chain is gone the store is shaped freely, and its values are still there.
+  rig.chain.reset();
+  CHECK(rig.params.get_text("gain#2.gain") == "0.5");
+  CHECK(rig.params.set_instance_count("gain", 1));
+  CHECK(rig.params.remove_effect("gain"));
 }

@@ -1,6 +1,7 @@
 // Per-instance values in the parameter store: "bloom#2" names the second instance, plain "bloom"
-// the first, text and JSON name the first "bloom" and the others "bloom#N", instances move and
-// leave with their values, and naming one that does not exist is refused with the count.
+// the first, text and JSON name the first "bloom" and the others "bloom#N", a store without a
+// chain is shaped by set_instance_count, and naming an instance that does not exist is refused
+// with the count. (Instances moving and leaving with their values: test_chain_instances.cpp.)
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -129,34 +130,26 @@ TEST_CASE("text and JSON name the first instance plainly and round-trip two inst
   CHECK(error == "'bloom#2': there is no bloom#2, effect 'bloom' has 1 instance");
 }
 
-TEST_CASE("values move with their instance and leave with it, and the others renumber", "[params][instances]") {
+TEST_CASE("a store without a chain is shaped by set_instance_count, never below one instance",
+          "[params][instances]") {
   ParamFixture f;
   std::string error;
   REQUIRE(f.store.set_instance_count("bloom", 3));
   for (int n = 1; n <= 3; ++n)
     REQUIRE(f.store.set_assignment("bloom#" + std::to_string(n) + ".threshold=" + std::to_string(10 * n), &error));
-  const uint64_t second_before = f.store.revision("bloom#2");
-
-  f.store.move_instance("bloom", 3, 1);  // 30, 10, 20
-  CHECK(threshold(f.store, "bloom") == 30);
-  CHECK(threshold(f.store, "bloom#2") == 10);
-  CHECK(threshold(f.store, "bloom#3") == 20);
-  // The number now holds other values, so a viewer watching revisions renders again.
-  CHECK(f.store.revision("bloom#2") != second_before);
-
-  f.store.remove_instance("bloom", 2);  // 30, 20
-  CHECK(f.store.instance_count("bloom") == 2);
-  CHECK(threshold(f.store, "bloom") == 30);
+  // Dropping the last blocks keeps the first ones' values; growing again starts at the defaults.
+  REQUIRE(f.store.set_instance_count("bloom", 2));
+  CHECK(threshold(f.store, "bloom") == 10);
   CHECK(threshold(f.store, "bloom#2") == 20);
   CHECK_FALSE(f.store.set_assignment("bloom#3.threshold=1", &error));
-
-  // The last instance is never removed: its values stay the effect's.
-  f.store.remove_instance("bloom", 1);
-  f.store.remove_instance("bloom", 1);
-  CHECK(f.store.instance_count("bloom") == 1);
-  CHECK(threshold(f.store, "bloom") == 20);
+  REQUIRE(f.store.set_instance_count("bloom", 3));
+  CHECK(threshold(f.store, "bloom#3") == 1);
   CHECK_FALSE(f.store.set_instance_count("bloom", 0));
   CHECK_FALSE(f.store.set_instance_count("glare", 2));
+  CHECK(f.store.instance_count("bloom") == 3);
+  // No chain holds the effect: it may be forgotten.
+  CHECK(f.store.remove_effect("bloom"));
+  CHECK_FALSE(f.store.has_effect("bloom"));
 }
 
 TEST_CASE("a reloaded effect keeps the values of every instance", "[params][instances]") {

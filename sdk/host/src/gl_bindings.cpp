@@ -3,6 +3,7 @@
 #include "gl_state_scope.hpp"
 
 #include <cstddef>
+#include <iterator>
 
 namespace pfx::host {
 namespace {
@@ -23,7 +24,6 @@ const TextureTarget kTextureTargets[] = {
     {GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BINDING_2D_MULTISAMPLE},
     {GL_TEXTURE_2D_MULTISAMPLE_ARRAY, GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY},
 };
-
 
 struct BufferTarget {
   GLenum target, binding;
@@ -77,6 +77,7 @@ void restore_indexed(GLenum target, const std::vector<Buffer>& buffers) {
 }  // namespace
 
 void GlBindings::save(const GlLimits& limits) {
+  static_assert(std::size(kTextureTargets) == kTargetsPerUnit, "one saved binding per texture target");
   draw_framebuffer_ = get_integer(GL_DRAW_FRAMEBUFFER_BINDING);
   read_framebuffer_ = get_integer(GL_READ_FRAMEBUFFER_BINDING);
   renderbuffer_ = get_integer(GL_RENDERBUFFER_BINDING);

@@ -37,89 +37,98 @@ const Capability kCapabilities[] = {
     {GL_TEXTURE_CUBE_MAP_SEAMLESS, GL_FALSE},
 };
 
-// Single integer values, each with its initial value and the call that sets it.
+// Single integer values: each with the value every chain starts from and the call that sets it.
 struct IntegerState {
   GLenum pname;
   GLint chain_value;
+  void (*set)(GLenum pname, GLint value);
 };
+GLenum as_enum(GLint value) { return static_cast<GLenum>(value); }
+// The pixel store, for plugins that upload or read back from client memory.
+void set_pixel_store(GLenum pname, GLint value) { glPixelStorei(pname, value); }
 const IntegerState kIntegers[] = {
-    {GL_CULL_FACE_MODE, GL_BACK},
-    {GL_FRONT_FACE, GL_CCW},
-    {GL_PROVOKING_VERTEX, GL_LAST_VERTEX_CONVENTION},
-    {GL_CLIP_ORIGIN, GL_LOWER_LEFT},
-    {GL_CLIP_DEPTH_MODE, GL_NEGATIVE_ONE_TO_ONE},
-    {GL_DEPTH_FUNC, GL_LESS},
-    {GL_DEPTH_WRITEMASK, GL_TRUE},
-    {GL_STENCIL_CLEAR_VALUE, 0},
-    {GL_CLAMP_READ_COLOR, GL_FIXED_ONLY},
-    {GL_FRAGMENT_SHADER_DERIVATIVE_HINT, GL_DONT_CARE},
-    {GL_PATCH_VERTICES, 3},
-    {GL_POINT_SPRITE_COORD_ORIGIN, GL_UPPER_LEFT},
-    // The pixel store, for plugins that upload or read back from client memory.
-    {GL_UNPACK_SWAP_BYTES, GL_FALSE},
-    {GL_UNPACK_LSB_FIRST, GL_FALSE},
-    {GL_UNPACK_ROW_LENGTH, 0},
-    {GL_UNPACK_IMAGE_HEIGHT, 0},
-    {GL_UNPACK_SKIP_ROWS, 0},
-    {GL_UNPACK_SKIP_PIXELS, 0},
-    {GL_UNPACK_SKIP_IMAGES, 0},
-    {GL_UNPACK_ALIGNMENT, 4},
-    {GL_UNPACK_COMPRESSED_BLOCK_WIDTH, 0},
-    {GL_UNPACK_COMPRESSED_BLOCK_HEIGHT, 0},
-    {GL_UNPACK_COMPRESSED_BLOCK_DEPTH, 0},
-    {GL_UNPACK_COMPRESSED_BLOCK_SIZE, 0},
-    {GL_PACK_SWAP_BYTES, GL_FALSE},
-    {GL_PACK_LSB_FIRST, GL_FALSE},
-    {GL_PACK_ROW_LENGTH, 0},
-    {GL_PACK_IMAGE_HEIGHT, 0},
-    {GL_PACK_SKIP_ROWS, 0},
-    {GL_PACK_SKIP_PIXELS, 0},
-    {GL_PACK_SKIP_IMAGES, 0},
-    {GL_PACK_ALIGNMENT, 4},
-    {GL_PACK_COMPRESSED_BLOCK_WIDTH, 0},
-    {GL_PACK_COMPRESSED_BLOCK_HEIGHT, 0},
-    {GL_PACK_COMPRESSED_BLOCK_DEPTH, 0},
-    {GL_PACK_COMPRESSED_BLOCK_SIZE, 0},
+    {GL_CULL_FACE_MODE, GL_BACK, [](GLenum, GLint v) { glCullFace(as_enum(v)); }},
+    {GL_FRONT_FACE, GL_CCW, [](GLenum, GLint v) { glFrontFace(as_enum(v)); }},
+    {GL_PROVOKING_VERTEX, GL_LAST_VERTEX_CONVENTION, [](GLenum, GLint v) { glProvokingVertex(as_enum(v)); }},
+    {GL_DEPTH_FUNC, GL_LESS, [](GLenum, GLint v) { glDepthFunc(as_enum(v)); }},
+    {GL_DEPTH_WRITEMASK, GL_TRUE, [](GLenum, GLint v) { glDepthMask(v ? GL_TRUE : GL_FALSE); }},
+    {GL_STENCIL_CLEAR_VALUE, 0, [](GLenum, GLint v) { glClearStencil(v); }},
+    {GL_CLAMP_READ_COLOR, GL_FIXED_ONLY, [](GLenum pname, GLint v) { glClampColor(pname, as_enum(v)); }},
+    {GL_FRAGMENT_SHADER_DERIVATIVE_HINT, GL_DONT_CARE, [](GLenum pname, GLint v) { glHint(pname, as_enum(v)); }},
+    {GL_PATCH_VERTICES, 3, [](GLenum pname, GLint v) { glPatchParameteri(pname, v); }},
+    {GL_POINT_SPRITE_COORD_ORIGIN, GL_UPPER_LEFT, [](GLenum pname, GLint v) { glPointParameteri(pname, v); }},
+    {GL_UNPACK_SWAP_BYTES, GL_FALSE, set_pixel_store},
+    {GL_UNPACK_LSB_FIRST, GL_FALSE, set_pixel_store},
+    {GL_UNPACK_ROW_LENGTH, 0, set_pixel_store},
+    {GL_UNPACK_IMAGE_HEIGHT, 0, set_pixel_store},
+    {GL_UNPACK_SKIP_ROWS, 0, set_pixel_store},
+    {GL_UNPACK_SKIP_PIXELS, 0, set_pixel_store},
+    {GL_UNPACK_SKIP_IMAGES, 0, set_pixel_store},
+    {GL_UNPACK_ALIGNMENT, 4, set_pixel_store},
+    {GL_UNPACK_COMPRESSED_BLOCK_WIDTH, 0, set_pixel_store},
+    {GL_UNPACK_COMPRESSED_BLOCK_HEIGHT, 0, set_pixel_store},
+    {GL_UNPACK_COMPRESSED_BLOCK_DEPTH, 0, set_pixel_store},
+    {GL_UNPACK_COMPRESSED_BLOCK_SIZE, 0, set_pixel_store},
+    {GL_PACK_SWAP_BYTES, GL_FALSE, set_pixel_store},
+    {GL_PACK_LSB_FIRST, GL_FALSE, set_pixel_store},
+    {GL_PACK_ROW_LENGTH, 0, set_pixel_store},
+    {GL_PACK_IMAGE_HEIGHT, 0, set_pixel_store},
+    {GL_PACK_SKIP_ROWS, 0, set_pixel_store},
+    {GL_PACK_SKIP_PIXELS, 0, set_pixel_store},
+    {GL_PACK_SKIP_IMAGES, 0, set_pixel_store},
+    {GL_PACK_ALIGNMENT, 4, set_pixel_store},
+    {GL_PACK_COMPRESSED_BLOCK_WIDTH, 0, set_pixel_store},
+    {GL_PACK_COMPRESSED_BLOCK_HEIGHT, 0, set_pixel_store},
+    {GL_PACK_COMPRESSED_BLOCK_DEPTH, 0, set_pixel_store},
+    {GL_PACK_COMPRESSED_BLOCK_SIZE, 0, set_pixel_store},
 };
-constexpr size_t kIntegerCount = sizeof kIntegers / sizeof kIntegers[0];
 
+// Single float values, likewise.
 struct FloatState {
   GLenum pname;
   GLfloat chain_value;
+  void (*set)(GLenum pname, GLfloat value);
 };
 const FloatState kFloats[] = {
-    {GL_POINT_SIZE, 1.0f},
-    {GL_LINE_WIDTH, 1.0f},
-    {GL_POINT_FADE_THRESHOLD_SIZE, 1.0f},
+    {GL_POINT_SIZE, 1.0f, [](GLenum, GLfloat v) { glPointSize(v); }},
+    {GL_LINE_WIDTH, 1.0f, [](GLenum, GLfloat v) { glLineWidth(v); }},
+    {GL_POINT_FADE_THRESHOLD_SIZE, 1.0f, [](GLenum pname, GLfloat v) { glPointParameterf(pname, v); }},
 };
 
-// Clip origin and depth mode are set together; every other integer by its own call.
-void set_integers(const GLint* values) {
-  for (size_t i = 0; i < kIntegerCount; ++i) {
-    const GLenum pname = kIntegers[i].pname;
-    const GLint v = values[i];
-    switch (pname) {
-      case GL_CULL_FACE_MODE: glCullFace(static_cast<GLenum>(v)); break;
-      case GL_FRONT_FACE: glFrontFace(static_cast<GLenum>(v)); break;
-      case GL_PROVOKING_VERTEX: glProvokingVertex(static_cast<GLenum>(v)); break;
-      case GL_CLIP_ORIGIN: glClipControl(static_cast<GLenum>(v), static_cast<GLenum>(values[i + 1])); break;
-      case GL_CLIP_DEPTH_MODE: break;
-      case GL_DEPTH_FUNC: glDepthFunc(static_cast<GLenum>(v)); break;
-      case GL_DEPTH_WRITEMASK: glDepthMask(v ? GL_TRUE : GL_FALSE); break;
-      case GL_STENCIL_CLEAR_VALUE: glClearStencil(v); break;
-      case GL_CLAMP_READ_COLOR: glClampColor(GL_CLAMP_READ_COLOR, static_cast<GLenum>(v)); break;
-      case GL_FRAGMENT_SHADER_DERIVATIVE_HINT: glHint(pname, static_cast<GLenum>(v)); break;
-      case GL_PATCH_VERTICES: glPatchParameteri(GL_PATCH_VERTICES, v); break;
-      case GL_POINT_SPRITE_COORD_ORIGIN: glPointParameteri(pname, v); break;
-      default: glPixelStorei(pname, v); break;  // the rest of the list is the pixel store
-    }
-  }
+// Clip origin and depth mode are two values that one call (glClipControl) sets together.
+constexpr ClipControl kChainClipControl = {GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE};
+void set_clip_control(const ClipControl& clip) {
+  glClipControl(static_cast<GLenum>(clip.origin), static_cast<GLenum>(clip.depth_mode));
 }
 
-void set_floats(const GLfloat* values) {
-  glPointSize(values[0]);
-  glLineWidth(values[1]);
-  glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, values[2]);
+// Where each saved blend and stencil value comes from.
+struct BlendValue {
+  GLenum pname;
+  GLint BlendState::*field;
+};
+const BlendValue kBlendValues[] = {
+    {GL_BLEND_EQUATION_RGB, &BlendState::equation_rgb}, {GL_BLEND_EQUATION_ALPHA, &BlendState::equation_alpha},
+    {GL_BLEND_SRC_RGB, &BlendState::src_rgb},           {GL_BLEND_DST_RGB, &BlendState::dst_rgb},
+    {GL_BLEND_SRC_ALPHA, &BlendState::src_alpha},       {GL_BLEND_DST_ALPHA, &BlendState::dst_alpha},
+};
+struct StencilValue {
+  GLenum front, back;
+  GLint StencilFace::*field;
+};
+const StencilValue kStencilValues[] = {
+    {GL_STENCIL_FUNC, GL_STENCIL_BACK_FUNC, &StencilFace::func},
+    {GL_STENCIL_REF, GL_STENCIL_BACK_REF, &StencilFace::ref},
+    {GL_STENCIL_VALUE_MASK, GL_STENCIL_BACK_VALUE_MASK, &StencilFace::value_mask},
+    {GL_STENCIL_FAIL, GL_STENCIL_BACK_FAIL, &StencilFace::fail},
+    {GL_STENCIL_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_FAIL, &StencilFace::depth_fail},
+    {GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_BACK_PASS_DEPTH_PASS, &StencilFace::depth_pass},
+    {GL_STENCIL_WRITEMASK, GL_STENCIL_BACK_WRITEMASK, &StencilFace::write_mask},
+};
+
+void restore_stencil(GLenum face, const StencilFace& s) {
+  glStencilFuncSeparate(face, as_enum(s.func), s.ref, static_cast<GLuint>(s.value_mask));
+  glStencilOpSeparate(face, as_enum(s.fail), as_enum(s.depth_fail), as_enum(s.depth_pass));
+  glStencilMaskSeparate(face, static_cast<GLuint>(s.write_mask));
 }
 
 void set_capability(GLenum cap, GLboolean on) {
@@ -172,13 +181,8 @@ void GlStateScope::save() {
   for (GLint i = 0; i < limits_.draw_buffers; ++i) {
     const GLuint b = static_cast<GLuint>(i);
     blend_enabled_.push_back(glIsEnabledi(GL_BLEND, b));
-    std::array<GLint, 6> blend{};
-    glGetIntegeri_v(GL_BLEND_EQUATION_RGB, b, &blend[0]);
-    glGetIntegeri_v(GL_BLEND_EQUATION_ALPHA, b, &blend[1]);
-    glGetIntegeri_v(GL_BLEND_SRC_RGB, b, &blend[2]);
-    glGetIntegeri_v(GL_BLEND_DST_RGB, b, &blend[3]);
-    glGetIntegeri_v(GL_BLEND_SRC_ALPHA, b, &blend[4]);
-    glGetIntegeri_v(GL_BLEND_DST_ALPHA, b, &blend[5]);
+    BlendState blend{};
+    for (const BlendValue& value : kBlendValues) glGetIntegeri_v(value.pname, b, &(blend.*value.field));
     blend_.push_back(blend);
     std::array<GLboolean, 4> mask{};
     glGetBooleani_v(GL_COLOR_WRITEMASK, b, mask.data());
@@ -204,14 +208,13 @@ void GlStateScope::save() {
     glGetFloatv(s.pname, v);
     floats_.push_back(v[0]);
   }
+  glGetIntegerv(GL_CLIP_ORIGIN, &clip_control_.origin);
+  glGetIntegerv(GL_CLIP_DEPTH_MODE, &clip_control_.depth_mode);
   glGetIntegerv(GL_POLYGON_MODE, polygon_mode_);
-  const GLenum stencil_names[2][7] = {
-      {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
-       GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK},
-      {GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF, GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL,
-       GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS, GL_STENCIL_BACK_WRITEMASK}};
-  for (int face = 0; face < 2; ++face)
-    for (int i = 0; i < 7; ++i) glGetIntegerv(stencil_names[face][i], &stencil_[face][i]);
+  for (const StencilValue& value : kStencilValues) {
+    glGetIntegerv(value.front, &(stencil_front_.*value.field));
+    glGetIntegerv(value.back, &(stencil_back_.*value.field));
+  }
   glGetFloatv(GL_BLEND_COLOR, blend_color_);
   glGetFloatv(GL_COLOR_CLEAR_VALUE, clear_color_);
   glGetDoublev(GL_DEPTH_CLEAR_VALUE, &clear_depth_);
@@ -228,12 +231,9 @@ void GlStateScope::set_chain_state() const {
   glBlendFunc(GL_ONE, GL_ONE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthRange(0.0, 1.0);
-  GLint integers[kIntegerCount];
-  for (size_t i = 0; i < kIntegerCount; ++i) integers[i] = kIntegers[i].chain_value;
-  set_integers(integers);
-  GLfloat floats[3];
-  for (size_t i = 0; i < 3; ++i) floats[i] = kFloats[i].chain_value;
-  set_floats(floats);
+  for (const IntegerState& s : kIntegers) s.set(s.pname, s.chain_value);
+  for (const FloatState& s : kFloats) s.set(s.pname, s.chain_value);
+  set_clip_control(kChainClipControl);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glStencilFunc(GL_ALWAYS, 0, ~0u);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -251,11 +251,10 @@ void GlStateScope::restore() const {
     set_capability(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i), clip_distances_[i]);
   for (size_t i = 0; i < blend_.size(); ++i) {
     const GLuint b = static_cast<GLuint>(i);
-    const auto& e = blend_[i];
+    const BlendState& e = blend_[i];
     set_capability(GL_BLEND, b, blend_enabled_[i]);
-    glBlendEquationSeparatei(b, static_cast<GLenum>(e[0]), static_cast<GLenum>(e[1]));
-    glBlendFuncSeparatei(b, static_cast<GLenum>(e[2]), static_cast<GLenum>(e[3]), static_cast<GLenum>(e[4]),
-                         static_cast<GLenum>(e[5]));
+    glBlendEquationSeparatei(b, as_enum(e.equation_rgb), as_enum(e.equation_alpha));
+    glBlendFuncSeparatei(b, as_enum(e.src_rgb), as_enum(e.dst_rgb), as_enum(e.src_alpha), as_enum(e.dst_alpha));
     const auto& m = color_masks_[i];
     glColorMaski(b, m[0], m[1], m[2], m[3]);
   }
@@ -265,16 +264,12 @@ void GlStateScope::restore() const {
     glViewportIndexedfv(v, viewports_[i].data());
     glDepthRangeIndexed(v, depth_ranges_[i][0], depth_ranges_[i][1]);
   }
-  set_integers(integers_.data());
-  set_floats(floats_.data());
+  for (size_t i = 0; i < integers_.size(); ++i) kIntegers[i].set(kIntegers[i].pname, integers_[i]);
+  for (size_t i = 0; i < floats_.size(); ++i) kFloats[i].set(kFloats[i].pname, floats_[i]);
+  set_clip_control(clip_control_);
   glPolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
-  for (int face = 0; face < 2; ++face) {
-    const GLenum which = face == 0 ? GL_FRONT : GL_BACK;
-    const GLint* s = stencil_[face];
-    glStencilFuncSeparate(which, static_cast<GLenum>(s[0]), s[1], static_cast<GLuint>(s[2]));
-    glStencilOpSeparate(which, static_cast<GLenum>(s[3]), static_cast<GLenum>(s[4]), static_cast<GLenum>(s[5]));
-    glStencilMaskSeparate(which, static_cast<GLuint>(s[6]));
-  }
+  restore_stencil(GL_FRONT, stencil_front_);
+  restore_stencil(GL_BACK, stencil_back_);
   glBlendColor(blend_color_[0], blend_color_[1], blend_color_[2], blend_color_[3]);
   glClearColor(clear_color_[0], clear_color_[1], clear_color_[2], clear_color_[3]);
   glClearDepth(clear_depth_);

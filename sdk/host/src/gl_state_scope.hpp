@@ -51,7 +51,7 @@ class GlBindings {
   struct ImageUnit {
     GLint name = 0, level = 0, layered = 0, layer = 0, access = GL_READ_ONLY, format = GL_R8;
   };
-  static constexpr int kTargetsPerUnit = 11;
+  static constexpr int kTargetsPerUnit = 11;  // the texture targets gl_bindings.cpp lists
   GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, renderbuffer_ = 0;
   GLint vertex_array_ = 0, program_ = 0, pipeline_ = 0, active_texture_ = GL_TEXTURE0;
   GLint transform_feedback_ = 0;
@@ -60,6 +60,21 @@ class GlBindings {
   std::vector<ImageUnit> images_;
   std::vector<IndexedBuffer> uniform_buffers_, storage_buffers_, atomic_buffers_, feedback_buffers_;
   std::vector<GLint> generic_buffers_;  // per target in kGenericBufferTargets
+};
+
+// glClipControl's two values, which it sets together.
+struct ClipControl {
+  GLint origin, depth_mode;
+};
+
+// One draw buffer's blend equations and functions.
+struct BlendState {
+  GLint equation_rgb, equation_alpha, src_rgb, dst_rgb, src_alpha, dst_alpha;
+};
+
+// One face's stencil test and operations.
+struct StencilFace {
+  GLint func, ref, value_mask, fail, depth_fail, depth_pass, write_mask;
 };
 
 // Raster, per-fragment and pixel-store state, and the bindings, for the life of one render().
@@ -84,14 +99,15 @@ class GlStateScope {
   std::vector<GLboolean> enables_;            // per capability in the fixed list
   std::vector<GLboolean> clip_distances_;
   std::vector<GLboolean> blend_enabled_, scissor_enabled_;
-  std::vector<std::array<GLint, 6>> blend_;   // per draw buffer: equations rgb, alpha; src/dst rgb, alpha
+  std::vector<BlendState> blend_;             // per draw buffer
   std::vector<std::array<GLboolean, 4>> color_masks_;
   std::vector<std::array<GLfloat, 4>> viewports_;
   std::vector<std::array<GLdouble, 2>> depth_ranges_;
   std::vector<GLint> integers_;               // per value in the integer list
   std::vector<GLfloat> floats_;               // per value in the float list
+  ClipControl clip_control_{};
   GLint polygon_mode_[2] = {GL_FILL, GL_FILL};
-  GLint stencil_[2][7] = {};                  // front, back: func, ref, value mask, fail, depth fail, pass, write mask
+  StencilFace stencil_front_{}, stencil_back_{};
   GLfloat blend_color_[4] = {}, clear_color_[4] = {};
   GLdouble clear_depth_ = 1;
   GlBindings bindings_;

@@ -4,11 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glad/gl.h>
 
-#include "pfx/host/chain.hpp"
+#include "pfx/host/timing.hpp"
 
 namespace pfx::host {
 

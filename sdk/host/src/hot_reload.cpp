@@ -16,18 +16,15 @@ bool reload_plugin(PluginRegistry& registry, ParamStore& params, Chain& chain, c
   for (const pfx_effect_desc* desc : old->effects) old_effects.emplace_back(desc->id);
 
   auto adopt = [&](std::string* reason) {
-    // The store points into the old library: re-register its effects against the new descriptors
-    // (values carried over by id and type), and keep a copy to restore if the chain refuses.
-    ParamStore saved = params;
+    // The chain first: it is all or nothing, and it lets go of the instances of effects the new
+    // version lacks, which the store may then forget. The store points into the old library:
+    // re-register the effects against the new descriptors (values carried over by id and type).
+    if (!chain.refresh(&outcome.effects_dropped, reason)) return false;
     for (const auto& id : old_effects) {
       if (!params.has_effect(id)) continue;
       const EffectInfo* now = registry.find_effect(id);
       if (now) params.add_effect(now->desc);
       else params.remove_effect(id);
-    }
-    if (!chain.refresh(&outcome.effects_dropped, reason)) {
-      params = saved;
-      return false;
     }
     return true;
   };

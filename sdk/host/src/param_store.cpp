@@ -14,6 +14,11 @@ namespace pfx::host {
 
 namespace {
 
+bool fail(std::string* error, const std::string& message) {
+  if (error) *error = message;
+  return false;
+}
+
 std::string count_text(size_t count) {
   return std::to_string(count) + (count == 1 ? " instance" : " instances");
 }
@@ -38,6 +43,47 @@ pfx_value default_for(const pfx_param_desc& desc, DefaultSet set) {
   const bool display = set == DefaultSet::DISPLAY_REFERRED && (desc.flags & PFX_PARAM_HAS_DISPLAY_DEFAULT) &&
                        PFX_STRUCT_HAS(&desc, pfx_param_desc, display_default);
   return display ? desc.display_default : desc.default_value;
+}
+
+ParamStore::ParamStore(const ParamStore& other)
+    : effects_(other.effects_),
+      order_(other.order_),
+      last_revision_(other.last_revision_),
+      default_set_(other.default_set_) {}
+
+ParamStore::ParamStore(ParamStore&& other) noexcept
+    : effects_(std::move(other.effects_)),
+      order_(std::move(other.order_)),
+      last_revision_(other.last_revision_),
+      default_set_(other.default_set_) {}
+
+ParamStore& ParamStore::operator=(const ParamStore& other) {
+  if (this != &other) *this = ParamStore(other);
+  return *this;
+}
+
+ParamStore& ParamStore::operator=(ParamStore&& other) {
+  if (this == &other) return *this;
+  const std::map<std::string, EffectParams> previous = std::move(effects_);
+  effects_ = std::move(other.effects_);
+  order_ = std::move(other.order_);
+  last_revision_ = other.last_revision_;
+  default_set_ = other.default_set_;
+  keep_held(previous);
+  return *this;
+}
+
+void ParamStore::keep_held(const std::map<std::string, EffectParams>& previous) {
+  for (const auto& [effect, held] : held_) {
+    auto it = effects_.find(effect);
+    if (it == effects_.end()) {
+      // Values without the effect at all: the chain keeps the ones it had.
+      it = effects_.emplace(effect, previous.at(effect)).first;
+      order_.push_back(effect);
+    }
+    std::vector<Block>& instances = it->second.instances;
+    while (instances.size() < held) instances.push_back(defaults(it->second.desc));
+  }
 }
 
 ParamStore::Block ParamStore::defaults(const pfx_effect_desc* desc) {
@@ -74,9 +120,11 @@ void ParamStore::add_effect(const pfx_effect_desc* desc) {
   effects_[desc->id] = std::move(fresh);
 }
 
-void ParamStore::remove_effect(const std::string& effect) {
+bool ParamStore::remove_effect(const std::string& effect) {
+  if (held_.count(effect)) return false;
   effects_.erase(effect);
   order_.erase(std::remove(order_.begin(), order_.end(), effect), order_.end());
+  return true;
 }
 
 const pfx_effect_desc* ParamStore::effect_descriptor(const std::string& effect) const {
@@ -92,13 +140,28 @@ size_t ParamStore::instance_count(const std::string& effect) const {
 bool ParamStore::set_instance_count(const std::string& effect, size_t count) {
   auto it = effects_.find(effect);
   if (it == effects_.end() || count == 0) return false;
+  auto held = held_.find(effect);
+  if (held != held_.end() && count < held->second) return false;
   std::vector<Block>& instances = it->second.instances;
   if (count < instances.size()) instances.resize(count);
   while (instances.size() < count) instances.push_back(defaults(it->second.desc));
   return true;
 }
 
-void ParamStore::remove_instance(const std::string& effect, size_t number) {
+void ParamStore::hold_instance(const pfx_effect_desc* desc) {
+  if (!has_effect(desc->id)) add_effect(desc);
+  EffectParams& effect = effects_.at(desc->id);
+  const size_t held = ++held_[desc->id];
+  while (effect.instances.size() < held) effect.instances.push_back(defaults(effect.desc));
+}
+
+void ParamStore::release_instance(const std::string& effect) {
+  auto held = held_.find(effect);
+  if (held != held_.end() && --held->second == 0) held_.erase(held);
+}
+
+void ParamStore::drop_instance(const std::string& effect, size_t number) {
+  release_instance(effect);
   auto it = effects_.find(effect);
   if (it == effects_.end()) return;
   std::vector<Block>& instances = it->second.instances;
@@ -158,8 +221,7 @@ bool ParamStore::resolve(const std::string& instance, const std::string& key, co
   return true;
 }
 
-bool ParamStore::find(const std::string& key, EffectParams** effect, Block** block, uint32_t* param,
-                      std::string* error) {
+bool ParamStore::find(const std::string& key, Slot* slot, std::string* error) {
   size_t dot = key.find('.');
   if (dot == std::string::npos) {
     *error = "'" + key + "' is not of the form effect.param";
@@ -173,9 +235,7 @@ bool ParamStore::find(const std::string& key, EffectParams** effect, Block** blo
   const pfx_effect_desc* desc = params.desc;
   for (uint32_t i = 0; i < desc->param_count; ++i)
     if (param_id == desc->params[i].id) {
-      *effect = &params;
-      *block = &params.instances[index];
-      *param = i;
+      *slot = {&desc->params[i], &params.instances[index], i};
       return true;
     }
   std::string known;
@@ -185,66 +245,49 @@ bool ParamStore::find(const std::string& key, EffectParams** effect, Block** blo
   return false;
 }
 
+bool ParamStore::write(const std::string& key, const Slot& slot, pfx_value value, std::string* error,
+                       std::string* note) {
+  std::string message;
+  if (!validate_param_value(*slot.desc, &value, &message, note)) return fail(error, key + ": " + message);
+  store(slot, value);
+  return true;
+}
+
+void ParamStore::store(const Slot& slot, const pfx_value& value) {
+  slot.block->values[slot.index] = value;
+  slot.block->revision = ++last_revision_;
+}
+
 bool ParamStore::set(const std::string& key, const std::string& text, std::string* error, std::string* note) {
   std::string message;
-  EffectParams* effect = nullptr;
-  Block* block = nullptr;
-  uint32_t index = 0;
-  if (!find(key, &effect, &block, &index, &message)) {
-    if (error) *error = message;
-    return false;
-  }
-  const pfx_param_desc& desc = effect->desc->params[index];
+  Slot slot;
+  if (!find(key, &slot, &message)) return fail(error, message);
   pfx_value value{};
-  if (!parse_param_text(desc, text, &value, &message) || !validate_param_value(desc, &value, &message, note)) {
-    if (error) *error = key + ": " + message;
-    return false;
-  }
-  block->values[index] = value;
-  block->revision = ++last_revision_;
-  return true;
+  if (!parse_param_text(*slot.desc, text, &value, &message)) return fail(error, key + ": " + message);
+  return write(key, slot, value, error, note);
 }
 
 bool ParamStore::set_assignment(const std::string& assignment, std::string* error, std::string* note) {
   size_t equals = assignment.find('=');
-  if (equals == std::string::npos) {
-    if (error) *error = "'" + assignment + "' is not of the form effect.param=value";
-    return false;
-  }
+  if (equals == std::string::npos) return fail(error, "'" + assignment + "' is not of the form effect.param=value");
   std::string key = assignment.substr(0, equals);
   key.erase(std::remove_if(key.begin(), key.end(), [](char c) { return c == ' ' || c == '\t'; }), key.end());
   return set(key, assignment.substr(equals + 1), error, note);
 }
 
-bool ParamStore::set_value(const std::string& instance, const std::string& param, const pfx_value& input,
+bool ParamStore::set_value(const std::string& instance, const std::string& param, const pfx_value& value,
                            std::string* error, std::string* note) {
+  const std::string key = instance + "." + param;
   std::string message;
-  EffectParams* effect = nullptr;
-  Block* block = nullptr;
-  uint32_t index = 0;
-  std::string key = instance + "." + param;
-  if (!find(key, &effect, &block, &index, &message)) {
-    if (error) *error = message;
-    return false;
-  }
-  pfx_value value = input;
-  if (!validate_param_value(effect->desc->params[index], &value, &message, note)) {
-    if (error) *error = key + ": " + message;
-    return false;
-  }
-  block->values[index] = value;
-  block->revision = ++last_revision_;
-  return true;
+  Slot slot;
+  if (!find(key, &slot, &message)) return fail(error, message);
+  return write(key, slot, value, error, note);
 }
 
 void ParamStore::reset(const std::string& instance, const std::string& param) {
-  EffectParams* effect = nullptr;
-  Block* block = nullptr;
-  uint32_t index = 0;
+  Slot slot;
   std::string ignored;
-  if (!find(instance + "." + param, &effect, &block, &index, &ignored)) return;
-  block->values[index] = default_for(effect->desc->params[index], default_set_);
-  block->revision = ++last_revision_;
+  if (find(instance + "." + param, &slot, &ignored)) store(slot, default_for(*slot.desc, default_set_));
 }
 
 const pfx_value* ParamStore::values(const std::string& effect, size_t number) const {

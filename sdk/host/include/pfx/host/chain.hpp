@@ -1,5 +1,6 @@
-// The chain: an ordered list of effect instances run over the host's framebuffers (DESIGN.md §4).
-// Every call on the GL thread with the context current.
+// The chain: an ordered list of effect instances run over the host's framebuffers
+// (docs/architecture.md: the frame's path from declare to plan to execute). Every call on the GL
+// thread with the context current.
 #pragma once
 
 #include <cstdint>
@@ -15,43 +16,19 @@
 #include "pfx/host/frame_plan.hpp"
 #include "pfx/host/param_store.hpp"
 #include "pfx/host/plugin_registry.hpp"
+#include "pfx/host/timing.hpp"
 
 namespace pfx::host {
 
-struct GlLimits;  // libpfxhost's own: what GlStateGuard saves per indexed binding
+// libpfxhost's own types, behind the chain's private members.
+struct GlLimits;        // what GlStateGuard saves per indexed binding
+class FrameTimer;       // times a frame's passes under the chosen Timing
+struct FrameResources;  // the textures one render() runs over
 
 // GL textures of the frame inputs; 0 where the frame has none (frame.inputs must agree).
 // color and the chain's output are RGBA16F textures of the frame's size.
 struct FrameTextures {
   uint32_t color = 0, depth = 0, normal = 0, albedo = 0, emissive = 0;
-};
-
-// How render() times passes; the embedding program chooses (Chain::set_timing), libpfxhost never
-// guesses from the renderer.
-enum class Timing {
-  // No queries, no waiting, no times (the default).
-  OFF,
-  // A GL timestamp query around every pass, read back one or more frames later without waiting:
-  // report().times holds the newest frame whose queries have landed.
-  GPU_QUERIES,
-  // glFinish before and after every pass and a CPU clock: serialises the GPU, but measures what a
-  // deferred software renderer (Mesa's llvmpipe, whose timestamps are taken when commands are
-  // queued, not when they run) really spends on each pass. The times are this frame's.
-  FINISH_AND_CLOCK
-};
-
-// Effects are named by instance, as the parameter store names them: "bloom" for the first
-// instance of an effect in the chain, "bloom#2" for the second.
-struct PassTime {
-  std::string effect, pass;
-  double ms = 0;
-};
-
-// The times of one frame's passes.
-struct FrameTimes {
-  uint64_t frame = 0;            // the FrameReport::frame they were measured in; 0: none yet
-  std::vector<PassTime> passes;  // that frame's passes, in order, with their times
-  double total_ms = 0;
 };
 
 struct FrameReport {
@@ -73,16 +50,19 @@ struct FrameReport {
 
 class PFX_HOST_API Chain {
  public:
+  // The chain's instances read their values from `params` (ParamStore says how the store follows
+  // the chain), which must outlive the chain.
   Chain(const PluginRegistry& registry, ParamStore& params);
-  // Destroys every instance and pooled GL object: the context must be current.
+  // Destroys every instance and pooled GL object: the context must be current. The values stay in
+  // the store.
   ~Chain();
   Chain(const Chain&) = delete;
   Chain& operator=(const Chain&) = delete;
 
   // Appends an instance of an effect (created now, so its programs compile now) and registers its
   // parameters in the store if they are not there yet. The N-th instance of an effect in the
-  // chain uses the store's values of "effect#N" (the store gets a block at the defaults when it
-  // has fewer). False with *error on an unknown id or a failing create.
+  // chain uses the store's values of "effect#N" (at the defaults when the store had no such
+  // instance). False with *error on an unknown id or a failing create.
   bool add(const std::string& effect_id, std::string* error);
   size_t size() const;
   std::string effect_id(size_t index) const;
@@ -146,10 +126,19 @@ class PFX_HOST_API Chain {
   // The implementation limits queried when the chain was made; null without GL.
   const GlLimits* gl_limits() const;
   void renumber();
+
+  // A frame, step by step: check the call, declare (every frame: declare is cheap by contract),
+  // plan (only when a declaration or the active set changed), execute the plan's passes.
+  bool check_frame(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
+                   std::string* error) const;
   bool declare(const Instance& instance, const pfx_frame& frame, Declaration* out, std::string* error) const;
   bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
-  bool execute(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
-               const std::vector<int>& active, std::string* error);
+  bool update_plan(const pfx_frame& frame, const std::vector<int>& active, std::string* error);
+  bool execute(const FrameResources& resources, const std::vector<int>& active, std::string* error);
+  // One planned pass: bind its output and inputs, run it (timed), check what it left.
+  bool run_pass(const FrameResources& resources, const PlannedPass& planned, Instance& instance,
+                FrameTimer& timer, std::string* error);
+  void collect_effect_reports(const std::vector<int>& active);
 
   const PluginRegistry& registry_;
   ParamStore& params_;

@@ -1,6 +1,7 @@
 // Planning a frame, without any GL: which passes run, which targets they touch, when each target
 // is first and last used, and which targets can share one pooled texture because their lifetimes
-// do not overlap (a small render graph, DESIGN.md §4). The Chain executes what this produces.
+// do not overlap (a small render graph, docs/architecture.md). The Chain executes what this
+// produces.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
-// Hot reload for a program running one chain (DESIGN.md §4): load the rebuilt library under a
-// fresh name, move the chain's instances and the parameter values over to it, unload the old one.
-// A rebuilt plugin that cannot be loaded, or whose effects cannot be created, is refused and the
-// old version keeps running. GL thread, context current (effects are created and destroyed).
+// Hot reload for a program running one chain (docs/architecture.md): load the rebuilt library
+// under a fresh name, move the chain's instances and the parameter values over to it, unload the
+// old one. A rebuilt plugin that cannot be loaded, or whose effects cannot be created, is refused
+// and the old version keeps running. GL thread, context current (effects are created and destroyed).
 #pragma once
 
 #include <string>

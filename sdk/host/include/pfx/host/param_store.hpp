@@ -2,11 +2,13 @@
 // readable and writable as text ("bloom.threshold=1.5", "bloom#2.threshold=3") and JSON
 // ({"bloom": {"threshold": 1.5}, "bloom#2": {"threshold": 3}}).
 //
-// Every registered effect has one block of values per instance, numbered from 1: "bloom#2" is
-// the second bloom in chain order, and plain "bloom" is the same as "bloom#1". A Chain keeps the
-// blocks in step with its instances (one per instance; values travel with an instance when it
-// moves and leave with it when it is removed). Text and JSON written here name the first instance
-// "bloom" and the others "bloom#2", "bloom#3", so with one instance per effect nothing changes.
+// The store owns the values and, per registered effect, the list of its instances, numbered from
+// 1: "bloom#2" is the second, and plain "bloom" is the same as "bloom#1". A Chain holds instances
+// of its store: its N-th bloom, in chain order, reads "bloom#N". As the chain adds, moves and
+// removes instances the store's lists follow (values travel with an instance and leave with it),
+// and the store never has fewer instances of an effect than its chain holds. Text and JSON
+// written here name the first instance "bloom" and the others "bloom#2", "bloom#3", so with one
+// instance per effect nothing changes.
 #pragma once
 
 #include <cstdint>
@@ -36,6 +38,15 @@ PFX_HOST_API pfx_value default_for(const pfx_param_desc& desc, DefaultSet set);
 class PFX_HOST_API ParamStore {
  public:
   explicit ParamStore(DefaultSet defaults = DefaultSet::SCENE_REFERRED) : default_set_(defaults) {}
+  // A copy has the values and no chain: the instances a chain holds are held in this store, not
+  // in its values. Assigning replaces the values and keeps every instance this store's chain
+  // holds (at the defaults where `other` has none of it), so the chain never loses its values.
+  ParamStore(const ParamStore& other);
+  ParamStore(ParamStore&& other) noexcept;
+  ParamStore& operator=(const ParamStore& other);
+  ParamStore& operator=(ParamStore&& other);
+  ~ParamStore() = default;
+
   // The defaults new instances, reset() and a reloaded plugin's new parameters start from.
   DefaultSet default_set() const { return default_set_; }
 
@@ -45,22 +56,19 @@ class PFX_HOST_API ParamStore {
   void add_effect(const pfx_effect_desc* desc);
   bool has_effect(const std::string& effect) const { return effects_.count(effect) != 0; }
   // Forgets an effect and the values of all its instances (its plugin was reloaded without it).
-  void remove_effect(const std::string& effect);
+  // False, and nothing forgotten, while a chain holds an instance of it.
+  bool remove_effect(const std::string& effect);
   // The descriptor the effect's values were registered with; null for an unknown effect.
   const pfx_effect_desc* effect_descriptor(const std::string& effect) const;
 
-  // Instances of a registered effect (0 for an unknown one). A Chain calls these as it adds,
-  // removes and moves instances; call set_instance_count yourself only to give values to
-  // instances before the chain that will hold them exists (a preset applied first).
+  // Instances of a registered effect (0 for an unknown one); a chain's add, move and remove keep
+  // them in step with the chain. set_instance_count gives values to instances a chain does not
+  // hold yet: a preset applied before the chain that will hold "bloom#2", or a copy of the store
+  // shaped like a chain to check values in. It grows with blocks at the defaults or drops the last
+  // blocks. False, changing nothing, for an unknown effect, a count of 0, or fewer instances than
+  // the store's chain holds.
   size_t instance_count(const std::string& effect) const;
-  // Grows with blocks at the defaults or drops the last blocks; at least 1. False for an unknown
-  // effect or a count of 0.
   bool set_instance_count(const std::string& effect, size_t count);
-  // Drops instance `number`'s values; later instances move down one number. The effect's only
-  // instance is kept (its values stay the effect's), so a chain rebuilt from scratch keeps them.
-  void remove_instance(const std::string& effect, size_t number);
-  // Moves instance `from`'s values to number `to`, the others shifting as in a list.
-  void move_instance(const std::string& effect, size_t from, size_t to);
   // "bloom" for number 1, "bloom#2" for number 2: the name text and JSON use.
   static std::string instance_name(const std::string& effect, size_t number);
 
@@ -75,6 +83,7 @@ class PFX_HOST_API ParamStore {
   bool set(const std::string& key, const std::string& text, std::string* error, std::string* note = nullptr);
   // "instance.param=value", as given to --set.
   bool set_assignment(const std::string& assignment, std::string* error, std::string* note = nullptr);
+  // set() with the value itself instead of its text.
   bool set_value(const std::string& instance, const std::string& param, const pfx_value& value,
                  std::string* error, std::string* note = nullptr);
   void reset(const std::string& instance, const std::string& param);
@@ -100,6 +109,10 @@ class PFX_HOST_API ParamStore {
   bool from_json(const std::string& json, std::string* error);
 
  private:
+  // The chain holds instances through hold_instance, drop_instance, move_instance and
+  // release_instance, and nothing else changes what it holds.
+  friend class Chain;
+
   struct Block {
     std::vector<pfx_value> values;
     uint64_t revision = 0;
@@ -108,15 +121,46 @@ class PFX_HOST_API ParamStore {
     const pfx_effect_desc* desc = nullptr;
     std::vector<Block> instances;  // at least one
   };
+  // One parameter of one instance, found by its key.
+  struct Slot {
+    const pfx_param_desc* desc = nullptr;
+    Block* block = nullptr;
+    uint32_t index = 0;  // into block->values
+  };
+
+  // A chain's new instance of `desc`, the last of its effect in chain order: registers the effect
+  // when it is new and makes sure the store has a block for every instance the chain holds.
+  void hold_instance(const pfx_effect_desc* desc);
+  // The chain removed its instance `number`: its values go and later instances move down one
+  // number, except when it is the effect's only block, whose values stay the effect's so that a
+  // chain rebuilt from scratch finds them again.
+  void drop_instance(const std::string& effect, size_t number);
+  // The chain's instance `from` is now its number `to`: its values go with it, the others
+  // shifting as in a list.
+  void move_instance(const std::string& effect, size_t from, size_t to);
+  // The chain let go of an instance without removing it (the chain itself is going): the values
+  // stay.
+  void release_instance(const std::string& effect);
+
   Block defaults(const pfx_effect_desc* desc);
+  // After the values were replaced (`previous` were the old ones): a block for every instance the
+  // chain holds.
+  void keep_held(const std::map<std::string, EffectParams>& previous);
   // Resolves "bloom" / "bloom#N"; `key` is what error messages name.
   bool resolve(const std::string& instance, const std::string& key, const EffectParams** effect, size_t* index,
                std::string* error) const;
-  bool find(const std::string& key, EffectParams** effect, Block** block, uint32_t* param, std::string* error);
+  bool find(const std::string& key, Slot* slot, std::string* error);
+  // Validates `value` for the slot's parameter and writes it; *error names `key`.
+  bool write(const std::string& key, const Slot& slot, pfx_value value, std::string* error, std::string* note);
+  void store(const Slot& slot, const pfx_value& value);
+
+  // The values: what a copy copies.
   std::map<std::string, EffectParams> effects_;
   std::vector<std::string> order_;
   uint64_t last_revision_ = 0;
   DefaultSet default_set_;
+  // Per effect, how many of its instances the chain holds: the store's own, never copied.
+  std::map<std::string, size_t> held_;
 };
 
 }  // namespace pfx::host

@@ -1,4 +1,4 @@
-// Loads plugin libraries and keeps them: the loader half of libpfxhost (DESIGN.md §4).
+// Loads plugin libraries and keeps them: the loader half of libpfxhost (docs/architecture.md).
 // Every failure is a message "FILE: reason"; a bad plugin is refused whole and never takes the
 // host or the other plugins down.
 #pragma once
@@ -75,9 +75,9 @@ class PFX_HOST_API PluginRegistry {
   // fresh name (dlopen would hand back the library already mapped for the same path). The new
   // version must keep the plugin id and pass every check load() makes. It then takes the old
   // version's place in plugins() and effects() and `adopt` is called, with the old version still
-  // loaded: it must move everything made from the old version over to the new one (Chain::refresh,
-  // ParamStore::add_effect) and return true, or return false with *reason to refuse the new
-  // version. Only then is the old version unloaded (deinit, dlclose).
+  // loaded: it must move everything made from the old version over to the new one (Chain::refresh
+  // first, then ParamStore::add_effect, as reload_plugin in hot_reload.hpp does) and return true,
+  // or return false with *reason to refuse the new version. Only then is the old version unloaded (deinit, dlclose).
   // Returns false, with *error "PATH: reason", when the new version is refused - by the loader or
   // by `adopt` - and the registry is then exactly as before: the old version keeps running.
   using AdoptFn = std::function<bool(std::string* reason)>;

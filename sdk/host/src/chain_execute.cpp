@@ -1,0 +1,208 @@
+// Chain::execute: running a frame's plan. Each pass is bound (output, viewport, blend, inputs),
+// run between the pass hooks and the timer, and checked; then the timer and the effects report.
+#include "chain_internal.hpp"
+#include "frame_timer.hpp"
+#include "pfx/host/gl_error.hpp"
+
+namespace pfx::host {
+namespace {
+
+const char* timing_name(Timing timing) {
+  switch (timing) {
+    case Timing::GPU_QUERIES: return "gpu-timestamps";
+    case Timing::FINISH_AND_CLOCK: return "finish+clock";
+    case Timing::OFF: break;
+  }
+  return "off";
+}
+
+GLuint frame_input_texture(const FrameTextures& textures, const std::string& name) {
+  if (name == PFX_INPUT_NAME_COLOR) return textures.color;
+  if (name == PFX_INPUT_NAME_DEPTH) return textures.depth;
+  if (name == PFX_INPUT_NAME_NORMAL) return textures.normal;
+  if (name == PFX_INPUT_NAME_ALBEDO) return textures.albedo;
+  if (name == PFX_INPUT_NAME_EMISSIVE) return textures.emissive;
+  return 0;
+}
+
+// Every effect is off or a no-op: the output is the input, at the cost of one copy.
+bool copy_color_to_output(const pfx_frame& frame, const FrameTextures& textures, GLuint output_texture,
+                          std::string* error) {
+  glCopyImageSubData(textures.color, GL_TEXTURE_2D, 0, 0, 0, 0, output_texture, GL_TEXTURE_2D, 0, 0, 0, 0,
+                     static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height), 1);
+  const GLenum gl_error = glGetError();
+  if (gl_error == GL_NO_ERROR) return true;
+  if (error)
+    *error = "copying colour to the output failed (GL error " + gl_error_text(gl_error) +
+             "): both must be RGBA16F textures of the frame size";
+  return false;
+}
+
+bool transform_feedback_running() {
+  GLboolean active = GL_FALSE, paused = GL_FALSE;
+  glGetBooleanv(GL_TRANSFORM_FEEDBACK_ACTIVE, &active);
+  glGetBooleanv(GL_TRANSFORM_FEEDBACK_PAUSED, &paused);
+  return active && !paused;
+}
+
+// Binds what one planned pass reads and writes, and describes it to the plugin.
+class PassBinding {
+ public:
+  PassBinding(const FrameResources& resources, const PlannedPass& planned, const DeclaredPass& pass);
+  PassBinding(const PassBinding&) = delete;
+  PassBinding& operator=(const PassBinding&) = delete;
+  // The pass's samplers are the chain's, not the next pass's nor the engine's.
+  ~PassBinding();
+  // The fields of the pass context that name the output and the inputs.
+  void describe(pfx_pass_context* context) const;
+
+ private:
+  GLuint resolve(const ResourceRef& ref, uint32_t* width, uint32_t* height, pfx_format* format) const;
+  void bind_output(const PlannedPass& planned, const DeclaredPass& pass);
+  void bind_inputs(const PlannedPass& planned, const DeclaredPass& pass);
+
+  const FrameResources& resources_;
+  GLuint output_texture_ = 0, output_framebuffer_ = 0;
+  uint32_t output_width_ = 0, output_height_ = 0;
+  pfx_format output_format_ = PFX_FORMAT_RGBA16F;
+  std::vector<pfx_bound_texture> inputs_;
+};
+
+PassBinding::PassBinding(const FrameResources& resources, const PlannedPass& planned,
+                         const DeclaredPass& pass)
+    : resources_(resources) {
+  bind_output(planned, pass);
+  if (pass.blend == PFX_BLEND_ADD) glEnable(GL_BLEND);
+  else glDisable(GL_BLEND);
+  bind_inputs(planned, pass);
+  glBindVertexArray(resources_.pool.empty_vertex_array());
+  glActiveTexture(GL_TEXTURE0);
+}
+
+PassBinding::~PassBinding() {
+  for (size_t i = 0; i < inputs_.size(); ++i) glBindSampler(static_cast<GLuint>(i), 0);
+}
+
+GLuint PassBinding::resolve(const ResourceRef& ref, uint32_t* width, uint32_t* height, pfx_format* format) const {
+  *format = PFX_FORMAT_RGBA16F;
+  if (ref.kind == ResourceRef::POOLED) {
+    const PlannedResource& r = resources_.plan.resources[ref.resource];
+    *width = r.width;
+    *height = r.height;
+    *format = r.format;
+    return resources_.pool.texture(r.slot);
+  }
+  *width = resources_.frame.width;
+  *height = resources_.frame.height;
+  if (ref.kind == ResourceRef::CHAIN_OUTPUT) return resources_.output_texture;
+  if (ref.kind == ResourceRef::FRAME_INPUT) return frame_input_texture(resources_.textures, ref.frame_input);
+  return 0;
+}
+
+void PassBinding::bind_output(const PlannedPass& planned, const DeclaredPass& pass) {
+  if (planned.output.kind == ResourceRef::NONE) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return;
+  }
+  output_texture_ = resolve(planned.output, &output_width_, &output_height_, &output_format_);
+  output_framebuffer_ = planned.output.kind == ResourceRef::POOLED
+                            ? resources_.pool.framebuffer(resources_.plan.resources[planned.output.resource].slot)
+                            : resources_.pool.framebuffer_for(resources_.output_texture);
+  glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_);
+  glViewport(0, 0, static_cast<GLsizei>(output_width_), static_cast<GLsizei>(output_height_));
+  if (pass.load == PFX_LOAD_CLEAR) {
+    const GLfloat zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+  }
+}
+
+void PassBinding::bind_inputs(const PlannedPass& planned, const DeclaredPass& pass) {
+  inputs_.assign(planned.inputs.size(), pfx_bound_texture{});
+  for (size_t i = 0; i < planned.inputs.size(); ++i) {
+    pfx_format format;
+    inputs_[i].texture = resolve(planned.inputs[i], &inputs_[i].width, &inputs_[i].height, &format);
+    inputs_[i].unit = static_cast<uint32_t>(i);
+    glBindTextureUnit(static_cast<GLuint>(i), inputs_[i].texture);
+    glBindSampler(static_cast<GLuint>(i), resources_.pool.sampler(pass.inputs[i].filter, pass.inputs[i].wrap));
+  }
+}
+
+void PassBinding::describe(pfx_pass_context* context) const {
+  context->output_texture = output_texture_;
+  context->output_framebuffer = output_framebuffer_;
+  context->output_width = output_width_;
+  context->output_height = output_height_;
+  context->output_format = output_format_;
+  context->inputs = inputs_.data();
+  context->input_count = static_cast<uint32_t>(inputs_.size());
+}
+
+}  // namespace
+
+bool Chain::execute(const FrameResources& resources, const std::vector<int>& active, std::string* error) {
+  report_.passes.clear();
+  report_.effect_reports.clear();
+  report_.timing = timing_name(timing_);
+  report_.times = times_;
+  while (glGetError() != GL_NO_ERROR) {
+  }  // errors of the embedding program are not ours to report
+  if (active.empty()) return copy_color_to_output(resources.frame, resources.textures, resources.output_texture, error);
+  if (transform_feedback_running()) {
+    if (error) *error = "transform feedback is active: end or pause it before render()";
+    return false;
+  }
+  // The state every pass starts from (docs/sdk.md §1.5), and the engine's back on every return,
+  // unless a GlStateGuard of the host saved it already and will put it back.
+  GlStateScope state_scope(gl_->limits, guards_ > 0 ? GlStateScope::SET_ONLY : GlStateScope::SAVE);
+  FrameTimer timer(timing_, gl_->timer, report_.frame);
+  for (const PlannedPass& planned : plan_.passes)
+    if (!run_pass(resources, planned, *instances_[active[planned.effect]], timer, error)) return false;
+  if (timing_ != Timing::OFF) last_timed_frame_ = report_.frame;
+  if (timer.finish(&report_.passes, &times_)) report_.times = times_;
+  collect_effect_reports(active);
+  return true;
+}
+
+bool Chain::run_pass(const FrameResources& resources, const PlannedPass& planned, Instance& instance,
+                     FrameTimer& timer, std::string* error) {
+  const DeclaredPass& pass = instance.declaration.passes[planned.pass];
+  const char* effect_id = instance.info.desc->id;
+  pfx_status status = PFX_OK;
+  {
+    const PassBinding binding(resources, planned, pass);
+    pfx_pass_context context{};
+    context.struct_size = sizeof context;
+    context.pass_index = static_cast<uint32_t>(planned.pass);
+    context.user_tag = pass.user_tag;
+    context.frame = &resources.frame;
+    context.params = instance.values(params_);
+    binding.describe(&context);
+
+    if (pass_hook_) pass_hook_(effect_id, pass.name, false);
+    timer.start_pass();
+    status = instance.info.desc->run_pass(instance.handle, &context);
+    if (pass_hook_) pass_hook_(effect_id, pass.name, true);
+    // Passes are reported by instance: "bloom#2" tells the second bloom's passes from the first's.
+    timer.end_pass(instance.name, pass.name);
+  }
+  auto fail = [&](const std::string& what) {
+    if (error) *error = "effect '" + std::string(effect_id) + "' pass '" + pass.name + "' " + what;
+    return false;
+  };
+  if (status != PFX_OK) return fail("failed (status " + std::to_string(status) + ")");
+  const GLenum gl_error = glGetError();
+  if (gl_error != GL_NO_ERROR) return fail("raised GL error " + gl_error_text(gl_error));
+  report_.passes.push_back({instance.name, pass.name, 0.0});
+  return true;
+}
+
+void Chain::collect_effect_reports(const std::vector<int>& active) {
+  for (int index : active) {
+    const Instance& instance = *instances_[index];
+    if (!instance.info.desc->report_json) continue;
+    const char* figures = instance.info.desc->report_json(instance.handle);
+    if (figures && *figures) report_.effect_reports.emplace_back(instance.name, figures);
+  }
+}
+
+}  // namespace pfx::host
