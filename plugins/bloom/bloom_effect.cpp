@@ -39,7 +39,7 @@ const ProgramSpec kPrograms[PROGRAM_COUNT] = {
     {"gaussian_composite", shaders::gaussian_composite}, {"mgf_composite", shaders::mgf_composite}};
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_host(host) || !out) return PFX_INVALID_ARGUMENT;
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -68,8 +68,7 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
     case MODE_MGF: declare_mgf(settings, plan, inst->declaration); break;
     default: return PFX_INVALID_ARGUMENT;
   }
-  inst->declaration.finish(out);
-  return PFX_OK;
+  return inst->declaration.finish(out);
 }
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {

@@ -54,7 +54,7 @@ void destroy(void* self) {
 }
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_host(host) || !out) return PFX_INVALID_ARGUMENT;
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -84,23 +84,20 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   d.target(kTempNames[0], w, h);
   d.target(kTempNames[1], w, h);
   d.target("streaks", w, h);
-  d.pass("bright", "bright", {input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE)}, PFX_BLEND_NONE,
-         PFX_LOAD_DONT_CARE, glare_tag(GLARE_PASS_BRIGHT, 0, 0));
+  d.pass("bright", "bright").input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).tag(glare_tag(GLARE_PASS_BRIGHT, 0, 0));
   for (int j = 0; j < g.streaks; ++j)
     for (int i = 0; i < kGlarePasses; ++i) {
       const char* source = i == 0 ? "bright" : kTempNames[i - 1];
       const bool last = i == kGlarePasses - 1;
       // The first streak clears the sum, every streak adds into it.
-      d.pass(kStreakPassNames[j * kGlarePasses + i], last ? "streaks" : kTempNames[i],
-             {input(source, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)}, last ? PFX_BLEND_ADD : PFX_BLEND_NONE,
-             last ? (j == 0 ? PFX_LOAD_CLEAR : PFX_LOAD_KEEP) : PFX_LOAD_DONT_CARE, glare_tag(GLARE_PASS_STREAK, j, i));
+      d.pass(kStreakPassNames[j * kGlarePasses + i], last ? "streaks" : kTempNames[i])
+          .input(source, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER).blend(last ? PFX_BLEND_ADD : PFX_BLEND_NONE)
+          .load(last ? (j == 0 ? PFX_LOAD_CLEAR : PFX_LOAD_KEEP) : PFX_LOAD_DONT_CARE)
+          .tag(glare_tag(GLARE_PASS_STREAK, j, i));
     }
-  d.pass("composite", PFX_OUTPUT_NAME,
-         {input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE),
-          input("streaks", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE)},
-         PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, glare_tag(GLARE_PASS_COMPOSITE, 0, 0));
-  d.finish(out);
-  return PFX_OK;
+  d.pass("composite", PFX_OUTPUT_NAME).input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).input("streaks")
+      .tag(glare_tag(GLARE_PASS_COMPOSITE, 0, 0));
+  return d.finish(out);
 }
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
