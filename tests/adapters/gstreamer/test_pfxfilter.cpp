@@ -140,3 +140,15 @@ TEST_CASE("pfxfilter refuses a GLES context with an element error naming the rea
                       "context is OpenGL ES") != std::string::npos);
   CHECK(r.output.find("pfx needs desktop OpenGL 4.5") != std::string::npos);
 }
+
+TEST_CASE("pfxfilter refuses a desktop context below OpenGL 4.5 with an element error naming the version",
+          "[adapters][gstreamer][pfxfilter][errors]") {
+  Scratch scratch;
+  // Mesa reports the version it is told to; the element must read it and refuse, not load 4.5
+  // functions the context does not promise.
+  RunResult r = gst_launch(gl_pipeline(3, "pfxfilter !", scratch / "out.rgba"), false, {"MESA_GL_VERSION_OVERRIDE=3.3"});
+  INFO(r.output);
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("ERROR: from element /GstPipeline:pipeline0/GstPfxFilter:pfxfilter0: pfxfilter: GStreamer's GL "
+                      "context is OpenGL 3.3: pfx needs OpenGL 4.5") != std::string::npos);
+}
