@@ -1,13 +1,13 @@
 // The Gaussian modes as declared passes.
 //
-// gaussian (seed 002), one buffer of ceil(frame / downscale) blocks (bloom_levels.hpp):
+// gaussian (one separable Gaussian), one buffer of ceil(frame / downscale) blocks (bloom_levels.hpp):
 //   bright      color -> blur0              (block average of each pixel's max(c - threshold, 0))
-//   blur_y0     blur0 -> blur_tmp0          (vertical Gaussian, as the seed: vertical first)
+//   blur_y0     blur0 -> blur_tmp0          (vertical Gaussian first)
 //   blur_x0     blur_tmp0 -> blur0_out      (horizontal)
 //   composite   color * tone_scale + bilinear(blur0_out) -> output
 //
-// mgf (seed 004), buffers of blocks of 4, 8 ... pixels; each Gaussian has deviation 2.5 texels of
-// its buffer and the next buffer is made from the previous blurred one, as in the seed:
+// mgf (Kawase's multi-Gaussian), buffers of blocks of 4, 8 ... pixels; each Gaussian has deviation 2.5 texels of
+// its buffer and the next buffer is made from the previous blurred one, as Kawase does:
 //   bright      color -> blur0              (block average of 4x4 bright parts; with karis Karis-weighted)
 //   blur_x i    blur i (i = 0) or gauss i-1 (each tap the 2x2 texels it covers) -> blur_tmp i
 //   blur_y i    blur_tmp i -> gauss i
@@ -78,7 +78,7 @@ void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& p
   switch (tag_kind(context.user_tag)) {
     case PASS_BOX_BRIGHT: {
       program = programs[PROGRAM_BOX_BRIGHT];
-      // seed 002 thresholds every channel on its own; the mgf's seed leaves the bright pass open,
+      // gaussian thresholds every channel on its own; Kawase leaves the mgf's bright pass open,
       // so it takes the bloom's own (the chain's, with its measure).
       set_bright_uniforms(program, s, mgf ? -1 : 2);
       glProgramUniform1i(program, 4, plan.block);

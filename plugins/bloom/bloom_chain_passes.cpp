@@ -1,4 +1,4 @@
-// The pyramid modes as declared passes (chain: seed 000; chain13: Jimenez's 13 taps).
+// The pyramid modes as declared passes (chain: the half-size pyramid of Call of Duty: Advanced Warfare; chain13: Jimenez's 13 taps).
 //
 //   bright      color   -> level0            (5 taps, or 13 with a Karis average, x strength/levels;
 //                                              chain with karis: the 5 taps Karis-weighted)
@@ -18,7 +18,7 @@ void declare_chain(const Settings&, const LevelPlan& plan, DeclarationBuilder& o
   const int levels = plan.count;
   for (int i = 0; i < levels; ++i) out.target(kLevelNames[i], plan.width[i], plan.height[i]);
   // The frame is read texel by texel (the bright pass filters in arithmetic), the levels with the
-  // seed's wrap modes: black border going down, edge going up.
+  // pyramid's usual wrap modes: black border going down, edge going up.
   out.pass("bright", kLevelNames[0]).input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).tag(pass_tag(PASS_BRIGHT, 0));
   for (int i = 1; i < levels; ++i)
     out.pass(kDownNames[i], kLevelNames[i]).input(kLevelNames[i - 1], PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)
@@ -37,7 +37,7 @@ void run_chain_pass(const GLuint* programs, const Settings& s, const LevelPlan& 
     case PASS_BRIGHT: {
       program = programs[thirteen ? PROGRAM_BRIGHT13 : PROGRAM_BRIGHT];
       set_bright_uniforms(program, s);
-      // Every level gets strength / levels, as in the seed: each adds the same light going up.
+      // Every level gets strength / levels, as in the pyramid: each adds the same light going up.
       const double per_level = s.strength / plan.count;
       glProgramUniform3f(program, 4, static_cast<float>(per_level * s.tint[0]), static_cast<float>(per_level * s.tint[1]),
                          static_cast<float>(per_level * s.tint[2]));

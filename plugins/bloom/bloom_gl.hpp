@@ -32,7 +32,7 @@ bool build_programs(const pfx_host* host, const ProgramSpec* specs, int count, G
 void set_nonfinite_uniform(GLuint program, const Settings& s);
 
 // The bright programs' shared uniforms (locations 1-3 and 600, shaders_common.cpp); measure_override
-// >= 0 replaces the settings' measure (2: every channel on its own, as seed 002).
+// >= 0 replaces the settings' measure (2: every channel on its own, as the gaussian mode).
 void set_bright_uniforms(GLuint program, const Settings& s, int measure_override = -1);
 
 // Binds the program, draws the full-screen triangle, unbinds the program.

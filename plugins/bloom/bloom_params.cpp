@@ -11,10 +11,10 @@ namespace pfx_bloom {
 namespace {
 
 const pfx_enum_item kModeItems[MODE_COUNT] = {
-    {"chain", "Seed chain: 5-tap bright pass, 8x8 downsample, 3x3 tent upsample"},
+    {"chain", "Half-size pyramid: 5-tap bright pass, 8x8 downsample, 3x3 tent upsample"},
     {"chain13", "13-tap chain: 13-tap downsample, Karis average on the first level"},
-    {"gaussian", "Separable Gaussian at a chosen downscale (seed 002)"},
-    {"mgf", "Kawase multi-Gaussian: Gaussians on 1/4, 1/8 ... buffers, summed (seed 004)"}};
+    {"gaussian", "Separable Gaussian at a chosen downscale"},
+    {"mgf", "Kawase multi-Gaussian: Gaussians on 1/4, 1/8 ... buffers, summed"}};
 
 
 }  // namespace
@@ -24,7 +24,7 @@ const char* mode_name(int mode) { return mode >= 0 && mode < MODE_COUNT ? kModeI
 // Hard ranges are finite so "inf" from a user clamps to something the shaders can use.
 const pfx_param_desc kParams[PARAM_COUNT] = {
     pfx::desc::param("mode").label("Mode").group("Bloom")
-        .tooltip("Which bloom algorithm runs. chain: the seed's pyramid; chain13: the same with the "
+        .tooltip("Which bloom algorithm runs. chain: a half-size pyramid (Call of Duty: Advanced Warfare style); chain13: the same with the "
                  "13-tap downsample and a Karis average against fireflies; gaussian: one separable "
                  "Gaussian at a downscale; mgf: Kawase's sum of Gaussians on 1/4, 1/8 ... buffers.")
         .items(kModeItems, MODE_COUNT).default_value(MODE_CHAIN),
@@ -42,15 +42,15 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
         .int_range(0, kMaxLevels).display_range(0, 10).default_value(0),
     pfx::desc::param("auto_min_size").label("Automatic minimum size").unit("px").group("Bloom")
         .tooltip("With levels 0, no level is added whose shorter side would be below this many pixels "
-                 "(16 gives the seed's 6 levels at 1920x1080).")
+                 "(16 gives 6 levels at 1920x1080).")
         .int_range(1, 4096).display_range(1, 64).default_value(16),
     pfx::desc::param("auto_min_share").label("Automatic minimum share").group("Bloom")
         .tooltip("With levels 0, no level is added that would carry less than this fraction of the bloom's "
                  "light. Chain levels each carry 1/levels; mgf buffers follow the mgf ratio. 0 turns this off.")
         .float_range(0, 1).display_range(0, 0.2).step(0.005).default_value(0.0),
-    measure_param("How a pixel's brightness is measured against the threshold: the largest of R, G, B (the "
-                  "seed's; saturated blue blooms like white) or Rec. 709 luminance. The gaussian mode thresholds "
-                  "each channel on its own (seed 002) and ignores this."),
+    measure_param("How a pixel's brightness is measured against the threshold: the largest of R, G, B "
+                  "(saturated blue blooms like white) or Rec. 709 luminance. The gaussian mode thresholds "
+                  "each channel on its own and ignores this."),
     firefly_clamp_param(),
     pfx::desc::param("tint").label("Tint").group("Bloom")
         .tooltip("Colour the added light is multiplied by.")
@@ -60,8 +60,8 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                  "downscale). The bloom's radius grows with it; so must the tap count.")
         .float_range(0.1, 4000).display_range(1, 200).step(0.5).default_value(8.0),
     pfx::desc::param("taps").label("Taps").group("Gaussian")
-        .tooltip("gaussian mode: taps of each 1-D blur, one texel of the downscaled buffer apart (the seed's "
-                 "15). An even count is rounded up to the next odd one. To cover the Gaussian, taps x "
+        .tooltip("gaussian mode: taps of each 1-D blur, one texel of the downscaled buffer apart (15 by "
+                 "default). An even count is rounded up to the next odd one. To cover the Gaussian, taps x "
                  "downscale should reach about 6 sigma.")
         .int_range(1, 2 * kMaxHalfTaps + 1).display_range(1, 63).step(2).default_value(15),
     pfx::desc::param("downscale").label("Downscale").group("Gaussian")
@@ -69,8 +69,8 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                  "side (each texel the average of downscale x downscale pixels); 1 blurs at full resolution.")
         .int_range(1, 16).display_range(1, 8).default_value(4),
     pfx::desc::param("tone_scale").label("Tone scale").group("Gaussian")
-        .tooltip("gaussian mode: the frame is multiplied by this before the bloom is added (seed 002's "
-                 "toneScale, which it sets to 0.7). 1 keeps the frame as it is.")
+        .tooltip("gaussian mode: the frame is multiplied by this before the bloom is added (0.7 darkens "
+                 "the frame as a tone scale would). 1 keeps the frame as it is.")
         .float_range(0, 16).display_range(0, 1).step(0.05).default_value(1.0),
     pfx::desc::param("mgf_ratio").label("Multi-Gaussian ratio").group("Multi-Gaussian")
         .tooltip("mgf mode: each coarser buffer's Gaussian carries this many times the light of the finer one "
@@ -81,7 +81,7 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
     pfx::desc::param("karis").label("Karis average").group("Bright pass")
         .tooltip("chain and mgf: weight every tap of the first downsample by 1 / (1 + its luminance) (Karis), as "
                  "chain13 does, so a lone very bright pixel (a firefly) cannot outshine its neighbours. Takes "
-                 "light from small bright details; off keeps the seeds' plain averages.")
+                 "light from small bright details; off keeps plain averages.")
         .boolean().default_value(0.0),
 };
 

@@ -7,7 +7,7 @@
 namespace pfx_bloom {
 namespace {
 
-const pfx_enum_item kMeasureItems[] = {{"max_rgb", "Largest of R, G, B (the seed's)"},
+const pfx_enum_item kMeasureItems[] = {{"max_rgb", "Largest of R, G, B"},
                                        {"luminance", "Rec. 709 luminance"}};
 const pfx_enum_item kNonfiniteItems[] = {
     {"zero", "A pixel with NaN or +-Inf in R, G or B is black: it adds no light and shows black"},
@@ -33,7 +33,7 @@ pfx_param_desc threshold_param(double display_default) {
 pfx_param_desc knee_param(double display_default) {
   return pfx::desc::param("knee").label("Knee").group("Bright pass")
       .tooltip("Width of the soft transition around the threshold: brightness from threshold - knee to "
-               "threshold + knee spreads gradually (quadratic). 0 is the seeds' hard threshold; the knee "
+               "threshold + knee spreads gradually (quadratic). 0 is a hard threshold; the knee "
                "is never wider than the threshold. On display-referred frames it starts wider than 0.")
       .float_range(0, kHalfMax).display_range(0, 2).step(0.05).default_value(0.0).display_default(display_default);
 }

@@ -1,4 +1,4 @@
-// The "glare" effect on the GPU: seed 004's star streaks as declared passes.
+// The "glare" effect on the GPU: Kawase's star streaks as declared passes.
 //
 //   bright        color -> bright            (block average of the bloom's bright part: blocks of 1, 2 or
 //                                              4 pixels covering the frame, rounded up, bloom_levels.hpp)
@@ -7,7 +7,7 @@
 //   composite     color + strength * tint * bilinear(streaks) -> output
 //
 // Each pass's weights a^(b*s) are normalised to sum to 1 and the last pass's divided by the streak
-// count, so strength 1 spreads exactly the light above the threshold over all streaks (the seed
+// count, so strength 1 spreads exactly the light above the threshold over all streaks (Kawase's
 // leaves them unnormalised: at a = 0.925 each of its streaks carries 9.5 * 3.7 * 1.4 = 49 times the light).
 #include "glare_effect.hpp"
 
@@ -160,7 +160,7 @@ const pfx_effect_desc kGlareEffect = {
     sizeof(pfx_effect_desc),
     "glare",
     "Glare",
-    "Star streaks from bright light (Kawase's cross filter, seed 004): 4, 6 or 8 streaks, each three "
+    "Star streaks from bright light (Kawase's cross filter): 4, 6 or 8 streaks, each three "
     "passes of 16 taps, added to the frame.",
     kGlareParams,
     GLARE_PARAM_COUNT,

@@ -13,7 +13,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 const pfx_enum_item kStreakItems[] = {{"4", "4 streaks (a cross)"}, {"6", "6 streaks"}, {"8", "8 streaks"}};
 const pfx_enum_item kResolutionItems[] = {
-    {"full", "Full resolution (the seed's)"}, {"half", "Half resolution"}, {"quarter", "Quarter resolution"}};
+    {"full", "Full resolution (Kawase's)"}, {"half", "Half resolution"}, {"quarter", "Quarter resolution"}};
 
 }  // namespace
 
@@ -37,7 +37,7 @@ const pfx_param_desc kGlareParams[GLARE_PARAM_COUNT] = {
         .tooltip("How many streaks leave each bright pixel, evenly spaced (a cross filter's 4, 6 or 8).")
         .items(kStreakItems, 3).default_value(0),
     pfx::desc::param("angle").label("Angle offset").unit("deg").group("Glare")
-        .tooltip("Direction of the first streak, counter-clockwise from the x axis (the seed's 45).")
+        .tooltip("Direction of the first streak, counter-clockwise from the x axis (Kawase's 45).")
         .float_range(-360, 360).display_range(0, 90).step(1).default_value(45.0),
     pfx::desc::param("attenuation").label("Attenuation").group("Glare")
         .tooltip("How fast a streak fades: tap weights are a^(b*s), s texels along it (Kawase: 0.9 .. 0.95). "

@@ -91,7 +91,7 @@ void set_inputs(PassInputs* in) {
   in->seed_half[0] = color;
   in->seed[0] = color;
   in->seed[1] = depth;
-  in->seed[2] = {"half", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};  // the seed's bilinear taps
+  in->seed[2] = {"half", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};  // the 16-tap disk's bilinear taps
   in->seed[3] = lens;
   // Linear: at half resolution one bilinear tap averages a 2x2 block (texel fetches ignore it).
   in->prepare[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};
@@ -263,7 +263,7 @@ const pfx_effect_desc kDofEffect = {
     sizeof(pfx_effect_desc),
     "dof",
     "Depth of field",
-    "Thin-lens depth of field from the frame's depth and camera: the seed's 16-tap disk, or a halo-free "
+    "Thin-lens depth of field from the frame's depth and camera: a 16-tap disk gather from a half-size copy, or a halo-free "
     "near/far gather over 16 px CoC tiles that leaves in-focus tiles untouched.",
     kParams,
     PARAM_COUNT,

@@ -6,7 +6,7 @@ namespace pfx_dof {
 namespace {
 
 const pfx_enum_item kModeItems[] = {
-    {"seed", "Seed: 16-tap disk from a half-size copy, mixed in as the CoC passes 1 px"},
+    {"seed", "16-tap disk from a half-size copy, mixed in as the CoC passes 1 px"},
     {"gather", "Near/far gather: 16 px CoC tiles, dilated; in-focus tiles untouched; no halos"}};
 
 const pfx_enum_item kAutofocusItems[] = {
@@ -25,7 +25,7 @@ const pfx_enum_item kResolutionItems[] = {
 
 const pfx_param_desc kParams[PARAM_COUNT] = {
     pfx::desc::param("mode").label("Mode").group("Depth of field")
-        .tooltip("seed: the seed's 16-tap disk from a half-size copy, blended in as the blur passes 1 px "
+        .tooltip("seed: a 16-tap disk gather from a half-size copy, blended in as the blur passes 1 px "
                  "(halos around in-focus objects). gather: the quality mode, with separate near and far "
                  "fields, ring samples sized per 16 px tile, and in-focus tiles left exactly as they were.")
         .items(kModeItems, 2).default_value(MODE_GATHER),
@@ -48,7 +48,7 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
         .vec2_range(0, 1).step(0.01).default_value(0.5, 0.5),
     pfx::desc::param("f_number").label("f-number").group("Camera")
         .tooltip("Focal length divided by the aperture diameter: smaller opens the lens and blurs more. Real lenses stop "
-                 "near 1; the seed's strong blur used 0.05.")
+                 "near 1; 0.05 gives a strong, unrealistic blur.")
         .float_range(kMinFNumber, kMaxFNumber).display_range(0.7, 22).step(0.1).logarithmic().default_value(1.4),
     pfx::desc::param("sensor_width").label("Sensor width").unit("mm").group("Camera")
         .tooltip("Width of the camera's sensor. With the frame's field of view it sets the focal length; "
@@ -60,11 +60,11 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
         .float_range(1, kMaxCocLimit).display_range(4, 64).step(1).default_value(32.0),
     pfx::desc::param("samples").label("Samples").group("Quality")
         .tooltip("gather mode: samples per pixel, in rings sized to the tile's largest blur (the quality "
-                 "knob: 16, 32, 64, 128...). The seed mode always takes 16.")
+                 "knob: 16, 32, 64, 128...). The seed mode (16-tap disk) always takes 16.")
         .int_range(kMinSamples, kMaxSamples).display_range(16, 128).default_value(32),
     pfx::desc::param("resolution").label("Working resolution").group("Quality")
         .tooltip("gather mode: gather at half resolution (4x fewer samples, composited over the sharp "
-                 "frame at full resolution) or at full resolution. The seed mode always blurs a "
+                 "frame at full resolution) or at full resolution. The seed mode (16-tap disk) always blurs a "
                  "half-size copy.")
         .items(kResolutionItems, 2).default_value(RESOLUTION_HALF),
     pfx::desc::param("nonfinite").label("Non-finite pixels").group("Quality")

@@ -1,7 +1,7 @@
 // The "tiledlights" effect on the GPU. Passes by mode:
 //
 //   brute      shade (uploads every light that reaches anything; every light at every pixel)
-//   cpu8x4     cull  (CPU: lights in view, seed 003's sub-frustum grid, lists into the upload ring)
+//   cpu8x4     cull  (CPU: lights in view, a grid of sub-frustums, as Olsson and Assarsson's tiled shading, lists into the upload ring)
 //              shade (each pixel reads its tile's list)
 //   tiled      cull  (CPU: lights in view; GPU compute: per-tile lists with the tile's depth bounds,
 //                     counted, placed by a prefix sum, filled: gpu_lists.hpp)
@@ -374,8 +374,8 @@ const pfx_effect_desc kTiledLightsEffect = {
     sizeof(pfx_effect_desc),
     "tiledlights",
     "Tiled lights",
-    "Lights the G-buffer with many point lights (seed 003's falloff) and adds them to the colour; culled by "
-    "brute force, seed 003's CPU sub-frustums, GPU tiles or GPU clusters, all giving the same image.",
+    "Lights the G-buffer with many point lights (a 1 / (1 + d^2) falloff) and adds them to the colour; culled by "
+    "brute force, sub-frustums culled on the CPU, GPU tiles or GPU clusters, all giving the same image.",
     kParams,
     PARAM_COUNT,
     create,

@@ -9,12 +9,12 @@ using pfx::desc::param;
 
 const pfx_enum_item kModeItems[MODE_COUNT] = {
     {"brute", "Brute force: every light at every pixel"},
-    {"cpu8x4", "Seed 003: sub-frustum grid culled on the CPU"},
+    {"cpu8x4", "Tiled shading: sub-frustum grid culled on the CPU"},
     {"tiled", "GPU tiles with depth bounds (compute)"},
     {"clustered", "GPU clusters: tiles x exponential depth slices (compute)"}};
 
 const pfx_enum_item kRangeItems[] = {{"cutoff", "Where the light falls below the cutoff"},
-                                     {"seed", "Seed 003: 3 sqrt(max colour)"}};
+                                     {"seed", "3 sqrt(max colour), the classic tiled-shading demo's rule"}};
 
 const pfx_enum_item kBaseItems[] = {{"color", "Add to the incoming colour"},
                                     {"emissive", "Add to the emissive input"}};
@@ -32,13 +32,13 @@ const char* const kModeNames[MODE_COUNT] = {"brute", "cpu8x4", "tiled", "cluster
 const pfx_param_desc kParams[PARAM_COUNT] = {
     param("mode").label("Mode").group("Lights")
         .tooltip("How the lights reaching a pixel are found. brute: all of them (the baseline); cpu8x4: "
-                 "seed 003's grid of sub-frustums culled on the CPU; tiled: per-tile lists built on the "
+                 "a grid of sub-frustums culled on the CPU (Olsson and Assarsson's tiled shading); tiled: per-tile lists built on the "
                  "GPU with the tile's depth range; clustered: per-cluster lists (tiles x depth slices). "
                  "Every mode gives the brute-force image.")
         .items(kModeItems, MODE_COUNT).default_value(MODE_TILED),
     param("range_rule").label("Range rule").group("Lights")
         .tooltip("How far a light without an explicit range reaches. cutoff: until intensity x max(colour) "
-                 "/ (1 + d^2) falls to the cutoff; seed: 3 sqrt(intensity x max(colour)), seed 003's rule. "
+                 "/ (1 + d^2) falls to the cutoff; seed: 3 sqrt(intensity x max(colour)), a fixed rule of thumb. "
                  "Light is faded out over the last quarter of the range.")
         .items(kRangeItems, 2).default_value(RANGE_CUTOFF),
     param("cutoff").label("Cutoff").group("Lights")
@@ -54,10 +54,10 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
         .tooltip("tiled: the side of a screen tile in pixels.")
         .int_range(4, 128).display_range(8, 64).default_value(16),
     param("cpu_tiles_x").label("CPU tiles across").group("Culling")
-        .tooltip("cpu8x4: sub-frustums across the frame (the seed's 8).")
+        .tooltip("cpu8x4: sub-frustums across the frame (8 by default).")
         .int_range(1, 256).display_range(1, 64).default_value(8),
     param("cpu_tiles_y").label("CPU tiles down").group("Culling")
-        .tooltip("cpu8x4: sub-frustums down the frame (the seed's 4).")
+        .tooltip("cpu8x4: sub-frustums down the frame (4 by default).")
         .int_range(1, 256).display_range(1, 64).default_value(4),
     param("cluster_tile_size").label("Cluster tile size").unit("px").group("Culling")
         .tooltip("clustered: the side of a cluster's screen tile in pixels.")
