@@ -1,4 +1,5 @@
-// The pyramid modes as declared passes (chain: the half-size pyramid of Call of Duty: Advanced Warfare; chain13: Jimenez's 13 taps).
+// The pyramid modes as declared passes (chain: the half-size pyramid of Call of Duty: Advanced
+// Warfare; chain13: Jimenez's 13-tap downsample).
 //
 //   bright      color   -> level0            (5 taps, or 13 with a Karis average, x strength/levels;
 //                                              chain with karis: the 5 taps Karis-weighted)

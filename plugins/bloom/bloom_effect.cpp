@@ -98,8 +98,9 @@ const pfx_effect_desc kBloomEffect = {
     sizeof(pfx_effect_desc),
     "bloom",
     "Bloom",
-    "Light above a threshold spreads into its surroundings: a half-size pyramid in the style of Call of Duty: Advanced Warfare (chain), "
-    "its 13-tap variant (chain13), a separable Gaussian (gaussian) or Kawase's multi-Gaussian (mgf).",
+    "Light above a threshold spreads into its surroundings: a half-size pyramid in the style of Call of Duty: "
+    "Advanced Warfare (chain), its 13-tap variant (chain13), a separable Gaussian (gaussian) or Kawase's "
+    "multi-Gaussian (mgf).",
     kParams,
     PARAM_COUNT,
     create,

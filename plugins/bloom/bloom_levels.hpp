@@ -2,8 +2,8 @@
 // always build the same pyramid.
 //
 // chain and chain13: level 0 is half the frame and every next level half the previous, rounded
-// down as the pyramid of Call of Duty: Advanced Warfare does (1920x1080 -> 960x540 -> 480x270 ...), each level resampled from the one
-// before across its whole extent. Never below one pixel: a 1x1 or 2x3 frame still gets a 1x1
+// down (1920x1080 -> 960x540 -> 480x270 ...), each level resampled from the one before across
+// its whole extent. Never below one pixel: a 1x1 or 2x3 frame still gets a 1x1
 // level. A pyramid stops at the first level that is 1x1, since more 1x1 levels would only repeat
 // it; asking for more levels than that is clamped, not refused.
 //

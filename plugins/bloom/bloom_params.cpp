@@ -24,9 +24,10 @@ const char* mode_name(int mode) { return mode >= 0 && mode < MODE_COUNT ? kModeI
 // Hard ranges are finite so "inf" from a user clamps to something the shaders can use.
 const pfx_param_desc kParams[PARAM_COUNT] = {
     pfx::desc::param("mode").label("Mode").group("Bloom")
-        .tooltip("Which bloom algorithm runs. chain: a half-size pyramid (Call of Duty: Advanced Warfare style); chain13: the same with the "
-                 "13-tap downsample and a Karis average against fireflies; gaussian: one separable "
-                 "Gaussian at a downscale; mgf: Kawase's sum of Gaussians on 1/4, 1/8 ... buffers.")
+        .tooltip("Which bloom algorithm runs. chain: a half-size pyramid (Call of Duty: Advanced Warfare "
+                 "style); chain13: the same with the 13-tap downsample and a Karis average against fireflies; "
+                 "gaussian: one separable Gaussian at a downscale; mgf: Kawase's sum of Gaussians on 1/4, "
+                 "1/8 ... buffers.")
         .items(kModeItems, MODE_COUNT).default_value(MODE_CHAIN),
     // On a display-referred frame: 0.6 is linear light of sRGB code 204 (80 % grey); the knee
     // eases in from 0.4 (code 170), so the top of the range glows while mid-tones stay.

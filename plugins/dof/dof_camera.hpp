@@ -1,4 +1,5 @@
-// The thin-lens camera shared by every mode and by the CPU references (the thin-lens circle of confusion, with a corrected field of view).
+// The thin-lens camera shared by every mode and by the CPU references: the thin-lens circle of
+// confusion, with the horizontal field of view computed exactly.
 //
 // The sensor sits at the image distance I that reproduces the frame's horizontal field of view on a
 // sensor of the given width; the lens focuses a plane at distance P, so its focal length is

@@ -30,8 +30,9 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                  "fields, ring samples sized per 16 px tile, and in-focus tiles left exactly as they were.")
         .items(kModeItems, 2).default_value(MODE_GATHER),
     pfx::desc::param("focus_distance").label("Focus distance").unit("m").group("Camera")
-        .tooltip("Distance from the lens to the plane in perfect focus, in metres along the view axis. Ignored while "
-                 "autofocus is on. 'inf' focuses at infinity (clamped to 1e9 m, which is the same to within 1e-6 px).")
+        .tooltip("Distance from the lens to the plane in perfect focus, in metres along the view axis. Ignored "
+                 "while autofocus is on. 'inf' focuses at infinity (clamped to 1e9 m, which is the same to "
+                 "within 1e-6 px).")
         .float_range(kMinFocusDistance, kMaxFocusDistance).display_range(0.1, 100).step(0.01).logarithmic()
         .default_value(10.0),
     // A display-referred frame comes from a program whose camera the host does not know (an
@@ -47,8 +48,8 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
                  "(0.5, 0.5 is the centre).")
         .vec2_range(0, 1).step(0.01).default_value(0.5, 0.5),
     pfx::desc::param("f_number").label("f-number").group("Camera")
-        .tooltip("Focal length divided by the aperture diameter: smaller opens the lens and blurs more. Real lenses stop "
-                 "near 1; 0.05 gives a strong, unrealistic blur.")
+        .tooltip("Focal length divided by the aperture diameter: smaller opens the lens and blurs more. Real "
+                 "lenses stop near 1; 0.05 gives a strong, unrealistic blur.")
         .float_range(kMinFNumber, kMaxFNumber).display_range(0.7, 22).step(0.1).logarithmic().default_value(1.4),
     pfx::desc::param("sensor_width").label("Sensor width").unit("mm").group("Camera")
         .tooltip("Width of the camera's sensor. With the frame's field of view it sets the focal length; "

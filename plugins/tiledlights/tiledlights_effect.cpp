@@ -1,7 +1,8 @@
 // The "tiledlights" effect on the GPU. Passes by mode:
 //
 //   brute      shade (uploads every light that reaches anything; every light at every pixel)
-//   cpu8x4     cull  (CPU: lights in view, a grid of sub-frustums, as Olsson and Assarsson's tiled shading, lists into the upload ring)
+//   cpu8x4     cull  (CPU: lights in view, Olsson and Assarsson's grid of sub-frustums, lists into the
+//                     upload ring)
 //              shade (each pixel reads its tile's list)
 //   tiled      cull  (CPU: lights in view; GPU compute: per-tile lists with the tile's depth bounds,
 //                     counted, placed by a prefix sum, filled: gpu_lists.hpp)

@@ -32,9 +32,9 @@ const char* const kModeNames[MODE_COUNT] = {"brute", "cpu8x4", "tiled", "cluster
 const pfx_param_desc kParams[PARAM_COUNT] = {
     param("mode").label("Mode").group("Lights")
         .tooltip("How the lights reaching a pixel are found. brute: all of them (the baseline); cpu8x4: "
-                 "a grid of sub-frustums culled on the CPU (Olsson and Assarsson's tiled shading); tiled: per-tile lists built on the "
-                 "GPU with the tile's depth range; clustered: per-cluster lists (tiles x depth slices). "
-                 "Every mode gives the brute-force image.")
+                 "a grid of sub-frustums culled on the CPU (Olsson and Assarsson's tiled shading); tiled: "
+                 "per-tile lists built on the GPU with the tile's depth range; clustered: per-cluster lists "
+                 "(tiles x depth slices, Olsson's clustered shading). Every mode gives the brute-force image.")
         .items(kModeItems, MODE_COUNT).default_value(MODE_TILED),
     param("range_rule").label("Range rule").group("Lights")
         .tooltip("How far a light without an explicit range reaches. cutoff: until intensity x max(colour) "
