@@ -51,7 +51,9 @@ void declare_gaussian(const Settings& s, const LevelPlan& plan, DeclarationBuild
     out.target(kGaussNames[0], plan.width[0], plan.height[0]);
     out.pass(kBlurYNames[0], kTempNames[0]).input(linear_border(kBlurNames[0])).tag(pass_tag(PASS_BLUR_Y, 0));
     out.pass(kBlurXNames[0], kGaussNames[0]).input(linear_border(kTempNames[0])).tag(pass_tag(PASS_BLUR_X, 0));
-    out.pass("composite", PFX_OUTPUT_NAME).input(frame_texels()).input(linear_edge(kGaussNames[0]))
+    out.pass("composite", PFX_OUTPUT_NAME)
+        .input(frame_texels())
+        .input(linear_edge(kGaussNames[0]))
         .tag(pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));
   } else {  // only the tone scale changes the frame
     out.pass("composite", PFX_OUTPUT_NAME).input(frame_texels()).tag(pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));

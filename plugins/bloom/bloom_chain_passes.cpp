@@ -22,12 +22,18 @@ void declare_chain(const Settings&, const LevelPlan& plan, DeclarationBuilder& o
   // pyramid's usual wrap modes: black border going down, edge going up.
   out.pass("bright", kLevelNames[0]).input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).tag(pass_tag(PASS_BRIGHT, 0));
   for (int i = 1; i < levels; ++i)
-    out.pass(kDownNames[i], kLevelNames[i]).input(kLevelNames[i - 1], PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)
+    out.pass(kDownNames[i], kLevelNames[i])
+        .input(kLevelNames[i - 1], PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)
         .tag(pass_tag(PASS_DOWN, i));
   for (int i = levels - 2; i >= 0; --i)
-    out.pass(kUpNames[i], kLevelNames[i]).input(kLevelNames[i + 1]).blend(PFX_BLEND_ADD).load(PFX_LOAD_KEEP)
+    out.pass(kUpNames[i], kLevelNames[i])
+        .input(kLevelNames[i + 1])
+        .blend(PFX_BLEND_ADD)
+        .load(PFX_LOAD_KEEP)
         .tag(pass_tag(PASS_UP, i));
-  out.pass("composite", PFX_OUTPUT_NAME).input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).input(kLevelNames[0])
+  out.pass("composite", PFX_OUTPUT_NAME)
+      .input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST)
+      .input(kLevelNames[0])
       .tag(pass_tag(PASS_COMPOSITE, 0));
 }
 

@@ -7,6 +7,7 @@
 #include <new>
 #include <string>
 
+#include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "bloom_gl.hpp"
@@ -94,19 +95,18 @@ const char* report_json(void* self) {
 
 }  // namespace
 
-const pfx_effect_desc kBloomEffect = {
-    sizeof(pfx_effect_desc),
-    "bloom",
-    "Bloom",
-    "Light above a threshold spreads into its surroundings: a half-size pyramid in the style of Call of Duty: "
-    "Advanced Warfare (chain), its 13-tap variant (chain13), a separable Gaussian (gaussian) or Kawase's "
-    "multi-Gaussian (mgf).",
-    kParams,
-    PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kBloomEffect =
+    pfx::desc::effect("bloom")
+        .label("Bloom")
+        .description(
+            "Light above a threshold spreads into its surroundings: a half-size pyramid in the style of Call "
+            "of Duty: Advanced Warfare (chain), its 13-tap variant (chain13), a separable Gaussian (gaussian) "
+            "or Kawase's multi-Gaussian (mgf).")
+        .params(kParams, PARAM_COUNT)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_bloom

@@ -15,6 +15,7 @@
 #include <new>
 #include <string>
 
+#include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "bloom_gl.hpp"
@@ -91,11 +92,14 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
       const bool last = i == kGlarePasses - 1;
       // The first streak clears the sum, every streak adds into it.
       d.pass(kStreakPassNames[j * kGlarePasses + i], last ? "streaks" : kTempNames[i])
-          .input(source, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER).blend(last ? PFX_BLEND_ADD : PFX_BLEND_NONE)
+          .input(source, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)
+          .blend(last ? PFX_BLEND_ADD : PFX_BLEND_NONE)
           .load(last ? (j == 0 ? PFX_LOAD_CLEAR : PFX_LOAD_KEEP) : PFX_LOAD_DONT_CARE)
           .tag(glare_tag(GLARE_PASS_STREAK, j, i));
     }
-  d.pass("composite", PFX_OUTPUT_NAME).input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).input("streaks")
+  d.pass("composite", PFX_OUTPUT_NAME)
+      .input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST)
+      .input("streaks")
       .tag(glare_tag(GLARE_PASS_COMPOSITE, 0, 0));
   return d.finish(out);
 }
@@ -156,18 +160,17 @@ const char* report_json(void* self) {
 
 }  // namespace
 
-const pfx_effect_desc kGlareEffect = {
-    sizeof(pfx_effect_desc),
-    "glare",
-    "Glare",
-    "Star streaks from bright light (Kawase's cross filter): 4, 6 or 8 streaks, each three "
-    "passes of 16 taps, added to the frame.",
-    kGlareParams,
-    GLARE_PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kGlareEffect =
+    pfx::desc::effect("glare")
+        .label("Glare")
+        .description(
+            "Star streaks from bright light (Kawase's cross filter): 4, 6 or 8 streaks, each three passes of "
+            "16 taps, added to the frame.")
+        .params(kGlareParams, GLARE_PARAM_COUNT)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_bloom

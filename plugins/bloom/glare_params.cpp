@@ -26,26 +26,52 @@ const pfx_param_desc kGlareParams[GLARE_PARAM_COUNT] = {
     measure_param("How a pixel's brightness is measured against the threshold: the largest of R, G, B or "
                   "Rec. 709 luminance."),
     firefly_clamp_param(),
-    pfx::desc::param("strength").label("Strength").group("Glare")
+    pfx::desc::param("strength")
+        .label("Strength")
+        .group("Glare")
         .tooltip("How much light the streaks add: 1 spreads exactly the light above the threshold over all "
                  "streaks together. 0 turns the effect off (no pass runs).")
-        .float_range(0, 100).display_range(0, 4).step(0.05).default_value(1.0),
-    pfx::desc::param("tint").label("Tint").group("Glare")
+        .float_range(0, 100)
+        .display_range(0, 4)
+        .step(0.05)
+        .default_value(1.0),
+    pfx::desc::param("tint")
+        .label("Tint")
+        .group("Glare")
         .tooltip("Colour the added light is multiplied by.")
-        .color_range(0, 16).display_range(0, 1).step(0.01).default_value(1.0, 1.0, 1.0),
-    pfx::desc::param("streaks").label("Streaks").group("Glare")
+        .color_range(0, 16)
+        .display_range(0, 1)
+        .step(0.01)
+        .default_value(1.0, 1.0, 1.0),
+    pfx::desc::param("streaks")
+        .label("Streaks")
+        .group("Glare")
         .tooltip("How many streaks leave each bright pixel, evenly spaced (a cross filter's 4, 6 or 8).")
-        .items(kStreakItems, 3).default_value(0),
-    pfx::desc::param("angle").label("Angle offset").unit("deg").group("Glare")
+        .items(kStreakItems, 3)
+        .default_value(0),
+    pfx::desc::param("angle")
+        .label("Angle offset")
+        .unit("deg")
+        .group("Glare")
         .tooltip("Direction of the first streak, counter-clockwise from the x axis (Kawase's 45).")
-        .float_range(-360, 360).display_range(0, 90).step(1).default_value(45.0),
-    pfx::desc::param("attenuation").label("Attenuation").group("Glare")
+        .float_range(-360, 360)
+        .display_range(0, 90)
+        .step(1)
+        .default_value(45.0),
+    pfx::desc::param("attenuation")
+        .label("Attenuation")
+        .group("Glare")
         .tooltip("How fast a streak fades: tap weights are a^(b*s), s texels along it (Kawase: 0.9 .. 0.95). "
                  "Closer to 1 is longer.")
-        .float_range(0.9, 0.95).step(0.005).default_value(0.925),
-    pfx::desc::param("resolution").label("Resolution").group("Glare")
+        .float_range(0.9, 0.95)
+        .step(0.005)
+        .default_value(0.925),
+    pfx::desc::param("resolution")
+        .label("Resolution")
+        .group("Glare")
         .tooltip("Resolution the streaks are drawn at: lower is faster and softer across the streak.")
-        .items(kResolutionItems, 3).default_value(0),
+        .items(kResolutionItems, 3)
+        .default_value(0),
     nonfinite_param(),
 };
 

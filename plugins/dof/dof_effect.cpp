@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <pfx/cpp/declaration.hpp>
+#include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/gl_program.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
@@ -259,18 +260,17 @@ const char* report_json(void* self) { return static_cast<Instance*>(self)->repor
 
 }  // namespace
 
-const pfx_effect_desc kDofEffect = {
-    sizeof(pfx_effect_desc),
-    "dof",
-    "Depth of field",
-    "Thin-lens depth of field from the frame's depth and camera: a 16-tap disk gather from a half-size copy, or a halo-free "
-    "near/far gather over 16 px CoC tiles that leaves in-focus tiles untouched.",
-    kParams,
-    PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kDofEffect =
+    pfx::desc::effect("dof")
+        .label("Depth of field")
+        .description("Thin-lens depth of field from the frame's depth and camera: a 16-tap disk gather from a "
+                     "half-size copy, or a halo-free near/far gather over 16 px CoC tiles that leaves in-focus "
+                     "tiles untouched.")
+        .params(kParams)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_dof

@@ -24,56 +24,101 @@ const pfx_enum_item kResolutionItems[] = {
 }  // namespace
 
 const pfx_param_desc kParams[PARAM_COUNT] = {
-    pfx::desc::param("mode").label("Mode").group("Depth of field")
+    pfx::desc::param("mode")
+        .label("Mode")
+        .group("Depth of field")
         .tooltip("seed: a 16-tap disk gather from a half-size copy, blended in as the blur passes 1 px "
                  "(halos around in-focus objects). gather: the quality mode, with separate near and far "
                  "fields, ring samples sized per 16 px tile, and in-focus tiles left exactly as they were.")
-        .items(kModeItems, 2).default_value(MODE_GATHER),
-    pfx::desc::param("focus_distance").label("Focus distance").unit("m").group("Camera")
+        .items(kModeItems, 2)
+        .default_value(MODE_GATHER),
+    pfx::desc::param("focus_distance")
+        .label("Focus distance")
+        .unit("m")
+        .group("Camera")
         .tooltip("Distance from the lens to the plane in perfect focus, in metres along the view axis. Ignored "
                  "while autofocus is on. 'inf' focuses at infinity (clamped to 1e9 m, which is the same to "
                  "within 1e-6 px).")
-        .float_range(kMinFocusDistance, kMaxFocusDistance).display_range(0.1, 100).step(0.01).logarithmic()
+        .float_range(kMinFocusDistance, kMaxFocusDistance)
+        .display_range(0.1, 100)
+        .step(0.01)
+        .logarithmic()
         .default_value(10.0),
     // A display-referred frame comes from a program whose camera the host does not know (an
     // application's window, a video), so a focus distance in metres means nothing there: such
     // frames start focused on whatever is under the focus point, the centre of the picture.
-    pfx::desc::param("autofocus").label("Autofocus").group("Camera")
+    pfx::desc::param("autofocus")
+        .label("Autofocus")
+        .group("Camera")
         .tooltip("point: focus at the depth found under the focus point each frame (the sky focuses "
                  "at infinity). off: use the focus distance. On display-referred frames (an "
                  "application's window, a video), whose camera is unknown, it starts at point.")
-        .items(kAutofocusItems, 2).default_value(AUTOFOCUS_OFF).display_default(AUTOFOCUS_POINT),
-    pfx::desc::param("focus_point").label("Focus point").group("Camera")
+        .items(kAutofocusItems, 2)
+        .default_value(AUTOFOCUS_OFF)
+        .display_default(AUTOFOCUS_POINT),
+    pfx::desc::param("focus_point")
+        .label("Focus point")
+        .group("Camera")
         .tooltip("Where autofocus reads the depth: 0..1 across the frame from the top-left corner "
                  "(0.5, 0.5 is the centre).")
-        .vec2_range(0, 1).step(0.01).default_value(0.5, 0.5),
-    pfx::desc::param("f_number").label("f-number").group("Camera")
+        .vec2_range(0, 1)
+        .step(0.01)
+        .default_value(0.5, 0.5),
+    pfx::desc::param("f_number")
+        .label("f-number")
+        .group("Camera")
         .tooltip("Focal length divided by the aperture diameter: smaller opens the lens and blurs more. Real "
                  "lenses stop near 1; 0.05 gives a strong, unrealistic blur.")
-        .float_range(kMinFNumber, kMaxFNumber).display_range(0.7, 22).step(0.1).logarithmic().default_value(1.4),
-    pfx::desc::param("sensor_width").label("Sensor width").unit("mm").group("Camera")
+        .float_range(kMinFNumber, kMaxFNumber)
+        .display_range(0.7, 22)
+        .step(0.1)
+        .logarithmic()
+        .default_value(1.4),
+    pfx::desc::param("sensor_width")
+        .label("Sensor width")
+        .unit("mm")
+        .group("Camera")
         .tooltip("Width of the camera's sensor. With the frame's field of view it sets the focal length; "
                  "36 mm is full frame.")
-        .float_range(1, 100).display_range(4, 70).step(0.5).default_value(36.0),
-    pfx::desc::param("max_coc").label("Maximum blur").unit("px").group("Depth of field")
+        .float_range(1, 100)
+        .display_range(4, 70)
+        .step(0.5)
+        .default_value(36.0),
+    pfx::desc::param("max_coc")
+        .label("Maximum blur")
+        .unit("px")
+        .group("Depth of field")
         .tooltip("The circle of confusion's diameter is clamped to this many pixels (at the frame's "
                  "resolution), in both modes; it also bounds how far the gather looks.")
-        .float_range(1, kMaxCocLimit).display_range(4, 64).step(1).default_value(32.0),
-    pfx::desc::param("samples").label("Samples").group("Quality")
+        .float_range(1, kMaxCocLimit)
+        .display_range(4, 64)
+        .step(1)
+        .default_value(32.0),
+    pfx::desc::param("samples")
+        .label("Samples")
+        .group("Quality")
         .tooltip("gather mode: samples per pixel, in rings sized to the tile's largest blur (the quality "
                  "knob: 16, 32, 64, 128...). The seed mode (16-tap disk) always takes 16.")
-        .int_range(kMinSamples, kMaxSamples).display_range(16, 128).default_value(32),
-    pfx::desc::param("resolution").label("Working resolution").group("Quality")
+        .int_range(kMinSamples, kMaxSamples)
+        .display_range(16, 128)
+        .default_value(32),
+    pfx::desc::param("resolution")
+        .label("Working resolution")
+        .group("Quality")
         .tooltip("gather mode: gather at half resolution (4x fewer samples, composited over the sharp "
                  "frame at full resolution) or at full resolution. The seed mode (16-tap disk) always blurs a "
                  "half-size copy.")
-        .items(kResolutionItems, 2).default_value(RESOLUTION_HALF),
-    pfx::desc::param("nonfinite").label("Non-finite pixels").group("Quality")
+        .items(kResolutionItems, 2)
+        .default_value(RESOLUTION_HALF),
+    pfx::desc::param("nonfinite")
+        .label("Non-finite pixels")
+        .group("Quality")
         .tooltip("What a pixel holding NaN or +-Inf (a renderer's failed sample) counts as, before any "
                  "filtering. zero: the whole pixel is black, in what the blur spreads and in the output. "
                  "clamp: NaN counts as 0 and +-Inf as +-65504 channel by channel, so a +Inf pixel spreads "
                  "over its whole circle of confusion at that brightness.")
-        .items(kNonfiniteItems, 2).default_value(NONFINITE_ZERO),
+        .items(kNonfiniteItems, 2)
+        .default_value(NONFINITE_ZERO),
 };
 
 Settings settings_from(const pfx_value* values) {

@@ -135,8 +135,8 @@ void release(pfx_import_result* result) {  // (null, like any pointer not handed
 }
 
 constexpr const char* kExtensions[] = {"obj"};
-constexpr pfx_importer_desc kObjImporter = {sizeof(pfx_importer_desc), "obj", "Wavefront OBJ", kExtensions, 1,
-                                        import, release};
+constexpr pfx_importer_desc kObjImporter = {
+    sizeof(pfx_importer_desc), "obj", "Wavefront OBJ", kExtensions, 1, import, release};
 
 constexpr const pfx_importer_desc* kImporters[] = {&kObjImporter};
 

@@ -17,6 +17,7 @@
 
 #include <pfx/cpp/declaration.hpp>
 #include <pfx/cpp/gl_program.hpp>
+#include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include <algorithm>
@@ -145,7 +146,8 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   if (settings.mode != MODE_BRUTE) {
     // The GPU modes read the depth to bound their tiles; the CPU grid reads nothing.
     auto cull = d.custom_pass("cull").tag(TAG_PREPARE | TAG_CULL);
-    if (settings.mode == MODE_TILED || settings.mode == MODE_CLUSTERED) cull.input(PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST);
+    if (settings.mode == MODE_TILED || settings.mode == MODE_CLUSTERED)
+      cull.input(PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST);
   }
   auto shade = d.pass("shade", PFX_OUTPUT_NAME)
                    .input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST)
@@ -371,18 +373,18 @@ const char* report_json(void* self) {
 
 }  // namespace
 
-const pfx_effect_desc kTiledLightsEffect = {
-    sizeof(pfx_effect_desc),
-    "tiledlights",
-    "Tiled lights",
-    "Lights the G-buffer with many point lights (a 1 / (1 + d^2) falloff) and adds them to the colour; culled by "
-    "brute force, sub-frustums culled on the CPU, GPU tiles or GPU clusters, all giving the same image.",
-    kParams,
-    PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kTiledLightsEffect =
+    pfx::desc::effect("tiledlights")
+        .label("Tiled lights")
+        .description(
+            "Lights the G-buffer with many point lights (a 1 / (1 + d^2) falloff) and adds them to the "
+            "colour; culled by brute force, sub-frustums culled on the CPU, GPU tiles or GPU clusters, all "
+            "giving the same image.")
+        .params(kParams, PARAM_COUNT)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_tiledlights

@@ -16,24 +16,30 @@ namespace {
 const pfx_enum_item kItems[] = {{"a", "A"}, {"b", "B"}, {"c", "C"}};
 
 const pfx_param_desc kParams[] = {
-    pfx::desc::param("f").label("F")
+    pfx::desc::param("f")
+        .label("F")
         .tooltip("A float.")
-        .float_range(-2, 65504).display_range(0, 8).step(0.1).default_value(1),
-    pfx::desc::param("i").label("I")
-        .tooltip("An int.")
-        .int_range(1, 12).display_range(1, 6).default_value(3),
-    pfx::desc::param("b").label("B")
-        .tooltip("A bool.")
-        .boolean().default_value(0),
-    pfx::desc::param("e").label("E")
-        .tooltip("An enum.")
-        .items(kItems, 3).default_value(0),
-    pfx::desc::param("c").label("C")
+        .float_range(-2, 65504)
+        .display_range(0, 8)
+        .step(0.1)
+        .default_value(1),
+    pfx::desc::param("i").label("I").tooltip("An int.").int_range(1, 12).display_range(1, 6).default_value(3),
+    pfx::desc::param("b").label("B").tooltip("A bool.").boolean().default_value(0),
+    pfx::desc::param("e").label("E").tooltip("An enum.").items(kItems, 3).default_value(0),
+    pfx::desc::param("c")
+        .label("C")
         .tooltip("A colour.")
-        .color_range(0, 16).display_range(0, 1).step(0.01).default_value(1, 1, 1),
-    pfx::desc::param("v").label("V")
+        .color_range(0, 16)
+        .display_range(0, 1)
+        .step(0.01)
+        .default_value(1, 1, 1),
+    pfx::desc::param("v")
+        .label("V")
         .tooltip("A vector with an infinite hard range.")
-        .vec2_range(-INFINITY, INFINITY).display_range(-5, 5).step(0.1).default_value(0, 0),
+        .vec2_range(-INFINITY, INFINITY)
+        .display_range(-5, 5)
+        .step(0.1)
+        .default_value(0, 0),
 };
 
 pfx_effect_desc effect() {

@@ -164,7 +164,9 @@ class Plugin {
 template <const Plugin& P>
 struct Entry {
   static uint32_t effect_count() { return P.effect_count_; }
-  static const pfx_effect_desc* get_effect(uint32_t index) { return index < P.effect_count_ ? P.effects_[index] : nullptr; }
+  static const pfx_effect_desc* get_effect(uint32_t index) {
+    return index < P.effect_count_ ? P.effects_[index] : nullptr;
+  }
   static constexpr pfx_effect_factory kEffects = {sizeof(pfx_effect_factory), effect_count, get_effect};
 
   static uint32_t importer_count() { return P.importer_count_; }
@@ -179,12 +181,14 @@ struct Entry {
   }
   static void deinit() { P.on_deinit_(); }
   static const void* get_factory(const char* factory_id) {
-    const pfx_effect_factory* effects = P.own_effect_factory_ ? P.effect_factory_ : P.effect_count_ ? &kEffects : nullptr;
+    const pfx_effect_factory* effects = P.own_effect_factory_ ? P.effect_factory_
+                                        : P.effect_count_     ? &kEffects
+                                                              : nullptr;
     return factory_for(factory_id, effects, P.references_, P.importer_count_ ? &kImporters : nullptr);
   }
 
-  static constexpr pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR, P.id_, P.name_, P.version_,
-                                       init, deinit, get_factory};
+  static constexpr pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR, P.id_,      P.name_,
+                                       P.version_,        init,          deinit,        get_factory};
 };
 
 }  // namespace pfx::plugin
