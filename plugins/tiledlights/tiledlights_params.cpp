@@ -14,7 +14,7 @@ const pfx_enum_item kModeItems[MODE_COUNT] = {
     {"clustered", "GPU clusters: tiles x exponential depth slices (compute)"}};
 
 const pfx_enum_item kRangeItems[] = {{"cutoff", "Where the light falls below the cutoff"},
-                                     {"seed", "3 sqrt(max colour), the classic tiled-shading demo's rule"}};
+                                     {"seed", "3 sqrt(max colour): a fixed rule of thumb"}};
 
 const pfx_enum_item kBaseItems[] = {{"color", "Add to the incoming colour"},
                                     {"emissive", "Add to the emissive input"}};
