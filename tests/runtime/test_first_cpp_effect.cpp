@@ -4,43 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_support.hpp"
-#include "image_texture.hpp"
 
 using pfx::app::Image;
 
-namespace {
-
-struct Rig {
-  std::unique_ptr<pfx::host::PluginRegistry> registry = pfx::test::make_registry();
-  pfx::host::ParamStore params;
-  std::unique_ptr<pfx::host::Chain> chain;
-  Rig() {
-    std::string error;
-    REQUIRE(registry->load(PFX_TEST_FIRST_EFFECT_PLUGIN, &error));
-    chain = std::make_unique<pfx::host::Chain>(*registry, params);
-    REQUIRE(chain->add("tint", &error));
-  }
-  // Renders input after the assignment; the output read back.
-  Image render(const Image& input, const std::string& assignment) {
-    std::string error;
-    REQUIRE(params.set_assignment(assignment, &error));
-    pfx::host::FrameTextures textures;
-    textures.color = pfx::app::upload_color_texture(input);
-    const uint32_t output = pfx::app::create_color_texture(input.width, input.height);
-    const bool ok = chain->render(pfx::test::make_frame(input.width, input.height), textures, output, &error);
-    INFO(error);
-    CHECK(ok);
-    Image result = pfx::app::download_color_texture(output, input.width, input.height);
-    pfx::app::delete_texture(textures.color);
-    pfx::app::delete_texture(output);
-    return result;
-  }
-};
-
-}  // namespace
-
 TEST_CASE("the C++ example plugin describes its parameter by name as written", "[first_effect]") {
-  Rig rig;
+  pfx::test::ChainRig rig(PFX_TEST_FIRST_EFFECT_PLUGIN);
+  rig.add("tint");
   const auto* info = rig.registry->find_effect("tint");
   REQUIRE(info != nullptr);
   const pfx_effect_desc* effect = info->desc;
@@ -64,8 +33,10 @@ TEST_CASE("the C++ example plugin describes its parameter by name as written", "
 
 TEST_CASE("the C++ example plugin tints every pixel, keeps alpha, and skips itself when white", "[first_effect]") {
   const Image input = pfx::test::test_image(23, 11);
-  Rig rig;
-  Image output = rig.render(input, "tint.tint=0.5,2,0.25");
+  pfx::test::ChainRig rig(PFX_TEST_FIRST_EFFECT_PLUGIN);
+  rig.add("tint");
+  rig.set("tint.tint=0.5,2,0.25");
+  Image output = rig.render(input);
   REQUIRE(rig.chain->report().passes.size() == 1);
   const float tint[3] = {0.5f, 2.0f, 0.25f};
   for (size_t i = 0; i < input.rgba.size(); ++i) {
@@ -74,7 +45,8 @@ TEST_CASE("the C++ example plugin tints every pixel, keeps alpha, and skips itse
     REQUIRE(output.rgba[i] == Approx(expected).epsilon(1.0 / 512).margin(1e-6));
   }
 
-  output = rig.render(input, "tint.tint=1,1,1");
+  rig.set("tint.tint=1,1,1");
+  output = rig.render(input);
   CHECK(rig.chain->report().passes.empty());
   CHECK(rig.chain->report().effects_skipped == std::vector<std::string>{"tint"});
   for (size_t i = 0; i < input.rgba.size(); ++i) REQUIRE(output.rgba[i] == Approx(input.rgba[i]).epsilon(1.0 / 1024));
