@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <pfx/cpp/declaration.hpp>
 #include <pfx/cpp/descriptors.hpp>
@@ -18,7 +19,7 @@ const pfx_enum_item kItems[] = {{"a", "A"}, {"b", "B"}, {"c", "C"}};
 
 const pfx_param_desc kBare = pfx::desc::param("bare").float_range(0, 4);
 const pfx_param_desc kEnum = pfx::desc::param("pick").items(kItems).default_value(2).display_default(1);
-const pfx_param_desc kSteps = pfx::desc::param("steps").int_range(1, 9).display_range(2, 5).logarithmic();
+const pfx_param_desc kSteps = pfx::desc::param("steps").int_range(1, 9).display_range(2, 5).logarithmic().default_value(3);
 
 pfx_status no_create(const pfx_host*, void**) { return PFX_ERROR; }
 void no_destroy(void*) {}
@@ -57,9 +58,15 @@ TEST_CASE("a parameter's fields left out take the documented defaults", "[kit]")
   CHECK((kSteps.display_min == 2 && kSteps.display_max == 5));
   CHECK(kSteps.flags == PFX_PARAM_LOGARITHMIC);
 
+  // Every default is one pfx-validate accepts, but for the tooltip a UI needs: that one is the
+  // author's to write.
   for (const pfx_param_desc* p : {&kBare, &kEnum, &kSteps}) {
     INFO(p->id);
-    CHECK(pfx::validate::param_descriptor_problems(*p).empty());
+    CHECK(pfx::validate::param_descriptor_problems(*p) ==
+          std::vector<std::string>{"parameter '" + std::string(p->id) + "': no tooltip"});
+    pfx_param_desc with_tooltip = *p;
+    with_tooltip.tooltip = "What it does.";
+    CHECK(pfx::validate::param_descriptor_problems(with_tooltip).empty());
   }
   CHECK(std::string(kEffect.label) == "e");
   CHECK(std::string(kEffect.description).empty());
