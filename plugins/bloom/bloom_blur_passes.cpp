@@ -1,13 +1,13 @@
 // The Gaussian modes as declared passes.
 //
-// gaussian (seed 002), one buffer of ceil(frame / downscale) blocks (bloom_levels.hpp):
+// gaussian (one separable Gaussian), one buffer of ceil(frame / downscale) blocks (bloom_levels.hpp):
 //   bright      color -> blur0              (block average of each pixel's max(c - threshold, 0))
-//   blur_y0     blur0 -> blur_tmp0          (vertical Gaussian, as the seed: vertical first)
+//   blur_y0     blur0 -> blur_tmp0          (vertical Gaussian first)
 //   blur_x0     blur_tmp0 -> blur0_out      (horizontal)
 //   composite   color * tone_scale + bilinear(blur0_out) -> output
 //
-// mgf (seed 004), buffers of blocks of 4, 8 ... pixels; each Gaussian has deviation 2.5 texels of
-// its buffer and the next buffer is made from the previous blurred one, as in the seed:
+// mgf (Kawase's multi-Gaussian), buffers of blocks of 4, 8 ... pixels; each Gaussian has deviation 2.5 texels of
+// its buffer and the next buffer is made from the previous blurred one, as Kawase does:
 //   bright      color -> blur0              (block average of 4x4 bright parts; with karis Karis-weighted)
 //   blur_x i    blur i (i = 0) or gauss i-1 (each tap the 2x2 texels it covers) -> blur_tmp i
 //   blur_y i    blur_tmp i -> gauss i
@@ -28,7 +28,7 @@ pfx_pass_input frame_texels() { return input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NE
 
 void declare_bright(DeclarationBuilder& out, const LevelPlan& plan) {
   out.target(kBlurNames[0], plan.width[0], plan.height[0]);
-  out.pass("bright", kBlurNames[0], {frame_texels()}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, pass_tag(PASS_BOX_BRIGHT, 0));
+  out.pass("bright", kBlurNames[0]).input(frame_texels()).tag(pass_tag(PASS_BOX_BRIGHT, 0));
 }
 
 void set_blur_uniforms(GLuint program, double deviation, int half_taps, bool horizontal, bool finer_source) {
@@ -49,15 +49,14 @@ void declare_gaussian(const Settings& s, const LevelPlan& plan, DeclarationBuild
     declare_bright(out, plan);
     out.target(kTempNames[0], plan.width[0], plan.height[0]);
     out.target(kGaussNames[0], plan.width[0], plan.height[0]);
-    out.pass(kBlurYNames[0], kTempNames[0], {linear_border(kBlurNames[0])}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
-             pass_tag(PASS_BLUR_Y, 0));
-    out.pass(kBlurXNames[0], kGaussNames[0], {linear_border(kTempNames[0])}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
-             pass_tag(PASS_BLUR_X, 0));
-    out.pass("composite", PFX_OUTPUT_NAME, {frame_texels(), linear_edge(kGaussNames[0])}, PFX_BLEND_NONE,
-             PFX_LOAD_DONT_CARE, pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));
+    out.pass(kBlurYNames[0], kTempNames[0]).input(linear_border(kBlurNames[0])).tag(pass_tag(PASS_BLUR_Y, 0));
+    out.pass(kBlurXNames[0], kGaussNames[0]).input(linear_border(kTempNames[0])).tag(pass_tag(PASS_BLUR_X, 0));
+    out.pass("composite", PFX_OUTPUT_NAME)
+        .input(frame_texels())
+        .input(linear_edge(kGaussNames[0]))
+        .tag(pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));
   } else {  // only the tone scale changes the frame
-    out.pass("composite", PFX_OUTPUT_NAME, {frame_texels()}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
-             pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));
+    out.pass("composite", PFX_OUTPUT_NAME).input(frame_texels()).tag(pass_tag(PASS_GAUSSIAN_COMPOSITE, 0));
   }
 }
 
@@ -67,14 +66,11 @@ void declare_mgf(const Settings&, const LevelPlan& plan, DeclarationBuilder& out
     out.target(kTempNames[i], plan.width[i], plan.height[i]);
     out.target(kGaussNames[i], plan.width[i], plan.height[i]);
     const char* source = i == 0 ? kBlurNames[0] : kGaussNames[i - 1];
-    out.pass(kBlurXNames[i], kTempNames[i], {linear_border(source)}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
-             pass_tag(PASS_BLUR_X, i));
-    out.pass(kBlurYNames[i], kGaussNames[i], {linear_border(kTempNames[i])}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
-             pass_tag(PASS_BLUR_Y, i));
+    out.pass(kBlurXNames[i], kTempNames[i]).input(linear_border(source)).tag(pass_tag(PASS_BLUR_X, i));
+    out.pass(kBlurYNames[i], kGaussNames[i]).input(linear_border(kTempNames[i])).tag(pass_tag(PASS_BLUR_Y, i));
   }
-  out.pass("composite", PFX_OUTPUT_NAME, {frame_texels()}, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
-           pass_tag(PASS_MGF_COMPOSITE, 0));
-  for (int i = 0; i < plan.count; ++i) out.add_input(linear_edge(kGaussNames[i]));
+  auto composite = out.pass("composite", PFX_OUTPUT_NAME).input(frame_texels()).tag(pass_tag(PASS_MGF_COMPOSITE, 0));
+  for (int i = 0; i < plan.count; ++i) composite.input(linear_edge(kGaussNames[i]));
 }
 
 void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& plan, const pfx_pass_context& context) {
@@ -84,7 +80,7 @@ void run_blur_pass(const GLuint* programs, const Settings& s, const LevelPlan& p
   switch (tag_kind(context.user_tag)) {
     case PASS_BOX_BRIGHT: {
       program = programs[PROGRAM_BOX_BRIGHT];
-      // seed 002 thresholds every channel on its own; the mgf's seed leaves the bright pass open,
+      // gaussian thresholds every channel on its own; Kawase leaves the mgf's bright pass open,
       // so it takes the bloom's own (the chain's, with its measure).
       set_bright_uniforms(program, s, mgf ? -1 : 2);
       glProgramUniform1i(program, 4, plan.block);

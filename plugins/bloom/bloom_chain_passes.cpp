@@ -1,4 +1,5 @@
-// The pyramid modes as declared passes (chain: seed 000; chain13: Jimenez's 13 taps).
+// The pyramid modes as declared passes (chain: the half-size pyramid of Call of Duty: Advanced
+// Warfare; chain13: Jimenez's 13-tap downsample).
 //
 //   bright      color   -> level0            (5 taps, or 13 with a Karis average, x strength/levels;
 //                                              chain with karis: the 5 taps Karis-weighted)
@@ -18,19 +19,22 @@ void declare_chain(const Settings&, const LevelPlan& plan, DeclarationBuilder& o
   const int levels = plan.count;
   for (int i = 0; i < levels; ++i) out.target(kLevelNames[i], plan.width[i], plan.height[i]);
   // The frame is read texel by texel (the bright pass filters in arithmetic), the levels with the
-  // seed's wrap modes: black border going down, edge going up.
-  out.pass("bright", kLevelNames[0], {input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE)},
-           PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, pass_tag(PASS_BRIGHT, 0));
+  // pyramid's usual wrap modes: black border going down, edge going up.
+  out.pass("bright", kLevelNames[0]).input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).tag(pass_tag(PASS_BRIGHT, 0));
   for (int i = 1; i < levels; ++i)
-    out.pass(kDownNames[i], kLevelNames[i], {input(kLevelNames[i - 1], PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)},
-             PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, pass_tag(PASS_DOWN, i));
+    out.pass(kDownNames[i], kLevelNames[i])
+        .input(kLevelNames[i - 1], PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)
+        .tag(pass_tag(PASS_DOWN, i));
   for (int i = levels - 2; i >= 0; --i)
-    out.pass(kUpNames[i], kLevelNames[i], {input(kLevelNames[i + 1], PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE)},
-             PFX_BLEND_ADD, PFX_LOAD_KEEP, pass_tag(PASS_UP, i));
-  out.pass("composite", PFX_OUTPUT_NAME,
-           {input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE),
-            input(kLevelNames[0], PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE)},
-           PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, pass_tag(PASS_COMPOSITE, 0));
+    out.pass(kUpNames[i], kLevelNames[i])
+        .input(kLevelNames[i + 1])
+        .blend(PFX_BLEND_ADD)
+        .load(PFX_LOAD_KEEP)
+        .tag(pass_tag(PASS_UP, i));
+  out.pass("composite", PFX_OUTPUT_NAME)
+      .input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST)
+      .input(kLevelNames[0])
+      .tag(pass_tag(PASS_COMPOSITE, 0));
 }
 
 void run_chain_pass(const GLuint* programs, const Settings& s, const LevelPlan& plan, const pfx_pass_context& context) {
@@ -40,7 +44,7 @@ void run_chain_pass(const GLuint* programs, const Settings& s, const LevelPlan& 
     case PASS_BRIGHT: {
       program = programs[thirteen ? PROGRAM_BRIGHT13 : PROGRAM_BRIGHT];
       set_bright_uniforms(program, s);
-      // Every level gets strength / levels, as in the seed: each adds the same light going up.
+      // Every level gets strength / levels, as in the pyramid: each adds the same light going up.
       const double per_level = s.strength / plan.count;
       glProgramUniform3f(program, 4, static_cast<float>(per_level * s.tint[0]), static_cast<float>(per_level * s.tint[1]),
                          static_cast<float>(per_level * s.tint[2]));

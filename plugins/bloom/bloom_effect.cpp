@@ -7,6 +7,7 @@
 #include <new>
 #include <string>
 
+#include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "bloom_gl.hpp"
@@ -39,7 +40,7 @@ const ProgramSpec kPrograms[PROGRAM_COUNT] = {
     {"gaussian_composite", shaders::gaussian_composite}, {"mgf_composite", shaders::mgf_composite}};
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_host(host) || !out) return PFX_INVALID_ARGUMENT;
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -68,8 +69,7 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
     case MODE_MGF: declare_mgf(settings, plan, inst->declaration); break;
     default: return PFX_INVALID_ARGUMENT;
   }
-  inst->declaration.finish(out);
-  return PFX_OK;
+  return inst->declaration.finish(out);
 }
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
@@ -95,18 +95,18 @@ const char* report_json(void* self) {
 
 }  // namespace
 
-const pfx_effect_desc kBloomEffect = {
-    sizeof(pfx_effect_desc),
-    "bloom",
-    "Bloom",
-    "Light above a threshold spreads into its surroundings: the seed's half-size pyramid (chain), "
-    "its 13-tap variant (chain13), a separable Gaussian (gaussian) or Kawase's multi-Gaussian (mgf).",
-    kParams,
-    PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kBloomEffect =
+    pfx::desc::effect("bloom")
+        .label("Bloom")
+        .description(
+            "Light above a threshold spreads into its surroundings: a half-size pyramid in the style of Call "
+            "of Duty: Advanced Warfare (chain), its 13-tap variant (chain13), a separable Gaussian (gaussian) "
+            "or Kawase's multi-Gaussian (mgf).")
+        .params(kParams, PARAM_COUNT)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_bloom

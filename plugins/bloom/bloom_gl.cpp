@@ -1,6 +1,7 @@
 #include "bloom_gl.hpp"
 
 #include <pfx/cpp/gl_program.hpp>
+#include <pfx/cpp/plugin_entry.hpp>
 
 #include "bloom_params.hpp"
 
@@ -17,25 +18,17 @@ bool load_gl(const pfx_host* host) {
   return pfx::gl::load_gl_or_log(host, "bloom");
 }
 
-GLuint build_program(const pfx_host* host, const char* name, const std::string& fragment_source) {
-  try {
-    std::string error;
-    GLuint program = pfx::gl::build_fullscreen_program(fragment_source.c_str(), &error);
-    if (!program) log_error(host, (std::string("bloom: shader '") + name + "': " + error).c_str());
-    return program;
-  } catch (...) {  // only std::bad_alloc; nothing may cross the ABI
-    return 0;
-  }
-}
-
 bool build_programs(const pfx_host* host, const ProgramSpec* specs, int count, GLuint* out) {
   for (int i = 0; i < count; ++i) {
-    try {
-      out[i] = build_program(host, specs[i].name, specs[i].source());
-    } catch (...) {  // std::bad_alloc assembling a source; nothing may cross the ABI
-      out[i] = 0;
-    }
-    if (!out[i]) return false;
+    out[i] = 0;
+    // Assembling a source or a message can throw std::bad_alloc, which must not cross the ABI.
+    const pfx_status built = pfx::plugin::without_exceptions([&] {
+      std::string error;
+      out[i] = pfx::gl::build_fullscreen_program(specs[i].source().c_str(), &error);
+      if (!out[i]) log_error(host, (std::string("bloom: shader '") + specs[i].name + "': " + error).c_str());
+      return out[i] ? PFX_OK : PFX_GL_ERROR;
+    });
+    if (built != PFX_OK) return false;
   }
   return true;
 }

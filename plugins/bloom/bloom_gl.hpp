@@ -15,17 +15,15 @@ struct Settings;
 // False (after logging) when the host's context lacks OpenGL 4.5 core.
 bool load_gl(const pfx_host* host);
 
-// A program of the shared full-screen-triangle vertex shader and this fragment shader; 0 after
-// logging "bloom: shader 'NAME': <compiler message>". Never throws.
-GLuint build_program(const pfx_host* host, const char* name, const std::string& fragment_source);
-
 // A program to build: its name for messages and the function assembling its fragment shader.
 struct ProgramSpec {
   const char* name;
   std::string (*source)();
 };
 
-// Builds count programs into out[0 .. count-1]; false (after logging) when any fails, with the
+// Builds count programs (the shared full-screen-triangle vertex shader and each spec's fragment
+// shader) into out[0 .. count-1]; false (after logging "bloom: shader 'NAME': <compiler message>")
+// when any fails, with the
 // ones built so far left in out for the caller to delete. Never throws.
 bool build_programs(const pfx_host* host, const ProgramSpec* specs, int count, GLuint* out);
 
@@ -34,7 +32,7 @@ bool build_programs(const pfx_host* host, const ProgramSpec* specs, int count, G
 void set_nonfinite_uniform(GLuint program, const Settings& s);
 
 // The bright programs' shared uniforms (locations 1-3 and 600, shaders_common.cpp); measure_override
-// >= 0 replaces the settings' measure (2: every channel on its own, as seed 002).
+// >= 0 replaces the settings' measure (2: every channel on its own, as the gaussian mode).
 void set_bright_uniforms(GLuint program, const Settings& s, int measure_override = -1);
 
 // Binds the program, draws the full-screen triangle, unbinds the program.

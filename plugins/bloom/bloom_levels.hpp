@@ -2,8 +2,8 @@
 // always build the same pyramid.
 //
 // chain and chain13: level 0 is half the frame and every next level half the previous, rounded
-// down as the seed does (1920x1080 -> 960x540 -> 480x270 ...), each level resampled from the one
-// before across its whole extent. Never below one pixel: a 1x1 or 2x3 frame still gets a 1x1
+// down (1920x1080 -> 960x540 -> 480x270 ...), each level resampled from the one before across
+// its whole extent. Never below one pixel: a 1x1 or 2x3 frame still gets a 1x1
 // level. A pyramid stops at the first level that is 1x1, since more 1x1 levels would only repeat
 // it; asking for more levels than that is clamped, not refused.
 //
@@ -13,7 +13,7 @@
 // which sits centred on them (the padding, fewer than d pixels, split with the smaller half
 // before), and the padding counts as black. Every pixel then adds 1/d^2 of its light to exactly
 // one texel, at any size. mgf's buffer i + 1 has ceil(n_i / 2) texels, each the 2x2 texels of
-// buffer i that it covers (black past its edge). The level count is still the seed's (counted on
+// buffer i that it covers (black past its edge). The level count is still the pyramid's (counted on
 // the rounded-down sizes), so the number of Gaussians, and the ideal, do not depend on the padding.
 #pragma once
 

@@ -46,10 +46,10 @@ constexpr double kHalfMax = 65504.0;
 // on the way up (each store rounding up by at most half a half-float ulp) stay below 65520, where
 // half floats overflow to infinity.
 constexpr double kLevelSumMax = 65000.0;
-// Below this a brightness counts as zero (the seed's guard against dividing by zero).
+// Below this a brightness counts as zero (a guard against dividing by zero).
 constexpr double kBrightnessFloor = 1e-5;
-// The seed's Kawase multi-Gaussian: a Gaussian of this deviation, in texels of each buffer, with
-// this many taps (seed 004's CalcBlurParam: the centre and 7 on each side).
+// Kawase's multi-Gaussian: a Gaussian of this deviation, in texels of each buffer, with
+// this many taps (Kawase's: the centre and 7 on each side).
 constexpr double kMgfDeviation = 2.5;
 constexpr int kMgfTaps = 15;
 // The widest separable Gaussian the shaders take (taps on one side of the centre).

@@ -1,4 +1,4 @@
-// The bloom plugin's entry point: the effect factory and the CPU reference factory. Everything here
+// The bloom plugin's entry point: its two effects and the CPU reference factory. Everything here
 // is static data; GL is loaded only when an instance is created.
 #include <cstring>
 
@@ -15,13 +15,6 @@
 
 namespace pfx_bloom {
 namespace {
-
-const pfx_effect_desc* const kEffects[] = {&kBloomEffect, &kGlareEffect};
-
-uint32_t effect_count() { return 2; }
-const pfx_effect_desc* get_effect(uint32_t index) { return index < 2 ? kEffects[index] : nullptr; }
-
-const pfx_effect_factory kEffectFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
 
 bool is_bloom(const char* effect_id) { return effect_id && std::strcmp(effect_id, "bloom") == 0; }
 bool is_glare(const char* effect_id) { return effect_id && std::strcmp(effect_id, "glare") == 0; }
@@ -47,24 +40,17 @@ pfx_status evaluate(const pfx_reference_request* request) {
   });
 }
 
-const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+constexpr pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+constexpr const pfx_effect_desc* kEffects[] = {&kBloomEffect, &kGlareEffect};
 
-// No GL and no state: init is trivially idempotent.
-pfx_status plugin_init(const pfx_host* host) {
-  return pfx::plugin::usable_host(host) ? PFX_OK : PFX_INVALID_ARGUMENT;
-}
-
-void plugin_deinit() {}
-
-const void* plugin_get_factory(const char* factory_id) {
-  return pfx::plugin::factory_for(factory_id, &kEffectFactory, &kReferenceFactory);
-}
-
-const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR,  PFX_ABI_MINOR,      "org.pfx.bloom",
-                          "pfx bloom",       "0.1.0",        plugin_init,        plugin_deinit,
-                          plugin_get_factory};
+// No GL and no state: the kit's init (the host's check) is all it needs.
+constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.bloom")
+                             .name("pfx bloom")
+                             .version("0.1.0")
+                             .effects(kEffects)
+                             .references(&kReferenceFactory);
 
 }  // namespace
 }  // namespace pfx_bloom
 
-extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &pfx_bloom::kEntry; }
+PFX_PLUGIN_ENTRY(pfx_bloom::kPlugin)

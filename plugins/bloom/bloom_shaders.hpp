@@ -10,7 +10,7 @@ namespace pfx_bloom::shaders {
 
 // chain: frame -> level 0. 4: vec3 gain (strength / levels * tint), 5: float cap per level.
 std::string bright();
-// chain: level i-1 -> level i, the seed's 4x4 bilinear taps (8x8 texels).
+// chain: level i-1 -> level i, the pyramid's 4x4 bilinear taps (8x8 texels).
 std::string down();
 // chain, chain13: level i+1 -> added into level i, the 3x3 tent from four half-texel taps.
 std::string up();

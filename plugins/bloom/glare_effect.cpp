@@ -1,4 +1,4 @@
-// The "glare" effect on the GPU: seed 004's star streaks as declared passes.
+// The "glare" effect on the GPU: Kawase's star streaks as declared passes.
 //
 //   bright        color -> bright            (block average of the bloom's bright part: blocks of 1, 2 or
 //                                              4 pixels covering the frame, rounded up, bloom_levels.hpp)
@@ -7,7 +7,7 @@
 //   composite     color + strength * tint * bilinear(streaks) -> output
 //
 // Each pass's weights a^(b*s) are normalised to sum to 1 and the last pass's divided by the streak
-// count, so strength 1 spreads exactly the light above the threshold over all streaks (the seed
+// count, so strength 1 spreads exactly the light above the threshold over all streaks (Kawase's
 // leaves them unnormalised: at a = 0.925 each of its streaks carries 9.5 * 3.7 * 1.4 = 49 times the light).
 #include "glare_effect.hpp"
 
@@ -15,6 +15,7 @@
 #include <new>
 #include <string>
 
+#include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "bloom_gl.hpp"
@@ -54,7 +55,7 @@ void destroy(void* self) {
 }
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_host(host) || !out) return PFX_INVALID_ARGUMENT;
   if (!load_gl(host)) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
@@ -84,23 +85,23 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   d.target(kTempNames[0], w, h);
   d.target(kTempNames[1], w, h);
   d.target("streaks", w, h);
-  d.pass("bright", "bright", {input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE)}, PFX_BLEND_NONE,
-         PFX_LOAD_DONT_CARE, glare_tag(GLARE_PASS_BRIGHT, 0, 0));
+  d.pass("bright", "bright").input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST).tag(glare_tag(GLARE_PASS_BRIGHT, 0, 0));
   for (int j = 0; j < g.streaks; ++j)
     for (int i = 0; i < kGlarePasses; ++i) {
       const char* source = i == 0 ? "bright" : kTempNames[i - 1];
       const bool last = i == kGlarePasses - 1;
       // The first streak clears the sum, every streak adds into it.
-      d.pass(kStreakPassNames[j * kGlarePasses + i], last ? "streaks" : kTempNames[i],
-             {input(source, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)}, last ? PFX_BLEND_ADD : PFX_BLEND_NONE,
-             last ? (j == 0 ? PFX_LOAD_CLEAR : PFX_LOAD_KEEP) : PFX_LOAD_DONT_CARE, glare_tag(GLARE_PASS_STREAK, j, i));
+      d.pass(kStreakPassNames[j * kGlarePasses + i], last ? "streaks" : kTempNames[i])
+          .input(source, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_BORDER)
+          .blend(last ? PFX_BLEND_ADD : PFX_BLEND_NONE)
+          .load(last ? (j == 0 ? PFX_LOAD_CLEAR : PFX_LOAD_KEEP) : PFX_LOAD_DONT_CARE)
+          .tag(glare_tag(GLARE_PASS_STREAK, j, i));
     }
-  d.pass("composite", PFX_OUTPUT_NAME,
-         {input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE),
-          input("streaks", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE)},
-         PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, glare_tag(GLARE_PASS_COMPOSITE, 0, 0));
-  d.finish(out);
-  return PFX_OK;
+  d.pass("composite", PFX_OUTPUT_NAME)
+      .input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST)
+      .input("streaks")
+      .tag(glare_tag(GLARE_PASS_COMPOSITE, 0, 0));
+  return d.finish(out);
 }
 
 pfx_status run_pass(void* self, const pfx_pass_context* context) {
@@ -159,18 +160,17 @@ const char* report_json(void* self) {
 
 }  // namespace
 
-const pfx_effect_desc kGlareEffect = {
-    sizeof(pfx_effect_desc),
-    "glare",
-    "Glare",
-    "Star streaks from bright light (Kawase's cross filter, seed 004): 4, 6 or 8 streaks, each three "
-    "passes of 16 taps, added to the frame.",
-    kGlareParams,
-    GLARE_PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kGlareEffect =
+    pfx::desc::effect("glare")
+        .label("Glare")
+        .description(
+            "Star streaks from bright light (Kawase's cross filter): 4, 6 or 8 streaks, each three passes of "
+            "16 taps, added to the frame.")
+        .params(kGlareParams, GLARE_PARAM_COUNT)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_bloom

@@ -1,4 +1,4 @@
-// The "glare" effect descriptor (GPU side): seed 004's star streaks.
+// The "glare" effect descriptor (GPU side): Kawase's star streaks.
 #pragma once
 
 #include <pfx/effect.h>

@@ -13,7 +13,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 const pfx_enum_item kStreakItems[] = {{"4", "4 streaks (a cross)"}, {"6", "6 streaks"}, {"8", "8 streaks"}};
 const pfx_enum_item kResolutionItems[] = {
-    {"full", "Full resolution (the seed's)"}, {"half", "Half resolution"}, {"quarter", "Quarter resolution"}};
+    {"full", "Full resolution (Kawase's)"}, {"half", "Half resolution"}, {"quarter", "Quarter resolution"}};
 
 }  // namespace
 
@@ -26,27 +26,52 @@ const pfx_param_desc kGlareParams[GLARE_PARAM_COUNT] = {
     measure_param("How a pixel's brightness is measured against the threshold: the largest of R, G, B or "
                   "Rec. 709 luminance."),
     firefly_clamp_param(),
-    pfx::desc::param("strength", "Strength",
-         "How much light the streaks add: 1 spreads exactly the light above the threshold over all "
-         "streaks together. 0 turns the effect off (no pass runs).",
-         "", "Glare", PFX_PARAM_FLOAT, 0, 100, 0, 4, 0.05, {{1.0}}),
-    pfx::desc::param("tint", "Tint", "Colour the added light is multiplied by.", "", "Glare", PFX_PARAM_COLOR, 0, 16, 0, 1,
-         0.01, {{1.0, 1.0, 1.0}}),
-    pfx::desc::with_items(pfx::desc::param("streaks", "Streaks",
-                    "How many streaks leave each bright pixel, evenly spaced (a cross filter's 4, 6 or 8).",
-                    "", "Glare", PFX_PARAM_ENUM, 0, 2, 0, 2, 1, {{0}}),
-               kStreakItems, 3),
-    pfx::desc::param("angle", "Angle offset",
-         "Direction of the first streak, counter-clockwise from the x axis (the seed's 45).",
-         "deg", "Glare", PFX_PARAM_FLOAT, -360, 360, 0, 90, 1, {{45.0}}),
-    pfx::desc::param("attenuation", "Attenuation",
-         "How fast a streak fades: tap weights are a^(b*s), s texels along it (Kawase: 0.9 .. 0.95). "
-         "Closer to 1 is longer.",
-         "", "Glare", PFX_PARAM_FLOAT, 0.9, 0.95, 0.9, 0.95, 0.005, {{0.925}}),
-    pfx::desc::with_items(pfx::desc::param("resolution", "Resolution",
-                    "Resolution the streaks are drawn at: lower is faster and softer across the streak.",
-                    "", "Glare", PFX_PARAM_ENUM, 0, 2, 0, 2, 1, {{0}}),
-               kResolutionItems, 3),
+    pfx::desc::param("strength")
+        .label("Strength")
+        .group("Glare")
+        .tooltip("How much light the streaks add: 1 spreads exactly the light above the threshold over all "
+                 "streaks together. 0 turns the effect off (no pass runs).")
+        .float_range(0, 100)
+        .display_range(0, 4)
+        .step(0.05)
+        .default_value(1.0),
+    pfx::desc::param("tint")
+        .label("Tint")
+        .group("Glare")
+        .tooltip("Colour the added light is multiplied by.")
+        .color_range(0, 16)
+        .display_range(0, 1)
+        .step(0.01)
+        .default_value(1.0, 1.0, 1.0),
+    pfx::desc::param("streaks")
+        .label("Streaks")
+        .group("Glare")
+        .tooltip("How many streaks leave each bright pixel, evenly spaced (a cross filter's 4, 6 or 8).")
+        .items(kStreakItems, 3)
+        .default_value(0),
+    pfx::desc::param("angle")
+        .label("Angle offset")
+        .unit("deg")
+        .group("Glare")
+        .tooltip("Direction of the first streak, counter-clockwise from the x axis (Kawase's 45).")
+        .float_range(-360, 360)
+        .display_range(0, 90)
+        .step(1)
+        .default_value(45.0),
+    pfx::desc::param("attenuation")
+        .label("Attenuation")
+        .group("Glare")
+        .tooltip("How fast a streak fades: tap weights are a^(b*s), s texels along it (Kawase: 0.9 .. 0.95). "
+                 "Closer to 1 is longer.")
+        .float_range(0.9, 0.95)
+        .step(0.005)
+        .default_value(0.925),
+    pfx::desc::param("resolution")
+        .label("Resolution")
+        .group("Glare")
+        .tooltip("Resolution the streaks are drawn at: lower is faster and softer across the streak.")
+        .items(kResolutionItems, 3)
+        .default_value(0),
     nonfinite_param(),
 };
 

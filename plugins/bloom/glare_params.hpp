@@ -1,4 +1,4 @@
-// The "glare" effect's parameters (seed 004's star streaks) and the settings read out of them once,
+// The "glare" effect's parameters (Kawase's star streaks) and the settings read out of them once,
 // for the GPU passes and the CPU model alike. The bright pass is the bloom's, with the same
 // threshold, knee, measure and firefly clamp parameters.
 #pragma once
@@ -26,7 +26,7 @@ enum GlareParam : uint32_t {
   GLARE_PARAM_COUNT
 };
 
-// Seed 004: 3 passes of 16 taps per streak, tap s of pass i at b*s texels with b = 4^i.
+// Kawase's cross filter: 3 passes of 16 taps per streak, tap s of pass i at b*s texels with b = 4^i.
 constexpr int kGlarePasses = 3;
 constexpr int kGlareTaps = 16;
 constexpr int kMaxStreaks = 8;

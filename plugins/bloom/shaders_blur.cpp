@@ -1,4 +1,4 @@
-// The programs of the Gaussian modes (gaussian: seed 002; mgf: seed 004's multi-Gaussian), and the
+// The programs of the Gaussian modes (gaussian: one separable Gaussian; mgf: Kawase's multi-Gaussian), and the
 // box bright pass they share with glare.
 #include "bloom_shaders.hpp"
 #include "shaders_common.hpp"

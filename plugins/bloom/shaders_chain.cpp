@@ -1,4 +1,4 @@
-// The pyramid modes' programs: chain (seed 000) and chain13 (13-tap downsample, Karis average).
+// The pyramid modes' programs: chain (the half-size pyramid) and chain13 (13-tap downsample, Karis average).
 #include "bloom_shaders.hpp"
 #include "shaders_common.hpp"
 
@@ -44,7 +44,7 @@ vec3 tent(sampler2D s) {
 
 }  // namespace
 
-// The seed's five taps: the centre (weight 4) and one texel off along each diagonal (weight 1),
+// The pyramid's five-tap bright pass: the centre (weight 4) and one texel off along each diagonal (weight 1),
 // each tap's bright part, / 8. With u_karis each weight is also multiplied by the tap's Karis
 // weight and the sum divided by the weights' sum.
 std::string bright() {

@@ -17,8 +17,8 @@ bvec3 not_finite(vec3 c) { return greaterThanEqual(floatBitsToUint(c) & uvec3(0x
 )glsl";
 
 // NaN is tested on the bits: a compiler may assume floats are never NaN and fold isnan() away.
-// Measure 0: max(R,G,B) with the seed's ratio; 1: Rec. 709 luminance with the same ratio;
-// 2: every channel thresholded on its own (seed 002's max(c - threshold, 0)).
+// Measure 0: max(R,G,B) with the pyramid's ratio; 1: Rec. 709 luminance with the same ratio;
+// 2: every channel thresholded on its own (the separable Gaussian bloom's max(c - threshold, 0)).
 const char* const kBrightCommon = R"glsl(
 layout(location = 1) uniform vec2 u_curve;
 layout(location = 2) uniform int u_measure;

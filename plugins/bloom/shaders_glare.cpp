@@ -1,4 +1,4 @@
-// The glare effect's programs (seed 004's star streaks); its bright pass is box_bright.
+// The glare effect's programs (Kawase's star streaks); its bright pass is box_bright.
 #include "bloom_shaders.hpp"
 #include "shaders_common.hpp"
 

@@ -1,15 +1,16 @@
-// The thin-lens camera shared by every mode and by the CPU references (seed 001, corrected).
+// The thin-lens camera shared by every mode and by the CPU references: the thin-lens circle of
+// confusion, with the horizontal field of view computed exactly.
 //
 // The sensor sits at the image distance I that reproduces the frame's horizontal field of view on a
 // sensor of the given width; the lens focuses a plane at distance P, so its focal length is
 // F = 1 / (1/P + 1/I) and its aperture A = F / N. A point at view depth D then blurs into a circle
 // of diameter (on the sensor, in mm)
 //
-//   CoC = A F (D - P) / (D (P - F))               (the seed's formula, signed: near negative)
+//   CoC = A F (D - P) / (D (P - F))               (the textbook thin-lens formula, signed: near negative)
 //       = I^2 (1/P - 1/D) / (N (1 + I/P))         (substituting F and A; all in mm)
 //
 // and in pixels CoC * width / sensor width. The second form has no P - F denominator (P == F is the
-// seed's division by zero) and stays finite for P or D at infinity, so it is what everything here
+// first form's division by zero) and stays finite for P or D at infinity, so it is what everything here
 // evaluates: CoC_px = C * (1/P - 1/D) with D and P in metres and C from the camera and lens.
 #pragma once
 
@@ -21,8 +22,8 @@
 
 namespace pfx_dof {
 
-// The true horizontal field of view of a perspective camera: 2 atan(tan(fovy / 2) aspect). (The
-// seed used fovy * aspect, which is only close for narrow angles.)
+// The true horizontal field of view of a perspective camera: 2 atan(tan(fovy / 2) aspect). (Not
+// fovy * aspect, which is only close for narrow angles.)
 double horizontal_fov(double fovy, double aspect);
 
 // Empty when the frame's camera can drive the lens model, else why not (a degenerate field of view,

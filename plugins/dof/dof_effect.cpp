@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <pfx/cpp/declaration.hpp>
 #include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/gl_program.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
@@ -42,7 +43,8 @@ enum Program {
   PROGRAM_COUNT
 };
 
-constexpr uint32_t kMaxTargets = 8, kMaxPasses = 8;
+// What declare hands the host (the gather mode's five targets and five passes at most).
+using Declaration = pfx::desc::DeclarationBuilder<8, 8>;
 
 // The inputs of every pass, by program; each pass's tag is its program.
 struct PassInputs {
@@ -55,9 +57,7 @@ struct Instance {
   GLuint rings = 0;         // shader storage: the gather's ring samples
   int ring_count = 0;       // the sample count they were made for
   PassInputs inputs{};
-  // What declare hands the host; valid until the next declare or destroy, as the ABI asks.
-  pfx_target_desc targets[kMaxTargets] = {};
-  pfx_pass_desc passes[kMaxPasses] = {};
+  Declaration declaration;  // valid until the next declare or destroy, as the ABI asks
   char report[256] = "";
   std::string last_problem;
 };
@@ -92,7 +92,7 @@ void set_inputs(PassInputs* in) {
   in->seed_half[0] = color;
   in->seed[0] = color;
   in->seed[1] = depth;
-  in->seed[2] = {"half", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};  // the seed's bilinear taps
+  in->seed[2] = {"half", PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};  // the 16-tap disk's bilinear taps
   in->seed[3] = lens;
   // Linear: at half resolution one bilinear tap averages a 2x2 block (texel fetches ignore it).
   in->prepare[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_LINEAR, PFX_WRAP_CLAMP_TO_EDGE};
@@ -113,26 +113,25 @@ void set_inputs(PassInputs* in) {
 }
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_host(host) || !out) return PFX_INVALID_ARGUMENT;
   if (!pfx::gl::load_gl_or_log(host, "dof")) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
   inst->host = host;
-  try {
+  const pfx_status built = pfx::plugin::without_exceptions([&] {  // std::bad_alloc from a string
     const char* names[PROGRAM_COUNT] = {"lens", "seed_half", "seed", "prepare", "tiles", "dilate", "gather", "composite"};
     const std::string bodies[PROGRAM_COUNT] = {shaders::kLens,    shaders::kSeedHalf, shaders::seed_body(),
                                                shaders::kPrepare, shaders::kTiles,    shaders::kDilate,
                                                shaders::kGather,  shaders::kComposite};
     for (int i = 0; i < PROGRAM_COUNT; ++i) {
       inst->programs[i] = build(inst, names[i], bodies[i]);
-      if (!inst->programs[i]) {
-        destroy(inst);
-        return PFX_GL_ERROR;
-      }
+      if (!inst->programs[i]) return PFX_GL_ERROR;
     }
-  } catch (...) {  // std::bad_alloc from a string; nothing may cross the ABI
+    return PFX_OK;
+  });
+  if (built != PFX_OK) {
     destroy(inst);
-    return PFX_OUT_OF_MEMORY;
+    return built;
   }
   glCreateBuffers(1, &inst->rings);
   // [0, 256): the ring samples of the current count; [256, 512): the disc offsets, fixed.
@@ -161,28 +160,28 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   inst->last_problem.clear();
   const Settings s = settings_from(params);
   PassInputs& in = inst->inputs;
-  uint32_t t = 0, n = 0;
+  Declaration& d = inst->declaration;
+  d.clear();
   auto pass = [&](const char* name, const char* output, const pfx_pass_input* inputs, uint32_t count, Program tag) {
-    inst->passes[n++] = pfx::desc::fullscreen_pass(name, output, inputs, count, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE, tag);
+    d.pass(name, output).inputs(inputs, count).tag(tag);
   };
-  inst->targets[t++] = pfx::desc::fixed_target("lens", PFX_FORMAT_RG32F, 1, 1);
+  d.target("lens", 1, 1, PFX_FORMAT_RG32F);
   pass("lens", "lens", in.lens, 1, PROGRAM_LENS);
   if (s.mode == MODE_SEED) {
-    inst->targets[t++] = pfx::desc::fixed_target("half", PFX_FORMAT_RGBA16F, half_size(static_cast<int>(frame->width)),
-                                      half_size(static_cast<int>(frame->height)));
+    d.target("half", half_size(static_cast<int>(frame->width)), half_size(static_cast<int>(frame->height)));
     pass("half", "half", in.seed_half, 1, PROGRAM_SEED_HALF);
     pass("seed", PFX_OUTPUT_NAME, in.seed, 4, PROGRAM_SEED);
     std::snprintf(inst->report, sizeof inst->report, "\"mode\": \"seed\", \"taps\": 16");
   } else {
     const GatherPlan plan = plan_gather(frame->width, frame->height, s);
-    inst->targets[t++] = pfx::desc::fixed_target("work", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
-    inst->targets[t++] = pfx::desc::fixed_target("tiles", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
-    inst->targets[t++] = pfx::desc::fixed_target("dilated", PFX_FORMAT_RG16F, plan.tiles_width, plan.tiles_height);
+    d.target("work", plan.work_width, plan.work_height);
+    d.target("tiles", plan.tiles_width, plan.tiles_height, PFX_FORMAT_RG16F);
+    d.target("dilated", plan.tiles_width, plan.tiles_height, PFX_FORMAT_RG16F);
     pass("prepare", "work", in.prepare, 3, PROGRAM_PREPARE);
     pass("tiles", "tiles", in.tiles, 1, PROGRAM_TILES);
     pass("dilate", "dilated", in.dilate, 1, PROGRAM_DILATE);
     if (plan.half) {
-      inst->targets[t++] = pfx::desc::fixed_target("blur", PFX_FORMAT_RGBA16F, plan.work_width, plan.work_height);
+      d.target("blur", plan.work_width, plan.work_height);
       pass("gather", "blur", in.gather, 3, PROGRAM_GATHER);
       pass("composite", PFX_OUTPUT_NAME, in.composite, 6, PROGRAM_COMPOSITE);
     } else {
@@ -192,11 +191,7 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
                   "\"mode\": \"gather\", \"samples\": %d, \"work\": \"%dx%d\", \"tiles\": \"%dx%d\", \"dilation\": %d",
                   s.samples, plan.work_width, plan.work_height, plan.tiles_width, plan.tiles_height, plan.dilation);
   }
-  out->targets = inst->targets;
-  out->target_count = t;
-  out->passes = inst->passes;
-  out->pass_count = n;
-  return PFX_OK;
+  return d.finish(out);
 }
 
 void set_common_uniforms(GLuint program, const pfx_frame& frame, const Settings& s) {
@@ -265,18 +260,17 @@ const char* report_json(void* self) { return static_cast<Instance*>(self)->repor
 
 }  // namespace
 
-const pfx_effect_desc kDofEffect = {
-    sizeof(pfx_effect_desc),
-    "dof",
-    "Depth of field",
-    "Thin-lens depth of field from the frame's depth and camera: the seed's 16-tap disk, or a halo-free "
-    "near/far gather over 16 px CoC tiles that leaves in-focus tiles untouched.",
-    kParams,
-    PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kDofEffect =
+    pfx::desc::effect("dof")
+        .label("Depth of field")
+        .description("Thin-lens depth of field from the frame's depth and camera: a 16-tap disk gather from a "
+                     "half-size copy, or a halo-free near/far gather over 16 px CoC tiles that leaves in-focus "
+                     "tiles untouched.")
+        .params(kParams)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_dof

@@ -8,7 +8,7 @@
 
 namespace pfx_dof {
 
-// A tile covers 16 x 16 frame pixels (DESIGN.md §6: Filament's tile size).
+// A tile covers 16 x 16 frame pixels (Filament's tile size).
 constexpr int kTileFramePixels = 16;
 
 struct GatherPlan {

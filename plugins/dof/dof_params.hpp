@@ -34,7 +34,7 @@ enum Nonfinite : int { NONFINITE_ZERO = 0, NONFINITE_CLAMP = 1 };
 // Hard limits, shared by the descriptors and the tests that probe them.
 constexpr double kMinFocusDistance = 0.001;  // m: 1 mm, closer than any lens focuses
 constexpr double kMaxFocusDistance = 1e9;    // m: "infinity" (the CoC differs from a true infinity by < 1e-6 px)
-constexpr double kMinFNumber = 0.05;         // the seed's own setting for a strong blur
+constexpr double kMinFNumber = 0.05;         // a strong, unrealistic blur
 constexpr double kMaxFNumber = 64;
 constexpr double kMaxCocLimit = 128;         // px: dilation then spans at most 4 tiles each way
 constexpr int kMinSamples = 8;

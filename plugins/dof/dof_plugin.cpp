@@ -18,11 +18,6 @@
 namespace pfx_dof {
 namespace {
 
-uint32_t effect_count() { return 1; }
-const pfx_effect_desc* get_effect(uint32_t index) { return index == 0 ? &kDofEffect : nullptr; }
-
-const pfx_effect_factory kEffectFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
-
 int has_reference(const char* effect_id, pfx_reference_kind kind) {
   return effect_id && std::strcmp(effect_id, "dof") == 0 && (kind == PFX_REFERENCE_MODEL || kind == PFX_REFERENCE_IDEAL);
 }
@@ -80,23 +75,17 @@ pfx_status evaluate(const pfx_reference_request* request) {
   });
 }
 
-const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+constexpr pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+constexpr const pfx_effect_desc* kEffects[] = {&kDofEffect};
 
-// No GL and no state: init is trivially idempotent.
-pfx_status plugin_init(const pfx_host* host) {
-  return pfx::plugin::usable_host(host) ? PFX_OK : PFX_INVALID_ARGUMENT;
-}
-
-void plugin_deinit() {}
-
-const void* plugin_get_factory(const char* factory_id) {
-  return pfx::plugin::factory_for(factory_id, &kEffectFactory, &kReferenceFactory);
-}
-
-const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR, "org.pfx.dof", "pfx depth of field",
-                          "0.1.0",           plugin_init,   plugin_deinit, plugin_get_factory};
+// No GL and no state: the kit's init (the host's check) is all it needs.
+constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.dof")
+                             .name("pfx depth of field")
+                             .version("0.1.0")
+                             .effects(kEffects)
+                             .references(&kReferenceFactory);
 
 }  // namespace
 }  // namespace pfx_dof
 
-extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &pfx_dof::kEntry; }
+PFX_PLUGIN_ENTRY(pfx_dof::kPlugin)

@@ -1,4 +1,4 @@
-// The seed's 16 sample offsets (seed 001, "bokehDisk"): a disk of diameter about 0.9 in units of
+// The 16 sample offsets of the "seed" mode's bokeh disk ("bokehDisk"): a disk of diameter about 0.9 in units of
 // the CoC diameter. Shared by the GPU program (written into its source) and the CPU model.
 #pragma once
 

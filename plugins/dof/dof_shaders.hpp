@@ -18,7 +18,7 @@ extern const char* const kLens;
 // color -> half-size copy, one bilinear tap of the safe colour per half texel.
 extern const char* const kSeedHalf;
 
-// color, depth, half, lens -> output: the seed's 16-tap disk. The disk is spliced in as text.
+// color, depth, half, lens -> output: the 16-tap disk. The disk is spliced in as text.
 std::string seed_body();
 
 // gather mode. prepare: color, depth, lens -> work (safe colour, a = signed CoC in frame pixels);

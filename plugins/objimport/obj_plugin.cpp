@@ -134,30 +134,27 @@ void release(pfx_import_result* result) {  // (null, like any pointer not handed
   delete storage;
 }
 
-const char* const kExtensions[] = {"obj"};
-const pfx_importer_desc kObjImporter = {sizeof(pfx_importer_desc), "obj", "Wavefront OBJ", kExtensions, 1,
-                                        import, release};
+constexpr const char* kExtensions[] = {"obj"};
+constexpr pfx_importer_desc kObjImporter = {
+    sizeof(pfx_importer_desc), "obj", "Wavefront OBJ", kExtensions, 1, import, release};
 
-uint32_t importer_count() { return 1; }
-const pfx_importer_desc* get_importer(uint32_t index) { return index == 0 ? &kObjImporter : nullptr; }
-const pfx_importer_factory kFactory = {sizeof(pfx_importer_factory), importer_count, get_importer};
+constexpr const pfx_importer_desc* kImporters[] = {&kObjImporter};
 
-pfx_status plugin_init(const pfx_host* host) {
-  if (!host || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+// Imports run their stages on the host's thread pool when it offers one.
+pfx_status find_pool(const pfx_host* host) {
   g_pool = pfx::plugin::host_thread_pool(host);
   return PFX_OK;
 }
+void forget_pool() { g_pool = nullptr; }
 
-void plugin_deinit() { g_pool = nullptr; }
-
-const void* plugin_get_factory(const char* factory_id) {
-  return pfx::plugin::factory_for(factory_id, nullptr, nullptr, &kFactory);
-}
-
-const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR,      "org.pfx.objimport", "pfx OBJ importer",
-                          "0.1.0",           plugin_init,   plugin_deinit,      plugin_get_factory};
+constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.objimport")
+                             .name("pfx OBJ importer")
+                             .version("0.1.0")
+                             .importers(kImporters)
+                             .on_init(find_pool)
+                             .on_deinit(forget_pool);
 
 }  // namespace
 }  // namespace pfx_obj
 
-extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &pfx_obj::kEntry; }
+PFX_PLUGIN_ENTRY(pfx_obj::kPlugin)

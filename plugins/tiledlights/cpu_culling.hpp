@@ -1,4 +1,4 @@
-// Seed 003's culling on the CPU, at any resolution: the view frustum split into a grid of
+// Tiled shading's culling (Olsson and Assarsson) on the CPU, at any resolution: the view frustum split into a grid of
 // sub-frustums (8x4 by default), each light's sphere tested against their side planes, and one
 // list of light indices per sub-frustum. Lists have no fixed size (one flat index array with an
 // offset and a count per tile), so nothing is ever truncated. GL-free.
@@ -27,7 +27,7 @@ struct GridLists {
   ListStats stats;
 };
 
-// Lights of the set whose sphere reaches the view frustum between near and far (the seed's main
+// Lights of the set whose sphere reaches the view frustum between near and far (the main
 // frustum test), in order: the lights a culled mode uploads.
 std::vector<uint32_t> lights_in_view(const LightSet& set, const Perspective& perspective, int width, int height,
                                      double near_depth, double far_depth);

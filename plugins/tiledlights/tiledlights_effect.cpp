@@ -1,7 +1,8 @@
 // The "tiledlights" effect on the GPU. Passes by mode:
 //
 //   brute      shade (uploads every light that reaches anything; every light at every pixel)
-//   cpu8x4     cull  (CPU: lights in view, seed 003's sub-frustum grid, lists into the upload ring)
+//   cpu8x4     cull  (CPU: lights in view, Olsson and Assarsson's grid of sub-frustums, lists into the
+//                     upload ring)
 //              shade (each pixel reads its tile's list)
 //   tiled      cull  (CPU: lights in view; GPU compute: per-tile lists with the tile's depth bounds,
 //                     counted, placed by a prefix sum, filled: gpu_lists.hpp)
@@ -14,8 +15,9 @@
 // every mode sums the same non-zero terms in the same order as brute force.
 #include "tiledlights_effect.hpp"
 
-#include <pfx/cpp/descriptors.hpp>
+#include <pfx/cpp/declaration.hpp>
 #include <pfx/cpp/gl_program.hpp>
+#include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include <algorithm>
@@ -57,9 +59,7 @@ struct Instance {
   // instead of silently missing lights.
   uint64_t loop_guard_lights = 0;  // 0: no such guard
 
-  pfx_pass_desc passes[2] = {};
-  pfx_pass_input shade_inputs[5] = {};
-  pfx_pass_input cull_inputs[1] = {};
+  pfx::desc::DeclarationBuilder<0, 2> declaration;  // the cull and the shading pass
 
   // This frame, from the first pass to the shading pass.
   Settings settings;
@@ -90,34 +90,29 @@ void destroy(void* self) {
 }
 
 pfx_status create(const pfx_host* host, void** out) {
-  if (!host || !out || host->struct_size < PFX_HOST_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  if (!pfx::plugin::usable_host(host) || !out) return PFX_INVALID_ARGUMENT;
   if (!pfx::gl::load_gl_or_log(host, "tiledlights")) return PFX_GL_ERROR;
   Instance* inst = new (std::nothrow) Instance;
   if (!inst) return PFX_OUT_OF_MEMORY;
   inst->host = host;
-  try {
+  const pfx_status built = pfx::plugin::without_exceptions([&] {  // std::bad_alloc from a string
     std::string error;
     inst->shade = pfx::gl::build_fullscreen_program(sh::shade_fragment().c_str(), &error);
     if (!inst->shade) error = "shader 'shade': " + error;
     if (!inst->shade || !inst->gpu_lists.create(&error)) {
       log_error(inst, error);
-      destroy(inst);
       return PFX_GL_ERROR;
     }
-  } catch (...) {  // std::bad_alloc from a string; nothing may cross the ABI
+    return PFX_OK;
+  });
+  if (built != PFX_OK) {
     destroy(inst);
-    return PFX_OUT_OF_MEMORY;
+    return built;
   }
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &inst->ssbo_alignment);
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (renderer && std::strstr(renderer, "llvmpipe")) inst->loop_guard_lights = 900000;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &inst->max_block_bytes);
-  inst->shade_inputs[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
-  inst->shade_inputs[1] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
-  inst->shade_inputs[2] = {PFX_INPUT_NAME_NORMAL, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
-  inst->shade_inputs[3] = {PFX_INPUT_NAME_ALBEDO, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
-  inst->shade_inputs[4] = {PFX_INPUT_NAME_EMISSIVE, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
-  inst->cull_inputs[0] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
   *out = inst;
   return PFX_OK;
 }
@@ -146,26 +141,22 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
   out->inputs = PFX_INPUT_LIGHTS;
   // No light reaches anything and the base is the incoming colour: the output is the input.
   if (inst->set.lights.empty() && settings.base == BASE_COLOR && settings.show == SHOW_LIGHT) return PFX_OK;
-  const uint32_t shade_inputs = settings.base == BASE_EMISSIVE ? 5 : 4;
-  uint32_t n = 0;
+  auto& d = inst->declaration;
+  d.clear();
   if (settings.mode != MODE_BRUTE) {
-    const bool gpu = settings.mode == MODE_TILED || settings.mode == MODE_CLUSTERED;
-    pfx_pass_desc cull{};
-    cull.struct_size = sizeof cull;
-    cull.name = "cull";
-    cull.kind = PFX_PASS_CUSTOM;
-    cull.output = nullptr;
-    cull.inputs = gpu ? inst->cull_inputs : nullptr;
-    cull.input_count = gpu ? 1 : 0;
-    cull.user_tag = TAG_PREPARE | TAG_CULL;
-    inst->passes[n++] = cull;
+    // The GPU modes read the depth to bound their tiles; the CPU grid reads nothing.
+    auto cull = d.custom_pass("cull").tag(TAG_PREPARE | TAG_CULL);
+    if (settings.mode == MODE_TILED || settings.mode == MODE_CLUSTERED)
+      cull.input(PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST);
   }
-  inst->passes[n++] = pfx::desc::fullscreen_pass(
-      "shade", PFX_OUTPUT_NAME, inst->shade_inputs, shade_inputs, PFX_BLEND_NONE, PFX_LOAD_DONT_CARE,
-      settings.mode == MODE_BRUTE ? (TAG_PREPARE | TAG_SHADE) : TAG_SHADE);
-  out->passes = inst->passes;
-  out->pass_count = n;
-  return PFX_OK;
+  auto shade = d.pass("shade", PFX_OUTPUT_NAME)
+                   .input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST)
+                   .input(PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST)
+                   .input(PFX_INPUT_NAME_NORMAL, PFX_FILTER_NEAREST)
+                   .input(PFX_INPUT_NAME_ALBEDO, PFX_FILTER_NEAREST)
+                   .tag(settings.mode == MODE_BRUTE ? (TAG_PREPARE | TAG_SHADE) : TAG_SHADE);
+  if (settings.base == BASE_EMISSIVE) shade.input(PFX_INPUT_NAME_EMISSIVE, PFX_FILTER_NEAREST);
+  return d.finish(out);
 }
 
 void set_frame_uniforms(GLuint program, const pfx_frame& frame, const Perspective& perspective, uint32_t light_count,
@@ -382,18 +373,18 @@ const char* report_json(void* self) {
 
 }  // namespace
 
-const pfx_effect_desc kTiledLightsEffect = {
-    sizeof(pfx_effect_desc),
-    "tiledlights",
-    "Tiled lights",
-    "Lights the G-buffer with many point lights (seed 003's falloff) and adds them to the colour; culled by "
-    "brute force, seed 003's CPU sub-frustums, GPU tiles or GPU clusters, all giving the same image.",
-    kParams,
-    PARAM_COUNT,
-    create,
-    destroy,
-    declare,
-    run_pass,
-    report_json};
+const pfx_effect_desc kTiledLightsEffect =
+    pfx::desc::effect("tiledlights")
+        .label("Tiled lights")
+        .description(
+            "Lights the G-buffer with many point lights (a 1 / (1 + d^2) falloff) and adds them to the "
+            "colour; culled by brute force, sub-frustums culled on the CPU, GPU tiles or GPU clusters, all "
+            "giving the same image.")
+        .params(kParams, PARAM_COUNT)
+        .create(create)
+        .destroy(destroy)
+        .declare(declare)
+        .run_pass(run_pass)
+        .report_json(report_json);
 
 }  // namespace pfx_tiledlights

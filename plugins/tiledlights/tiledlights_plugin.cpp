@@ -16,11 +16,6 @@ namespace {
 
 const pfx_host* g_host = nullptr;
 
-uint32_t effect_count() { return 1; }
-const pfx_effect_desc* get_effect(uint32_t index) { return index == 0 ? &kTiledLightsEffect : nullptr; }
-
-const pfx_effect_factory kEffectFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
-
 int has_reference(const char* effect_id, pfx_reference_kind kind) {
   return effect_id && std::strcmp(effect_id, "tiledlights") == 0 &&
          (kind == PFX_REFERENCE_MODEL || kind == PFX_REFERENCE_IDEAL);
@@ -53,25 +48,25 @@ pfx_status evaluate(const pfx_reference_request* request) {
   });
 }
 
-const pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+constexpr pfx_reference_factory kReferenceFactory = {sizeof(pfx_reference_factory), has_reference, evaluate};
+constexpr const pfx_effect_desc* kEffects[] = {&kTiledLightsEffect};
 
-pfx_status plugin_init(const pfx_host* host) {
-  if (!pfx::plugin::usable_host(host)) return PFX_INVALID_ARGUMENT;
+// The reference logs through the host it was loaded by.
+pfx_status remember_host(const pfx_host* host) {
   g_host = host;
   return PFX_OK;
 }
+void forget_host() { g_host = nullptr; }
 
-void plugin_deinit() { g_host = nullptr; }
-
-const void* plugin_get_factory(const char* factory_id) {
-  return pfx::plugin::factory_for(factory_id, &kEffectFactory, &kReferenceFactory);
-}
-
-const pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR,      PFX_ABI_MINOR,  "org.pfx.tiledlights",
-                          "pfx tiled lights", "0.1.0",           plugin_init,    plugin_deinit,
-                          plugin_get_factory};
+constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.tiledlights")
+                             .name("pfx tiled lights")
+                             .version("0.1.0")
+                             .effects(kEffects)
+                             .references(&kReferenceFactory)
+                             .on_init(remember_host)
+                             .on_deinit(forget_host);
 
 }  // namespace
 }  // namespace pfx_tiledlights
 
-extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &pfx_tiledlights::kEntry; }
+PFX_PLUGIN_ENTRY(pfx_tiledlights::kPlugin)

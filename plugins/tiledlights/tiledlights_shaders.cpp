@@ -99,7 +99,7 @@ vec3 list_heat(uint count) {
   return mix(stops[i], stops[i + 1], t - float(i));
 }
 
-// Seed 003's point light: 1 / (1 + d^2), faded to exactly 0 over the last quarter of the range.
+// The point light: 1 / (1 + d^2), faded to exactly 0 over the last quarter of the range.
 vec3 light_term(Light light, vec3 p, vec3 n) {
   vec3 l = light.world_range.xyz - p;
   float d2 = dot(l, l);

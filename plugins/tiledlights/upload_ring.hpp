@@ -1,5 +1,5 @@
 // Per-frame data for the GPU (lights, CPU-built lists) in a ring of persistently mapped, coherent
-// buffers. Seed 003 double-buffers without a fence, so nothing stops the CPU from overwriting a
+// buffers. A plain double buffer without a fence, so nothing stops the CPU from overwriting a
 // buffer the GPU is still reading; here every slot carries a fence set after the last draw that
 // reads it, and writing a slot again first waits for that fence.
 #pragma once

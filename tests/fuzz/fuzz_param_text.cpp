@@ -16,14 +16,28 @@ const pfx_enum_item kModes[] = {{"chain", "Chain"}, {"chain13", "13 taps"}, {"du
 
 // One parameter of every type, one of them refusing out-of-range values instead of clamping.
 const pfx_param_desc kParams[] = {
-    pfx::desc::param("threshold", "Threshold", "t", "", "", PFX_PARAM_FLOAT, 0, 65504, 0, 8, 0.1, {{1}}),
-    pfx::desc::param("strict", "Strict", "s", "", "", PFX_PARAM_FLOAT, -1, 1, -1, 1, 0.1, {{0}}),
-    pfx::desc::param("levels", "Levels", "l", "", "", PFX_PARAM_INT, 0, 12, 0, 12, 1, {{6}}),
-    pfx::desc::param("on", "On", "o", "", "", PFX_PARAM_BOOL, 0, 1, 0, 1, 1, {{1}}),
-    pfx::desc::with_items(pfx::desc::param("mode", "Mode", "m", "", "", PFX_PARAM_ENUM, 0, 2, 0, 2, 1, {{0}}), kModes, 3),
-    pfx::desc::param("tint", "Tint", "c", "", "", PFX_PARAM_COLOR, 0, 16, 0, 1, 0.01, {{1, 1, 1}}),
-    pfx::desc::param("offset", "Offset", "v", "px", "", PFX_PARAM_VEC2, -100, 100, -10, 10, 1, {{0, 0}}),
-    pfx::desc::param("axis", "Axis", "a", "", "", PFX_PARAM_VEC3, -1, 1, -1, 1, 0.1, {{0, 0, 1}}),
+    pfx::desc::param("threshold")
+        .label("Threshold")
+        .tooltip("t")
+        .float_range(0, 65504)
+        .display_range(0, 8)
+        .step(0.1)
+        .default_value(1),
+    pfx::desc::param("strict").label("Strict").tooltip("s").float_range(-1, 1).step(0.1).default_value(0),
+    pfx::desc::param("levels").label("Levels").tooltip("l").int_range(0, 12).default_value(6),
+    pfx::desc::param("on").label("On").tooltip("o").boolean().default_value(1),
+    pfx::desc::param("mode").label("Mode").tooltip("m").items(kModes, 3).default_value(0),
+    pfx::desc::param("tint").label("Tint").tooltip("c").color_range(0, 16).display_range(0, 1).step(0.01).default_value(
+        1, 1, 1),
+    pfx::desc::param("offset")
+        .label("Offset")
+        .unit("px")
+        .tooltip("v")
+        .vec2_range(-100, 100)
+        .display_range(-10, 10)
+        .step(1)
+        .default_value(0, 0),
+    pfx::desc::param("axis").label("Axis").tooltip("a").vec3_range(-1, 1).step(0.1).default_value(0, 0, 1),
 };
 
 pfx_param_desc strict(pfx_param_desc d) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "camera_options.hpp"
+#include "image_texture.hpp"
 
 namespace pfx::test {
 
@@ -51,6 +52,39 @@ pfx::app::Image test_image(int width, int height) {
       p[3] = 1.0f;
     }
   return img;
+}
+
+ChainRig::ChainRig(const char* plugin_path) {
+  std::string error;
+  INFO(error);
+  REQUIRE(registry->load(plugin_path, &error));
+  chain = std::make_unique<pfx::host::Chain>(*registry, params);
+}
+
+void ChainRig::add(const std::string& effect) {
+  std::string error;
+  INFO(error);
+  REQUIRE(chain->add(effect, &error));
+}
+
+void ChainRig::set(const std::string& assignment) {
+  std::string error;
+  INFO(error);
+  REQUIRE(params.set_assignment(assignment, &error));
+}
+
+pfx::app::Image ChainRig::render(const pfx::app::Image& img) {
+  pfx::host::FrameTextures textures;
+  textures.color = pfx::app::upload_color_texture(img);
+  const uint32_t output = pfx::app::create_color_texture(img.width, img.height);
+  std::string error;
+  const bool ok = chain->render(make_frame(img.width, img.height), textures, output, &error);
+  pfx::app::Image result = pfx::app::download_color_texture(output, img.width, img.height);
+  pfx::app::delete_texture(textures.color);
+  pfx::app::delete_texture(output);
+  INFO(error);
+  REQUIRE(ok);
+  return result;
 }
 
 }  // namespace pfx::test

@@ -15,15 +15,20 @@ using pfx::validate::param_descriptor_problems;
 namespace {
 
 pfx_param_desc good_float() {
-  return pfx::desc::param("threshold", "Threshold", "Brightness that blooms.", "", "Bloom", PFX_PARAM_FLOAT, 0, 100, 0, 8,
-                          0.1, {{1.0}});
+  return pfx::desc::param("threshold")
+      .label("Threshold")
+      .group("Bloom")
+      .tooltip("Brightness that blooms.")
+      .float_range(0, 100)
+      .display_range(0, 8)
+      .step(0.1)
+      .default_value(1.0);
 }
 
 const pfx_enum_item kItems[] = {{"chain", "Chain"}, {"dual", "Dual"}};
 
 pfx_param_desc good_enum() {
-  return pfx::desc::with_items(
-      pfx::desc::param("mode", "Mode", "Which algorithm.", "", "", PFX_PARAM_ENUM, 0, 1, 0, 1, 1, {{1}}), kItems, 2);
+  return pfx::desc::param("mode").label("Mode").tooltip("Which algorithm.").items(kItems, 2).default_value(1);
 }
 
 // The single problem of a descriptor that should have exactly one.
@@ -40,10 +45,16 @@ std::string only_problem(const pfx_param_desc& p) {
 TEST_CASE("well-formed parameters of every type have no problem", "[validate][descriptors]") {
   CHECK(param_descriptor_problems(good_float()).empty());
   CHECK(param_descriptor_problems(good_enum()).empty());
-  CHECK(param_descriptor_problems(pfx::desc::param("on", "On", "Turns it on.", "", "", PFX_PARAM_BOOL, 0, 1, 0, 1, 1,
-                                                   {{1}})).empty());
-  CHECK(param_descriptor_problems(pfx::desc::param("tint", "Tint", "Colour.", "", "", PFX_PARAM_COLOR, 0, 16, 0, 1, 0.01,
-                                                   {{1, 0.5, 0.25}})).empty());
+  CHECK(param_descriptor_problems(pfx::desc::param("on").label("On").tooltip("Turns it on.").boolean().default_value(1))
+            .empty());
+  CHECK(param_descriptor_problems(pfx::desc::param("tint")
+                                      .label("Tint")
+                                      .tooltip("Colour.")
+                                      .color_range(0, 16)
+                                      .display_range(0, 1)
+                                      .step(0.01)
+                                      .default_value(1, 0.5, 0.25))
+            .empty());
 }
 
 TEST_CASE("a default outside the hard range is named with both numbers", "[validate][descriptors]") {
@@ -57,7 +68,13 @@ TEST_CASE("a default outside the hard range is named with both numbers", "[valid
 }
 
 TEST_CASE("a vector default is checked per component and unused components must be 0", "[validate][descriptors]") {
-  pfx_param_desc p = pfx::desc::param("tint", "Tint", "Colour.", "", "", PFX_PARAM_COLOR, 0, 16, 0, 1, 0.01, {{1, 17, 1}});
+  pfx_param_desc p = pfx::desc::param("tint")
+                         .label("Tint")
+                         .tooltip("Colour.")
+                         .color_range(0, 16)
+                         .display_range(0, 1)
+                         .step(0.01)
+                         .default_value(1, 17, 1);
   CHECK(only_problem(p) == "parameter 'tint': default component 1 17 is above hard_max 16");
   p.default_value = {{1, 1, 1, 3}};
   CHECK(only_problem(p) == "parameter 'tint': default component 3 is 3 but the type uses 3 (unused ones must be 0)");

@@ -16,13 +16,30 @@ namespace {
 const pfx_enum_item kItems[] = {{"a", "A"}, {"b", "B"}, {"c", "C"}};
 
 const pfx_param_desc kParams[] = {
-    pfx::desc::param("f", "F", "A float.", "", "", PFX_PARAM_FLOAT, -2, 65504, 0, 8, 0.1, {{1}}),
-    pfx::desc::param("i", "I", "An int.", "", "", PFX_PARAM_INT, 1, 12, 1, 6, 1, {{3}}),
-    pfx::desc::param("b", "B", "A bool.", "", "", PFX_PARAM_BOOL, 0, 1, 0, 1, 1, {{0}}),
-    pfx::desc::with_items(pfx::desc::param("e", "E", "An enum.", "", "", PFX_PARAM_ENUM, 0, 2, 0, 2, 1, {{0}}), kItems, 3),
-    pfx::desc::param("c", "C", "A colour.", "", "", PFX_PARAM_COLOR, 0, 16, 0, 1, 0.01, {{1, 1, 1}}),
-    pfx::desc::param("v", "V", "A vector with an infinite hard range.", "", "", PFX_PARAM_VEC2, -INFINITY, INFINITY, -5,
-                     5, 0.1, {{0, 0}}),
+    pfx::desc::param("f")
+        .label("F")
+        .tooltip("A float.")
+        .float_range(-2, 65504)
+        .display_range(0, 8)
+        .step(0.1)
+        .default_value(1),
+    pfx::desc::param("i").label("I").tooltip("An int.").int_range(1, 12).display_range(1, 6).default_value(3),
+    pfx::desc::param("b").label("B").tooltip("A bool.").boolean().default_value(0),
+    pfx::desc::param("e").label("E").tooltip("An enum.").items(kItems, 3).default_value(0),
+    pfx::desc::param("c")
+        .label("C")
+        .tooltip("A colour.")
+        .color_range(0, 16)
+        .display_range(0, 1)
+        .step(0.01)
+        .default_value(1, 1, 1),
+    pfx::desc::param("v")
+        .label("V")
+        .tooltip("A vector with an infinite hard range.")
+        .vec2_range(-INFINITY, INFINITY)
+        .display_range(-5, 5)
+        .step(0.1)
+        .default_value(0, 0),
 };
 
 pfx_effect_desc effect() {

@@ -20,7 +20,7 @@ void bright_tap(const Settings& s, const Plane& frame, double px, double py, dou
   model::bright_part(s, s.measure, out);
 }
 
-// The seed's five taps: the centre weighted 4, the four diagonal neighbours 1, / 8. With karis each
+// The pyramid's five taps: the centre weighted 4, the four diagonal neighbours 1, / 8. With karis each
 // weight is multiplied by the tap's Karis weight and the sum divided by the weights' sum.
 void bright5(const Settings& s, const Plane& frame, double px, double py, double out[3]) {
   const struct {

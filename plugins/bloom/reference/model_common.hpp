@@ -42,8 +42,8 @@ bool not_finite(float v);
 // (nonfinite zero) or NaN -> 0 per channel (clamp); then negative -> 0, at most the clamp (+Inf too).
 Plane safe_frame(const float* color, int w, int h, double clamp_to, int nonfinite);
 
-// The measures the bright pass knows: the settings' (max-RGB or luminance, with the seed's ratio)
-// or every channel on its own (seed 002).
+// The measures the bright pass knows: the settings' (max-RGB or luminance, with the pyramid's ratio)
+// or every channel on its own (the separable Gaussian bloom).
 constexpr int kMeasurePerChannel = 2;
 
 // The threshold curve: max(b - t, 0), softened by the knee.

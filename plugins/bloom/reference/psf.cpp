@@ -57,10 +57,10 @@ Kernel from_taps(const std::vector<Tap>& taps) {
   return k;
 }
 
-// The seed's bright pass: the centre weighted 4/8, the four diagonal neighbours 1/8.
+// The pyramid's bright pass: the centre weighted 4/8, the four diagonal neighbours 1/8.
 std::vector<Tap> bright5() { return {{0, 0, 0.5}, {-1, -1, 0.125}, {1, -1, 0.125}, {-1, 1, 0.125}, {1, 1, 0.125}}; }
 
-// The seed's downsample: 4 x 4 taps at +-0.92, +-2.75 weighted 0.3913, 0.1087 per axis.
+// The pyramid's downsample: 4 x 4 taps at +-0.92, +-2.75 weighted 0.3913, 0.1087 per axis.
 std::vector<Tap> down16() {
   const double o[4] = {-2.75, -0.92, 0.92, 2.75}, w[4] = {0.1087, 0.3913, 0.3913, 0.1087};
   std::vector<Tap> taps;

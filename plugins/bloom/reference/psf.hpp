@@ -4,7 +4,7 @@
 //
 // - gaussian: the exact Gaussian of standard deviation sigma (frame pixels), each tap the integral
 //   of the continuous Gaussian over its pixel (erf), i.e. the continuous kernel on a pixel grid.
-// - mgf: sum over the buffers of w_i times that Gaussian with the deviation the seed's cascade
+// - mgf: sum over the buffers of w_i times that Gaussian with the deviation Kawase's cascade
 //   gives buffer i: sigma_i^2 = sum_{j <= i} (2.5 * 4 * 2^j)^2 frame pixels^2.
 // - chain, chain13: the pyramid's own PSF averaged over sub-pixel positions. For each level i the
 //   path frame -> level i -> frame is a filter F_i at the frame's rate followed by decimation by

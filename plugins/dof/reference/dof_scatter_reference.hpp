@@ -1,4 +1,4 @@
-// PFX_REFERENCE_IDEAL of "dof" for image inputs (issue 4, reference 2): a scatter in double
+// PFX_REFERENCE_IDEAL of "dof" for image inputs (the scatter reference of docs/effects/dof.md): a scatter in double
 // precision. Every pixel spreads its colour uniformly over its own CoC disc (diameter |CoC|, at least
 // one pixel; the disc's edge antialiased over one pixel and its weights summing to 1 on the pixel
 // grid, so energy is kept). At each output pixel the discs covering it are taken front to back by

@@ -1,5 +1,6 @@
-// Ground truth for depth of field (issue 4, reference 1): a small synthetic 3D scene of planes,
-// boxes and bright spheres at known distances, rendered by casting rays in double precision.
+// Ground truth for depth of field (the ray-traced reference of docs/effects/dof.md): a small
+// synthetic 3D scene of planes, boxes and bright spheres at known distances, rendered by casting
+// rays in double precision.
 //
 // The pinhole frame (colour and linear depth) is what an engine would hand the effect: colour
 // averaged over the pixel's square (4 x 4 points), depth and object of the nearest of them. The truth is

@@ -1,4 +1,4 @@
-// Header-only C++ helpers for plugin authors (DESIGN.md §2): loading a plugin's private GL table
+// Header-only C++ helpers for plugin authors: loading a plugin's private GL table
 // through the host, and building full-screen, compute and other programs. Needs a GL 4.5 loader
 // header declaring the GL functions (glad, as this tree generates it) included as <glad/gl.h>;
 // built in this tree, not installed (an out-of-tree plugin brings its own loader, docs/sdk.md §1.10).

@@ -1,10 +1,12 @@
-// Header-only pieces of a plugin's entry point that every plugin writes the same way: the check
-// of the host in init, the check of a CPU reference request, the wall that keeps C++ exceptions
-// from crossing the C ABI, get_factory over the factories the plugin offers, and the lookup of the
-// host's thread pool.
+// A plugin's entry point and what every plugin's calls check the same way: the host in init and
+// create, the arguments of declare, a CPU reference request, the wall that keeps C++ exceptions
+// from crossing the C ABI, get_factory over the factories the plugin offers, the lookup of the
+// host's thread pool, and the entry itself, made from a named description (Plugin,
+// PFX_PLUGIN_ENTRY at the end).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <new>
 
@@ -72,4 +74,125 @@ inline const pfx_thread_pool* host_thread_pool(const pfx_host* host) {
   return pool;
 }
 
+// What a plugin offers, given by name: its identity and its factories. A constexpr object of it,
+// handed to PFX_PLUGIN_ENTRY, is the plugin's whole entry point:
+//
+//   constexpr const pfx_effect_desc* kEffects[] = {&kBloomEffect, &kGlareEffect};
+//   constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.bloom").name("pfx bloom").version("0.1.0")
+//                                .effects(kEffects).references(&kReferenceFactory);
+//   PFX_PLUGIN_ENTRY(kPlugin)
+//
+// Left out: the name is the id, the version "0.0.0", and a factory kind not given is not offered
+// (get_factory returns nullptr for it). init checks the host with usable_host and then runs
+// on_init, if given; deinit runs on_deinit, if given.
+class Plugin {
+ public:
+  constexpr explicit Plugin(const char* id) : id_(id), name_(id) {}
+  constexpr Plugin name(const char* text) const {
+    Plugin p = *this;
+    p.name_ = text;
+    return p;
+  }
+  constexpr Plugin version(const char* text) const {
+    Plugin p = *this;
+    p.version_ = text;
+    return p;
+  }
+  // The effects, in the order the effect factory lists them (the table keeps the pointers).
+  template <std::size_t N>
+  constexpr Plugin effects(const pfx_effect_desc* const (&list)[N]) const {
+    Plugin p = *this;
+    p.effects_ = list;
+    p.effect_count_ = static_cast<uint32_t>(N);
+    return p;
+  }
+  // An effect factory of the plugin's own instead of the one made from effects() (a list known
+  // only at run time).
+  constexpr Plugin effect_factory(const pfx_effect_factory* factory) const {
+    Plugin p = *this;
+    p.effect_factory_ = factory;
+    p.own_effect_factory_ = true;
+    return p;
+  }
+  constexpr Plugin references(const pfx_reference_factory* factory) const {
+    Plugin p = *this;
+    p.references_ = factory;
+    return p;
+  }
+  template <std::size_t N>
+  constexpr Plugin importers(const pfx_importer_desc* const (&list)[N]) const {
+    Plugin p = *this;
+    p.importers_ = list;
+    p.importer_count_ = static_cast<uint32_t>(N);
+    return p;
+  }
+  // Runs in init once the host passed usable_host (cheap, no GL, no file I/O, idempotent).
+  constexpr Plugin on_init(pfx_status (*fn)(const pfx_host*)) const {
+    Plugin p = *this;
+    p.on_init_ = fn;
+    return p;
+  }
+  constexpr Plugin on_deinit(void (*fn)()) const {
+    Plugin p = *this;
+    p.on_deinit_ = fn;
+    return p;
+  }
+
+ private:
+  template <const Plugin&>
+  friend struct Entry;
+
+  const char* id_;
+  const char* name_;
+  const char* version_ = "0.0.0";
+  const pfx_effect_desc* const* effects_ = nullptr;
+  uint32_t effect_count_ = 0;
+  const pfx_effect_factory* effect_factory_ = nullptr;
+  const pfx_reference_factory* references_ = nullptr;
+  const pfx_importer_desc* const* importers_ = nullptr;
+  uint32_t importer_count_ = 0;
+  bool own_effect_factory_ = false;
+  // Nothing to do is a function too: a test of a function's address against null is one the
+  // compiler calls always true (-Waddress) once the plugin has named one.
+  static pfx_status init_nothing(const pfx_host*) { return PFX_OK; }
+  static void deinit_nothing() {}
+  pfx_status (*on_init_)(const pfx_host*) = init_nothing;
+  void (*on_deinit_)() = deinit_nothing;
+};
+
+// The functions and structs of the ABI made from one Plugin: its factories and its pfx_entry.
+template <const Plugin& P>
+struct Entry {
+  static uint32_t effect_count() { return P.effect_count_; }
+  static const pfx_effect_desc* get_effect(uint32_t index) {
+    return index < P.effect_count_ ? P.effects_[index] : nullptr;
+  }
+  static constexpr pfx_effect_factory kEffects = {sizeof(pfx_effect_factory), effect_count, get_effect};
+
+  static uint32_t importer_count() { return P.importer_count_; }
+  static const pfx_importer_desc* get_importer(uint32_t index) {
+    return index < P.importer_count_ ? P.importers_[index] : nullptr;
+  }
+  static constexpr pfx_importer_factory kImporters = {sizeof(pfx_importer_factory), importer_count, get_importer};
+
+  static pfx_status init(const pfx_host* host) {
+    if (!usable_host(host)) return PFX_INVALID_ARGUMENT;
+    return P.on_init_(host);
+  }
+  static void deinit() { P.on_deinit_(); }
+  static const void* get_factory(const char* factory_id) {
+    const pfx_effect_factory* effects = P.own_effect_factory_ ? P.effect_factory_
+                                        : P.effect_count_     ? &kEffects
+                                                              : nullptr;
+    return factory_for(factory_id, effects, P.references_, P.importer_count_ ? &kImporters : nullptr);
+  }
+
+  static constexpr pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR, P.id_,      P.name_,
+                                       P.version_,        init,          deinit,        get_factory};
+};
+
 }  // namespace pfx::plugin
+
+// The plugin's exported entry symbol, for a constexpr pfx::plugin::Plugin (a qualified name).
+#define PFX_PLUGIN_ENTRY(description) \
+  extern "C" PFX_EXPORT const pfx_entry* pfx_get_entry(void) { return &::pfx::plugin::Entry<description>::kEntry; }
