@@ -18,7 +18,7 @@ struct DemoSceneOptions {
 Scene make_demo_scene(const DemoSceneOptions& options = {});
 
 // Appends count lights uniformly inside [lo, hi], each with a random corner colour and intensity
-// in [0.25, 4] as the seed's grid has, derived range (range = 0). Deterministic for a seed, on
+// in [0.25, 4] as the grid's lights have, derived range (range = 0). Deterministic for a seed, on
 // every platform (no std:: distributions, whose output the standard leaves to the library).
 void add_random_lights(Scene* scene, int count, const glm::vec3& lo, const glm::vec3& hi, uint64_t seed);
 

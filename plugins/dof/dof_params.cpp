@@ -98,7 +98,7 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
         .label("Samples")
         .group("Quality")
         .tooltip("gather mode: samples per pixel, in rings sized to the tile's largest blur (the quality "
-                 "knob: 16, 32, 64, 128...). The seed mode (16-tap disk) always takes 16.")
+                 "knob: 16, 32, 64, 128...). The 16-tap disk mode (seed) always takes 16.")
         .int_range(kMinSamples, kMaxSamples)
         .display_range(16, 128)
         .default_value(32),
@@ -106,7 +106,7 @@ const pfx_param_desc kParams[PARAM_COUNT] = {
         .label("Working resolution")
         .group("Quality")
         .tooltip("gather mode: gather at half resolution (4x fewer samples, composited over the sharp "
-                 "frame at full resolution) or at full resolution. The seed mode (16-tap disk) always blurs a "
+                 "frame at full resolution) or at full resolution. The 16-tap disk mode (seed) always blurs a "
                  "half-size copy.")
         .items(kResolutionItems, 2)
         .default_value(RESOLUTION_HALF),

@@ -65,7 +65,7 @@ TEST_CASE("lights bench quick run: speed-ups, brute force predicted past its lim
     }
   }
 
-  // 0.1, 0.05 and seed 003's rule: a lower cutoff means longer ranges, closer to the un-windowed sum.
+  // 0.1, 0.05 and the sqrt-colour rule: a lower cutoff means longer ranges, closer to the un-windowed sum.
   const auto& points = json["error"]["points"];
   REQUIRE(points.size() == 3);
   CHECK(points[0]["cutoff"].get<double>() == 0.1);

@@ -1,4 +1,4 @@
-// Issue 3: "report energy: total added light against strength x thresholded energy", for every
+// Energy: the total added light against strength x thresholded energy, for every
 // bloom mode, its ideal, and glare, on the demo frame through the CPU references (which the GPU
 // matches within the stated tolerance). docs/effects/bloom.md quotes the figures
 // (BLOOM_TEST_VERBOSE=1 prints them).

@@ -1,4 +1,4 @@
-// The named hard cases of issue 3, each for every bloom mode and for glare: bad values in the frame (NaN, +-Inf, above
+// The named hard cases, each for every bloom mode and for glare: bad values in the frame (NaN, +-Inf, above
 // the half-float maximum, negative), tiny and odd sizes, and settings at their edges.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// The level plans: the seed's halving (from a half or a quarter), never below one pixel, clamped to
+// The level plans: the pyramid's halving (from a half or a quarter), never below one pixel, clamped to
 // the frame; the level weights and the automatic share rule.
 #include <catch2/catch.hpp>
 
@@ -7,7 +7,7 @@
 
 using pfx_bloom::plan_levels;
 
-TEST_CASE("automatic levels at 1920x1080 are the seed's six", "[bloom][levels]") {
+TEST_CASE("automatic levels at 1920x1080 are the pyramid's six", "[bloom][levels]") {
   const auto plan = plan_levels(1920, 1080, 0, 16);
   REQUIRE(plan.count == 6);
   const int widths[6] = {960, 480, 240, 120, 60, 30}, heights[6] = {540, 270, 135, 67, 33, 16};
@@ -58,11 +58,11 @@ pfx_bloom::Settings with(int mode, int levels = 0) {
 TEST_CASE("mgf buffers start at a quarter of the frame, gaussian has one buffer at its downscale", "[bloom][levels]") {
   // Both round up, so that every pixel is read: ceil(size / d) blocks with the frame centred on them.
   const auto mgf = pfx_bloom::plan_for(with(pfx_bloom::MODE_MGF), 1920, 1080);
-  REQUIRE(mgf.count == 5);  // the seed's 480x270 ... 30x16; 15x8 is below the automatic minimum of 16
+  REQUIRE(mgf.count == 5);  // Kawase's 480x270 ... 30x16; 15x8 is below the automatic minimum of 16
   CHECK((mgf.width[0] == 480 && mgf.height[0] == 270));
   CHECK((mgf.width[4] == 30 && mgf.height[4] == 17));  // 135 is odd: 68, 34, 17 cover it
   CHECK(pfx_bloom::max_levels(1917, 1079, 4) == 9);
-  // The seed's count, counted on the rounded-down sizes (479x269 ... 1x1), with buffers that cover
+  // The halving's count, counted on the rounded-down sizes (479x269 ... 1x1), with buffers that cover
   // the frame: 1917 = 480 * 4 - 3 (1 pixel of padding before, 2 after), 1079 = 270 * 4 - 1.
   const auto odd = pfx_bloom::plan_for(with(pfx_bloom::MODE_MGF, 16), 1917, 1079);
   REQUIRE(odd.count == 9);

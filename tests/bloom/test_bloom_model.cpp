@@ -1,4 +1,4 @@
-// The CPU model (PFX_REFERENCE_MODEL) on its own: the seed's bright pass, energy, constant frames,
+// The CPU model (PFX_REFERENCE_MODEL) on its own: the bright pass, energy, constant frames,
 // and the handling of bad values, without a GPU.
 #include <catch2/catch.hpp>
 
@@ -44,7 +44,7 @@ Settings defaults() {
 
 }  // namespace
 
-TEST_CASE("the defaults are the seed's chain with a threshold of 1 and a hard knee", "[bloom][model]") {
+TEST_CASE("the defaults are the half-size chain with a threshold of 1 and a hard knee", "[bloom][model]") {
   const Settings s = defaults();
   CHECK(s.mode == pfx_bloom::MODE_CHAIN);
   CHECK(s.threshold == 1.0);
@@ -55,7 +55,7 @@ TEST_CASE("the defaults are the seed's chain with a threshold of 1 and a hard kn
 }
 
 TEST_CASE("a constant frame gains strength x its bright part away from the border", "[bloom][model]") {
-  // The seed divides the strength by the level count because every level adds the same light.
+  // The chain divides the strength by the level count because every level adds the same light.
   Settings s = defaults();
   s.levels = 3;
   s.strength = 2.0;
@@ -72,7 +72,7 @@ TEST_CASE("a constant frame gains strength x its bright part away from the borde
   CHECK(out[0] < centre[0]);
 }
 
-TEST_CASE("knee 0 is the seed's ratio; a knee makes it continuous and never adds light below zero", "[bloom][model]") {
+TEST_CASE("knee 0 is the plain threshold ratio; a knee makes it continuous and never adds light below zero", "[bloom][model]") {
   // A constant frame far from the border gains exactly strength x bright part (see above), so
   // its centre shows the bright-pass curve itself.
   auto gain_at = [](double knee, float r, float g) {
@@ -114,7 +114,7 @@ TEST_CASE("a single bright pixel spreads strength x its light, with or without l
     s.threshold = 0.0;
     INFO(levels << " levels");
     CHECK(added_energy(f, run(s, f)) == Approx(1.5 * 3 * 11.0).epsilon(1e-6));
-    // The seed thresholds the bilinear taps, not the pixels: a lone pixel is spread over the taps
+    // The bright pass thresholds the bilinear taps, not the pixels: a lone pixel is spread over the taps
     // first and loses more than the threshold to it (here 70% of strength x (11 - 1) is left).
     s.threshold = 1.0;
     const double kept = added_energy(f, run(s, f)) / (1.5 * 3 * 10.0);
@@ -181,7 +181,7 @@ TEST_CASE("gaussian and mgf keep the light: a lone pixel adds exactly strength x
   CHECK(added_energy(f, run(s, f)) == Approx(1.5 * 3 * 10.0).epsilon(1e-6));
 }
 
-TEST_CASE("the gaussian mode at full resolution is the discrete Gaussian the seed describes", "[bloom][model][gaussian]") {
+TEST_CASE("the gaussian mode at full resolution is the discrete Gaussian of its sigma and taps", "[bloom][model][gaussian]") {
   // One pixel, downscale 1: the bloom at (dx, dy) is strength x bright x w[dx] x w[dy], with w the
   // normalised weights exp(-k^2 / 2 sigma^2) over the taps (computed here, not by the plugin).
   Frame f(64, 64, 0.0f);

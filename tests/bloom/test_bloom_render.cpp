@@ -1,4 +1,4 @@
-// Issue 3, "Real images": pfx-render --input X.exr --chain bloom --out Y.exr gives a finite output
+// Real images: pfx-render --input X.exr --chain bloom --out Y.exr gives a finite output
 // on high-dynamic-range photographs and on frames holding every half-float value, for every bloom
 // mode and for glare. The images are made here (no files from outside the repository): a
 // photograph-like HDR frame (sky, a sun near the half-float maximum, specular glints, deep

@@ -1,4 +1,4 @@
-// Shift invariance (issue 3): one bright pixel moved in 1 px steps over 16 positions, through the
+// Shift invariance: one bright pixel moved in 1 px steps over 16 positions, through the
 // CPU model. The light it adds and its radial profile hardly change; the bloom's shape does (the
 // half-size grids alias), by the figures docs/effects/bloom.md quotes, and chain13 less than chain.
 #include <catch2/catch.hpp>
@@ -93,7 +93,7 @@ TEST_CASE("shift invariance: energy and radial profile hold, the shape aliases b
   }
 }
 
-TEST_CASE("shift invariance: chain13 aliases less than the seed's chain", "[bloom][model][shift]") {
+TEST_CASE("shift invariance: chain13 aliases less than the plain half-size chain", "[bloom][model][shift]") {
   // 256x256, threshold 0: the aligned shapes differ by 0.063 (chain) against 0.036 (chain13) with 3
   // levels, 0.084 against 0.053 with 1. The wider 13-tap footprint (6x6 texels, not 4x4, for the
   // first level) filters the half-size grid's aliasing better; energy stays put in both.

@@ -51,7 +51,7 @@ class KernelWindow {
   std::vector<double> sums_;
 };
 
-// glare's streaks from the seed's formula (as test_glare.cpp): streak j's tap t = s0 + 4 s1 + 16 s2
+// glare's streaks from Kawase's streak formula (as test_glare.cpp): streak j's tap t = s0 + 4 s1 + 16 s2
 // lies d * t texels of the frame... along -direction j, weighted w0(s0) w1(s1) w2(s2) / streaks, at
 // full resolution of a buffer d times coarser. The share of a light at (px, py) whose taps land
 // inside the frame (a tap's centre within half a pixel of it).
@@ -113,7 +113,7 @@ struct Variant {
 
 // The bound. A downscaled buffer moves a pixel's light to the centre of its block, so the bloom it
 // adds is compared with what the full-resolution kernel (the mode's ideal PSF; glare's streaks from
-// the seed's formula) keeps inside the frame for a light there: the ratio then only follows the
+// Kawase's streak formula) keeps inside the frame for a light there: the ratio then only follows the
 // mode's own border handling (clamp-to-edge upsampling, mgf's cascade of buffers that each lose
 // light at the border — about half of its ideal's at the edge, also at sizes that are multiples of
 // 4 — and glare's taps leaving the frame), which changes slowly: measured at most 0.07 between

@@ -1,5 +1,5 @@
-// The glare effect (seed 004's star streaks): GPU against its CPU model over its parameters, and the
-// model against the streak kernel computed here from the seed's formula. The named hard cases run
+// The glare effect (Kawase's star streaks): GPU against its CPU model over its parameters, and the
+// model against the streak kernel computed here from Kawase's formula. The named hard cases run
 // for glare in test_bloom_hard_cases.cpp.
 #include <catch2/catch.hpp>
 
@@ -56,7 +56,7 @@ pfx_bloom::GlareSettings glare_defaults() {
 
 }  // namespace
 
-TEST_CASE("glare's streaks are the seed's three-pass kernel, weights a to the power b s with b = 1, 4, 16", "[glare][model]") {
+TEST_CASE("glare's streaks are Kawase's three-pass kernel, weights a to the power b s with b = 1, 4, 16", "[glare][model]") {
   // Angle 0, four streaks: every tap lies on a texel, so each arm of the cross is exactly the 1-D
   // kernel K(t) = sum over s0 + 4 s1 + 16 s2 = t of w0(s0) w1(s1) w2(s2), w_i(s) = a^(4^i s) / sum,
   // a quarter of the light per arm; the light at p reaches p - t along each direction.

@@ -1,7 +1,7 @@
-// glare samples its streak taps bilinearly; seed 004 reads them with a point sampler. This measures
-// what that choice changes, on the demo frame at 640x360 and full resolution: the seed's streaks
-// computed here with nearest-texel taps against the glare model (docs/effects/bloom.md quotes the
-// figures; BLOOM_TEST_VERBOSE=1 prints them).
+// glare samples its streak taps bilinearly; Kawase's description reads them with a point sampler.
+// This measures what that choice changes, on the demo frame at 640x360 and full resolution: the
+// point-sampled streaks computed here with nearest-texel taps against the glare model
+// (docs/effects/bloom.md quotes the figures; BLOOM_TEST_VERBOSE=1 prints them).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -20,7 +20,7 @@ using pfx_bloom::model::Plane;
 
 constexpr int kW = 640, kH = 360;
 
-// One streak pass with the seed's point sampler: tap s reads the texel holding p + b s dir
+// One streak pass with a point sampler: tap s reads the texel holding p + b s dir
 // (GL_NEAREST: floor of the coordinate, texel centres at +0.5), black outside.
 Plane point_pass(const Plane& src, double dx, double dy, double b, const double* weights) {
   Plane out(src.w, src.h);
@@ -88,7 +88,7 @@ pfx_bloom::GlareSettings glare_at(double angle_degrees) {
 
 }  // namespace
 
-TEST_CASE("glare's bilinear streak taps against the seed's point sampler, on the demo frame", "[glare][model]") {
+TEST_CASE("glare's bilinear streak taps against point-sampled taps, on the demo frame", "[glare][model]") {
   const pfx::app::Image demo = pfx::app::make_demo_image(kW, kH);
   const std::vector<float>& frame = demo.rgba;  // row order does not matter: both read the same
   std::vector<float> bilinear(frame.size());

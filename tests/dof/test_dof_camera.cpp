@@ -1,7 +1,8 @@
 // The thin-lens camera model (dof_camera) on its own, against values computed independently: the
-// seed's own CoC formula evaluated literally, projection matrices built with GLM, and the named
-// hard cases of the camera (focus at the focal length, at 0 and at infinity, depth 0 and 1, near ==
-// far, the f-number's hard minimum, bad depths, degenerate cameras, autofocus on the sky).
+// thin-lens CoC formula as published (lengths in mm) evaluated literally, projection matrices built
+// with GLM, and the named hard cases of the camera (focus at the focal length, at 0 and at
+// infinity, depth 0 and 1, near == far, the f-number's hard minimum, bad depths, degenerate
+// cameras, autofocus on the sky).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -41,7 +42,7 @@ pfx_frame frame_of(uint32_t w, uint32_t h, double fovy_deg, pfx_depth_encoding e
   return f;
 }
 
-// The seed's CoC, written as the seed writes it (all lengths in mm), but with the horizontal field
+// The thin-lens CoC, written as it is usually published (all lengths in mm), but with the horizontal field
 // of view passed in: |A F (P - D) / (D (P - F))| * pixels per mm.
 double seed_coc_pixels(double fovx, double sensor_mm, double width_px, double f_number, double focus_m,
                        double depth_m) {
@@ -56,7 +57,7 @@ double seed_coc_pixels(double fovx, double sensor_mm, double width_px, double f_
 
 }  // namespace
 
-TEST_CASE("fovx: the horizontal field of view is 2 atan(tan(fovy/2) aspect), not the seed's fovy * aspect",
+TEST_CASE("fovx: the horizontal field of view is 2 atan(tan(fovy/2) aspect), not fovy * aspect",
           "[dof][camera]") {
   // Independent check: project a view-space point lying exactly on the horizontal edge of the true
   // horizontal field of view with GLM's perspective matrix: it must land on the frame's edge.
@@ -69,7 +70,7 @@ TEST_CASE("fovx: the horizontal field of view is 2 atan(tan(fovy/2) aspect), not
       INFO("fovy " << fovy_deg << " aspect " << aspect);
       CHECK(clip.x / clip.w == Approx(1.0).epsilon(1e-12));
     }
-  // The seed's fovy * aspect is close only for narrow angles: 0.5% at fovy 10 x 16:9, 10% at 45
+  // fovy * aspect is close only for narrow angles: 0.5% at fovy 10 x 16:9, 10% at 45
   // degrees, and at fovy 90 x 2:1 it reaches 180 degrees, where the image distance becomes zero.
   const double narrow = horizontal_fov(10 * kDeg, 16.0 / 9.0), seed_narrow = 10 * kDeg * 16.0 / 9.0;
   CHECK(std::fabs(seed_narrow / narrow - 1.0) < 0.006);
@@ -81,7 +82,7 @@ TEST_CASE("fovx: the horizontal field of view is 2 atan(tan(fovy/2) aspect), not
   CHECK(wide / kDeg == Approx(126.870).margin(0.001));
   CHECK(90 * kDeg * 2.0 == Approx(M_PI));
 
-  // What that does to the blur: at fovy 60 x 16:9 (fovx 91.5 degrees, the seed's 106.7), the seed's
+  // What that does to the blur: at fovy 60 x 16:9 (fovx 91.5 degrees, fovy * aspect's 106.7), fovy * aspect's
   // sensor distance is 23% short, and its CoC at 1 m with focus at 10 m is 42% too small.
   Settings s = defaults();
   const pfx_frame f = frame_of(1920, 1080, 60, PFX_DEPTH_LINEAR);
@@ -95,7 +96,7 @@ TEST_CASE("fovx: the horizontal field of view is 2 atan(tan(fovy/2) aspect), not
   CHECK(seeds / ours == Approx(0.584).margin(0.001));
 }
 
-TEST_CASE("the CoC is the seed's thin-lens formula in pixels, signed: near negative, far positive",
+TEST_CASE("the CoC is the thin-lens formula in pixels, signed: near negative, far positive",
           "[dof][camera]") {
   Settings s = defaults();
   for (double fovy_deg : {20.0, 45.0, 75.0})
@@ -106,7 +107,7 @@ TEST_CASE("the CoC is the seed's thin-lens formula in pixels, signed: near negat
           s.max_coc = kMaxCocLimit;
           const pfx_frame f = frame_of(1280, 720, fovy_deg, PFX_DEPTH_LINEAR);
           const Lens lens = make_lens(f, s, focus);
-          // The frame carries the camera in float: the seed's formula gets the same angles.
+          // The frame carries the camera in float: the published formula gets the same angles.
           const double fovx = 2.0 * std::atan(std::tan(0.5 * double(f.camera.fovy)) * double(f.camera.aspect));
           const double expected = seed_coc_pixels(fovx, 36, 1280, f_number, focus, depth);
           const double coc = coc_pixels(lens, depth);
@@ -119,7 +120,7 @@ TEST_CASE("the CoC is the seed's thin-lens formula in pixels, signed: near negat
           if (depth < focus) CHECK(coc <= 0.0);
           if (depth > focus) CHECK(coc >= 0.0);
         }
-  // The seed's own numbers: image distance 50 mm, focus 4 m: focal length about 49.4 mm.
+  // The published example's numbers: image distance 50 mm, focus 4 m: focal length about 49.4 mm.
   pfx_frame f = frame_of(1000, 1000, 0, PFX_DEPTH_LINEAR);
   f.camera.fovy = static_cast<float>(2.0 * std::atan(18.0 / 50.0));
   f.camera.aspect = 1.0f;
@@ -174,12 +175,12 @@ TEST_CASE("every depth encoding gives the same CoC for the same scene", "[dof][c
   }
 }
 
-TEST_CASE("focus distance equal to the focal length gives a finite CoC (the seed divides by zero there)",
+TEST_CASE("focus distance equal to the focal length gives a finite CoC (the formula as published divides by zero there)",
           "[dof][camera][hard]") {
   Settings s = defaults();
   const pfx_frame f = frame_of(1920, 1080, 45, PFX_DEPTH_LINEAR);
   const Lens at_ten = make_lens(f, s, 10.0);
-  // Focus at the distance the 10 m lens's focal length names: the seed's P - F is then zero.
+  // Focus at the distance the 10 m lens's focal length names: the formula's P - F is then zero.
   const double p = at_ten.focal_length_mm / 1000.0;
   const Lens lens = make_lens(f, s, p);
   CHECK(std::isfinite(lens.coc_scale));
@@ -204,7 +205,7 @@ TEST_CASE("focus at 0 is clamped to 1 mm and focus at infinity leaves the sky sh
   const Lens infinity = make_lens(f, s, kInf);
   CHECK(infinity.focus_distance_m == kMaxFocusDistance);
   CHECK(std::fabs(coc_pixels(infinity, kInf)) < 1e-6);
-  // Focused at infinity everything is in front: CoC = -C / D (the seed's formula in the limit).
+  // Focused at infinity everything is in front: CoC = -C / D (the thin-lens formula in the limit).
   CHECK(coc_pixels(infinity, 100.0) == Approx(-infinity.coc_scale / 100.0).epsilon(1e-6));
   CHECK(coc_pixels(infinity, 100.0) < 0.0);
   // NaN asks for the settings' distance.

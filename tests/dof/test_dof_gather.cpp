@@ -1,7 +1,7 @@
 // The "gather" mode on the GPU against its CPU model (PFX_REFERENCE_MODEL), the bit-exact skip of
 // in-focus tiles, and the properties the mode is for: no halo of a sharp object over a blurred
-// background (which the seed has), no blurred background over a sharp edge, a blurred foreground
-// spreading over the sharp background behind it (which the seed does not), and energy kept.
+// background (which the 16-tap disk mode has), no blurred background over a sharp edge, a blurred foreground
+// spreading over the sharp background behind it (which the disk mode does not), and energy kept.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -171,7 +171,7 @@ double brightest_outside(const Rendered& r, int band) {
 
 }  // namespace
 
-TEST_CASE("gather mode: a sharp object does not halo into the blurred background behind it (the seed does)",
+TEST_CASE("gather mode: a sharp object does not halo into the blurred background behind it (the disk mode does)",
           "[dof][gather]") {
   const Frame f = square_over_backdrop(1.0f, 0.0625f);
   for (const char* resolution : {"half", "full"}) {
@@ -216,7 +216,7 @@ TEST_CASE("gather mode: a blurred foreground spreads over the sharp background b
     CHECK(at_edge < 0.8);
     CHECK(beyond < 0.01);
   }
-  // The seed leaves the sharp background sharp: the foreground's blur ends at its own edge.
+  // The disk mode leaves the sharp background sharp: the foreground's blur ends at its own edge.
   Rig& rig = gather_rig("half");
   rig.set("dof.mode=seed");
   CHECK(rig.render(f).output[(static_cast<size_t>(32) * 96 + 31) * 4] == 0.0f);

@@ -1,4 +1,4 @@
-// The "seed" mode on the GPU against its CPU model (PFX_REFERENCE_MODEL), and what the seed's
+// The "seed" mode on the GPU against its CPU model (PFX_REFERENCE_MODEL), and what the disk mode's
 // algorithm does that the tests pin down: in-focus pixels untouched, blur only past 1 px.
 #include <catch2/catch.hpp>
 
@@ -85,7 +85,7 @@ TEST_CASE("seed mode leaves pixels whose CoC is at most 1 px exactly as they wer
   CHECK(blurred > 1000);
 }
 
-TEST_CASE("the seed-mode model comparison catches a 10% f-number error", "[dof][seed]") {
+TEST_CASE("the disk-mode (seed) model comparison catches a 10% f-number error", "[dof][seed]") {
   Rig& rig = seed_rig();
   const Frame f = scene(96, 64);
   Rendered r = rig.render(f);

@@ -1,6 +1,6 @@
 // Every mode against the ground truth of the synthetic scene (lens-sampled, dof_scene.hpp), with
 // the quality targets: the gather at 32 samples at least 2x closer to the truth than the
-// seed (relative RMSE), and no halo wider than 1 px around the sharp subject (the seed's is wider).
+// seed (relative RMSE), and no halo wider than 1 px around the sharp subject (the disk mode's is wider).
 // 384x216 at f/0.12 blurs as much, in pixels per frame width, as 1920x1080 at f/0.6: near CoC
 // -22 px, the far wall +9 px.
 #include <catch2/catch.hpp>
@@ -68,7 +68,7 @@ Score score(Rig& rig, const std::string& mode, const std::string& resolution, in
 
 }  // namespace
 
-TEST_CASE("against the lens-sampled truth: gather is at least 2x closer than the seed, and halo-free",
+TEST_CASE("against the lens-sampled truth: gather is at least 2x closer than the disk mode, and halo-free",
           "[dof][truth]") {
   Rig rig;
   const Score seed = score(rig, "seed", "half", 16);

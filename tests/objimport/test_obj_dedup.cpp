@@ -1,6 +1,6 @@
-// Deduplication on full 32-bit indices. The two named cases are the seed's flaws: its 21-bit
-// packing of (v, vt, vn) into one 64-bit key merges distinct corners once an index passes 2^21,
-// and its 16-bit indices wrap past 65,535 vertices. The files are made here; every corner is
+// Deduplication on full 32-bit indices. The two named cases are a common loader's shortcuts: a
+// 21-bit packing of (v, vt, vn) into one 64-bit key merges distinct corners once an index passes
+// 2^21, and its 16-bit indices wrap past 65,535 vertices. The files are made here; every corner is
 // checked against the values written into the file.
 #include <catch2/catch.hpp>
 
@@ -23,7 +23,7 @@ TEST_CASE("obj dedup: one vertex per distinct (v, vt, vn)", "[objimport][dedup]"
   CHECK(normals.mesh.vertex_count() == 6);
 }
 
-TEST_CASE("obj dedup: more than 2^21 distinct triples (the seed's 21-bit packing collides)", "[objimport][dedup][large]") {
+TEST_CASE("obj dedup: more than 2^21 distinct triples (21-bit key packing collides)", "[objimport][dedup][large]") {
   // vt k holds u = k. Face j uses v 1, 2, 3 with vt 3j+1, 3j+2, 3j+3, so every corner is a
   // distinct triple and there are `count` of them, past 2^21.
   const uint32_t count = (1u << 21) + 1 + 3 * 1000;
@@ -33,7 +33,7 @@ TEST_CASE("obj dedup: more than 2^21 distinct triples (the seed's 21-bit packing
   for (uint32_t k = 1; k <= count; k += 3)
     text += "f 1/" + std::to_string(k) + " 2/" + std::to_string(k + 1) + " 3/" + std::to_string(k + 2) + "\n";
 
-  // The seed's key, (v << 42) + (vt << 21) + vn, does merge distinct triples of this file:
+  // The packed key, (v << 42) + (vt << 21) + vn, does merge distinct triples of this file:
   // (v 2, vt 5) and (v 1, vt 2^21 + 5) give the same key.
   std::set<uint64_t> packed;
   for (uint32_t k = 1; k <= count; ++k) packed.insert((uint64_t{(k - 1) % 3 + 1} << 42) + (uint64_t{k} << 21));
@@ -54,7 +54,7 @@ TEST_CASE("obj dedup: more than 2^21 distinct triples (the seed's 21-bit packing
   CHECK(wrong == 0);
 }
 
-TEST_CASE("obj dedup: more than 65,535 vertices (the seed's 16-bit indices wrap)", "[objimport][dedup]") {
+TEST_CASE("obj dedup: more than 65,535 vertices (16-bit indices wrap)", "[objimport][dedup]") {
   const uint32_t count = 70002;
   std::string text;
   for (uint32_t k = 1; k <= count; ++k) text += "v " + std::to_string(k) + " " + std::to_string(k % 7) + " 0\n";

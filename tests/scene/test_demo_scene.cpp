@@ -1,4 +1,4 @@
-// The built-in demo scene: seed 003's 400-light grid, the extra seeded lights, reproducibility;
+// The built-in demo scene: the 400-light grid, the extra seeded lights, reproducibility;
 // and pfx-bench's light-field scene (its lights' density).
 #include <catch2/catch.hpp>
 
@@ -19,7 +19,7 @@ bool same_lights(const std::vector<pfx_light>& a, const std::vector<pfx_light>& 
 
 }  // namespace
 
-TEST_CASE("the demo holds the seed's 20x20 grid: 2 m apart, 1 m up, corner colours, intensity 0.25..4", "[scene]") {
+TEST_CASE("the demo holds the 20x20 light grid: 2 m apart, 1 m up, corner colours, intensity 0.25..4", "[scene]") {
   const Scene scene = make_demo_scene();
   std::string error;
   REQUIRE(validate_scene(scene, &error));
@@ -28,7 +28,7 @@ TEST_CASE("the demo holds the seed's 20x20 grid: 2 m apart, 1 m up, corner colou
   std::set<int> colours;
   for (int i = 0; i < 400; ++i) {
     const pfx_light& light = scene.lights[i];
-    // The seed: x = (i % 20) * 2 - 19, z = (i / 20) * 2 - 19.
+    // The grid: x = (i % 20) * 2 - 19, z = (i / 20) * 2 - 19.
     CHECK(light.position[0] == float((i % 20) * 2 - 19));
     CHECK(light.position[1] == 1.0f);
     CHECK(light.position[2] == float((i / 20) * 2 - 19));

@@ -65,7 +65,7 @@ TEST_CASE("the rig scales with the model: the same light at any size and place",
       CHECK(h.position[a] == Approx(expected).margin(1e-3 * 250));
     }
     CHECK(h.range == Approx(250 * s.range).epsilon(1e-5));
-    // Seed 003's falloff 1 / (1 + d^2) at half the range gives the same light at both sizes.
+    // The tiled shading falloff 1 / (1 + d^2) at half the range gives the same light at both sizes.
     const double at_small = s.intensity / (1 + 0.25 * s.range * s.range);
     const double at_huge = h.intensity / (1 + 0.25 * h.range * h.range);
     CHECK(at_huge == Approx(at_small).epsilon(1e-4));

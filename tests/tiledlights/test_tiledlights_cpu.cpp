@@ -1,4 +1,4 @@
-// The GL-free parts of tiledlights: light ranges, light checks, the sub-frustum grid of seed 003
+// The GL-free parts of tiledlights: light ranges, light checks, the sub-frustum grid of tiled shading
 // (conservative against points projected through the camera's own matrix), the references.
 #include <catch2/catch.hpp>
 
@@ -57,7 +57,7 @@ pfx_frame frame_with(int width, int height, const std::vector<pfx_light>& lights
 
 }  // namespace
 
-TEST_CASE("ranges: the cutoff rule ends where the light falls to the cutoff, the seed's is 3 sqrt(peak)", "[tiledlights]") {
+TEST_CASE("ranges: the cutoff rule ends where the light falls to the cutoff, the sqrt-colour rule's is 3 sqrt(peak)", "[tiledlights]") {
   const pfx_light l = light_at(0, 0, 0, 4.0f);  // peak = 4 * max(1, 0.5, 0.25) = 4
   const double r = light_range(l, RANGE_CUTOFF, 0.05);
   CHECK(4.0 / (1 + r * r) == Approx(0.05));
@@ -107,7 +107,7 @@ TEST_CASE("a pixel's tile by the shader's integer rule is the tile whose pixel s
     }
 }
 
-TEST_CASE("seed 003's grid culling is conservative: every light reaching a point is in its tile's list", "[tiledlights]") {
+TEST_CASE("the tile grid's culling is conservative: every light reaching a point is in its tile's list", "[tiledlights]") {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (auto [w, h, gx, gy] : {std::tuple{1280, 720, 8, 4}, std::tuple{97, 61, 8, 4}, std::tuple{1, 1, 8, 4},

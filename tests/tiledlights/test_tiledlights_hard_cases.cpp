@@ -1,6 +1,6 @@
 // The named hard cases: zero lights, lights behind the camera, through the near plane, around the
 // camera, covering the whole view, zero intensity, bad light values, odd sizes and 1x1, other depth
-// encodings, the seed's range rule, the emissive base. Crowded lists: test_tiledlights_dense.cpp.
+// encodings, the sqrt-colour range rule (id seed), the emissive base. Crowded lists: test_tiledlights_dense.cpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -153,7 +153,7 @@ TEST_CASE("tile sizes, grids and slice counts change nothing in the image", "[ti
   }
 }
 
-TEST_CASE("the seed's range rule and explicit ranges", "[tiledlights][gl]") {
+TEST_CASE("the sqrt-colour range rule and explicit ranges", "[tiledlights][gl]") {
   Rig rig;
   rig.set("range_rule=seed");
   pfx::app::Scene scene = pfx::app::make_demo_scene();
