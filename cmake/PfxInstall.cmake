@@ -13,7 +13,7 @@
 # own GL loader and fills it through pfx_host::get_proc_address (docs/sdk.md).
 include(CMakePackageConfigHelpers)
 
-# The programs look for plugins at BIN/../lib/pfx/plugins (host/common/plugin_directory.cpp), so
+# The programs look for plugins at BIN/../lib/pfx/plugins (host/lib/common/plugin_directory.cpp), so
 # this path is fixed, not LIBDIR: with PREFIX=/usr, LIBDIR is lib/x86_64-linux-gnu on Debian.
 # PFX_INSTALL_PLUGINDIR itself is set in PfxPlugin.cmake, which is included before any plugin exists.
 set(PFX_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/pfx)

@@ -1,4 +1,4 @@
-// What the tiledlights GL tests share: a scene's G-buffer rendered by the host (host/scene) and read
+// What the tiledlights GL tests share: a scene's G-buffer rendered by the host (host/lib/scene) and read
 // back, a chain holding the tiledlights plugin (loaded from its build path), the frame, the output
 // and the plugin's CPU references of the same inputs. Images are rows bottom first, RGBA.
 #pragma once
