@@ -1,5 +1,6 @@
 // Every before/after pair of pictures in docs/ differs where it says an effect acted: a picture
-// that claims an effect must show it (a pfx-inject pair was once the same file twice).
+// that claims an effect must show it (a pfx-inject pair was once the same file twice), and no
+// picture is another under a second name.
 //
 // Which pictures are pairs, found by name so a new pair is checked without touching this file:
 //   1. NAME-before.png and NAME-after.png in the same folder, anywhere under docs/ (docs/inject,
@@ -19,6 +20,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <set>
 
 #include "png_io.hpp"
@@ -101,4 +105,19 @@ TEST_CASE("every before/after picture pair in docs/ shows its effect") {
     if (kMeantToBeEqual.count(name)) CHECK(share == 0);
     else CHECK(share >= kChangedShare);
   }
+}
+
+// Two settings that give the same picture get one picture and a sentence, not the same file twice
+// under two names that a reader takes for two results.
+TEST_CASE("no two pictures in docs/ are the same file") {
+  std::map<std::string, fs::path> seen;  // bytes -> the first picture holding them
+  for (const auto& entry : fs::recursive_directory_iterator(PFX_DOCS_DIR)) {
+    if (entry.path().extension() != ".png") continue;
+    std::ifstream file(entry.path(), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const auto [first, added] = seen.emplace(std::move(bytes), entry.path());
+    INFO(entry.path().string() << " is byte for byte " << first->second.string());
+    CHECK(added);
+  }
+  CHECK(seen.size() >= 20);
 }
