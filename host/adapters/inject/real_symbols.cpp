@@ -21,11 +21,14 @@ __attribute__((no_sanitize_address, no_sanitize_undefined)) DlsymFunction find_r
   return reinterpret_cast<DlsymFunction>(dlvsym(RTLD_NEXT, "dlsym", "GLIBC_2.2.5"));
 }
 
-// The real function an application's lookup found for each of our hooks (hook_table.hpp), in a
-// fixed table: lookups happen on any thread, and a remembered pointer never changes meaning.
+// Per hook (hook_table.hpp), in a fixed table since lookups happen on any thread: the real
+// function an application's lookup found, and the one we found ourselves when it looked nothing
+// up. Ours is kept once found: the library stays loaded while the application calls through
+// it, so a present costs an atomic load, not a symbol lookup.
 struct Remembered {
   std::atomic<Proc> real{nullptr};
   std::atomic<const char*> via{nullptr};
+  std::atomic<Proc> found{nullptr};
 };
 std::array<Remembered, kHookCount> remembered;
 
@@ -75,10 +78,16 @@ const char* reached_through(const char* name) {
 }
 
 Proc real_proc(Library library, const char* name) {
-  if (Remembered* slot = remembered_slot(name))
+  Remembered* slot = remembered_slot(name);
+  if (slot) {
     if (Proc real = slot->real.load()) return real;
-  if (void* next = real_dlsym(RTLD_NEXT, name)) return reinterpret_cast<Proc>(next);
-  return from_loaded_library(library, name);
+    if (Proc found = slot->found.load(std::memory_order_acquire)) return found;
+  }
+  Proc found = reinterpret_cast<Proc>(real_dlsym(RTLD_NEXT, name));
+  if (!found) found = from_loaded_library(library, name);
+  // Not found (the library is not loaded yet) is not kept: the next call looks again.
+  if (slot && found) slot->found.store(found, std::memory_order_release);
+  return found;
 }
 
 }  // namespace pfx::inject

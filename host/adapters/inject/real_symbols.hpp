@@ -17,7 +17,8 @@ enum class Library { GLX, EGL };
 // The function the application meant by `name`: the one a dlsym or get-proc-address call of the
 // application returned before we swapped in ours (remembered with remember()), else the next
 // definition after ours in the lookup order, else the one in the library if it is loaded at all
-// (never loaded by us). Null when the library is not loaded.
+// (never loaded by us). Null when the library is not loaded. For our hooks the function found is
+// kept, so only the first present of each kind pays for the lookup.
 Proc real_proc(Library library, const char* name);
 // Records what the application's lookup (`via`: "dlsym", "glXGetProcAddressARB"...) really
 // found, for real_proc.
