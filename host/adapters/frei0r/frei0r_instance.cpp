@@ -118,7 +118,7 @@ void Instance::update(double time, const uint32_t* in, uint32_t* out) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!library_->problems_said.exchange(true))
     for (const auto& problem : library_->problems) say(problem);
-  if (!worker_) worker_ = GlWorker::acquire();
+  if (!worker_) worker_ = adapters::GlWorker::acquire();
   std::string error;
   bool rendered = false;
   const bool ran = worker_->run([&] { rendered = render(time, in, out, &error); }, &error);

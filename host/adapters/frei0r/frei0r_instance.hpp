@@ -48,7 +48,7 @@ class Instance {
   std::vector<std::string> texts_;  // what get_param handed out for string parameters
   uint64_t revision_ = 1;           // changes with every value set
   uint64_t frames_ = 0;
-  std::shared_ptr<GlWorker> worker_;
+  std::shared_ptr<adapters::GlWorker> worker_;
   std::unique_ptr<GlSide> gl_;      // made, used and destroyed on the worker
   std::string said_;                // the last message said, so each is said once
 };

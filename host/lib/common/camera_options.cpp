@@ -34,20 +34,21 @@ bool parse_camera_options(const std::string& text, CameraOptions* out, std::stri
       return false;
     }
   }
-  if (!(options.fovy_degrees > 0 && options.fovy_degrees < 180)) {
-    *error = "--camera: fovy must be between 0 and 180 degrees";
-    return false;
-  }
-  if (!(options.near_plane > 0) || std::isinf(options.near_plane)) {
-    *error = "--camera: near must be a positive finite distance";
-    return false;
-  }
-  if (!(options.far_plane > options.near_plane)) {
-    *error = "--camera: far must be greater than near (use far=inf for an infinite projection)";
+  const std::string problem = camera_problem(options);
+  if (!problem.empty()) {
+    *error = "--camera: " + problem;
     return false;
   }
   *out = options;
   return true;
+}
+
+std::string camera_problem(const CameraOptions& options) {
+  if (!(options.fovy_degrees > 0 && options.fovy_degrees < 180)) return "fovy must be between 0 and 180 degrees";
+  if (!(options.near_plane > 0) || std::isinf(options.near_plane)) return "near must be a positive finite distance";
+  if (!(options.far_plane > options.near_plane))
+    return "far must be greater than near (use far=inf for an infinite projection)";
+  return "";
 }
 
 pfx_camera make_camera(const CameraOptions& options, int width, int height) {

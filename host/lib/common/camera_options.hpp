@@ -17,6 +17,8 @@ struct CameraOptions {
 
 // Parses "fovy=45,near=0.1,far=1000" (any subset, any order). False with *error naming the key.
 bool parse_camera_options(const std::string& text, CameraOptions* out, std::string* error);
+// What is wrong with the lens ("near must be a positive finite distance"), or "" when nothing is.
+std::string camera_problem(const CameraOptions& options);
 pfx_camera make_camera(const CameraOptions& options, int width, int height);
 
 }  // namespace pfx::app

@@ -52,10 +52,7 @@ bool has_display_default(const pfx_param_desc& p) {
   return (p.flags & PFX_PARAM_HAS_DISPLAY_DEFAULT) && PFX_STRUCT_HAS(&p, pfx_param_desc, display_default);
 }
 
-namespace {
-
-// A value as the JSON listing gives it: an enum's item id, a bool, a number, an array for vectors.
-nlohmann::ordered_json json_value(const pfx_param_desc& p, const pfx_value& value) {
+nlohmann::ordered_json value_json(const pfx_param_desc& p, const pfx_value& value) {
   if (p.type == PFX_PARAM_ENUM) return value_text(p, value);
   if (p.type == PFX_PARAM_BOOL) return value.v[0] != 0;
   if (components(p.type) == 1) return number(value.v[0]);
@@ -64,7 +61,41 @@ nlohmann::ordered_json json_value(const pfx_param_desc& p, const pfx_value& valu
   return array;
 }
 
-}  // namespace
+nlohmann::ordered_json parameter_json(const pfx_effect_desc& effect, const pfx_param_desc& d) {
+  nlohmann::ordered_json q;
+  q["id"] = d.id;
+  q["key"] = std::string(effect.id) + "." + d.id;
+  q["label"] = d.label ? d.label : d.id;
+  q["tooltip"] = d.tooltip ? d.tooltip : "";
+  q["unit"] = d.unit ? d.unit : "";
+  q["group"] = d.group ? d.group : "";
+  q["type"] = type_name(d.type);
+  q["hard_min"] = number(d.hard_min);
+  q["hard_max"] = number(d.hard_max);
+  q["display_min"] = number(d.display_min);
+  q["display_max"] = number(d.display_max);
+  q["step"] = number(d.step);
+  q["out_of_range"] = (d.flags & PFX_PARAM_REJECT_OUT_OF_RANGE) ? "reject" : "clamp";
+  q["logarithmic"] = (d.flags & PFX_PARAM_LOGARITHMIC) != 0;
+  q["default"] = value_json(d, d.default_value);
+  if (has_display_default(d)) q["display_default"] = value_json(d, d.display_default);
+  if (d.type == PFX_PARAM_ENUM) {
+    q["items"] = nlohmann::ordered_json::array();
+    for (uint32_t k = 0; k < d.item_count; ++k)
+      q["items"].push_back({{"id", d.items[k].id}, {"label", d.items[k].label ? d.items[k].label : d.items[k].id}});
+  }
+  return q;
+}
+
+nlohmann::ordered_json effect_json(const pfx_effect_desc& effect) {
+  nlohmann::ordered_json e;
+  e["id"] = effect.id;
+  e["label"] = effect.label ? effect.label : effect.id;
+  e["description"] = effect.description ? effect.description : "";
+  e["parameters"] = nlohmann::ordered_json::array();
+  for (uint32_t i = 0; i < effect.param_count; ++i) e["parameters"].push_back(parameter_json(effect, effect.params[i]));
+  return e;
+}
 
 std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& load_errors) {
   std::string out;
@@ -104,40 +135,7 @@ std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const
     p["path"] = plugin->path;
     p["abi"] = std::to_string(PFX_ABI_MAJOR) + "." + std::to_string(plugin->abi_minor);
     p["effects"] = nlohmann::ordered_json::array();
-    for (const pfx_effect_desc* effect : plugin->effects) {
-      nlohmann::ordered_json e;
-      e["id"] = effect->id;
-      e["label"] = effect->label ? effect->label : effect->id;
-      e["description"] = effect->description ? effect->description : "";
-      e["parameters"] = nlohmann::ordered_json::array();
-      for (uint32_t i = 0; i < effect->param_count; ++i) {
-        const pfx_param_desc& d = effect->params[i];
-        nlohmann::ordered_json q;
-        q["id"] = d.id;
-        q["key"] = std::string(effect->id) + "." + d.id;
-        q["label"] = d.label ? d.label : d.id;
-        q["tooltip"] = d.tooltip ? d.tooltip : "";
-        q["unit"] = d.unit ? d.unit : "";
-        q["group"] = d.group ? d.group : "";
-        q["type"] = type_name(d.type);
-        q["hard_min"] = number(d.hard_min);
-        q["hard_max"] = number(d.hard_max);
-        q["display_min"] = number(d.display_min);
-        q["display_max"] = number(d.display_max);
-        q["step"] = number(d.step);
-        q["out_of_range"] = (d.flags & PFX_PARAM_REJECT_OUT_OF_RANGE) ? "reject" : "clamp";
-        q["logarithmic"] = (d.flags & PFX_PARAM_LOGARITHMIC) != 0;
-        q["default"] = json_value(d, d.default_value);
-        if (has_display_default(d)) q["display_default"] = json_value(d, d.display_default);
-        if (d.type == PFX_PARAM_ENUM) {
-          q["items"] = nlohmann::ordered_json::array();
-          for (uint32_t k = 0; k < d.item_count; ++k)
-            q["items"].push_back({{"id", d.items[k].id}, {"label", d.items[k].label ? d.items[k].label : d.items[k].id}});
-        }
-        e["parameters"].push_back(q);
-      }
-      p["effects"].push_back(e);
-    }
+    for (const pfx_effect_desc* effect : plugin->effects) p["effects"].push_back(effect_json(*effect));
     root["plugins"].push_back(p);
   }
   root["load_errors"] = load_errors;

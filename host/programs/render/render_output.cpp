@@ -4,6 +4,7 @@
 
 #include "cli_text.hpp"
 #include "exr_io.hpp"
+#include "frame_report_json.hpp"
 #include "image_stats.hpp"
 #include "image_texture.hpp"
 #include "png_io.hpp"
@@ -53,23 +54,11 @@ nlohmann::ordered_json report_json(const std::string& renderer, const pfx_frame&
   root["renderer"] = renderer;
   if (!input.is_null()) root["input"] = input;
   root["lights"] = frame.light_count;
-  root["effects"] = report.effects_run;
-  root["effects_skipped"] = report.effects_skipped;
-  root["passes"] = nlohmann::ordered_json::array();
-  for (const auto& pass : report.passes)
-    root["passes"].push_back({{"effect", pass.effect}, {"pass", pass.pass}, {"ms", pass.ms}});
-  root["total_ms"] = report.times.total_ms;
-  root["timing"] = report.timing;
-  root["peak_target_bytes"] = report.peak_target_bytes;
-  root["unpooled_target_bytes"] = report.unpooled_target_bytes;
+  add_frame_report(report, &root);
   root["output"] = {{"width", stats.width}, {"height", stats.height}, {"min", stats.min}, {"max", stats.max},
                     {"mean", stats.mean}, {"nonfinite", stats.nonfinite}};
   root["files"] = outputs;
-  for (const auto& [effect, members] : report.effect_reports) {
-    // An effect's figures are JSON members without braces; a malformed report is shown as text.
-    auto parsed = nlohmann::ordered_json::parse("{" + members + "}", nullptr, false);
-    root["effect_reports"][effect] = parsed.is_discarded() ? nlohmann::ordered_json(members) : parsed;
-  }
+  if (!report.effect_reports.empty()) root["effect_reports"] = effect_reports_json(report);
   return root;
 }
 

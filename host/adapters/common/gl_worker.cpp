@@ -2,7 +2,7 @@
 
 #include "headless_context.hpp"
 
-namespace pfx::frei0r {
+namespace pfx::adapters {
 namespace {
 
 std::mutex worker_mutex;
@@ -19,6 +19,8 @@ std::shared_ptr<GlWorker> GlWorker::acquire() {
   }
   return worker;
 }
+
+std::shared_ptr<GlWorker> GlWorker::start() { return std::shared_ptr<GlWorker>(new GlWorker); }
 
 GlWorker::GlWorker() { thread_ = std::thread([this] { loop(); }); }
 
@@ -77,4 +79,4 @@ bool GlWorker::run(const std::function<void()>& job, std::string* error) {
   return true;
 }
 
-}  // namespace pfx::frei0r
+}  // namespace pfx::adapters

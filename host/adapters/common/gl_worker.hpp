@@ -1,10 +1,11 @@
-// The thread the frei0r plugins run their GL on. frei0r hands a plugin CPU frames on whatever
-// thread the host likes, and that thread may have a context of its own current (Kdenlive's GPU
-// effects, a GLX context: eglMakeCurrent fails there), so the plugin never touches the caller's
-// GL: its work runs on a thread it owns, with its own surfaceless EGL 4.5 core context, and the
-// caller waits for it. One worker serves every instance of the library in the process (their
-// frames take turns; the renderer uses every core for each); it starts with the first instance
-// that renders and stops, destroying its context, when the last one is gone.
+// A thread that runs an adapter's GL work with a context of its own. A host hands an adapter CPU
+// frames on whatever thread it likes, and that thread may have a context of its own current
+// (Kdenlive's GPU effects, a GLX context: eglMakeCurrent fails there; a Python script's own GL
+// window), so the adapter never touches the caller's GL: its work runs on a thread it owns, with
+// its own surfaceless EGL 4.5 core context, and the caller waits for it. The frei0r plugins share
+// one worker per process (acquire: their frames take turns, and the renderer uses every core for
+// each); the Python module gives each Chain its own (start), so that chains on different threads
+// run at the same time. A worker stops, destroying its context, when its last holder lets go.
 #pragma once
 
 #include <condition_variable>
@@ -14,12 +15,14 @@
 #include <string>
 #include <thread>
 
-namespace pfx::frei0r {
+namespace pfx::adapters {
 
 class GlWorker {
  public:
   // The worker of this process, started if none runs; each holder keeps it running.
   static std::shared_ptr<GlWorker> acquire();
+  // A worker of the caller's own, shared with nobody.
+  static std::shared_ptr<GlWorker> start();
   ~GlWorker();  // on the last holder's thread: stops the worker, which destroys its context
   GlWorker(const GlWorker&) = delete;
   GlWorker& operator=(const GlWorker&) = delete;
@@ -45,4 +48,4 @@ class GlWorker {
   std::thread thread_;
 };
 
-}  // namespace pfx::frei0r
+}  // namespace pfx::adapters

@@ -1,0 +1,167 @@
+// The Python module `pfx` (docs/python.md): the effects found, a Chain that runs them over numpy
+// pictures on a headless OpenGL 4.5 context, and the model importers. The work is in
+// python_chain.cpp, numpy_image.cpp and model_import.cpp; this file says what Python sees.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "model_import.hpp"
+#include "numpy_image.hpp"
+#include "plugin_listing.hpp"
+#include "plugin_set.hpp"
+#include "python_chain.hpp"
+#include "python_errors.hpp"
+#include "python_values.hpp"
+
+namespace py = pybind11;
+using namespace py::literals;
+using pfx::python::PythonChain;
+
+namespace {
+
+using PluginList = std::optional<std::vector<std::string>>;
+
+void warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+py::list effects(const PluginList& plugins) {
+  const auto registry = pfx::python::load_plugin_set(plugins, warn);
+  py::list list;
+  for (const auto& plugin : registry->plugins())
+    for (const pfx_effect_desc* effect : plugin->effects) {
+      nlohmann::ordered_json json = pfx::app::effect_json(*effect);
+      json["plugin"] = plugin->id;
+      json["plugin_path"] = plugin->path;
+      list.append(pfx::python::to_python(json));
+    }
+  return list;
+}
+
+std::unique_ptr<PythonChain> make_chain(const PluginList& effects, const PluginList& plugins,
+                                        const std::string& defaults, const std::string& timing) {
+  if (defaults != "scene" && defaults != "display")
+    throw py::value_error("defaults must be 'scene' (linear HDR pictures) or 'display' (8-bit pictures), not '" +
+                          defaults + "'");
+  auto registry = pfx::python::load_plugin_set(plugins, warn);
+  pfx::python::ChainSettings settings;
+  settings.effects = effects;
+  settings.display_defaults = defaults == "display";
+  settings.timing = timing;
+  py::gil_scoped_release release;  // the effects' programs compile now
+  return std::make_unique<PythonChain>(std::move(registry), settings);
+}
+
+pfx_depth_encoding depth_encoding(const std::string& name) {
+  if (name == "linear") return PFX_DEPTH_LINEAR;
+  if (name == "hardware") return PFX_DEPTH_HARDWARE;
+  if (name == "hardware_reversed") return PFX_DEPTH_HARDWARE_REVERSED;
+  throw py::value_error("depth_encoding must be 'linear', 'hardware' or 'hardware_reversed', not '" + name + "'");
+}
+
+py::array run(PythonChain& chain, const py::array& rgba, const std::optional<py::array>& depth,
+              const std::optional<pfx::app::CameraOptions>& camera, const std::string& encoding, double time,
+              uint64_t frame_index) {
+  pfx::python::RunRequest request;
+  pfx::python::PictureForm form;
+  request.image = pfx::python::image_from_numpy(rgba, depth, &form);
+  request.depth_encoding = depth_encoding(encoding);
+  if (camera) request.camera = *camera;
+  request.time_seconds = time;
+  request.frame_index = frame_index;
+  pfx::app::Image result;
+  {
+    py::gil_scoped_release release;
+    result = chain.run(request);
+  }
+  return pfx::python::numpy_from_image(result, form);
+}
+
+pfx::app::CameraOptions make_camera(double fovy, double near_plane, double far_plane) {
+  pfx::app::CameraOptions camera;
+  camera.fovy_degrees = fovy;
+  camera.near_plane = near_plane;
+  camera.far_plane = far_plane;
+  if (const std::string problem = pfx::app::camera_problem(camera); !problem.empty())
+    throw py::value_error("Camera: " + problem);
+  return camera;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(pfx, m) {
+  m.doc() = "pfx post effects on numpy pictures, headless (docs/python.md)";
+  m.attr("__version__") = PFX_VERSION;
+  static py::exception<pfx::python::Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<pfx::python::ParameterError> parameter_error(m, "ParameterError", error.ptr());
+  // Registered last, tried first: the subclass before its base.
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const pfx::python::ParameterError& e) {
+      parameter_error(e.what());
+    } catch (const pfx::python::Error& e) {
+      error(e.what());
+    }
+  });
+
+  m.def("effects", &effects, "plugins"_a = py::none(),
+        "The effects of the plugins found: a list of dicts with id, label, description, parameters (each with "
+        "key, type, range, default...), plugin and plugin_path, as pfx-render --list --json describes them.");
+
+  py::class_<pfx::app::CameraOptions>(m, "Camera", "The lens a picture was seen through, as pfx-render's --camera.")
+      .def(py::init(&make_camera), "fovy"_a = 45.0, "near"_a = 0.1, "far"_a = 1000.0,
+           "fovy: vertical field of view in degrees; near, far: the clip planes in metres (far may be inf).")
+      .def_readonly("fovy", &pfx::app::CameraOptions::fovy_degrees)
+      .def_readonly("near", &pfx::app::CameraOptions::near_plane)
+      .def_readonly("far", &pfx::app::CameraOptions::far_plane)
+      .def("__repr__", [](const pfx::app::CameraOptions& c) {
+        return "pfx.Camera(fovy=" + py::repr(py::float_(c.fovy_degrees)).cast<std::string>() +
+               ", near=" + py::repr(py::float_(c.near_plane)).cast<std::string>() +
+               ", far=" + py::repr(py::float_(c.far_plane)).cast<std::string>() + ")";
+      });
+
+  py::class_<PythonChain>(m, "Chain",
+                          "Effects run in order over pictures, on an OpenGL 4.5 context of the chain's own. "
+                          "Use one Chain from one thread at a time; several may run at once on different threads.")
+      .def(py::init(&make_chain), "effects"_a = py::none(), "plugins"_a = py::none(), "defaults"_a = "scene",
+           "timing"_a = "auto",
+           "effects: effect ids in order (an id twice makes a second instance, 'bloom#2'); None: every effect "
+           "found, in the default order. plugins: plugin files or folders; None: the folder beside the module "
+           "and PFX_PLUGIN_PATH. defaults: 'scene' for linear HDR pictures, 'display' for 8-bit ones. timing: "
+           "'auto', 'gpu', 'finish' or 'off'.")
+      .def("set", [](PythonChain& chain, const std::string& key, const py::handle& value) {
+            std::string note;
+            chain.set(key, pfx::python::value_text(value), &note);
+            if (!note.empty()) warn(key + ": " + note);
+          }, "key"_a, "value"_a,
+          "Sets 'effect.parameter' ('bloom#2.threshold' for a second instance) as pfx-render's --set does. "
+          "Raises pfx.ParameterError for an unknown key or a value the parameter refuses; warns when it clamps.")
+      .def("get", [](const PythonChain& chain, const std::string& key) { return pfx::python::to_python(chain.get(key)); },
+           "key"_a, "The current value of 'effect.parameter'.")
+      .def("params", [](const PythonChain& chain) { return pfx::python::to_python(chain.params()); },
+           "{instance: {parameter: {'value': ..., and its description}}} in chain order.")
+      .def_property_readonly("effects", &PythonChain::instances, "The instances in chain order: 'bloom', 'bloom#2'...")
+      .def("run", &run, "rgba"_a, "depth"_a = py::none(), "camera"_a = py::none(), "depth_encoding"_a = "linear",
+           "time"_a = 0.0, "frame_index"_a = 0,
+           "Runs the chain over rgba (float16 or float32, H x W x 4 or H x W x 3, top row first) and returns the "
+           "result in the same dtype and shape. depth: H x W, linear metres along the view axis, or window depth "
+           "with depth_encoding 'hardware' or 'hardware_reversed'. camera: pfx.Camera (default fovy 45, near 0.1, "
+           "far 1000).")
+      .def_property_readonly("report", [](const PythonChain& chain) { return pfx::python::to_python(chain.report()); },
+                             "The last run's report as pfx-render --json gives it: passes with their times in ms, "
+                             "total_ms, timing, peak_target_bytes...; None before the first run.")
+      .def_property_readonly("renderer", &PythonChain::renderer, "GL_RENDERER and GL_VERSION of the chain's context.")
+      .def("close", [](PythonChain& chain) {
+            py::gil_scoped_release release;
+            chain.close();
+          }, "Frees the effects, their GL objects and the context now; the Chain cannot run afterwards.")
+      .def("__enter__", [](py::object self) { return self; })
+      .def("__exit__", [](PythonChain& chain, const py::args&) {
+        py::gil_scoped_release release;
+        chain.close();
+      });
+
+  m.def("import_model", &pfx::python::import_model, "path"_a, "plugins"_a = py::none(), "threads"_a = 0,
+        "Imports a model file (OBJ...) through the importer plugins: positions, normals, uvs, colors, indices, "
+        "submeshes as numpy arrays, with materials, bounds and warnings.");
+}

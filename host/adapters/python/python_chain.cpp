@@ -1,0 +1,191 @@
+#include "python_chain.hpp"
+
+#include <glad/gl.h>
+
+#include <pfx/host/gl_error.hpp>
+
+#include "chain_builder.hpp"
+#include "default_chain.hpp"
+#include "frame_description.hpp"
+#include "frame_report_json.hpp"
+#include "image_texture.hpp"
+#include "plugin_listing.hpp"
+#include "python_errors.hpp"
+#include "timing_choice.hpp"
+
+namespace pfx::python {
+namespace {
+
+// "bloom#2.threshold" -> ("bloom#2", "threshold"): parameter ids have no '.', instance names neither.
+bool split_key(const std::string& key, std::string* instance, std::string* param) {
+  const size_t dot = key.find('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == key.size()) return false;
+  *instance = key.substr(0, dot);
+  *param = key.substr(dot + 1);
+  return true;
+}
+
+}  // namespace
+
+PythonChain::PythonChain(std::unique_ptr<host::PluginRegistry> registry, const ChainSettings& settings)
+    : worker_(adapters::GlWorker::start()), registry_(std::move(registry)) {
+  params_ = std::make_unique<host::ParamStore>(settings.display_defaults ? host::DefaultSet::DISPLAY_REFERRED
+                                                                         : host::DefaultSet::SCENE_REFERRED);
+  for (const auto& effect : registry_->effects()) params_->add_effect(effect.desc);
+  const std::vector<std::string> effects = settings.effects ? *settings.effects : app::default_chain(*registry_);
+  try {
+    run_on_gl_thread([&](std::string* error) {
+      renderer_ = worker_->renderer();
+      host::Timing timing = host::Timing::OFF;
+      if (!app::parse_timing(settings.timing, renderer_, &timing)) {
+        *error = "timing '" + settings.timing + "' is none of auto, gpu, finish, off";
+        return;
+      }
+      chain_ = std::make_unique<host::Chain>(*registry_, *params_);
+      chain_->set_timing(timing);
+      for (const auto& id : effects)
+        if (!chain_->add(id, error)) return;
+    });
+  } catch (...) {
+    close();
+    throw;
+  }
+}
+
+PythonChain::~PythonChain() { close(); }
+
+void PythonChain::close() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (chain_) {
+    std::string unused;
+    // The instances' GL objects go with the context that made them.
+    worker_->run([this] { chain_.reset(); }, &unused);
+    chain_.reset();
+  }
+  worker_.reset();  // its context is destroyed on its own thread
+  params_.reset();
+  registry_.reset();  // the plugins' deinit, once no instance is left
+}
+
+void PythonChain::check_open() const {
+  if (!params_) throw Error("this Chain was closed");
+}
+
+void PythonChain::run_on_gl_thread(const std::function<void(std::string* error)>& job) {
+  std::string error;
+  if (!worker_->run([&] {
+        try {
+          job(&error);
+        } catch (const std::exception& e) {
+          error = std::string("internal error: ") + e.what();
+        }
+      }, &error) ||
+      !error.empty())
+    throw Error(error);
+}
+
+void PythonChain::set(const std::string& key, const std::string& text, std::string* note) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  check_open();
+  std::string error;
+  if (!params_->set(key, text, &error, note)) throw ParameterError(error);
+}
+
+nlohmann::ordered_json PythonChain::get(const std::string& key) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  check_open();
+  std::string instance, param;
+  const pfx_param_desc* desc = split_key(key, &instance, &param) ? params_->descriptor(instance, param) : nullptr;
+  if (!desc) throw ParameterError("'" + key + "' names no parameter of this chain: keys are effect.parameter, as in params()");
+  // The store's JSON names the first instance "bloom", never "bloom#1".
+  const std::string first_suffix = "#1";
+  if (instance.size() > first_suffix.size() && instance.compare(instance.size() - 2, 2, first_suffix) == 0)
+    instance.resize(instance.size() - 2);
+  const nlohmann::ordered_json values = nlohmann::ordered_json::parse(params_->to_json());
+  return values.at(instance).at(param);
+}
+
+nlohmann::ordered_json PythonChain::params() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  check_open();
+  const nlohmann::ordered_json values = nlohmann::ordered_json::parse(params_->to_json());
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (size_t i = 0; i < chain_->size(); ++i) {
+    const std::string instance = chain_->instance_name(i);
+    const pfx_effect_desc* effect = params_->effect_descriptor(chain_->effect_id(i));
+    nlohmann::ordered_json params = nlohmann::ordered_json::object();
+    for (uint32_t p = 0; p < effect->param_count; ++p) {
+      nlohmann::ordered_json entry = {{"value", values.at(instance).at(effect->params[p].id)}};
+      entry.update(app::parameter_json(*effect, effect->params[p]));
+      entry["key"] = instance + "." + effect->params[p].id;  // what set() and get() take for this instance
+      params[effect->params[p].id] = entry;
+    }
+    out[instance] = params;
+  }
+  return out;
+}
+
+std::vector<std::string> PythonChain::instances() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  check_open();
+  std::vector<std::string> names;
+  for (size_t i = 0; i < chain_->size(); ++i) names.push_back(chain_->instance_name(i));
+  return names;
+}
+
+nlohmann::ordered_json PythonChain::report() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return report_;
+}
+
+app::Image PythonChain::run(const RunRequest& request) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  check_open();
+  app::Image result;
+  run_on_gl_thread([&](std::string* error) { render(request, &result, error); });
+  return result;
+}
+
+void PythonChain::render(const RunRequest& request, app::Image* result, std::string* error) {
+  const app::Image& image = request.image;
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (image.width > max_size || image.height > max_size) {
+    *error = "the picture is " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+             "; this OpenGL takes at most " + std::to_string(max_size) + " pixels a side";
+    return;
+  }
+  const uint32_t inputs = PFX_INPUT_COLOR | (image.has_depth() ? uint32_t(PFX_INPUT_DEPTH) : 0u);
+  pfx_frame frame = app::describe_frame(image.width, image.height, inputs, request.depth_encoding,
+                                        app::make_camera(request.camera, image.width, image.height));
+  frame.time_seconds = request.time_seconds;
+  frame.frame_index = request.frame_index;
+  // Depth is the one input beside colour a caller can give: say how, before the chain refuses.
+  for (size_t i = 0; i < chain_->size(); ++i) {
+    uint32_t needed = 0;
+    if (!chain_->enabled(i)) continue;
+    if (!chain_->inputs_needed(i, frame, &needed, error)) return;
+    if (needed & ~inputs & PFX_INPUT_DEPTH) {
+      *error = chain_->instance_name(i) + " needs depth with its current values: pass depth= (an H x W array) to run()";
+      return;
+    }
+  }
+  host::FrameTextures textures;
+  textures.color = app::upload_color_texture(image);
+  textures.depth = app::upload_depth_texture(image);
+  const uint32_t output = app::create_color_texture(image.width, image.height);
+  if (chain_->render(frame, textures, output, error)) {
+    chain_->wait_for_timings();  // the pixels are read back next anyway
+    *result = app::download_color_texture(output, image.width, image.height);
+    report_ = {{"renderer", renderer_}};
+    app::add_frame_report(chain_->report(), &report_);
+    if (!chain_->report().effect_reports.empty()) report_["effect_reports"] = app::effect_reports_json(chain_->report());
+  }
+  app::delete_texture(output);
+  app::delete_texture(textures.color);
+  app::delete_texture(textures.depth);
+  if (const GLenum gl_error = glGetError(); error->empty() && gl_error != GL_NO_ERROR)
+    *error = host::gl_error_text(gl_error) + " while running the chain";
+}
+
+}  // namespace pfx::python

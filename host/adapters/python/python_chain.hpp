@@ -1,0 +1,86 @@
+// What a pfx.Chain is: a chain of effect instances with its parameter store, its plugins and a
+// GL thread of its own (gl_worker.hpp) with a headless OpenGL 4.5 context, run over pictures the
+// caller hands in. Plain C++ (module.cpp binds it); every failure is a python_errors.hpp
+// exception carrying pfx's message.
+//
+// One thread at a time per chain (calls from several threads take turns on a mutex); chains on
+// different threads run at the same time, each on its own context.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <pfx/host/chain.hpp>
+#include <pfx/host/param_store.hpp>
+#include <pfx/host/plugin_registry.hpp>
+
+#include "camera_options.hpp"
+#include "gl_worker.hpp"
+#include "image.hpp"
+
+namespace pfx::python {
+
+struct ChainSettings {
+  std::optional<std::vector<std::string>> effects;  // effect ids in order; none: the default chain
+  bool display_defaults = false;  // start from the display-referred defaults (8-bit pictures)
+  std::string timing = "auto";    // "auto", "gpu", "finish" or "off", as pfx-render's --timing
+};
+
+// One picture through the chain.
+struct RunRequest {
+  app::Image image;  // colour, and depth when the caller gave it
+  pfx_depth_encoding depth_encoding = PFX_DEPTH_LINEAR;
+  app::CameraOptions camera;
+  double time_seconds = 0;
+  uint64_t frame_index = 0;
+};
+
+class PythonChain {
+ public:
+  // Starts the GL thread and creates the effects (their programs compile now).
+  PythonChain(std::unique_ptr<host::PluginRegistry> registry, const ChainSettings& settings);
+  ~PythonChain();
+  PythonChain(const PythonChain&) = delete;
+  PythonChain& operator=(const PythonChain&) = delete;
+
+  // "bloom.threshold", "bloom#2.threshold", with a value in --set's text form. *note gets the
+  // store's remark when it clamped the value.
+  void set(const std::string& key, const std::string& text, std::string* note);
+  // The value as the JSON listing gives it.
+  nlohmann::ordered_json get(const std::string& key) const;
+  // {instance: {parameter: {"value": ..., and the parameter's description}}}, in chain order.
+  nlohmann::ordered_json params() const;
+  // "bloom", "dof", "bloom#2": the instances in chain order.
+  std::vector<std::string> instances() const;
+
+  // Runs the chain over the picture; the result is the picture's size. Call it without holding
+  // Python's GIL: the work waits for the GL thread.
+  app::Image run(const RunRequest& request);
+  // The last run's report, as pfx-render's --json gives it (passes with their times, peak target
+  // memory...); null before the first run.
+  nlohmann::ordered_json report() const;
+  const std::string& renderer() const { return renderer_; }
+
+  // Destroys the effects, their GL objects, the context and the plugins now. Later calls raise.
+  void close();
+
+ private:
+  void check_open() const;
+  void run_on_gl_thread(const std::function<void(std::string* error)>& job);
+  void render(const RunRequest& request, app::Image* result, std::string* error);
+
+  mutable std::mutex mutex_;
+  std::shared_ptr<adapters::GlWorker> worker_;
+  std::unique_ptr<host::PluginRegistry> registry_;
+  std::unique_ptr<host::ParamStore> params_;
+  std::unique_ptr<host::Chain> chain_;  // made, used and destroyed on the GL thread
+  std::string renderer_;
+  nlohmann::ordered_json report_;
+};
+
+}  // namespace pfx::python
