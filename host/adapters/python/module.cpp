@@ -58,12 +58,21 @@ pfx_depth_encoding depth_encoding(const std::string& name) {
   throw py::value_error("depth_encoding must be 'linear', 'hardware' or 'hardware_reversed', not '" + name + "'");
 }
 
-py::array run(PythonChain& chain, const py::array& rgba, const std::optional<py::array>& depth,
+// Anything numpy can make an array of, so that a list is told what dtype it would need.
+py::array as_array(const py::object& value, const char* name) {
+  py::array array = py::array::ensure(value);
+  if (!array) throw py::type_error(std::string(name) + " must be a numpy array");
+  return array;
+}
+
+py::array run(PythonChain& chain, const py::object& rgba, const std::optional<py::object>& depth,
               const std::optional<pfx::app::CameraOptions>& camera, const std::string& encoding, double time,
               uint64_t frame_index) {
   pfx::python::RunRequest request;
   pfx::python::PictureForm form;
-  request.image = pfx::python::image_from_numpy(rgba, depth, &form);
+  std::optional<py::array> depth_array;
+  if (depth && !depth->is_none()) depth_array = as_array(*depth, "depth");
+  request.image = pfx::python::image_from_numpy(as_array(rgba, "rgba"), depth_array, &form);
   request.depth_encoding = depth_encoding(encoding);
   if (camera) request.camera = *camera;
   request.time_seconds = time;
