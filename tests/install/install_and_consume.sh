@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the current build tree into a fresh prefix and uses it the way another engine would:
 # find_package(pfx) and pkg-config builds of a small consumer, an out-of-tree plugin built with the
-# installed SDK and loaded by the installed runtime, the docs' embedding listing compiled, and the
-# installed pfx-render run. Any failing step fails the test.
+# installed SDK and loaded by the installed runtime, the docs' embedding listing compiled, the
+# installed pfx-render run and the installed Python module imported. Any failing step fails the test.
 #
 # Everything comes from the environment (set by tests/install/CMakeLists.txt):
 #   PFX_CMAKE PFX_SOURCE_DIR PFX_BUILD_DIR PFX_C_COMPILER PFX_CXX_COMPILER
@@ -10,6 +10,7 @@
 #   PFX_PLUGIN_BUILD_DIR                                  build/plugins: what must be installed
 #   PFX_GLAD_DIR                                          the generated glad, as "the author's own loader"
 #   PFX_PKG_CONFIG                                        pkg-config or pkgconf
+#   PFX_PYTHON PFX_PYTHONDIR                              the interpreter; the module's folder in the prefix
 set -u -o pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -146,5 +147,20 @@ fi
 step "installed pfx-render --help exits 0" env -u LD_LIBRARY_PATH "$prefix/$PFX_BINDIR/pfx-render" --help
 host_lib=$(env -u LD_LIBRARY_PATH ldd "$prefix/$PFX_BINDIR/pfx-render" | sed -n 's/.*libpfxhost[^ ]* => \([^ ]*\).*/\1/p')
 [[ $host_lib == "$prefix"/* ]] || fail "installed pfx-render uses libpfxhost from '${host_lib:-nowhere}', not the prefix"
+
+# ---- 6. The Python module --------------------------------------------------------------------------
+# Imported from the prefix's package folder, it must run on the prefix's libpfxhost and find the
+# prefix's plugins, not the build tree's.
+python_check='import pfx, numpy, sys
+prefix = sys.argv[1]
+assert pfx.__file__.startswith(prefix), pfx.__file__
+paths = {e["plugin_path"] for e in pfx.effects()}
+assert paths and all(p.startswith(prefix) for p in paths), paths
+with pfx.Chain(["bloom"]) as chain:
+    assert chain.run(numpy.full((4, 4, 4), 9, numpy.float32)).shape == (4, 4, 4)
+host = [line for line in open("/proc/self/maps") if "libpfxhost" in line]
+assert host and all(prefix in line for line in host), host'
+step "installed Python module imports from the prefix and runs a chain with the prefix's plugins" \
+  env -u LD_LIBRARY_PATH -u PFX_PLUGIN_PATH PYTHONPATH="$prefix/$PFX_PYTHONDIR" "$PFX_PYTHON" -c "$python_check" "$prefix"
 
 finish

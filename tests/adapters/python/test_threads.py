@@ -73,3 +73,28 @@ def test_run_lets_other_python_threads_go_on(pictures):
     counter.join()
     chain.close()
     assert during > 1000, f"the other thread counted only {during} while run worked"
+
+
+def test_a_context_the_caller_made_current_stays_current():
+    # A script with GL of its own (a window, moderngl) has its context current on its thread; the
+    # chain works on a thread of its own and leaves it alone. Made here with EGL through ctypes.
+    import ctypes
+    egl = ctypes.CDLL("libEGL.so.1")
+    egl.eglGetProcAddress.restype = ctypes.c_void_p
+    for name in ("eglGetCurrentContext", "eglCreateContext"):
+        getattr(egl, name).restype = ctypes.c_void_p
+    get_platform_display = ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.c_uint, ctypes.c_void_p, ctypes.c_void_p)(
+        egl.eglGetProcAddress(b"eglGetPlatformDisplayEXT"))
+    display = ctypes.c_void_p(get_platform_display(0x31DD, None, None))  # EGL_PLATFORM_SURFACELESS_MESA
+    assert egl.eglInitialize(display, None, None)
+    assert egl.eglBindAPI(0x30A2)  # EGL_OPENGL_API
+    context = ctypes.c_void_p(egl.eglCreateContext(display, None, None, None))
+    assert context.value
+    assert egl.eglMakeCurrent(display, None, None, context)
+    try:
+        with pfx.Chain(["bloom"]) as chain:
+            chain.run(np.full((8, 8, 4), 5.0, np.float32))
+        assert egl.eglGetCurrentContext() == context.value
+    finally:
+        egl.eglMakeCurrent(display, None, None, None)
+        egl.eglDestroyContext(display, context)
