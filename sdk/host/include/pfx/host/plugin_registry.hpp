@@ -126,7 +126,6 @@ class PFX_HOST_API PluginRegistry {
   std::vector<std::unique_ptr<Record>> records_;  // parallel to plugins_
   std::vector<EffectInfo> effect_index_;
   std::vector<ImporterInfo> importer_index_;
-  uint64_t reload_count_ = 0;  // makes every private copy's name unique
 };
 
 }  // namespace pfx::host
