@@ -89,13 +89,14 @@ void* open_own_library(const void* owner, const std::string& file, const std::st
   if (hold(owner, library, true)) return library;
   dlclose(library);  // another owner's: its plugin's globals belong to that owner's host
 
+  const std::string why = "another registry of this process holds the library, and ";
   std::string copy;
   if (!make_private_copy(file, &copy, reason)) {
-    *reason = "another registry of this process holds the library and no private copy can be made: " + *reason;
+    *reason = why + "no private copy can be made: " + *reason;
     return nullptr;
   }
   library = open(copy);
-  if (!library) *reason = loader_error(copy, shown_as);
+  if (!library) *reason = why + "its private copy cannot be loaded: " + loader_error(copy, shown_as);
   std::error_code ec;
   fs::remove(copy, ec);  // the mapping keeps the library alive
   if (library) hold(owner, library, false);
