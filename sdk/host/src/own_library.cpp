@@ -51,7 +51,7 @@ std::string loader_error(const std::string& file, const std::string& shown_as) {
 
 // RTLD_LOCAL: two plugins never bind each other's symbols. RTLD_NOW: a missing symbol is an error
 // now, not a crash in the middle of a frame.
-void* open(const std::string& file) { return dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL); }
+void* open_library(const std::string& file) { return dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL); }
 
 }  // namespace
 
@@ -81,7 +81,7 @@ bool make_private_copy(const std::string& path, std::string* copy, std::string* 
 // copy. An owner closing records nothing more after its plugin's deinit, so another owner that
 // still finds the handle held takes a copy, and one that no longer finds it finds deinit done.
 void* open_own_library(const void* owner, const std::string& file, const std::string& shown_as, std::string* reason) {
-  void* library = open(file);
+  void* library = open_library(file);
   if (!library) {
     *reason = loader_error(file, shown_as);
     return nullptr;
@@ -95,7 +95,7 @@ void* open_own_library(const void* owner, const std::string& file, const std::st
     *reason = why + "no private copy can be made: " + *reason;
     return nullptr;
   }
-  library = open(copy);
+  library = open_library(copy);
   if (!library) *reason = why + "its private copy cannot be loaded: " + loader_error(copy, shown_as);
   std::error_code ec;
   fs::remove(copy, ec);  // the mapping keeps the library alive
