@@ -245,8 +245,8 @@ TEST_CASE("obj threads: the plugin works on the host's threads alone and changes
   pfx_import_result* pooled = nullptr;
   REQUIRE(importer->import(&request, &pooled) == PFX_OK);
 
-  // A host that offers no pool: the same mesh, on the calling thread, no thread started. (Loaded
-  // after the pooled import: both registries share the one library, which init tells of its host.)
+  // A host that offers no pool: the same mesh, on the calling thread, no thread started. (Its
+  // registry loads its own copy of the library beside the first one's, so the two keep their pools.)
   auto bare = std::make_unique<pfx::host::PluginRegistry>([](const char*) { return pfx_gl_proc{nullptr}; }, nullptr,
                                                           "test_obj_threads");
   bare->set_thread_pool(nullptr);

@@ -1,7 +1,6 @@
 #include "pfx/host/plugin_registry.hpp"
 
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -13,6 +12,7 @@
 
 #include "descriptor_check.hpp"
 #include "host_layout.hpp"
+#include "own_library.hpp"
 
 namespace fs = std::filesystem;
 
@@ -82,7 +82,7 @@ namespace {
 void unload(PluginRegistry::Record& record) {
   if (record.initialised && record.entry->deinit) record.entry->deinit();
   record.initialised = false;
-  if (record.library) dlclose(record.library);
+  close_own_library(record.registry, record.library);
   record.library = nullptr;
 }
 
@@ -117,14 +117,16 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   auto record = std::make_unique<Record>();
   record->registry = this;
   record->thread_pool = thread_pool_;
-  // RTLD_LOCAL: two plugins never bind each other's symbols. RTLD_NOW: a missing symbol is an
-  // error now, not a crash in the middle of a frame.
-  void* library = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!library) return fail(std::string("cannot be loaded: ") + text_or(dlerror(), "unknown dlopen error"));
+  // This registry's own library: another registry of the process holding the same one makes it a
+  // private copy, so the plugin's globals (what init is told of its host) are this host's alone.
+  std::string reason;
+  void* library = open_own_library(this, file, path, &reason);
+  if (!library) return fail("cannot be loaded: " + reason);
   struct Closer {
+    const PluginRegistry* owner;
     void*& library;
-    ~Closer() { if (library) dlclose(library); }
-  } closer{library};
+    ~Closer() { close_own_library(owner, library); }
+  } closer{this, library};
 
   dlerror();
   auto get_entry = reinterpret_cast<pfx_get_entry_fn>(dlsym(library, PFX_ENTRY_SYMBOL));
@@ -246,29 +248,6 @@ bool PluginRegistry::load(const std::string& path, std::string* error) {
   return true;
 }
 
-namespace {
-
-// A copy of the plugin file under a name no library was loaded from, beside the original (a
-// temporary folder may be mounted noexec) or, when that folder is read-only, in the temporary
-// folder. The name does not end in .so, so a folder scan never picks it up.
-bool make_private_copy(const std::string& path, uint64_t serial, std::string* copy, std::string* reason) {
-  const fs::path original(path);
-  const std::string name = "." + original.filename().string() + ".pfx-reload-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(serial);
-  std::error_code ec;
-  for (const fs::path& folder : {original.parent_path(), fs::temp_directory_path(ec)}) {
-    fs::path candidate = folder / name;
-    if (fs::copy_file(original, candidate, fs::copy_options::overwrite_existing, ec)) {
-      *copy = candidate.string();
-      return true;
-    }
-    *reason = ec.message();
-  }
-  return false;
-}
-
-}  // namespace
-
 bool PluginRegistry::reload(const std::string& plugin_id, const AdoptFn& adopt, std::string* error) {
   auto at = std::find_if(plugins_.begin(), plugins_.end(), [&](const auto& p) { return p->id == plugin_id; });
   if (at == plugins_.end()) {
@@ -278,7 +257,7 @@ bool PluginRegistry::reload(const std::string& plugin_id, const AdoptFn& adopt, 
   const size_t index = static_cast<size_t>(at - plugins_.begin());
   const std::string path = plugins_[index]->path;
   std::string copy, reason;
-  if (!make_private_copy(path, ++reload_count_, &copy, &reason)) {
+  if (!make_private_copy(path, &copy, &reason)) {
     if (error) *error = path + ": cannot make a private copy to reload from: " + reason;
     return false;
   }

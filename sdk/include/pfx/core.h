@@ -95,7 +95,11 @@ typedef struct pfx_entry {
   const char* id;                /* unique, reverse-DNS style: "org.pfx.bloom" */
   const char* name;              /* human-readable */
   const char* version;           /* the plugin's own version, "1.2.0" */
-  /* Cheap and idempotent: no GL, no file I/O. May be called again after deinit. */
+  /* Cheap and idempotent: no GL, no file I/O. May be called again after deinit.
+   * A plugin's globals belong to one host: a host loads its own copy of the library when another
+   * host of the process holds it, so each host's init and deinit run on globals of their own. A
+   * plugin may keep what it has of its host in globals set here (the host, its thread pool) and
+   * cleared in deinit. */
   pfx_status (*init)(const pfx_host* host);
   /* Undoes init; every object the plugin created has been destroyed before this is called. */
   void (*deinit)(void);

@@ -62,7 +62,10 @@ class PFX_HOST_API PluginRegistry {
   PluginRegistry& operator=(const PluginRegistry&) = delete;
 
   // Loads one library. On failure returns false, sets *error to "PATH: reason" and leaves the
-  // registry as it was.
+  // registry as it was. While another live registry of the process holds the same library, loads
+  // a private copy of the file instead, so this registry's plugin has globals, init and deinit of
+  // its own (what it keeps of its host - this registry's thread pool and log - stays this
+  // registry's); otherwise the file itself. plugins()'s path is the file's either way.
   bool load(const std::string& path, std::string* error);
   // Loads every *.so in a folder, in name order; returns the messages of those refused.
   std::vector<std::string> load_directory(const std::string& directory);
@@ -126,7 +129,6 @@ class PFX_HOST_API PluginRegistry {
   std::vector<std::unique_ptr<Record>> records_;  // parallel to plugins_
   std::vector<EffectInfo> effect_index_;
   std::vector<ImporterInfo> importer_index_;
-  uint64_t reload_count_ = 0;  // makes every private copy's name unique
 };
 
 }  // namespace pfx::host
