@@ -98,3 +98,16 @@ def test_a_context_the_caller_made_current_stays_current():
     finally:
         egl.eglMakeCurrent(display, None, None, None)
         egl.eglDestroyContext(display, context)
+
+
+def test_two_chains_alive_at_once_keep_working_when_one_closes(pictures):
+    # Each chain loads the plugins for itself; the second one alive gets its own copy of each
+    # library, so closing one (its plugins' deinit) leaves the other's plugins as they were.
+    photo = pictures["photo"][1]
+    first = pfx.Chain(["bloom", "glare"])
+    expected = first.run(photo)
+    second = pfx.Chain(["bloom", "glare"])
+    assert_same_bits(second.run(photo), expected, "the second chain")
+    second.close()
+    assert_same_bits(first.run(photo), expected, "the first chain after the second closed")
+    first.close()
