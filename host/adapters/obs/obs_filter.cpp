@@ -3,6 +3,7 @@
 #include <mutex>
 #include <string>
 
+#include <glad/gl.h>
 #include <graphics/vec4.h>
 
 #include "texture_filter.hpp"
@@ -21,6 +22,7 @@ struct Filter {
   // On the graphics thread:
   std::unique_ptr<adapters::TextureFilter> gl;
   gs_texrender_t* input = nullptr;
+  GLuint codes = 0;  // the input's bytes, RGBA8 (OBS's own 8-bit formats are unsized or sRGB)
   gs_texture_t* output = nullptr;
   uint32_t width = 0, height = 0;
   std::string said;     // the last warning logged, so each is logged once
@@ -46,6 +48,7 @@ void release_graphics(Filter* filter) {
   obs_enter_graphics();
   filter->gl.reset();
   gs_texrender_destroy(filter->input);
+  glDeleteTextures(1, &filter->codes);
   gs_texture_destroy(filter->output);
   obs_leave_graphics();
 }
@@ -57,7 +60,7 @@ void* create(obs_data_t* settings, obs_source_t* source) {
   std::string error;
   obs_enter_graphics();
   if (g_registry) filter->gl = adapters::TextureFilter::create(g_registry, &error);
-  filter->input = gs_texrender_create(GS_RGBA_UNORM, GS_ZS_NONE);
+  filter->input = gs_texrender_create(GS_RGBA, GS_ZS_NONE);
   obs_leave_graphics();
   if (!filter->gl)
     blog(LOG_WARNING, "[pfx-obs] '%s': %s; the source passes through unchanged", obs_source_get_name(source),
@@ -86,8 +89,7 @@ void say_once(Filter* filter, int level, const std::string& message) {
   blog(level, "[pfx-obs] '%s': %s", obs_source_get_name(filter->source), message.c_str());
 }
 
-// The source below the filter, as it would be drawn, into filter->input (8-bit values as they
-// are: no sRGB conversion, straight alpha).
+// The source below the filter, as it would be drawn onto a scene, into filter->input.
 bool draw_input(Filter* filter, uint32_t width, uint32_t height) {
   gs_texrender_reset(filter->input);
   gs_blend_state_push();
@@ -121,28 +123,35 @@ void video_render(void* data, gs_effect_t*) {
     settings = filter->settings;
     revision = filter->revision;
   }
-  // The filter works on the frame's 8-bit values as stored (sRGB-encoded video); OBS's linear
-  // blending is switched off while it draws and put back after.
+  // The filter works on the frame's 8-bit codes (sRGB-encoded video) and draws its result's codes
+  // as they are: OBS's linear blending is off while it draws, and put back after.
   const bool linear_srgb = gs_get_linear_srgb();
   const bool framebuffer_srgb = gs_framebuffer_srgb_enabled();
   gs_set_linear_srgb(false);
-  gs_enable_framebuffer_srgb(false);
   if (!draw_input(filter, width, height)) {
     gs_set_linear_srgb(linear_srgb);
-    gs_enable_framebuffer_srgb(framebuffer_srgb);
     obs_source_skip_video_filter(filter->source);
     return;
   }
   if (!filter->output || filter->width != width || filter->height != height) {
     gs_texture_destroy(filter->output);
-    filter->output = gs_texture_create(width, height, GS_RGBA_UNORM, 1, nullptr, GS_RENDER_TARGET);
+    glDeleteTextures(1, &filter->codes);
+    filter->output = gs_texture_create(width, height, GS_RGBA, 1, nullptr, GS_RENDER_TARGET);
+    glCreateTextures(GL_TEXTURE_2D, 1, &filter->codes);
+    glTextureStorage2D(filter->codes, 1, GL_RGBA8, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
     filter->width = width;
     filter->height = height;
   }
   gs_texture_t* input = gs_texrender_get_texture(filter->input);
   std::string warning, error;
   const double time_seconds = static_cast<double>(obs_get_video_frame_time()) * 1e-9;
-  const bool ok = filter->gl->process(settings, revision, gl_name(input), gl_name(filter->output),
+  // OBS's 8-bit textures have sRGB formats that sources draw into with sRGB writes: the stored
+  // bytes are the frame's codes. Sampling such a texture would decode them, so the bytes are
+  // copied as they are into a plain RGBA8 texture for pfx's own decode. The result is encoded
+  // into an sRGB texture too (pfx writes with sRGB writes off), which OBS draws without decoding.
+  glCopyImageSubData(gl_name(input), GL_TEXTURE_2D, 0, 0, 0, 0, filter->codes, GL_TEXTURE_2D, 0, 0, 0, 0,
+                     static_cast<GLsizei>(width), static_cast<GLsizei>(height), 1);
+  const bool ok = filter->gl->process(settings, revision, filter->codes, gl_name(filter->output),
                                       static_cast<int>(width), static_cast<int>(height), time_seconds, &warning,
                                       &error);
   say_once(filter, LOG_WARNING, warning);
@@ -152,6 +161,7 @@ void video_render(void* data, gs_effect_t*) {
     filter->broken = true;
     shown = input;
   }
+  gs_enable_framebuffer_srgb(false);
   gs_effect_t* effect = obs_get_base_effect(OBS_EFFECT_DEFAULT);
   gs_effect_set_texture(gs_effect_get_param_by_name(effect, "image"), shown);
   while (gs_effect_loop(effect, "Draw")) gs_draw_sprite(shown, 0, width, height);
