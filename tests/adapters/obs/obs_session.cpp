@@ -3,7 +3,9 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <chrono>
 #include <mutex>
+#include <thread>
 
 #include <catch2/catch.hpp>
 #include <obs-nix-platform.h>
@@ -98,7 +100,24 @@ obs_source_t* ObsSession::add_filter(obs_source_t* source, const char* type, obs
   return filter;
 }
 
+void ObsSession::wait_for_ticks() {
+  // OBS applies a video source's new settings (obs_source_update) at its next tick, on the
+  // graphics thread, at the frame rate: two frames later, one whole tick has run since.
+  const auto start = std::chrono::steady_clock::now();
+  uint64_t seen = obs_get_video_frame_time();
+  for (int changes = 0; changes < 2;) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const uint64_t now = obs_get_video_frame_time();
+    if (now != seen) {
+      seen = now;
+      ++changes;
+    }
+    REQUIRE(std::chrono::steady_clock::now() - start < std::chrono::seconds(20));
+  }
+}
+
 ObsFrame ObsSession::render(obs_source_t* source) {
+  wait_for_ticks();
   ObsFrame frame;
   frame.width = obs_source_get_width(source);
   frame.height = obs_source_get_height(source);

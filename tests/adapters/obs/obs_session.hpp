@@ -31,7 +31,11 @@ class ObsSession {
   // A filter of `type` added last on `source`; the source holds it, the returned reference too.
   obs_source_t* add_filter(obs_source_t* source, const char* type, obs_data_t* settings = nullptr);
 
-  // One frame of `source` (its filters run) rendered at its size and read back.
+  // Returns once OBS's graphics thread has ticked every source (settings changed before are
+  // applied then).
+  void wait_for_ticks();
+  // One frame of `source` (its filters run) rendered at its size and read back, once changed
+  // settings have been applied (wait_for_ticks).
   ObsFrame render(obs_source_t* source);
 
   // Every line libobs logged since the session started or the last clear.
