@@ -55,12 +55,6 @@ GlObjects count_gl_objects(ObsSession& obs) {
   GlObjects objects;
   for (const auto& kind : kinds)
     for (GLuint name = 1; name < 20000; ++name) objects.*kind.count += kind.is(name) ? 1 : 0;
-  using Gen = void (*)(GLsizei, GLuint*);
-  GLuint probe = 0; reinterpret_cast<Gen>(eglGetProcAddress("glGenTextures"))(1, &probe);
-  fprintf(stderr, "DEBUG probe texture name %u, current ctx %p\n", probe, (void*)eglGetCurrentContext());
-  for (GLuint n = 1; n < 1000; ++n) if (kinds[0].is(n)) fprintf(stderr, "%u ", n);
-  for (GLuint n = 1; n < 1000; ++n) if (kinds[4].is(n)) fprintf(stderr, "p%u ", n);
-  fprintf(stderr, "\n");
   obs_leave_graphics();
   return objects;
 }
