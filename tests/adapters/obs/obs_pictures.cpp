@@ -23,8 +23,9 @@ app::DisplayImage read_picture(const std::string& path) {
   return rgba;
 }
 
-app::DisplayImage write_photo_crop(const std::string& path, int x, int y, int width, int height, bool alpha) {
-  const app::DisplayImage photo = read_picture(PFX_TEST_PHOTOGRAPH);
+app::DisplayImage write_photo_crop(const std::string& path, int x, int y, int width, int height, bool alpha,
+                                   const std::string& photograph) {
+  const app::DisplayImage photo = read_picture(photograph);
   REQUIRE(x + width <= photo.width);
   REQUIRE(y + height <= photo.height);
   app::DisplayImage crop{width, height, alpha ? 4 : 3, {}};

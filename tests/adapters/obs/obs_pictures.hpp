@@ -10,9 +10,10 @@
 
 namespace pfx::test {
 
-// width x height pixels of the photograph from (x, y), written to `path` as an RGB PNG; with
+// width x height pixels of a photograph (by default the tests' own) from (x, y), written to `path` as an RGB PNG; with
 // `alpha`, an RGBA PNG whose alpha falls from 255 at the left to 0 at the right.
-app::DisplayImage write_photo_crop(const std::string& path, int x, int y, int width, int height, bool alpha = false);
+app::DisplayImage write_photo_crop(const std::string& path, int x, int y, int width, int height, bool alpha = false,
+                                   const std::string& photograph = PFX_TEST_PHOTOGRAPH);
 // A PNG as RGBA (alpha 255 where it has none); REQUIREs that it reads.
 app::DisplayImage read_picture(const std::string& path);
 // The largest difference of any channel (RGB, or RGBA with `with_alpha`) between a frame and a

@@ -17,6 +17,7 @@ namespace {
 
 std::mutex g_log_mutex;
 std::string g_log;
+Display* g_display = nullptr;
 
 void capture_log(int level, const char* format, va_list args, void*) {
   char line[4096];
@@ -44,10 +45,10 @@ ObsSession& ObsSession::get() {
 
 ObsSession::ObsSession() {
   base_set_log_handler(capture_log, nullptr);
-  Display* display = XOpenDisplay(nullptr);
-  REQUIRE(display);  // run under xvfb-run
+  g_display = XOpenDisplay(nullptr);
+  REQUIRE(g_display);  // run under xvfb-run
   obs_set_nix_platform(OBS_NIX_PLATFORM_X11_EGL);
-  obs_set_nix_platform_display(display);
+  obs_set_nix_platform_display(g_display);
   REQUIRE(obs_startup("en-US", nullptr, nullptr));
   obs_video_info video{};
   video.graphics_module = "libobs-opengl";
@@ -68,7 +69,10 @@ ObsSession::ObsSession() {
   load_module(PFX_OBS_MODULE, PFX_OBS_DATA_DIR);
 }
 
-ObsSession::~ObsSession() { obs_shutdown(); }
+ObsSession::~ObsSession() {
+  obs_shutdown();
+  XCloseDisplay(g_display);
+}
 
 obs_source_t* ObsSession::image_source(const std::string& png) {
   obs_data_t* settings = obs_data_create();

@@ -4,8 +4,11 @@
 // state for the stock filters after them, and pass the source through on bad settings.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
+
 #include "obs_pictures.hpp"
 #include "obs_session.hpp"
+#include "png_io.hpp"
 #include "render_process.hpp"
 
 using namespace pfx::test;
@@ -70,4 +73,28 @@ TEST_CASE("the bloom filter and the chain filter give the frame of pfx-render wi
   obs_data_release(values);
   obs_data_release(chain_values);
   release({bloom, chain, image});
+}
+
+TEST_CASE("the picture in docs/hosts.md is what the bloom filter gives in OBS", "[obs]") {
+  // PFX_OBS_WRITE_DOCS_PICTURES=1 makes the pair first: the before picture cut from a photograph
+  // Debian ships, the after picture what OBS gives now.
+  ObsSession& obs = ObsSession::get();
+  const std::string before = PFX_SOURCE_DIR "/docs/hosts/obs-before.png", after = PFX_SOURCE_DIR "/docs/hosts/obs-after.png";
+  const bool write = std::getenv("PFX_OBS_WRITE_DOCS_PICTURES") != nullptr;
+  if (write) write_photo_crop(before, 40, 100, 384, 288, false, "/usr/share/glmark2/textures/nasa2.png");
+  obs_source_t* image = obs.image_source(before);
+  obs_data_t* values = obs_data_create();
+  obs_data_set_double(values, "threshold", 0.4);
+  obs_data_set_double(values, "strength", 3);
+  obs_source_t* bloom = obs.add_filter(image, "pfx_bloom_filter", values);
+  const ObsFrame frame = obs.render(image);
+  if (write) {
+    pfx::app::DisplayImage picture{int(frame.width), int(frame.height), 4, frame.rgba};
+    std::string error;
+    REQUIRE(pfx::app::write_png(after, picture, &error));
+  }
+  CHECK(worst_difference(frame, read_picture(after)) <= 1);
+  obs_data_release(values);
+  obs_source_release(bloom);
+  obs_source_release(image);
 }
