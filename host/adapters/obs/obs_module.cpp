@@ -39,7 +39,7 @@ bool load_effects(std::vector<std::string>* colour_only, std::string* error) {
   if (!pfx::adapters::load_host_gl(load_gl, error)) return false;
   g_registry = std::make_shared<pfx::host::PluginRegistry>(load_gl, log_to_obs, "pfx-obs (OBS Studio)");
   const std::string library = pfx::adapters::library_path_of(reinterpret_cast<const void*>(&load_effects));
-  for (const auto& message : pfx::adapters::load_adapter_plugins(*g_registry, {library, {PFX_OBS_TO_PLUGINS, "../../plugins"}}))
+  for (const auto& message : pfx::adapters::load_adapter_plugins(*g_registry, {library, {PFX_OBS_TO_PLUGINS, "../../plugins", PFX_OBS_INSTALLED_PLUGINS}}))
     blog(LOG_WARNING, "[pfx-obs] %s", message.c_str());
   // Telling the effects apart makes instances: OBS's GL state is put back afterwards.
   std::vector<std::string> notes;
