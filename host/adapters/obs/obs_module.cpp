@@ -32,6 +32,10 @@ pfx_gl_proc load_gl(const char* name) { return reinterpret_cast<pfx_gl_proc>(egl
 
 // With OBS's context current: the plugins and the effects that run on colour alone.
 bool load_effects(std::vector<std::string>* colour_only, std::string* error) {
+  if (!gs_get_context()) {
+    *error = "OBS's video is not set up yet: the module must load after obs_reset_video";
+    return false;
+  }
   if (gs_get_device_type() != GS_DEVICE_OPENGL) {
     *error = "OBS renders with Direct3D: pfx needs its OpenGL renderer";
     return false;
