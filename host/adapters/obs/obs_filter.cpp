@@ -60,6 +60,7 @@ void* create(obs_data_t* settings, obs_source_t* source) {
   std::string error;
   obs_enter_graphics();
   if (g_registry) filter->gl = adapters::TextureFilter::create(g_registry, &error);
+  else error = "the module has no pfx plugins loaded";
   filter->input = gs_texrender_create(GS_RGBA, GS_ZS_NONE);
   obs_leave_graphics();
   if (!filter->gl)
