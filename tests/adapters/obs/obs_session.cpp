@@ -23,6 +23,7 @@ void capture_log(int level, const char* format, va_list args, void*) {
   char line[4096];
   std::vsnprintf(line, sizeof line, format, args);
   std::lock_guard<std::mutex> lock(g_log_mutex);
+  // Warnings and errors go to the test's output; PFX_OBS_TEST_LOG=1 shows every line libobs logs.
   if (level <= LOG_WARNING || std::getenv("PFX_OBS_TEST_LOG")) std::fprintf(stderr, "libobs: %s\n", line);
   g_log += line;
   g_log += '\n';
