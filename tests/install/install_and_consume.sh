@@ -63,6 +63,12 @@ done
 [[ -L $prefix/$PFX_LIBDIR/libpfxhost.so ]] || fail "$PFX_LIBDIR/libpfxhost.so is not a symlink"
 soname=$(readelf -d "$prefix/$PFX_LIBDIR/libpfxhost.so" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')
 [[ -n $soname && -L $prefix/$PFX_LIBDIR/$soname ]] || fail "soname link $PFX_LIBDIR/${soname:-(no SONAME)} is missing"
+# The OBS module where OBS looks for modules under the prefix, with its data folder beside OBS's
+# own, when the build made it (it needs libobs-dev).
+if [[ -f $PFX_BUILD_DIR/lib/obs-plugins/pfx-obs.so ]]; then
+  [[ -f $prefix/$PFX_LIBDIR/obs-plugins/pfx-obs.so ]] || fail "$PFX_LIBDIR/obs-plugins/pfx-obs.so is missing"
+  [[ -d $prefix/share/obs/obs-plugins/pfx-obs ]] || fail "share/obs/obs-plugins/pfx-obs is missing"
+fi
 # glad is a build detail of our own targets; a consumer brings their own loader.
 [[ ! -e $prefix/$PFX_INCLUDEDIR/glad ]] || fail "glad headers were installed"
 

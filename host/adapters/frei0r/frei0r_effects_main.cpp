@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pfx-frei0r-effects: warning: plugin not loaded: %s\n", message.c_str());
   std::vector<std::string> colour_only;
   std::string tables;
-  for (const auto& effect : pfx::frei0r::classify_effects(registry)) {
+  for (const auto& effect : pfx::adapters::classify_effects(registry)) {
     if (mode == "--list") {
       std::string needs;
       for (const auto& need : effect.needs) needs += (needs.empty() ? "" : ", ") + need;

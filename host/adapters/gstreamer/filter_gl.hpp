@@ -1,7 +1,6 @@
-// What pfxfilter does on GStreamer's GL thread, apart from GStreamer's types: the plugins, the
-// frame's textures and the chain, run from the input texture to the output texture on
-// GStreamer's own context (no copy through the CPU). GL state the element finds is put back
-// (libpfxhost's GlStateGuard), so a GL element after it sees what it would without pfx.
+// What pfxfilter does on GStreamer's GL thread, apart from GStreamer's types: the plugins and
+// the chain, run from the input texture to the output texture on GStreamer's own context
+// (texture_filter.hpp: no copy through the CPU, GL state put back).
 //
 // No GL header here: the element's file includes GStreamer's, which cannot meet glad's.
 #pragma once
@@ -14,6 +13,7 @@
 #include <pfx/host/plugin_registry.hpp>
 
 #include "chain_settings.hpp"
+#include "texture_filter.hpp"
 
 namespace pfx::gst {
 
@@ -33,9 +33,9 @@ class FilterGl {
                int height, double time_seconds, std::string* warning, std::string* error);
 
  private:
-  struct Impl;
-  FilterGl();
-  std::unique_ptr<Impl> impl_;
+  FilterGl() = default;
+  std::shared_ptr<host::PluginRegistry> registry_;
+  std::unique_ptr<adapters::TextureFilter> filter_;
 };
 
 }  // namespace pfx::gst

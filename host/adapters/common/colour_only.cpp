@@ -7,7 +7,7 @@
 #include "camera_options.hpp"
 #include "frame_description.hpp"
 
-namespace pfx::frei0r {
+namespace pfx::adapters {
 namespace {
 
 // The frame a renderer with every buffer would give: all inputs there, linear depth.
@@ -65,4 +65,4 @@ std::vector<EffectInputs> classify_effects(const host::PluginRegistry& registry)
   return results;
 }
 
-}  // namespace pfx::frei0r
+}  // namespace pfx::adapters

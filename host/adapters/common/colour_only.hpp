@@ -2,7 +2,7 @@
 // GL context must be current) and asked, at its display-referred defaults, for the passes of a
 // frame that offers every input (depth, normal, albedo, emissive, lights); an effect whose passes
 // read the colour and its own targets alone, and ask for nothing more, runs on video frames.
-// Those get a frei0r plugin of their own.
+// Those get a frei0r plugin and an OBS filter of their own.
 #pragma once
 
 #include <string>
@@ -10,7 +10,7 @@
 
 #include <pfx/host/plugin_registry.hpp>
 
-namespace pfx::frei0r {
+namespace pfx::adapters {
 
 struct EffectInputs {
   std::string id;
@@ -22,4 +22,4 @@ struct EffectInputs {
 // Every effect of the registry, in load order.
 std::vector<EffectInputs> classify_effects(const host::PluginRegistry& registry);
 
-}  // namespace pfx::frei0r
+}  // namespace pfx::adapters
