@@ -25,6 +25,8 @@ struct Filter {
   GLuint codes = 0;  // the input's bytes, RGBA8 (OBS's own 8-bit formats are unsized or sRGB)
   gs_texture_t* output = nullptr;
   uint32_t width = 0, height = 0;
+  adapters::ChainSettings frame_settings;  // the graphics thread's copy of settings at frame_revision
+  uint64_t frame_revision = 0;
   std::string said;     // the last warning logged, so each is logged once
   bool broken = false;  // GL failed: frames pass through from then on
 };
@@ -117,13 +119,16 @@ void video_render(void* data, gs_effect_t*) {
     obs_source_skip_video_filter(filter->source);
     return;
   }
-  adapters::ChainSettings settings;
-  uint64_t revision = 0;
   {
+    // Copied only when they changed: most frames find the same settings.
     std::lock_guard<std::mutex> lock(filter->mutex);
-    settings = filter->settings;
-    revision = filter->revision;
+    if (filter->frame_revision != filter->revision) {
+      filter->frame_settings = filter->settings;
+      filter->frame_revision = filter->revision;
+    }
   }
+  const adapters::ChainSettings& settings = filter->frame_settings;
+  const uint64_t revision = filter->frame_revision;
   // The filter works on the frame's 8-bit codes (sRGB-encoded video) and draws its result's codes
   // as they are: OBS's linear blending is off while it draws, and put back after.
   const bool linear_srgb = gs_get_linear_srgb();
