@@ -15,5 +15,6 @@ gboolean plugin_init(GstPlugin* plugin) {
 
 }  // namespace
 
+// The licence is LICENSE's; "MIT/X11" is how GStreamer's list of licences spells MIT.
 GST_PLUGIN_DEFINE(GST_VERSION_MAJOR, GST_VERSION_MINOR, pfx, "pfx post effects on GStreamer's OpenGL context",
-                  plugin_init, PFX_VERSION, GST_LICENSE_UNKNOWN, "pfx", "pfx: docs/hosts.md")
+                  plugin_init, PFX_VERSION, "MIT/X11", "pfx", PFX_ORIGIN_URL)

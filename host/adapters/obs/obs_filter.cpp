@@ -5,6 +5,7 @@
 
 #include <glad/gl.h>
 #include <graphics/vec4.h>
+#include <util/platform.h>
 
 #include "texture_filter.hpp"
 
@@ -29,7 +30,15 @@ struct Filter {
   uint64_t frame_revision = 0;
   std::string said;     // the last warning logged, so each is logged once
   bool broken = false;  // GL failed: frames pass through from then on
+  // A warning about settings waits until they have held for a while (settled_warning).
+  std::string pending;
+  uint64_t pending_revision = 0, pending_since_ns = 0;
 };
+
+// OBS applies a text field at every keystroke: typing "bloom" into the chain field passes through
+// "b", "bl", "blo"..., each bad for a moment. A warning about settings is logged once they have
+// stayed the same this long, so a user sees the value they stopped at, not every one on the way.
+constexpr uint64_t kSettleNs = 1'000'000'000;
 
 uint32_t gl_name(gs_texture_t* texture) {
   // OBS's OpenGL device hands out a pointer to the texture's GL name.
@@ -90,6 +99,24 @@ void say_once(Filter* filter, int level, const std::string& message) {
   if (message.empty() || message == filter->said) return;
   filter->said = message;
   blog(level, "[pfx-obs] '%s': %s", obs_source_get_name(filter->source), message.c_str());
+}
+
+// `warning` is what this frame's settings (at `revision`) gave, empty when they gave nothing new:
+// the texture filter says each revision's warning once. Logged when the settings held kSettleNs.
+void settled_warning(Filter* filter, const std::string& warning, uint64_t revision) {
+  const uint64_t now = os_gettime_ns();
+  if (revision != filter->pending_revision) {
+    filter->pending.clear();
+    filter->pending_revision = revision;
+  }
+  if (!warning.empty()) {
+    filter->pending = warning;
+    filter->pending_since_ns = now;
+  }
+  if (!filter->pending.empty() && now - filter->pending_since_ns >= kSettleNs) {
+    say_once(filter, LOG_WARNING, filter->pending);
+    filter->pending.clear();
+  }
 }
 
 // The source below the filter, as it would be drawn onto a scene, into filter->input.
@@ -160,7 +187,7 @@ void video_render(void* data, gs_effect_t*) {
   const bool ok = filter->gl->process(settings, revision, filter->codes, gl_name(filter->output),
                                       static_cast<int>(width), static_cast<int>(height), time_seconds, &warning,
                                       &error);
-  say_once(filter, LOG_WARNING, warning);
+  settled_warning(filter, warning, revision);
   gs_texture_t* shown = filter->output;
   if (!ok) {
     say_once(filter, LOG_ERROR, error + "; the source passes through unchanged from now on");

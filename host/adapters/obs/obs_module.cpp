@@ -16,6 +16,7 @@
 #include "texture_filter.hpp"
 
 OBS_DECLARE_MODULE()
+OBS_MODULE_AUTHOR("The pfx developers")
 
 namespace {
 
@@ -91,4 +92,7 @@ void obs_module_unload(void) {
 }
 
 const char* obs_module_name(void) { return "pfx"; }
-const char* obs_module_description(void) { return "pfx post effects (bloom, glare, ...) as video filters"; }
+// OBS asks a module for no licence; its description carries it (the text is pfx's LICENSE).
+const char* obs_module_description(void) {
+  return "pfx post effects (bloom, glare, ...) as video filters. MIT licence.";
+}

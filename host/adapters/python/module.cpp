@@ -39,13 +39,16 @@ py::list effects(const PluginList& plugins) {
 
 std::unique_ptr<PythonChain> make_chain(const PluginList& effects, const PluginList& plugins,
                                         const std::string& defaults, const std::string& timing) {
-  if (defaults != "scene" && defaults != "display")
-    throw py::value_error("defaults must be 'scene' (linear HDR pictures) or 'display' (8-bit pictures), not '" +
-                          defaults + "'");
-  auto registry = pfx::python::load_plugin_set(plugins, warn);
   pfx::python::ChainSettings settings;
+  if (defaults == "scene")
+    settings.defaults = pfx::python::Defaults::SCENE;
+  else if (defaults == "display")
+    settings.defaults = pfx::python::Defaults::DISPLAY;
+  else if (defaults != "auto")
+    throw py::value_error("defaults must be 'auto' (as each picture's dtype says), 'scene' (linear HDR pictures) or "
+                          "'display' (8-bit pictures), not '" + defaults + "'");
+  auto registry = pfx::python::load_plugin_set(plugins, warn);
   settings.effects = effects;
-  settings.display_defaults = defaults == "display";
   settings.timing = timing;
   py::gil_scoped_release release;  // the effects' programs compile now
   return std::make_unique<PythonChain>(std::move(registry), settings);
@@ -67,22 +70,25 @@ py::array as_array(const py::object& value, const char* name) {
 
 py::array run(PythonChain& chain, const py::object& rgba, const std::optional<py::object>& depth,
               const std::optional<pfx::app::CameraOptions>& camera, const std::string& encoding, double time,
-              uint64_t frame_index) {
+              uint64_t frame_index, const std::string& transfer) {
   pfx::python::RunRequest request;
   pfx::python::PictureForm form;
   std::optional<py::array> depth_array;
   if (depth && !depth->is_none()) depth_array = as_array(*depth, "depth");
-  request.image = pfx::python::image_from_numpy(as_array(rgba, "rgba"), depth_array, &form);
+  if (std::string problem; !pfx::app::parse_transfer(transfer, &request.transfer, &problem))
+    throw py::value_error("transfer: " + problem);
+  request.image = pfx::python::image_from_numpy(as_array(rgba, "rgba"), depth_array, &form, &request.bytes);
+  request.display = form.bytes;
   request.depth_encoding = depth_encoding(encoding);
   if (camera) request.camera = *camera;
   request.time_seconds = time;
   request.frame_index = frame_index;
-  pfx::app::Image result;
+  pfx::python::RunResult result;
   {
     py::gil_scoped_release release;
     result = chain.run(request);
   }
-  return pfx::python::numpy_from_image(result, form);
+  return pfx::python::numpy_from_image(result.image, result.bytes, form);
 }
 
 pfx::app::CameraOptions make_camera(double fovy, double near_plane, double far_plane) {
@@ -100,6 +106,7 @@ pfx::app::CameraOptions make_camera(double fovy, double near_plane, double far_p
 PYBIND11_MODULE(pfx, m) {
   m.doc() = "pfx post effects on numpy pictures, headless (docs/python.md)";
   m.attr("__version__") = PFX_VERSION;
+  m.attr("__license__") = PFX_LICENSE;
   static py::exception<pfx::python::Error> error(m, "Error", PyExc_RuntimeError);
   static py::exception<pfx::python::ParameterError> parameter_error(m, "ParameterError", error.ptr());
   // Registered last, tried first: the subclass before its base.
@@ -132,11 +139,13 @@ PYBIND11_MODULE(pfx, m) {
   py::class_<PythonChain>(m, "Chain",
                           "Effects run in order over pictures, on an OpenGL 4.5 context of the chain's own. "
                           "Use one Chain from one thread at a time; several may run at once on different threads.")
-      .def(py::init(&make_chain), "effects"_a = py::none(), "plugins"_a = py::none(), "defaults"_a = "scene",
+      .def(py::init(&make_chain), "effects"_a = py::none(), "plugins"_a = py::none(), "defaults"_a = "auto",
            "timing"_a = "auto",
            "effects: effect ids in order (an id twice makes a second instance, 'bloom#2'); None: every effect "
            "found, in the default order. plugins: plugin files or folders; None: the folder beside the module "
-           "and PFX_PLUGIN_PATH. defaults: 'scene' for linear HDR pictures, 'display' for 8-bit ones. timing: "
+           "and PFX_PLUGIN_PATH. defaults: where a parameter starts until set() gives it a value: 'auto' follows "
+           "each picture's dtype (the display-referred defaults for uint8, the scene-referred ones for floats), "
+           "'scene' or 'display' fixes them. timing: "
            "'auto', 'gpu', 'finish' or 'off'.")
       .def("set", [](PythonChain& chain, const std::string& key, const py::handle& value) {
             std::string note;
@@ -151,9 +160,11 @@ PYBIND11_MODULE(pfx, m) {
            "{instance: {parameter: {'value': ..., and its description}}} in chain order.")
       .def_property_readonly("effects", &PythonChain::instances, "The instances in chain order: 'bloom', 'bloom#2'...")
       .def("run", &run, "rgba"_a, "depth"_a = py::none(), "camera"_a = py::none(), "depth_encoding"_a = "linear",
-           "time"_a = 0.0, "frame_index"_a = 0,
-           "Runs the chain over rgba (float16 or float32, H x W x 4 or H x W x 3, top row first) and returns the "
-           "result in the same dtype and shape. depth: H x W, linear metres along the view axis, or window depth "
+           "time"_a = 0.0, "frame_index"_a = 0, "transfer"_a = "srgb",
+           "Runs the chain over rgba (H x W x 4 or H x W x 3, top row first) and returns the result in the same "
+           "dtype and shape. float16 and float32 hold linear light; uint8 is a display-referred picture, decoded "
+           "to linear light with transfer ('srgb', or 'linear' for values that are linear already) and the result "
+           "encoded back, as pfx-render does an 8-bit PNG. depth: H x W, linear metres along the view axis, or window depth "
            "with depth_encoding 'hardware' or 'hardware_reversed'. camera: pfx.Camera (default fovy 45, near 0.1, "
            "far 1000).")
       .def_property_readonly("report", [](const PythonChain& chain) { return pfx::python::to_python(chain.report()); },

@@ -25,12 +25,19 @@ bool split_key(const std::string& key, std::string* instance, std::string* param
   return true;
 }
 
+// One name per value: "bloom" and "bloom#1" are the same instance.
+std::string canonical_key(const std::string& instance, const std::string& param) {
+  return instance + (instance.find('#') == std::string::npos ? "#1." : ".") + param;
+}
+
 }  // namespace
 
 PythonChain::PythonChain(std::unique_ptr<host::PluginRegistry> registry, const ChainSettings& settings)
     : worker_(adapters::GlWorker::start()), registry_(std::move(registry)) {
-  params_ = std::make_unique<host::ParamStore>(settings.display_defaults ? host::DefaultSet::DISPLAY_REFERRED
-                                                                         : host::DefaultSet::SCENE_REFERRED);
+  defaults_ = settings.defaults;
+  current_defaults_ = settings.defaults == Defaults::DISPLAY ? host::DefaultSet::DISPLAY_REFERRED
+                                                             : host::DefaultSet::SCENE_REFERRED;
+  params_ = std::make_unique<host::ParamStore>(current_defaults_);
   for (const auto& effect : registry_->effects()) params_->add_effect(effect.desc);
   const std::vector<std::string> effects = settings.effects ? *settings.effects : app::default_chain(*registry_);
   try {
@@ -58,13 +65,19 @@ void PythonChain::close() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (chain_) {
     std::string unused;
-    // The instances' GL objects go with the context that made them.
-    worker_->run([this] { chain_.reset(); }, &unused);
+    // The instances' and the pictures' GL objects go with the context that made them.
+    worker_->run([this] { release_gl_objects(); }, &unused);
     chain_.reset();
   }
   worker_.reset();  // its context is destroyed on its own thread
   params_.reset();
   registry_.reset();  // the plugins' deinit, once no instance is left
+}
+
+void PythonChain::release_gl_objects() {
+  chain_.reset();
+  float_picture_.release();
+  display_picture_.reset();
 }
 
 void PythonChain::check_open() const {
@@ -89,6 +102,8 @@ void PythonChain::set(const std::string& key, const std::string& text, std::stri
   check_open();
   std::string error;
   if (!params_->set(key, text, &error, note)) throw ParameterError(error);
+  std::string instance, param;
+  if (split_key(key, &instance, &param)) set_keys_.insert(canonical_key(instance, param));
 }
 
 nlohmann::ordered_json PythonChain::get(const std::string& key) const {
@@ -138,15 +153,45 @@ nlohmann::ordered_json PythonChain::report() const {
   return report_;
 }
 
-app::Image PythonChain::run(const RunRequest& request) {
+RunResult PythonChain::run(const RunRequest& request) {
   std::lock_guard<std::mutex> lock(mutex_);
   check_open();
-  app::Image result;
+  RunResult result;
   run_on_gl_thread([&](std::string* error) { render(request, &result, error); });
   return result;
 }
 
-void PythonChain::render(const RunRequest& request, app::Image* result, std::string* error) {
+void PythonChain::follow_picture_defaults(bool display) {
+  const host::DefaultSet wanted = display ? host::DefaultSet::DISPLAY_REFERRED : host::DefaultSet::SCENE_REFERRED;
+  if (defaults_ != Defaults::AUTO || wanted == current_defaults_) return;
+  for (size_t i = 0; i < chain_->size(); ++i) {
+    const std::string instance = chain_->instance_name(i);
+    const pfx_effect_desc* effect = params_->effect_descriptor(chain_->effect_id(i));
+    for (uint32_t p = 0; p < effect->param_count; ++p) {
+      const pfx_param_desc& param = effect->params[p];
+      if (set_keys_.count(canonical_key(instance, param.id))) continue;
+      std::string unused;  // a descriptor's own default is always valid
+      params_->set_value(instance, param.id, host::default_for(param, wanted), &unused);
+    }
+  }
+  current_defaults_ = wanted;
+}
+
+// Depth is the one input beside colour a caller can give: say how, before the chain refuses.
+bool PythonChain::inputs_given(const pfx_frame& frame, std::string* error) {
+  for (size_t i = 0; i < chain_->size(); ++i) {
+    uint32_t needed = 0;
+    if (!chain_->enabled(i)) continue;
+    if (!chain_->inputs_needed(i, frame, &needed, error)) return false;
+    if (needed & ~frame.inputs & PFX_INPUT_DEPTH) {
+      *error = chain_->instance_name(i) + " needs depth with its current values: pass depth= (an H x W array) to run()";
+      return false;
+    }
+  }
+  return true;
+}
+
+void PythonChain::render(const RunRequest& request, RunResult* result, std::string* error) {
   const app::Image& image = request.image;
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
@@ -155,35 +200,42 @@ void PythonChain::render(const RunRequest& request, app::Image* result, std::str
              "; this OpenGL takes at most " + std::to_string(max_size) + " pixels a side";
     return;
   }
+  follow_picture_defaults(request.display);
   const uint32_t inputs = PFX_INPUT_COLOR | (image.has_depth() ? uint32_t(PFX_INPUT_DEPTH) : 0u);
   pfx_frame frame = app::describe_frame(image.width, image.height, inputs, request.depth_encoding,
                                         app::make_camera(request.camera, image.width, image.height));
   frame.time_seconds = request.time_seconds;
   frame.frame_index = request.frame_index;
-  // Depth is the one input beside colour a caller can give: say how, before the chain refuses.
-  for (size_t i = 0; i < chain_->size(); ++i) {
-    uint32_t needed = 0;
-    if (!chain_->enabled(i)) continue;
-    if (!chain_->inputs_needed(i, frame, &needed, error)) return;
-    if (needed & ~inputs & PFX_INPUT_DEPTH) {
-      *error = chain_->instance_name(i) + " needs depth with its current values: pass depth= (an H x W array) to run()";
-      return;
+  if (!inputs_given(frame, error)) return;
+
+  float_picture_.upload(image);  // the colour of a float picture, the depth of either
+  host::FrameTextures textures = float_picture_.inputs();
+  uint32_t output = float_picture_.output();
+  if (request.display) {
+    if (!display_picture_) {
+      auto made = std::make_unique<gl::DisplayFrame>();
+      if (!made->create(error)) return;
+      display_picture_ = std::move(made);
     }
+    display_picture_->resize(image.width, image.height);
+    display_picture_->decode_bytes(request.bytes.data(), request.transfer);
+    textures.color = display_picture_->color();
+    output = display_picture_->output();
   }
-  host::FrameTextures textures;
-  textures.color = app::upload_color_texture(image);
-  textures.depth = app::upload_depth_texture(image);
-  const uint32_t output = app::create_color_texture(image.width, image.height);
   if (chain_->render(frame, textures, output, error)) {
     chain_->wait_for_timings();  // the pixels are read back next anyway
-    *result = app::download_color_texture(output, image.width, image.height);
+    if (request.display) {
+      result->bytes.resize(image.pixel_count() * 4);
+      display_picture_->encode_bytes(output, request.transfer, result->bytes.data());
+      result->image.width = image.width;
+      result->image.height = image.height;
+    } else {
+      result->image = app::download_color_texture(output, image.width, image.height);
+    }
     report_ = {{"renderer", renderer_}};
     app::add_frame_report(chain_->report(), &report_);
     if (!chain_->report().effect_reports.empty()) report_["effect_reports"] = app::effect_reports_json(chain_->report());
   }
-  app::delete_texture(output);
-  app::delete_texture(textures.color);
-  app::delete_texture(textures.depth);
   if (const GLenum gl_error = glGetError(); error->empty() && gl_error != GL_NO_ERROR)
     *error = host::gl_error_text(gl_error) + " while running the chain";
 }

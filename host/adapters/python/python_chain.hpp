@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,24 +21,43 @@
 #include <pfx/host/plugin_registry.hpp>
 
 #include "camera_options.hpp"
+#include "display_frame.hpp"
+#include "display_transfer.hpp"
 #include "gl_worker.hpp"
 #include "image.hpp"
+#include "picture_textures.hpp"
 
 namespace pfx::python {
 
+// Where a parameter stands until set() gives it a value. AUTO follows the picture each run is
+// given, as pfx-render follows its input: the display-referred defaults for an 8-bit picture (it
+// holds nothing above 1.0), the scene-referred ones for a float picture; before the first run, the
+// scene-referred ones.
+enum class Defaults { AUTO, SCENE, DISPLAY };
+
 struct ChainSettings {
   std::optional<std::vector<std::string>> effects;  // effect ids in order; none: the default chain
-  bool display_defaults = false;  // start from the display-referred defaults (8-bit pictures)
-  std::string timing = "auto";    // "auto", "gpu", "finish" or "off", as pfx-render's --timing
+  Defaults defaults = Defaults::AUTO;
+  std::string timing = "auto";  // "auto", "gpu", "finish" or "off", as pfx-render's --timing
 };
 
 // One picture through the chain.
 struct RunRequest {
-  app::Image image;  // colour, and depth when the caller gave it
+  app::Image image;  // the size, depth when the caller gave it, and the colour unless `display`
+  bool display = false;        // the colour is `bytes`: 8-bit display-referred RGBA, row 0 at the top
+  std::vector<uint8_t> bytes;  // decoded to linear light with `transfer`, the result encoded back
+  app::Transfer transfer = app::Transfer::SRGB;
   pfx_depth_encoding depth_encoding = PFX_DEPTH_LINEAR;
   app::CameraOptions camera;
   double time_seconds = 0;
   uint64_t frame_index = 0;
+};
+
+// The chain's result: linear colour in image.rgba for a float picture, 8-bit RGBA in `bytes` for
+// a display-referred one; the picture's size either way.
+struct RunResult {
+  app::Image image;
+  std::vector<uint8_t> bytes;
 };
 
 class PythonChain {
@@ -60,7 +80,7 @@ class PythonChain {
 
   // Runs the chain over the picture; the result is the picture's size. Call it without holding
   // Python's GIL: the work waits for the GL thread.
-  app::Image run(const RunRequest& request);
+  RunResult run(const RunRequest& request);
   // The last run's report, as pfx-render's --json gives it (passes with their times, peak target
   // memory...); null before the first run.
   nlohmann::ordered_json report() const;
@@ -72,9 +92,19 @@ class PythonChain {
  private:
   void check_open() const;
   void run_on_gl_thread(const std::function<void(std::string* error)>& job);
-  void render(const RunRequest& request, app::Image* result, std::string* error);
+  void render(const RunRequest& request, RunResult* result, std::string* error);
+  bool inputs_given(const pfx_frame& frame, std::string* error);
+  void follow_picture_defaults(bool display);
+  void release_gl_objects();
 
   mutable std::mutex mutex_;
+  Defaults defaults_ = Defaults::AUTO;
+  host::DefaultSet current_defaults_ = host::DefaultSet::SCENE_REFERRED;  // what unset values are at
+  std::set<std::string> set_keys_;  // "bloom#1.threshold": the values set() gave, which AUTO leaves alone
+  // Kept from one run to the next while the picture's size stays (on the GL thread): the float
+  // picture's textures, and the 8-bit picture's decode and encode with its textures.
+  PictureTextures float_picture_;
+  std::unique_ptr<gl::DisplayFrame> display_picture_;
   std::shared_ptr<adapters::GlWorker> worker_;
   std::unique_ptr<host::PluginRegistry> registry_;
   std::unique_ptr<host::ParamStore> params_;

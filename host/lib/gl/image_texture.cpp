@@ -23,20 +23,28 @@ uint32_t create_texture(uint32_t internal_format, int width, int height) {
   return texture;
 }
 
-uint32_t upload_color_texture(const Image& img) {
-  GLuint texture = create_texture(GL_RGBA16F, img.width, img.height);
+void fill_color_texture(uint32_t texture, const Image& img) {
   std::vector<float> flipped = flip_rows(img.rgba, img.width, img.height, 4);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage2D(texture, 0, 0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, flipped.data());
+}
+
+void fill_depth_texture(uint32_t texture, const Image& img) {
+  std::vector<float> flipped = flip_rows(img.depth, img.width, img.height, 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(texture, 0, 0, 0, img.width, img.height, GL_RED, GL_FLOAT, flipped.data());
+}
+
+uint32_t upload_color_texture(const Image& img) {
+  GLuint texture = create_texture(GL_RGBA16F, img.width, img.height);
+  fill_color_texture(texture, img);
   return texture;
 }
 
 uint32_t upload_depth_texture(const Image& img) {
   if (!img.has_depth()) return 0;
   GLuint texture = create_texture(GL_R32F, img.width, img.height);
-  std::vector<float> flipped = flip_rows(img.depth, img.width, img.height, 1);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(texture, 0, 0, 0, img.width, img.height, GL_RED, GL_FLOAT, flipped.data());
+  fill_depth_texture(texture, img);
   return texture;
 }
 

@@ -13,6 +13,10 @@ namespace pfx::app {
 uint32_t upload_color_texture(const Image& img);
 // An R32F texture holding img.depth (linear view depth); 0 when the image has no depth.
 uint32_t upload_depth_texture(const Image& img);
+// The same into textures made before, of the image's size: a host that runs one picture size after
+// another keeps its textures instead of making new ones each time.
+void fill_color_texture(uint32_t texture, const Image& img);
+void fill_depth_texture(uint32_t texture, const Image& img);
 // An empty texture of one level in `internal_format` (GL_RGBA16F, GL_RGBA8...), nearest filtering.
 uint32_t create_texture(uint32_t internal_format, int width, int height);
 // An empty RGBA16F texture, e.g. for a chain's output.

@@ -171,3 +171,42 @@ TEST_CASE("ffmpeg: a per-effect plugin whose effect is missing passes frames thr
   CHECK(frames == original);
   CHECK(run.output.find("the pfx effect 'nosuch' is not among the plugins loaded") != std::string::npos);
 }
+
+TEST_CASE("ffmpeg: a width that is not a multiple of 16 runs right through docs/hosts.md's pad-and-crop recipe",
+          "[adapters][frei0r][ffmpeg]") {
+  // ffmpeg 5.1 hands frei0r rows padded to 64 bytes: a 644-pixel-wide frame arrives with 656
+  // pixels a row and comes out scrambled. The recipe pads the frame to a width of a multiple of 16
+  // before the filter and crops it back after, in one -vf; the chain then sees the padded frame
+  // (black columns at the right), so the reference is pfx-render's run over that padded frame.
+  Scratch scratch;
+  const std::string photo = scratch / "photo-644x483.png";
+  RunResult made = run_host({PFX_FFMPEG, "-hide_banner", "-loglevel", "error", "-i", PFX_TEST_PHOTOGRAPH, "-vf",
+                             "scale=644:483", "-frames:v", "1", "-update", "1", "-y", photo});
+  INFO(made.output);
+  REQUIRE(made.exit_code == 0);
+  RunResult r = ffmpeg_filter(
+      photo, "pad=ceil(iw/16)*16:ih,frei0r=filter_name=pfx_chain:filter_params=bloom|bloom.threshold=0.5,crop=644:ih:0:0",
+      scratch / "ffmpeg.png");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const std::string padded = scratch / "padded.png";
+  made = run_host({PFX_FFMPEG, "-hide_banner", "-loglevel", "error", "-i", photo, "-vf", "pad=656:ih", "-frames:v", "1",
+                   "-update", "1", "-y", padded});
+  REQUIRE(made.exit_code == 0);
+  auto rendered = pfx_render("--plugins " PFX_PLUGIN_OUTPUT_DIR " --input " + padded +
+                                 " --chain bloom --set bloom.threshold=0.5 --out " + scratch / "pfx-render.png",
+                             false);
+  INFO(rendered.err);
+  REQUIRE(rendered.exit_code == 0);
+  const auto input = read_rgba(photo), host = read_rgba(scratch / "ffmpeg.png"),
+             reference = read_rgba(scratch / "pfx-render.png");
+  REQUIRE(host.width == 644);
+  REQUIRE(host.height == 483);
+  REQUIRE(reference.width == 656);
+  size_t differing = 0;
+  for (int y = 0; y < 483; ++y)
+    for (int x = 0; x < 644 * 4; ++x)
+      differing += host.pixels[(y * 644) * 4 + x] != reference.pixels[(y * 656) * 4 + x];
+  CHECK(differing == 0);
+  CHECK(rgb_of(host) != rgb_of(input));  // the bloom shows
+}

@@ -1,6 +1,10 @@
 // pfx's OBS filters as a scene changes: two filters of one effect keep their own values, a
 // property change shows in the next frame, the filter follows the source's size and keeps its
-// alpha, and bad settings pass the source through with a line in OBS's log.
+// alpha, and bad settings pass the source through with a line in OBS's log, once they have held
+// (not one per keystroke while a user types into a text field).
+#include <chrono>
+#include <thread>
+
 #include <catch2/catch.hpp>
 
 #include "obs_pictures.hpp"
@@ -137,10 +141,15 @@ TEST_CASE("bad settings pass the source through with a line in the log and good 
     obs_source_update(chain, values);
     obs_data_release(values);
     CHECK(worst_difference(obs.render(image), picture) == 0);
+    // Said once the settings have held a second (a user may still be typing before that).
+    CHECK(obs.log().find(setting.named) == std::string::npos);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    CHECK(worst_difference(obs.render(image), picture) == 0);
     const std::string log = obs.log();
     INFO(log);
     CHECK(log.find("[pfx-obs]") != std::string::npos);
     CHECK(log.find(setting.named) != std::string::npos);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
     CHECK(worst_difference(obs.render(image), picture) == 0);  // said once, still passing through
     CHECK(obs.log() == log);
   }
@@ -150,6 +159,41 @@ TEST_CASE("bad settings pass the source through with a line in the log and good 
   CHECK(worst_difference(obs.render(image), reference) <= 1);
   obs_data_release(good_again);
   obs_data_release(good);
+  obs_source_release(chain);
+  obs_source_release(image);
+}
+
+TEST_CASE("typing an effect name into the chain field logs nothing on the way and one line for a name that stays bad",
+          "[obs]") {
+  ObsSession& obs = ObsSession::get();
+  Scratch scratch;
+  const auto picture = write_photo_crop(scratch / "in.png", 200, 180, 48, 32);
+  obs_source_t* image = obs.image_source(scratch / "in.png");
+  obs_data_t* empty = chain_values("", "");
+  obs_source_t* chain = obs.add_filter(image, "pfx_chain_filter", empty);
+  obs.render(image);
+  obs.clear_log();
+  // OBS applies the field at each keystroke; a frame is drawn between keystrokes (a 60 Hz preview
+  // draws several), each keystroke well inside the time a warning waits.
+  for (const char* typed : {"b", "bl", "blo", "bloo", "bloom", "bloom,", "bloom,g", "bloom,gl", "bloom,gla"}) {
+    obs_data_t* values = chain_values(typed, "");
+    obs_source_update(chain, values);
+    obs_data_release(values);
+    obs.render(image);
+    obs.render(image);
+  }
+  INFO(obs.log());
+  CHECK(obs.log().find("[pfx-obs]") == std::string::npos);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  obs.render(image);
+  const std::string log = obs.log();
+  INFO(log);
+  // The name the user stopped at, in exactly one line.
+  CHECK(log.find("gla") != std::string::npos);
+  size_t lines = 0;
+  for (size_t at = log.find("[pfx-obs]"); at != std::string::npos; at = log.find("[pfx-obs]", at + 1)) ++lines;
+  CHECK(lines == 1);
+  obs_data_release(empty);
   obs_source_release(chain);
   obs_source_release(image);
 }

@@ -56,10 +56,20 @@ def test_a_value_of_no_parameter_type_raises_type_error(bloom):
         bloom.set("bloom.threshold", {"a": 1})
 
 
-@pytest.mark.parametrize("dtype", [np.uint8, np.float64, np.int32])
+@pytest.mark.parametrize("dtype", [np.float64, np.int32, np.int8, np.uint16])
 def test_a_picture_of_another_dtype_raises_type_error(bloom, dtype):
-    with pytest.raises(TypeError, match="float16 or float32"):
+    with pytest.raises(TypeError, match="uint8 .display-referred., float16 or float32"):
         bloom.run(PICTURE.astype(dtype))
+
+
+def test_depth_must_be_float_even_beside_an_8_bit_picture(bloom):
+    with pytest.raises(TypeError, match="depth must be float16 or float32"):
+        bloom.run(np.zeros((12, 8, 4), np.uint8), depth=np.zeros((12, 8), np.uint8))
+
+
+def test_an_unknown_transfer_raises_value_error(bloom):
+    with pytest.raises(ValueError, match="transfer"):
+        bloom.run(np.zeros((12, 8, 4), np.uint8), transfer="gamma")
 
 
 @pytest.mark.parametrize("shape", [(8, 12), (8, 12, 2), (8, 12, 5), (0, 12, 4), (8, 0, 3), (2, 8, 12, 4)])
@@ -76,7 +86,7 @@ def test_a_picture_not_in_c_order_raises_value_error(bloom):
 
 
 def test_a_list_is_not_a_picture(bloom):
-    with pytest.raises(TypeError, match="float16 or float32"):
+    with pytest.raises(TypeError, match="uint8 .display-referred., float16 or float32"):
         bloom.run([[[0.0, 0.0, 0.0, 1.0]]])
 
 

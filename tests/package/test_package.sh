@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# The Debian package as a user gets it: installed with dpkg into a root made for this test, then,
+# with no environment variable set, every host finds what it installed where that host looks:
+# pfx-render its plugins, GStreamer the element, ffmpeg the frei0r plugin, Debian's python3 the
+# module, libobs the OBS module, pfx-inject its library, pkg-config the SDK. Then dpkg -r removes
+# every file it installed. Last, lintian: an error of lintian's fails the pass, warnings are shown.
+#
+# The root: this machine's own root seen through an overlay whose upper layer is a scratch tmpfs,
+# in a mount namespace of the test's own. The dependencies the package names are there (they are
+# this machine's packages), the package database changes only in the scratch layer, and the source
+# and build trees, /usr/local, /home, /root and /tmp are hidden behind empty folders, so nothing is
+# found that the package did not bring. Needs root (the tests run as root here, as ./run does).
+#
+# usage: test_package.sh PFX.deb BUILD_DIR   (BUILD_DIR: the test build, for obs-module-search)
+# Prints "ok: CHECK" or "FAILED: CHECK" per check and "package: N passed, M failed" last.
+set -uo pipefail
+
+deb=$(realpath "$1")
+build_dir=$(realpath "$2")
+source_dir=$(cd "$(dirname "$0")/../.." && pwd)
+triplet=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
+
+if [[ $(id -u) -ne 0 ]]; then
+  echo "FAILED: the package test installs into a root of its own and needs root"
+  echo "package: 0 passed, 1 failed"
+  exit 1
+fi
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cp "$deb" "$scratch/pfx.deb"
+cp "$build_dir/bin/obs-module-search" "$scratch/" 2>/dev/null || true
+
+# Inside a mount namespace of its own: the root, the checks, and the package's removal.
+cat > "$scratch/in_root.sh" <<'INNER'
+set -uo pipefail
+scratch=$1 source_dir=$2 build_dir=$3 triplet=$4
+root=$scratch/root
+mkdir -p "$scratch/layer" "$root"
+mount -t tmpfs -o size=4g layer "$scratch/layer"
+mkdir "$scratch/layer/upper" "$scratch/layer/work"
+mount -t overlay overlay -o "lowerdir=/,upperdir=$scratch/layer/upper,workdir=$scratch/layer/work" "$root"
+mount -t proc proc "$root/proc"
+mount --rbind /dev "$root/dev"
+mount --rbind /sys "$root/sys"
+for hidden in /tmp /root /home /usr/local /run "$source_dir" "$build_dir"; do
+  [[ -d "$root$hidden" ]] && mount -t tmpfs -o mode=0755 empty "$root$hidden"
+done
+chmod 1777 "$root/tmp"
+cp "$scratch/pfx.deb" "$root/tmp/"
+[[ -f "$scratch/obs-module-search" ]] && cp "$scratch/obs-module-search" "$root/tmp/"
+
+passed=0 failed=0
+# check NAME COMMAND: COMMAND (a shell line) in the root with nothing in the environment but
+# PATH and HOME; its output is shown when it fails.
+check() {
+  local name=$1 command=$2 output
+  if output=$(chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
+                /bin/bash -o pipefail -c "$command" 2>&1); then
+    passed=$((passed + 1))
+    echo "ok: $name"
+  else
+    failed=$((failed + 1))
+    echo "FAILED: $name"
+    echo "$output" | tail -25 | sed 's/^/    /'
+  fi
+}
+
+check "dpkg -i installs the package with its dependencies present" "dpkg -i /tmp/pfx.deb"
+dpkg_files=$(chroot "$root" dpkg-query -L pfx)
+
+check "pfx-render --list finds the plugins in /usr/lib/pfx/plugins" \
+  "pfx-render --list --json > /tmp/list.json && python3 -c \"
+import json; effects = json.load(open('/tmp/list.json'))['effects']
+ids = {e['id'] for e in effects}; assert {'bloom', 'glare', 'dof', 'tiledlights'} <= ids, ids
+assert all(e['plugin_path'].startswith('/usr/lib/pfx/plugins/') for e in effects), effects\""
+check "pfx-render renders the demo scene" "pfx-render --demo --size 96x64 --out /tmp/demo.png && test -s /tmp/demo.png"
+check "gst-inspect-1.0 pfxfilter finds the element, MIT-licensed, in GStreamer's folder" \
+  "gst-inspect-1.0 pfxfilter > /tmp/gst.txt && grep -q '/usr/lib/$triplet/gstreamer-1.0/libgstpfx.so' /tmp/gst.txt &&
+   grep -Eq 'License +MIT/X11' /tmp/gst.txt"
+check "ffmpeg -vf frei0r=filter_name=pfx_chain runs and changes the frame" \
+  "ffmpeg -v error -f lavfi -i testsrc2=size=96x64 -frames:v 1 -vf frei0r=filter_name=pfx_chain -update 1 /tmp/chain.png &&
+   ffmpeg -v error -f lavfi -i testsrc2=size=96x64 -frames:v 1 -update 1 /tmp/plain.png && ! cmp -s /tmp/chain.png /tmp/plain.png"
+check "python3 imports pfx from /usr/lib/python3/dist-packages and runs bloom" \
+  "cd / && python3 -c \"
+import importlib.metadata, numpy as np, pfx
+assert pfx.__file__.startswith('/usr/lib/python3/dist-packages/'), pfx.__file__
+assert importlib.metadata.metadata('pfx')['License'] == 'MIT' and pfx.__license__ == 'MIT'
+picture = np.zeros((24, 32, 3), np.uint8); picture[12, 16] = 255
+with pfx.Chain(['bloom']) as chain:
+    result = chain.run(picture)
+assert result.dtype == np.uint8 and (result != picture).any()\""
+if [[ -f "$root/tmp/obs-module-search" ]]; then
+  check "libobs's module search finds pfx-obs in OBS's folder and it loads on the package's libpfxhost" \
+    "xvfb-run -a -s '-screen 0 640x480x24 -nolisten tcp' /tmp/obs-module-search /usr/lib/$triplet"
+else
+  failed=$((failed + 1))
+  echo "FAILED: obs-module-search was not built in $build_dir/bin: the OBS check cannot run"
+fi
+check "pfx-inject runs bloom in glxgears with its installed library" \
+  "xvfb-run -a -s '-screen 0 320x240x24 -nolisten tcp' pfx-inject --chain bloom --quit-after 3 -- glxgears"
+check "pkg-config and the licence: the SDK's pfx.pc, /usr/share/doc/pfx/copyright" \
+  "test \"\$(pkg-config --variable=plugindir pfx)\" = /usr/lib/pfx/plugins && pkg-config --cflags pfx &&
+   test -s /usr/share/doc/pfx/copyright && test -s /usr/share/doc/pfx/LICENSE"
+
+# Every file and link the package installed is gone after dpkg -r (folders other packages share,
+# such as /usr/lib/frei0r-1, stay).
+check "dpkg -r removes the package" "dpkg -r pfx"
+left=()
+while IFS= read -r path; do
+  [[ -z "$path" || -d "$root$path" ]] && continue
+  if [[ -e "$root$path" || -L "$root$path" ]]; then left+=("$path"); fi
+done <<< "$dpkg_files"
+if ((${#left[@]} == 0)) && [[ -n "$dpkg_files" ]]; then
+  passed=$((passed + 1))
+  echo "ok: dpkg -r removes every file it installed ($(grep -c . <<< "$dpkg_files") paths listed)"
+else
+  failed=$((failed + 1))
+  echo "FAILED: dpkg -r left ${#left[@]} installed files: ${left[*]:0:10}"
+fi
+echo "$passed $failed" > "$scratch/counts"
+INNER
+
+unshare --mount --propagation private bash "$scratch/in_root.sh" "$scratch" "$source_dir" "$build_dir" "$triplet"
+read -r passed failed < "$scratch/counts" 2>/dev/null || { passed=0 failed=1; echo "FAILED: the root could not be made"; }
+
+# lintian: its errors fail the pass; its warnings are listed (the closing note of a change that
+# touches packaging quotes them).
+if command -v lintian > /dev/null; then
+  lintian_output=$(lintian --no-tag-display-limit "$deb" 2>&1)
+  echo "$lintian_output" | sed 's/^/    lintian: /'
+  if grep -q '^E: ' <<< "$lintian_output"; then
+    failed=$((failed + 1))
+    echo "FAILED: lintian reports errors"
+  else
+    passed=$((passed + 1))
+    echo "ok: lintian reports no error ($(grep -c '^W: ' <<< "$lintian_output") warnings)"
+  fi
+else
+  failed=$((failed + 1))
+  echo "FAILED: lintian is not installed (./run installs it)"
+fi
+
+echo "package: $passed passed, $failed failed"
+((failed == 0))
