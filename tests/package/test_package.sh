@@ -71,9 +71,11 @@ dpkg_files=$(chroot "$root" dpkg-query -L pfx)
 
 check "pfx-render --list finds the plugins in /usr/lib/pfx/plugins" \
   "pfx-render --list --json > /tmp/list.json && python3 -c \"
-import json; effects = json.load(open('/tmp/list.json'))['effects']
-ids = {e['id'] for e in effects}; assert {'bloom', 'glare', 'dof', 'tiledlights'} <= ids, ids
-assert all(e['plugin_path'].startswith('/usr/lib/pfx/plugins/') for e in effects), effects\""
+import json; listing = json.load(open('/tmp/list.json'))
+ids = {e['id'] for p in listing['plugins'] for e in p['effects']}
+assert {'bloom', 'glare', 'dof', 'tiledlights'} <= ids, ids
+assert all(p['path'].startswith('/usr/lib/pfx/plugins/') for p in listing['plugins']), listing['plugins']
+assert not listing['load_errors'], listing['load_errors']\""
 check "pfx-render renders the demo scene" "pfx-render --demo --size 96x64 --out /tmp/demo.png && test -s /tmp/demo.png"
 check "gst-inspect-1.0 pfxfilter finds the element, MIT-licensed, in GStreamer's folder" \
   "gst-inspect-1.0 pfxfilter > /tmp/gst.txt && grep -q '/usr/lib/$triplet/gstreamer-1.0/libgstpfx.so' /tmp/gst.txt &&
