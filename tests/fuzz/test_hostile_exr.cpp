@@ -124,6 +124,48 @@ TEST_CASE("pfx-render refuses EXR headers declaring huge sizes before allocating
   expect_refused(scratch.write("inverted.exr", inverted));
 }
 
+// fuzz.exr's find: a v2f attribute (screenWindowCenter) declaring 0 bytes. OpenEXR's C++ reader
+// takes 8 bytes for a v2f whatever the file says, so it went on 8 bytes past where the header
+// ends and read pixel data as an attribute of an unknown type sized 1,723,125,180 bytes, which it
+// allocated (seconds of CPU under AddressSanitizer). The header scan steps through the header as
+// that reader does, so it refuses the file itself, naming the attribute, before the reader runs:
+// the reason below is the scan's alone, and the same file read in this process says it too.
+TEST_CASE("an EXR attribute whose declared size differs from OpenEXR's is refused by the header scan",
+          "[hostile][exr]") {
+  const std::string path = PFX_FUZZ_REGRESSIONS "/exr/oom-v2f-declaring-0-bytes.exr";
+  const std::string reason =
+      "attribute 'screenWindowCenter' of type v2f declares 0 bytes, but OpenEXR reads 8 for it";
+  expect_refused(path, reason);
+
+  pfx::app::Image image;
+  std::string error;
+  CHECK_FALSE(pfx::app::read_exr(path, &image, &error, pfx::app::ExrLimits{}));
+  CHECK(error == path + ": damaged OpenEXR header: " + reason);
+}
+
+TEST_CASE("EXR attributes sized otherwise than OpenEXR reads them are refused, naming the attribute",
+          "[hostile][exr]") {
+  Scratch scratch;
+  const std::vector<char> bytes = valid_exr(scratch);
+  // A fixed-size type declaring a byte more than it holds (the byte is there: the reader and the
+  // C core would each step differently from it).
+  std::vector<char> compression = bytes;
+  const size_t compression_size = value_of(compression, "compression", "compression") - 4;
+  put_int32(compression, compression_size, 2);
+  expect_refused(scratch.write("compression-2-bytes.exr", compression),
+                 "attribute 'compression' of type compression declares 2 bytes, but OpenEXR reads 1 for it");
+
+  // A channel list declaring 4 bytes more than its entries and their end mark take.
+  std::vector<char> channels = bytes;
+  const size_t channels_size = value_of(channels, "channels", "chlist") - 4;
+  uint32_t declared = 0;
+  for (int i = 3; i >= 0; --i) declared = declared << 8 | static_cast<unsigned char>(channels[channels_size + i]);
+  put_int32(channels, channels_size, static_cast<int32_t>(declared + 4));
+  expect_refused(scratch.write("chlist-4-more.exr", channels),
+                 "attribute 'channels' of type chlist declares " + std::to_string(declared + 4) +
+                     " bytes, but OpenEXR reads " + std::to_string(declared) + " for it");
+}
+
 TEST_CASE("pfx-render's input size limit is configurable and refuses with exit code 3", "[hostile][exr]") {
   Scratch scratch;
   const std::string path = scratch.write("small.exr", valid_exr(scratch));  // 23 x 11 = 253 pixels

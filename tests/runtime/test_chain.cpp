@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include <glad/gl.h>
+
 #include "gl_test_support.hpp"
 #include "image_texture.hpp"
 
@@ -165,4 +167,29 @@ TEST_CASE("reordering and removing effects changes what runs", "[chain]") {
   rig.chain->remove(0);
   rig.render(pfx::test::test_image(8, 8));
   CHECK(rig.chain->report().effects_run == std::vector<std::string>{"gain"});
+}
+
+// A host may give the chain a fresh output texture every frame and delete the last one. The chain
+// keeps a framebuffer around each output texture it has drawn into; it must let go of those whose
+// texture is gone, or it grows by a GL framebuffer (and the driver's memory behind it) per frame:
+// Mesa does not hand a deleted texture's name out again.
+TEST_CASE("a fresh output texture every frame leaves no framebuffer behind", "[chain]") {
+  Rig rig;
+  std::string error;
+  REQUIRE(rig.chain->add("gain", &error));
+  rig.set("gain.gain=2");  // not a no-op: the chain draws into the output
+  const Image input = pfx::test::test_image(8, 4);
+  // Every framebuffer name handed out so far, counted by asking for one more.
+  auto framebuffers_alive = [] {
+    GLuint probe = 0;
+    glCreateFramebuffers(1, &probe);
+    glDeleteFramebuffers(1, &probe);
+    int alive = 0;
+    for (GLuint name = 1; name < probe; ++name) alive += glIsFramebuffer(name) ? 1 : 0;
+    return alive;
+  };
+  for (int frame = 0; frame < 5; ++frame) rig.render(input);
+  const int after_5 = framebuffers_alive();
+  for (int frame = 0; frame < 50; ++frame) rig.render(input);
+  CHECK(framebuffers_alive() == after_5);
 }

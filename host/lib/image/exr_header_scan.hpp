@@ -2,7 +2,10 @@
 // nothing that the file's numbers decide. It finds the display and data windows, so absurd
 // sizes are reported as what they are ("exceeds the limit"), and it refuses any attribute
 // whose declared size runs past the end of the file: OpenEXR's C++ reader allocates such sizes
-// (up to 2 GiB for one string) before noticing the file is too short.
+// (up to 2 GiB for one string) before noticing the file is too short. It also refuses any
+// attribute whose declared size differs from the bytes that reader takes for it (a v2f is 8
+// bytes to it, whatever the file says), since the reader would go on from elsewhere than the
+// scan did and size its next "attribute" from bytes nobody checked.
 #pragma once
 
 #include <cstdint>

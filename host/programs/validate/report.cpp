@@ -99,6 +99,7 @@ std::string report_json(const std::vector<PluginResult>& results, const Validati
       c["status"] = status_word(check.status);
       c["problems"] = check.problems;
       if (!check.random_sets.empty()) c["random_sets"] = check.random_sets;
+      if (check.heap_growth_bytes) c["heap_growth_bytes"] = *check.heap_growth_bytes;
       c["seconds"] = check.seconds;
       p["checks"].push_back(std::move(c));
     }

@@ -6,6 +6,7 @@
 
 #include "child_process.hpp"
 #include "dirty_state_check.hpp"
+#include "heap_check.hpp"
 #include "plugin_checks.hpp"
 #include "process_state_check.hpp"
 #include "render_checks.hpp"
@@ -25,8 +26,10 @@ CheckResult run_check(const std::string& check, const std::string& effect, const
   ChildReport child = run_in_child(body, settings.timeout_s);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.problems = child.problems;
-  for (const auto& [key, value] : child.facts)
+  for (const auto& [key, value] : child.facts) {
     if (key == "set") result.random_sets.push_back(value);
+    if (key == "heap_growth_bytes") result.heap_growth_bytes = std::stoll(value);
+  }
   if (!child.stdout_text.empty()) {
     std::string quoted = child.stdout_text.substr(0, 200);
     for (size_t at = 0; (at = quoted.find('\n', at)) != std::string::npos; at += 2) quoted.replace(at, 1, "\\n");
@@ -43,6 +46,12 @@ CheckResult run_check(const std::string& check, const std::string& effect, const
                   : child.end == ChildReport::End::TimedOut                                       ? Status::Timeout
                   : result.problems.empty()                                                       ? Status::Pass
                                                                                                   : Status::Fail;
+  // A check that could not measure here says so: shown as skipped with its reason, never as a pass.
+  const std::string skip = child.fact("skip");
+  if (result.status == Status::Pass && !skip.empty()) {
+    result.status = Status::Skip;
+    result.problems.push_back("not run: " + skip);
+  }
   if (raw) *raw = std::move(child);
   return result;
 }
@@ -71,7 +80,7 @@ const char* status_word(Status status) {
 
 bool PluginResult::passed() const {
   for (const CheckResult& check : checks)
-    if (check.status != Status::Pass) return false;
+    if (check.status != Status::Pass && check.status != Status::Skip) return false;
   return true;
 }
 
@@ -83,7 +92,7 @@ const std::vector<std::string>& plugin_check_names() {
 
 const std::vector<std::string>& effect_check_names() {
   static const std::vector<std::string> names = {"descriptors", "create/destroy", "defaults", "random params", "resize",
-                                                    "dirty state"};
+                                                    "dirty state", "heap growth"};
   return names;
 }
 
@@ -122,6 +131,8 @@ PluginResult validate_plugin(const std::string& path, const ValidationSettings& 
     plugin.checks.push_back(run_check("resize", effect, [&](CheckReporter& r) { check_resize(path, effect, r); }, settings));
     plugin.checks.push_back(
         run_check("dirty state", effect, [&](CheckReporter& r) { check_dirty_state(path, effect, r); }, settings));
+    plugin.checks.push_back(
+        run_check("heap growth", effect, [&](CheckReporter& r) { check_heap_growth(path, effect, r); }, settings));
   }
   return plugin;
 }

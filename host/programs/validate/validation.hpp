@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct CheckResult {
   Status status = Status::Pass;
   std::vector<std::string> problems;  // why it failed (or why it was skipped)
   std::vector<std::string> random_sets;  // "random": the parameter sets tried, as --set text
+  std::optional<long long> heap_growth_bytes;  // "heap growth": what the measured cycles added
   double seconds = 0;
 };
 
@@ -26,6 +28,7 @@ struct PluginResult {
   std::string plugin_id, name, version;
   std::vector<std::string> effects;
   std::vector<CheckResult> checks;
+  // No check failed, crashed or timed out (a check skipped, with its reason, is no failure).
   bool passed() const;
 };
 

@@ -64,12 +64,28 @@ void GlPool::match(const std::vector<PoolSlot>& wanted) {
 }
 
 GLuint GlPool::framebuffer_for(GLuint texture) {
+  const bool new_texture = external_framebuffers_.find(texture) == external_framebuffers_.end();
+  // A host that hands over a fresh output texture each frame would otherwise leave a framebuffer
+  // behind per frame (drivers need not reuse texture names: Mesa counts up): those of the
+  // textures it has deleted since go when a new one comes.
+  if (new_texture) forget_deleted_textures();
   GLuint& framebuffer = external_framebuffers_[texture];
   if (!framebuffer) glCreateFramebuffers(1, &framebuffer);
   // Attach every time: the caller may have deleted the texture and got the same name back for a
   // new one, and a framebuffer keeps a deleted texture's storage alive.
   glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, texture, 0);
   return framebuffer;
+}
+
+void GlPool::forget_deleted_textures() {
+  for (auto it = external_framebuffers_.begin(); it != external_framebuffers_.end();) {
+    if (glIsTexture(it->first)) {
+      ++it;
+      continue;
+    }
+    glDeleteFramebuffers(1, &it->second);
+    it = external_framebuffers_.erase(it);
+  }
 }
 
 GLuint GlPool::sampler(pfx_filter filter, pfx_wrap wrap) {

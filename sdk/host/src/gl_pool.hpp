@@ -38,6 +38,8 @@ class GlPool {
   };
   static Slot make_slot(const PoolSlot& shape);
   static void free_slot(Slot& slot);
+  // Deletes the framebuffers around external textures whose names are no longer textures.
+  void forget_deleted_textures();
   std::vector<Slot> slots_;
   std::map<GLuint, GLuint> external_framebuffers_;
   std::map<uint32_t, GLuint> samplers_;

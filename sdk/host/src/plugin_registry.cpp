@@ -103,23 +103,148 @@ PluginRegistry::~PluginRegistry() {
   for (auto it = records_.rbegin(); it != records_.rend(); ++it) unload(**it);
 }
 
-bool PluginRegistry::open_plugin(const std::string& path, const std::string& file, const Plugin* replacing,
-                                 Opened* out, std::string* error) {
+namespace {
+
+// Why `file` cannot be a plugin library before anything is loaded from it; empty when it may be.
+std::string file_problem(const std::string& file) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return "no such file";
+  if (!fs::is_regular_file(file, ec)) return "not a regular file";
+  if (!is_elf_file(file)) return "not a shared library (no ELF header)";
+  return "";
+}
+
+// Why the entry struct a library returned cannot be used; empty when it offers everything later
+// steps rely on: its size, the ABI major, an id and the three functions.
+std::string entry_problem(const pfx_entry* entry) {
+  if (!entry) return PFX_ENTRY_SYMBOL "() returned NULL";
+  if (entry->struct_size < PFX_ENTRY_MIN_SIZE)
+    return "entry struct is " + std::to_string(entry->struct_size) + " bytes, expected at least " +
+           std::to_string(PFX_ENTRY_MIN_SIZE) + " (ABI 1.0)";
+  if (entry->abi_major != PFX_ABI_MAJOR)
+    return "ABI major version mismatch: plugin built for ABI " + std::to_string(entry->abi_major) + "." +
+           std::to_string(entry->abi_minor) + ", host implements ABI " + std::to_string(PFX_ABI_MAJOR) + "." +
+           std::to_string(PFX_ABI_MINOR);
+  if (!entry->id || !*entry->id) return "entry has no plugin id";
+  if (!entry->init || !entry->deinit || !entry->get_factory) return "entry lacks init, deinit or get_factory";
+  return "";
+}
+
+// Why the plugin id cannot join the registry: a reload that changes it, or another plugin's.
+std::string plugin_id_problem(const PluginRegistry& registry, const pfx_entry& entry, const Plugin* replacing) {
+  if (replacing && replacing->id != entry.id)
+    return "the rebuilt library has plugin id '" + std::string(entry.id) + "', not '" + replacing->id + "'";
+  for (const auto& plugin : registry.plugins())
+    if (plugin.get() != replacing && plugin->id == entry.id)
+      return "duplicate plugin id '" + plugin->id + "' (already loaded from " + plugin->path + ")";
+  return "";
+}
+
+// The pfx_host the plugin is given: this registry's callbacks, with the record as their host_data.
+void offer_host(PluginRegistry::Record* record, const pfx_entry* entry, const std::string& host_name) {
+  record->plugin_id = entry->id;
+  record->entry = entry;
+  record->host.struct_size = sizeof(pfx_host);
+  record->host.abi_major = PFX_ABI_MAJOR;
+  record->host.abi_minor = PFX_ABI_MINOR;
+  record->host.host_name = host_name.c_str();
+  record->host.host_data = record;
+  record->host.log = host_log;
+  record->host.get_proc_address = host_get_proc_address;
+  record->host.get_service = host_get_service;
+}
+
+// The public face of a plugin, from its entry; its effects, importers and references come later.
+std::unique_ptr<Plugin> describe_plugin(const std::string& path, const pfx_entry& entry, const pfx_host* host) {
+  auto plugin = std::make_unique<Plugin>();
+  plugin->path = path;
+  plugin->id = entry.id;
+  plugin->name = text_or(entry.name, entry.id);
+  plugin->version = text_or(entry.version, "");
+  plugin->abi_minor = entry.abi_minor;
+  plugin->host = host;
+  return plugin;
+}
+
+// Copies the plugin's effects into this host's layout, each checked and its id unique within the
+// plugin and the registry (a reload's own old effects excepted). Returns why not, or empty. A
+// plugin may provide no effects (an importer only): a NULL factory is fine.
+std::string take_effects(const PluginRegistry& registry, const pfx_entry& entry, const Plugin* replacing,
+                         Plugin* plugin, HostLayoutDescriptors* descriptors) {
+  auto factory = static_cast<const pfx_effect_factory*>(entry.get_factory(PFX_EFFECTS_FACTORY_ID));
+  if (!factory) return "";
+  if (factory->struct_size < PFX_EFFECT_FACTORY_MIN_SIZE || !factory->effect_count || !factory->get_effect)
+    return "effect factory is incomplete";
+  std::set<std::string> own_ids;
+  for (uint32_t i = 0, n = factory->effect_count(); i < n; ++i) {
+    std::string problem;
+    std::unique_ptr<HostLayoutEffect> effect = effect_in_host_layout(factory->get_effect(i), &problem);
+    if (!effect) return "effect #" + std::to_string(i) + ": " + problem;
+    const pfx_effect_desc* desc = &effect->desc;
+    problem = check_effect_descriptor(desc);
+    if (!problem.empty()) return "effect #" + std::to_string(i) + ": " + problem;
+    if (!own_ids.insert(desc->id).second)
+      return "duplicate effect id '" + std::string(desc->id) + "' within the plugin";
+    const EffectInfo* other = registry.find_effect(desc->id);
+    if (other && other->plugin != replacing)
+      return "duplicate effect id '" + std::string(desc->id) + "' (already provided by plugin '" + other->plugin->id +
+             "' from " + other->plugin->path + ")";
+    plugin->effects.push_back(desc);
+    descriptors->effects.push_back(std::move(effect));
+  }
+  return "";
+}
+
+// The same for the plugin's importers ("pfx.importers/1"), when it has a factory for them.
+std::string take_importers(const PluginRegistry& registry, const pfx_entry& entry, const Plugin* replacing,
+                           Plugin* plugin, HostLayoutDescriptors* descriptors) {
+  auto factory = static_cast<const pfx_importer_factory*>(entry.get_factory(PFX_IMPORTERS_FACTORY_ID));
+  if (!factory) return "";
+  if (factory->struct_size < PFX_IMPORTER_FACTORY_MIN_SIZE || !factory->importer_count || !factory->get_importer)
+    return "importer factory is incomplete";
+  std::set<std::string> own_ids;
+  for (uint32_t i = 0, n = factory->importer_count(); i < n; ++i) {
+    const pfx_importer_desc* plugin_desc = factory->get_importer(i);
+    std::string problem = check_importer_descriptor(plugin_desc);
+    if (!problem.empty()) return "importer #" + std::to_string(i) + ": " + problem;
+    descriptors->importers.push_back(std::make_unique<pfx_importer_desc>(read_sized(plugin_desc)));
+    const pfx_importer_desc* desc = descriptors->importers.back().get();
+    if (!own_ids.insert(desc->id).second)
+      return "duplicate importer id '" + std::string(desc->id) + "' within the plugin";
+    const ImporterInfo* other = registry.find_importer(desc->id);
+    if (other && other->plugin != replacing)
+      return "duplicate importer id '" + std::string(desc->id) + "' (already provided by plugin '" + other->plugin->id +
+             "' from " + other->plugin->path + ")";
+    plugin->importers.push_back(desc);
+  }
+  return "";
+}
+
+// The plugin's CPU references ("pfx.references/1"), kept only when they can be evaluated.
+void take_references(const pfx_entry& entry, Plugin* plugin, HostLayoutDescriptors* descriptors) {
+  auto references = static_cast<const pfx_reference_factory*>(entry.get_factory(PFX_REFERENCES_FACTORY_ID));
+  if (!references || references->struct_size < PFX_REFERENCE_FACTORY_MIN_SIZE) return;
+  descriptors->references = read_sized(references);
+  if (descriptors->references.has_reference && descriptors->references.evaluate)
+    plugin->references = &descriptors->references;
+}
+
+}  // namespace
+
+bool PluginRegistry::open_plugin(const std::string& path, const std::string& file, const Plugin* replacing, Opened* out,
+                                 std::string* error) {
   auto fail = [&](const std::string& reason) {
     if (error) *error = path + ": " + reason;
     return false;
   };
-  std::error_code ec;
-  if (!fs::exists(file, ec)) return fail("no such file");
-  if (!fs::is_regular_file(file, ec)) return fail("not a regular file");
-  if (!is_elf_file(file)) return fail("not a shared library (no ELF header)");
+  std::string reason = file_problem(file);
+  if (!reason.empty()) return fail(reason);
 
   auto record = std::make_unique<Record>();
   record->registry = this;
   record->thread_pool = thread_pool_;
   // This registry's own library: another registry of the process holding the same one makes it a
   // private copy, so the plugin's globals (what init is told of its host) are this host's alone.
-  std::string reason;
   void* library = open_own_library(this, file, path, &reason);
   if (!library) return fail("cannot be loaded: " + reason);
   struct Closer {
@@ -132,103 +257,24 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
   auto get_entry = reinterpret_cast<pfx_get_entry_fn>(dlsym(library, PFX_ENTRY_SYMBOL));
   if (!get_entry) return fail("no entry symbol " PFX_ENTRY_SYMBOL " (not a pfx plugin)");
   const pfx_entry* entry = get_entry();
-  if (!entry) return fail(PFX_ENTRY_SYMBOL "() returned NULL");
-  if (entry->struct_size < PFX_ENTRY_MIN_SIZE)
-    return fail("entry struct is " + std::to_string(entry->struct_size) + " bytes, expected at least " +
-                std::to_string(PFX_ENTRY_MIN_SIZE) + " (ABI 1.0)");
-  if (entry->abi_major != PFX_ABI_MAJOR)
-    return fail("ABI major version mismatch: plugin built for ABI " + std::to_string(entry->abi_major) + "." +
-                std::to_string(entry->abi_minor) + ", host implements ABI " + std::to_string(PFX_ABI_MAJOR) +
-                "." + std::to_string(PFX_ABI_MINOR));
-  if (!entry->id || !*entry->id) return fail("entry has no plugin id");
-  if (!entry->init || !entry->deinit || !entry->get_factory)
-    return fail("entry lacks init, deinit or get_factory");
-  if (replacing && replacing->id != entry->id)
-    return fail("the rebuilt library has plugin id '" + std::string(entry->id) + "', not '" + replacing->id + "'");
-  for (const auto& plugin : plugins_)
-    if (plugin.get() != replacing && plugin->id == entry->id)
-      return fail("duplicate plugin id '" + plugin->id + "' (already loaded from " + plugin->path + ")");
+  reason = entry_problem(entry);
+  if (reason.empty()) reason = plugin_id_problem(*this, *entry, replacing);
+  if (!reason.empty()) return fail(reason);
 
-  record->plugin_id = entry->id;
-  record->entry = entry;
-  record->host.struct_size = sizeof(pfx_host);
-  record->host.abi_major = PFX_ABI_MAJOR;
-  record->host.abi_minor = PFX_ABI_MINOR;
-  record->host.host_name = host_name_.c_str();
-  record->host.host_data = record.get();
-  record->host.log = host_log;
-  record->host.get_proc_address = host_get_proc_address;
-  record->host.get_service = host_get_service;
-
+  offer_host(record.get(), entry, host_name_);
   pfx_status status = entry->init(&record->host);
   if (status != PFX_OK) return fail("init failed (status " + std::to_string(status) + ")");
   record->initialised = true;
-  auto undo_init = [&](const std::string& reason) {
+
+  std::unique_ptr<Plugin> plugin = describe_plugin(path, *entry, &record->host);
+  auto descriptors = std::make_shared<HostLayoutDescriptors>();
+  reason = take_effects(*this, *entry, replacing, plugin.get(), descriptors.get());
+  if (reason.empty()) reason = take_importers(*this, *entry, replacing, plugin.get(), descriptors.get());
+  if (!reason.empty()) {
     entry->deinit();
     return fail(reason);
-  };
-
-  auto plugin = std::make_unique<Plugin>();
-  plugin->path = path;
-  plugin->id = entry->id;
-  plugin->name = text_or(entry->name, entry->id);
-  plugin->version = text_or(entry->version, "");
-  plugin->abi_minor = entry->abi_minor;
-  plugin->host = &record->host;
-  auto descriptors = std::make_shared<HostLayoutDescriptors>();
-
-  // A plugin may provide no effects (an importer only): a NULL factory is fine.
-  auto factory = static_cast<const pfx_effect_factory*>(entry->get_factory(PFX_EFFECTS_FACTORY_ID));
-  if (factory) {
-    if (factory->struct_size < PFX_EFFECT_FACTORY_MIN_SIZE || !factory->effect_count || !factory->get_effect)
-      return undo_init("effect factory is incomplete");
-    std::set<std::string> own_ids;
-    for (uint32_t i = 0, n = factory->effect_count(); i < n; ++i) {
-      std::string problem;
-      std::unique_ptr<HostLayoutEffect> effect = effect_in_host_layout(factory->get_effect(i), &problem);
-      if (!effect) return undo_init("effect #" + std::to_string(i) + ": " + problem);
-      const pfx_effect_desc* desc = &effect->desc;
-      problem = check_effect_descriptor(desc);
-      if (!problem.empty()) return undo_init("effect #" + std::to_string(i) + ": " + problem);
-      if (!own_ids.insert(desc->id).second) return undo_init("duplicate effect id '" + std::string(desc->id) + "' within the plugin");
-      const EffectInfo* other = find_effect(desc->id);
-      if (other && other->plugin != replacing)
-        return undo_init("duplicate effect id '" + std::string(desc->id) + "' (already provided by plugin '" +
-                         other->plugin->id + "' from " + other->plugin->path + ")");
-      plugin->effects.push_back(desc);
-      descriptors->effects.push_back(std::move(effect));
-    }
   }
-
-  auto importer_factory =
-      static_cast<const pfx_importer_factory*>(entry->get_factory(PFX_IMPORTERS_FACTORY_ID));
-  if (importer_factory) {
-    if (importer_factory->struct_size < PFX_IMPORTER_FACTORY_MIN_SIZE || !importer_factory->importer_count ||
-        !importer_factory->get_importer)
-      return undo_init("importer factory is incomplete");
-    std::set<std::string> own_ids;
-    for (uint32_t i = 0, n = importer_factory->importer_count(); i < n; ++i) {
-      const pfx_importer_desc* plugin_desc = importer_factory->get_importer(i);
-      std::string problem = check_importer_descriptor(plugin_desc);
-      if (!problem.empty()) return undo_init("importer #" + std::to_string(i) + ": " + problem);
-      descriptors->importers.push_back(std::make_unique<pfx_importer_desc>(read_sized(plugin_desc)));
-      const pfx_importer_desc* desc = descriptors->importers.back().get();
-      if (!own_ids.insert(desc->id).second)
-        return undo_init("duplicate importer id '" + std::string(desc->id) + "' within the plugin");
-      const ImporterInfo* other = find_importer(desc->id);
-      if (other && other->plugin != replacing)
-        return undo_init("duplicate importer id '" + std::string(desc->id) + "' (already provided by plugin '" +
-                         other->plugin->id + "' from " + other->plugin->path + ")");
-      plugin->importers.push_back(desc);
-    }
-  }
-
-  auto references = static_cast<const pfx_reference_factory*>(entry->get_factory(PFX_REFERENCES_FACTORY_ID));
-  if (references && references->struct_size >= PFX_REFERENCE_FACTORY_MIN_SIZE) {
-    descriptors->references = read_sized(references);
-    if (descriptors->references.has_reference && descriptors->references.evaluate)
-      plugin->references = &descriptors->references;
-  }
+  take_references(*entry, plugin.get(), descriptors.get());
   plugin->descriptors = std::move(descriptors);
 
   record->library = library;
