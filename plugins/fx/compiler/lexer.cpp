@@ -22,7 +22,10 @@ std::size_t continuation_at(std::string_view s, std::size_t p) {
 }  // namespace
 
 Lexer::Lexer(std::string_view source, std::uint32_t file, Diagnostics& diagnostics)
-    : source_(source), file_(file), diagnostics_(diagnostics) {}
+    : source_(source), file_(file), diagnostics_(diagnostics) {
+  // A UTF-8 byte order mark, as editors on Windows write it, is not part of the text.
+  if (source_.substr(0, 3) == "\xEF\xBB\xBF") position_ = 3;
+}
 
 char Lexer::peek(std::size_t ahead) {
   std::size_t p = position_;
