@@ -99,7 +99,7 @@ Token Lexer::next() {
   bool saw_space = false, saw_newline = false;
   skip_space_and_comments(saw_space, saw_newline);
   skip_continuations();
-  token.space_before = saw_space;
+  token.space_before = saw_space || at_line_start_;  // a file boundary separates tokens too
   token.line_start = at_line_start_ || saw_newline;
   at_line_start_ = false;
   token.location = {file_, static_cast<std::uint32_t>(line_ + line_offset_), static_cast<std::uint32_t>(column_)};

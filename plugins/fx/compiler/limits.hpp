@@ -8,8 +8,8 @@ namespace pfx::fx::limits {
 inline constexpr std::size_t kMaxSourceBytes = 16u << 20;          // one file
 inline constexpr int kMaxIncludeDepth = 64;                         // nested #include
 inline constexpr int kMaxConditionalDepth = 256;                    // nested #if
-inline constexpr std::size_t kMaxOutputTokens = 4u << 20;           // preprocessed tokens of one effect
-inline constexpr std::size_t kMaxExpansionTokens = 16u << 20;       // tokens produced by macro expansion
+inline constexpr std::size_t kMaxOutputTokens = 1u << 20;           // preprocessed tokens of one effect
+inline constexpr std::size_t kMaxExpansionTokens = 4u << 20;        // tokens produced by macro expansion
 inline constexpr std::size_t kMaxMacroArguments = 256;              // arguments of one macro use
 inline constexpr int kMaxSyntaxNesting = 256;                       // nested expressions, statements, blocks
 // Operators chained at one level ("a + b + c ...", "a[0][1].x") deepen the tree without nesting:
