@@ -61,8 +61,12 @@ bool Parser::at_declaration() const {
   if (i > 0) return true;
   const Token& first = peek();
   if (first.kind != TokenKind::kIdentifier && !first.is(Punct::kColonColon)) return false;
-  if (first.kind == TokenKind::kIdentifier && builtin_type_word(first.text))
-    return !peek(1).is(Punct::kLeftParen);  // float3(...) starts an expression
+  if (first.kind == TokenKind::kIdentifier && builtin_type_word(first.text)) {
+    std::size_t after = 1;
+    if (peek(1).is(Punct::kLess))  // vector<float, 3>, sampler2D<int>
+      while (peek(after).kind != TokenKind::kEnd && !peek(after++).is(Punct::kGreater)) {}
+    return !peek(after).is(Punct::kLeftParen);  // float3(...) starts an expression
+  }
   // Name Name, or A::B Name: a declaration of a struct-typed variable.
   std::size_t k = first.is(Punct::kColonColon) ? 1 : 0;
   while (peek(k).kind == TokenKind::kIdentifier && peek(k + 1).is(Punct::kColonColon)) k += 2;
