@@ -15,10 +15,10 @@ void Parser::parse_declarations(std::vector<DeclPtr>& out, bool in_namespace) {
       out.push_back(std::move(declaration));
       continue;
     }
-    skip_to_statement_end();
-    if (position_ == before || (!in_namespace && at(Punct::kRightBrace))) advance();  // always make progress
+    recover(before, false);
   }
 }
+
 
 DeclPtr Parser::parse_declaration() {
   NestingGuard guard(*this);
@@ -196,7 +196,9 @@ bool Parser::parse_annotations(std::vector<Annotation>& annotations) {
     if (!expect_identifier(annotation.name, "an annotation name or '>'") ||
         !expect(Punct::kAssign, "after an annotation name"))
       return false;
+    in_annotation_ = true;  // '>' ends the annotations, it is no comparison here
     annotation.value = parse_initializer();
+    in_annotation_ = false;
     if (!annotation.value || !expect(Punct::kSemicolon, "after an annotation")) return false;
     annotations.push_back(std::move(annotation));
   }

@@ -96,6 +96,7 @@ ExprPtr Parser::parse_binary(int level) {
     ~Restore() { total -= local; }
   } restore{chain_, chained};
   while (left && binary_level(peek()) == level && level <= kTightestBinaryLevel) {
+    if (in_annotation_ && (at(Punct::kGreater) || at(Punct::kGreaterEqual) || at(Punct::kShiftRight))) break;
     if (!extend_chain(chained)) return nullptr;
     const Token& op = advance();
     ExprPtr binary = make(ExprKind::kBinary, op.location);

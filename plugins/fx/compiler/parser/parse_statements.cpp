@@ -63,10 +63,11 @@ StmtPtr Parser::parse_block() {
       error_at(block->location, "'{' is never closed");
       return nullptr;
     }
+    std::size_t start = position_;
     StmtPtr statement = parse_statement();
     if (stopped()) return nullptr;
     if (statement) block->statements.push_back(std::move(statement));
-    else skip_to_statement_end();
+    else recover(start, true);
   }
   return block;
 }

@@ -30,7 +30,7 @@ class Parser {
   bool expect_identifier(std::string& name, const char* what);
   void error_here(const std::string& message);
   void error_at(SourceLocation where, const std::string& message);
-  void skip_to_statement_end();
+  void recover(std::size_t start, bool inside_block);
   bool enter();  // false (after an error) when nesting passes the limit
   void leave() { --depth_; }
   bool extend_chain(long& local);  // one more chained operator; false past the limit
@@ -94,6 +94,7 @@ class Parser {
   int depth_ = 0;
   long chain_ = 0;  // operators chained without nesting in the expressions being parsed
   bool failed_nesting_ = false;
+  bool in_annotation_ = false;
   std::set<std::string> struct_names_;  // as written and qualified: "S", "N::S"
   std::string namespace_prefix_;        // "A::B::" inside namespaces
 };

@@ -69,23 +69,27 @@ void Parser::error_here(const std::string& message) {
 
 void Parser::error_at(SourceLocation where, const std::string& message) { diagnostics_.error(where, message); }
 
-void Parser::skip_to_statement_end() {
-  // Recovery: drop tokens up to the end of the statement or block the error is in.
+void Parser::recover(std::size_t start, bool inside_block) {
+  // Skip the rest of the statement or declaration that failed: close every brace it opened, then
+  // stop after its ';' or its last '}', so one mistake gives one error. Inside a block the '}'
+  // that closes the block is left for the block.
   int braces = 0;
+  for (std::size_t i = start; i < position_ && i < tokens_.size(); ++i) {
+    if (tokens_[i].is(Punct::kLeftBrace)) ++braces;
+    if (tokens_[i].is(Punct::kRightBrace) && braces > 0) --braces;
+  }
   while (peek().kind != TokenKind::kEnd) {
-    if (at(Punct::kLeftBrace)) ++braces;
-    if (at(Punct::kRightBrace)) {
-      if (braces == 0) return;
-      if (--braces == 0) {
-        advance();
-        return;
-      }
-    }
-    if (at(Punct::kSemicolon) && braces == 0) {
-      advance();
+    if (at(Punct::kRightBrace) && braces == 0) {
+      if (!inside_block || position_ == start) advance();  // always make progress
       return;
     }
-    advance();
+    const Token& token = advance();
+    if (token.is(Punct::kLeftBrace)) ++braces;
+    if (token.is(Punct::kRightBrace) && --braces == 0) {
+      accept(Punct::kSemicolon);
+      return;
+    }
+    if (token.is(Punct::kSemicolon) && braces == 0) return;
   }
 }
 
