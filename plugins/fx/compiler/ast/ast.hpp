@@ -8,6 +8,7 @@
 #include "../literals.hpp"
 #include "../source_location.hpp"
 #include "../token.hpp"
+#include "semantic_type.hpp"
 #include "type_syntax.hpp"
 
 namespace pfx::fx {
@@ -15,6 +16,8 @@ namespace pfx::fx {
 struct Expr;
 struct Stmt;
 struct Decl;
+struct VariableDecl;
+struct FunctionDecl;
 using ExprPtr = std::unique_ptr<Expr>;
 using StmtPtr = std::unique_ptr<Stmt>;
 using DeclPtr = std::unique_ptr<Decl>;
@@ -57,6 +60,15 @@ struct Expr {
   bool boolean = false;     // kBool
   TypeSyntax type;          // kConstruct/kCast
   std::vector<ExprPtr> operands;
+
+  // Filled by semantic analysis:
+  Type resolved;                                  // the expression's type
+  const VariableDecl* variable = nullptr;  // kName naming a variable
+  const FunctionDecl* function = nullptr;  // kCall of a user function
+  std::string intrinsic;                          // kCall of an intrinsic (its name)
+  std::vector<int> swizzle;                       // kMember swizzle: component indices (matrix: row * 4 + column)
+  bool implicit = false;                          // kCast inserted by analysis (an implicit conversion)
+  bool lvalue = false;
 };
 
 struct Annotation {  // < ui_min = 0.0; >
@@ -83,6 +95,8 @@ struct VariableDecl {
   ExprPtr initializer;
   bool has_state_block = false;  // texture/sampler/storage { ... }
   std::vector<StateAssignment> states;
+
+  Type resolved;  // filled by semantic analysis
 };
 
 enum class StmtKind {
@@ -120,6 +134,8 @@ struct FunctionDecl {
   std::vector<VariableDecl> parameters;
   std::string return_semantic;
   StmtPtr body;  // null for a prototype
+
+  Type resolved;  // the return type, filled by semantic analysis
 };
 
 struct StructDecl {
