@@ -59,10 +59,10 @@ void Analyzer::declare_function(FunctionDecl& function) {
 
 void Analyzer::check_technique(TechniqueDecl& technique) {
   for (Annotation& a : technique.annotations) check(*a.value);
-  for (PassDecl& pass : technique.passes) check_states(pass.states, "pass");
+  for (PassDecl& pass : technique.passes) check_states(pass.states);
 }
 
-void Analyzer::check_states(std::vector<StateAssignment>& states, const char* owner) {
+void Analyzer::check_states(std::vector<StateAssignment>& states) {
   for (StateAssignment& state : states) {
     Expr& value = *state.value;
     bool shader = state.name == "VertexShader" || state.name == "PixelShader" || state.name == "ComputeShader";
@@ -83,7 +83,7 @@ void Analyzer::check_states(std::vector<StateAssignment>& states, const char* ow
       value.variable = find_variable(value.text);
       if (value.variable) value.resolved = value.variable->resolved;
       if (names_texture && (!value.variable || value.variable->resolved.base != BaseType::kTexture))
-        diagnostics_.error(value.location, "'" + state.name + "' in a " + owner + " must name a texture, not '" + value.text + "'");
+        diagnostics_.error(value.location, "'" + state.name + "' must name a texture, not '" + value.text + "'");
       continue;
     }
     if (names_texture) {

@@ -25,7 +25,7 @@ class Analyzer {
   void declare_struct(StructDecl& structure);
   void declare_function(FunctionDecl& function);
   void check_technique(TechniqueDecl& technique);
-  void check_states(std::vector<StateAssignment>& states, const char* owner);
+  void check_states(std::vector<StateAssignment>& states);
   Type resolve_type(const TypeSyntax& syntax, SourceLocation where);
   bool resolve_array_sizes(VariableDecl& variable, Type& type);
   void check_initializer(VariableDecl& variable);

@@ -1,5 +1,7 @@
 // FX functions become GLSL functions, and GLSL has no recursion: refuse it here with the cycle.
+#include <algorithm>
 #include <map>
+#include <tuple>
 
 #include "analyzer.hpp"
 
@@ -16,8 +18,16 @@ void Analyzer::check_recursion() {
   // Iterative depth-first search (deep call chains must not deepen the compiler's stack).
   enum class Mark { kNew, kOnPath, kDone };
   std::map<const FunctionDecl*, Mark> marks;
-  for (const auto& start : graph) {
-    if (marks[start.first] != Mark::kNew) continue;
+  // Start from callers in source order, so the cycle reported does not depend on addresses.
+  std::vector<const FunctionDecl*> callers;
+  for (const auto& entry : graph) callers.push_back(entry.first);
+  std::sort(callers.begin(), callers.end(), [](const FunctionDecl* a, const FunctionDecl* b) {
+    return std::tie(a->location.file, a->location.line, a->location.column) <
+           std::tie(b->location.file, b->location.line, b->location.column);
+  });
+  for (const FunctionDecl* first : callers) {
+    if (marks[first] != Mark::kNew) continue;
+    const std::pair<const FunctionDecl* const, int> start{first, 0};
     struct Step {
       const FunctionDecl* function;
       std::size_t next;
