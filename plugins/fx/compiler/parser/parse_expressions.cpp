@@ -1,4 +1,6 @@
 // Expressions, with HLSL's (C's) precedence from the comma operator down to postfix operators.
+#include <cctype>
+
 #include "../literals.hpp"
 #include "nesting_guard.hpp"
 #include "parser.hpp"
@@ -214,7 +216,17 @@ ExprPtr Parser::parse_literal() {
     return string;
   }
   std::string error;
-  auto number = parse_number(token.text, error);
+  std::string spelling = token.text;
+  std::string swizzle;
+  auto number = parse_number(spelling, error);
+  std::size_t dot = spelling.rfind('.');
+  if (!number && dot != std::string::npos && dot + 1 < spelling.size() &&
+      std::isalpha(static_cast<unsigned char>(spelling[dot + 1]))) {
+    // "0.0.xxx": the lexer reads a swizzled literal as one number; split off the swizzle.
+    std::string ignored;
+    number = parse_number(spelling.substr(0, dot), ignored);
+    if (number) swizzle = spelling.substr(dot + 1), spelling.resize(dot);
+  }
   if (!number) {
     error_at(token.location, error);
     return nullptr;
@@ -222,8 +234,12 @@ ExprPtr Parser::parse_literal() {
   bool integer = number->kind == NumberLiteral::Kind::kInt || number->kind == NumberLiteral::Kind::kUint;
   ExprPtr literal = make(integer ? ExprKind::kInt : ExprKind::kFloat, token.location);
   literal->number = *number;
-  literal->text = token.text;
-  return literal;
+  literal->text = spelling;
+  if (swizzle.empty()) return literal;
+  ExprPtr member = make(ExprKind::kMember, token.location);
+  member->text = swizzle;
+  member->operands.push_back(std::move(literal));
+  return member;
 }
 
 ExprPtr Parser::parse_primary() {
