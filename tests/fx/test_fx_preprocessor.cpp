@@ -172,6 +172,9 @@ TEST_CASE("runaway input hits a limit with its own message", "[fx][preprocessor]
   std::string nested;
   for (int i = 0; i < 300; ++i) nested += "#if 1\n";
   CHECK(preprocess_text(nested)->errors.find("main.fx:257:2: error: conditional directives nested deeper than 256 levels") == 0);
+  std::string skipped;
+  for (int i = 0; i < 300; ++i) skipped += "#if 0\n";
+  CHECK(preprocess_text(skipped)->errors.find("main.fx:257:2: error: conditional directives nested deeper than 256 levels") == 0);
   // Each macro doubles the one before: 2^40 tokens if nothing stopped it.
   std::string bomb = "#define M0 x x\n";
   for (int i = 1; i <= 40; ++i)

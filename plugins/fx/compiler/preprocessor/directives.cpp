@@ -24,7 +24,8 @@ void Preprocessor::directive(const Token& hash, TokenList line) {
   bool opens = word == "if" || word == "ifdef" || word == "ifndef";
   if (skipping()) {
     // Inside a skipped group only the nesting of conditionals matters.
-    if (opens) conditionals_.push_back({name.location, false, true, false, false});
+    if (opens && conditionals_.size() >= static_cast<std::size_t>(limits::kMaxConditionalDepth)) directive_if(name, line);
+    else if (opens) conditionals_.push_back({name.location, false, true, false, false});
     else if (word == "elif") directive_elif(name, line);
     else if (word == "else" || word == "endif") directive_else_endif(name, line);
     return;
