@@ -184,3 +184,26 @@ TEST_CASE("statement checks", "[fx][sema][bad]") {
   CHECK(errors_of("void f(int i) { for (int k = 0; k < 4; ++k) { if (k == 2) continue; } int k; }").empty());
   CHECK(errors_of("void f() { float a; float a; }") == "main.fx:1:27: error: redefinition of 'a'\n");
 }
+
+TEST_CASE("texture, sampler, storage and pass states are checked by name and value", "[fx][sema][bad]") {
+  CHECK(errors_of("texture2D t { Widht = 4; };") == "main.fx:1:15: error: unknown texture state 'Widht'\n");
+  CHECK(errors_of("texture2D t { Format = RGBA9; };") ==
+        "main.fx:1:24: error: 'RGBA9' is not a value of Format (R8, R16, R16F, R32F, R32I, R32U, RG8, RG16, RG16F, "
+        "RG32F, RGBA8, RGBA16, RGBA16F, RGBA32F, RGB10A2)\n");
+  CHECK(errors_of("texture2D t { Width = 100000; };") == "main.fx:1:23: error: 'Width' must be an integer constant from 1 to 16384\n");
+  CHECK(errors_of("texture2D t { Width = BUFFER_WIDTH / 2; Height = 0.5 * BUFFER_HEIGHT; MipLevels = 3; };").empty());
+  CHECK(errors_of("texture2D t; sampler2D s { AddressU = clamp; };") == "main.fx:1:24: error: sampler 's' has no Texture\n");
+  CHECK(errors_of("texture2D t; sampler2D s { Texture = t; AddressU = Clamp; MinFilter = linear; MipLODBias = -1; };").empty());
+  CHECK(errors_of("texture2D t; storage2D s { Texture = t; MipLevel = 0; Format = R8; };") ==
+        "main.fx:1:55: error: unknown storage state 'Format'\n");
+  std::string per_target = "technique T { pass { BlendOp3 = ADD; SrcBlend7 = ONE; BlendEnable8 = true; } }";
+  CHECK(errors_of(per_target) == "main.fx:1:" + std::to_string(per_target.find("BlendEnable8") + 1) +
+                                     ": error: unknown pass state 'BlendEnable8'\n");
+  std::string topology = "technique T { pass { PrimitiveTopology = TRIANGLEFAN; } }";
+  CHECK(errors_of(topology) == "main.fx:1:" + std::to_string(topology.find("TRIANGLEFAN") + 1) +
+                                   ": error: 'TRIANGLEFAN' is not a value of PrimitiveTopology (POINTLIST, LINELIST, "
+                                   "LINESTRIP, TRIANGLELIST, TRIANGLESTRIP)\n");
+  std::string threads = "void CS() {} technique T { pass { ComputeShader = CS<2000, 1>; } }";
+  CHECK(errors_of(threads) == "main.fx:1:" + std::to_string(threads.find("2000") + 1) +
+                                  ": error: thread group size must be a constant from 1 to 1024\n");
+}

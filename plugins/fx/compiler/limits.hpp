@@ -18,6 +18,7 @@ inline constexpr long kMaxOperatorChain = 4096;
 inline constexpr int kMaxIfExpressionNesting = 256;                 // parentheses in an #if expression
 inline constexpr std::size_t kMaxErrors = 100;                      // then "too many errors" and stop
 inline constexpr long long kMaxArrayElements = 1 << 20;             // one array
+inline constexpr long long kMaxTextureSize = 16384;               // Width, Height, Depth
 inline constexpr std::size_t kMaxStringBytes = 1u << 20;            // one string literal
 
 }  // namespace pfx::fx::limits

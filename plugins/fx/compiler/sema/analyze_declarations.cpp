@@ -127,7 +127,7 @@ void Analyzer::declare_variables(std::vector<VariableDecl>& variables, bool glob
     if (v.initializer) check_initializer(v);
     if (!global && (type.is_object() || (type.is_array() && type.base >= BaseType::kTexture)))
       diagnostics_.error(v.location, "'" + v.name + "': textures, samplers and storages must be global");
-    if (v.has_state_block) check_states(v.states);
+    if (v.has_state_block || type.is_object()) check_object(v);
     if (global) {
       std::string qualified = namespace_prefix_ + v.name;
       if (globals_.count(qualified) || functions_.count(qualified))

@@ -1,7 +1,5 @@
-// Functions (overloads, prototypes and definitions), techniques and the states of passes and
-// texture/sampler/storage blocks.
+// Functions (overloads, prototypes and definitions) and techniques.
 #include "analyzer.hpp"
-#include "constant_eval.hpp"
 
 namespace pfx::fx {
 namespace {
@@ -13,9 +11,6 @@ bool same_parameters(const FunctionDecl& a, const FunctionDecl& b) {
   return true;
 }
 
-bool is_render_target_state(const std::string& name) {
-  return name == "RenderTarget" || (name.size() == 13 && name.compare(0, 12, "RenderTarget") == 0 && name[12] >= '0' && name[12] <= '7');
-}
 
 }  // namespace
 
@@ -59,39 +54,8 @@ void Analyzer::declare_function(FunctionDecl& function) {
 
 void Analyzer::check_technique(TechniqueDecl& technique) {
   for (Annotation& a : technique.annotations) check(*a.value);
-  for (PassDecl& pass : technique.passes) check_states(pass.states);
+  for (PassDecl& pass : technique.passes) check_states(pass.states, StateOwner::kPass);
 }
 
-void Analyzer::check_states(std::vector<StateAssignment>& states) {
-  for (StateAssignment& state : states) {
-    Expr& value = *state.value;
-    bool shader = state.name == "VertexShader" || state.name == "PixelShader" || state.name == "ComputeShader";
-    if (shader) {
-      const auto* overloads = find_functions(value.text);
-      if (!overloads) diagnostics_.error(value.location, "unknown function '" + value.text + "' in " + state.name);
-      else value.function = overloads->front();
-      for (ExprPtr& size : state.thread_group) {
-        check(*size);
-        auto n = evaluate_integer_constant(*size);
-        if (!n || *n < 1 || *n > 1024) diagnostics_.error(size->location, "thread group size must be a constant from 1 to 1024");
-      }
-      continue;
-    }
-    bool names_texture = state.name == "Texture" || is_render_target_state(state.name);
-    if (value.kind == ExprKind::kName) {
-      // A state value may be an enumerant (CLAMP, LINEAR, SRCALPHA) rather than a variable.
-      value.variable = find_variable(value.text);
-      if (value.variable) value.resolved = value.variable->resolved;
-      if (names_texture && (!value.variable || value.variable->resolved.base != BaseType::kTexture))
-        diagnostics_.error(value.location, "'" + state.name + "' must name a texture, not '" + value.text + "'");
-      continue;
-    }
-    if (names_texture) {
-      diagnostics_.error(value.location, "'" + state.name + "' must name a texture");
-      continue;
-    }
-    check(value);
-  }
-}
 
 }  // namespace pfx::fx

@@ -10,6 +10,7 @@
 
 #include "../ast/ast.hpp"
 #include "../diagnostics.hpp"
+#include "state_tables.hpp"
 
 namespace pfx::fx {
 
@@ -25,7 +26,9 @@ class Analyzer {
   void declare_struct(StructDecl& structure);
   void declare_function(FunctionDecl& function);
   void check_technique(TechniqueDecl& technique);
-  void check_states(std::vector<StateAssignment>& states);
+  void check_object(VariableDecl& object);
+  void check_states(std::vector<StateAssignment>& states, StateOwner owner);
+  void check_state_value(StateAssignment& state, const StateRule& rule);
   Type resolve_type(const TypeSyntax& syntax, SourceLocation where);
   bool resolve_array_sizes(VariableDecl& variable, Type& type);
   void check_initializer(VariableDecl& variable);
