@@ -109,6 +109,29 @@ TEST_CASE("intrinsics are typed by HLSL's rules", "[fx][sema]") {
   }
 }
 
+// The typed tree of `expression` inside the context above.
+static std::string typed_tree(const std::string& expression) {
+  auto result = compile_text(std::string(kContext) + expression + ";\n}\n");
+  if (!result->ok()) return result->diagnostics.format_all();
+  const pfx::fx::Stmt& body = *result->unit.declarations.back()->function->body;
+  return pfx::fx::print_typed_expression(*body.statements.back()->expression);
+}
+
+TEST_CASE("the typed tree shows where each implicit conversion happens", "[fx][sema]") {
+  CHECK(typed_tree("s + i") == "(+ s:float (implicit i:int):float):float");
+  CHECK(typed_tree("v3 * s") == "(* v3:float3 (implicit s:float):float3):float3");
+  CHECK(typed_tree("i = s") == "(= i:int (implicit s:float):int):int");
+  CHECK(typed_tree("v4.xyz = v2.xyy") == "(= (. v4:float4 xyz):float3 (. v2:float2 xyy):float3):float3");
+  CHECK(typed_tree("b && i") == "(&& b:bool (implicit i:int):bool):bool");
+  CHECK(typed_tree("g(i)") == "(call g i:int):float");
+  CHECK(typed_tree("h(v3)") == "(call h (implicit v3:float3):float2):int");
+  CHECK(typed_tree("lerp(v3, v4, 1)") ==
+        "(call lerp v3:float3 (implicit v4:float4):float3 (implicit 1:int):float3):float3");
+  CHECK(typed_tree("arr[u]") == "([] arr:float[3] u:uint):float");
+  CHECK(typed_tree("arr[s]") == "([] arr:float[3] (implicit s:float):int):float");
+  CHECK(typed_tree("i ? v2 : 0") == "(? (implicit i:int):bool v2:float2 (implicit 0:int):float2):float2");
+}
+
 TEST_CASE("implicit conversions appear in the tree as implicit casts", "[fx][sema]") {
   auto result = compile_text("static const float a = 1; static const int2 b = 3;");
   REQUIRE(result->ok());

@@ -1,5 +1,7 @@
 #include "ast_printer.hpp"
 
+#include "semantic_type.hpp"
+
 namespace pfx::fx {
 namespace {
 
@@ -89,6 +91,31 @@ std::string print_expression(const Expr& e) {
     case ExprKind::kInitList: return list("{}", e.operands);
   }
   return "?";
+}
+
+std::string print_typed_expression(const Expr& e) {
+  std::string type = ":" + type_name(e.resolved);
+  if (e.kind == ExprKind::kCast && e.implicit) return "(implicit " + print_typed_expression(*e.operands[0]) + ")" + type;
+  if (e.operands.empty()) return print_expression(e) + type;
+  std::string head;
+  switch (e.kind) {
+    case ExprKind::kUnary:
+    case ExprKind::kBinary:
+    case ExprKind::kAssign: head = punct_spelling(e.op); break;
+    case ExprKind::kPostfix: head = std::string("post") + punct_spelling(e.op); break;
+    case ExprKind::kConditional: head = "?"; break;
+    case ExprKind::kSequence: head = ","; break;
+    case ExprKind::kCall: head = "call " + e.text; break;
+    case ExprKind::kConstruct: head = type_spelling(e.type); break;
+    case ExprKind::kCast: head = "cast " + type_spelling(e.type); break;
+    case ExprKind::kMember: head = "."; break;
+    case ExprKind::kIndex: head = "[]"; break;
+    default: head = "{}"; break;
+  }
+  std::string out = "(" + head;
+  for (const ExprPtr& operand : e.operands) out += " " + print_typed_expression(*operand);
+  if (e.kind == ExprKind::kMember) out += " " + e.text;
+  return out + ")" + type;
 }
 
 std::string print_statement(const Stmt& s) {
