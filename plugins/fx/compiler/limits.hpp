@@ -14,7 +14,7 @@ inline constexpr std::size_t kMaxMacroArguments = 256;              // arguments
 inline constexpr int kMaxSyntaxNesting = 256;                       // nested expressions, statements, blocks
 // Operators chained at one level ("a + b + c ...", "a[0][1].x") deepen the tree without nesting:
 // bounded separately so walking the tree recursively stays within the stack.
-inline constexpr long kMaxOperatorChain = 4096;
+inline constexpr long kMaxOperatorChain = 1024;
 inline constexpr int kMaxIfExpressionNesting = 256;                 // parentheses in an #if expression
 inline constexpr std::size_t kMaxErrors = 100;                      // then "too many errors" and stop
 inline constexpr long long kMaxArrayElements = 1 << 20;             // one array
