@@ -63,7 +63,7 @@ TEST_CASE("vector truncation is allowed with a warning", "[fx][sema]") {
   CHECK(type_of("v4 + v3") == "float3");
 }
 
-TEST_CASE("swizzles on scalars, vectors and matrices; members and indexing", "[fx][sema]") {
+TEST_CASE("swizzles on scalars, vectors and matrices, members and indexing", "[fx][sema]") {
   const std::pair<const char*, const char*> cases[] = {
       {"v4.xyz", "float3"}, {"s.xxx", "float3"},    {"s.x", "float"},        {"v2.yx", "float2"},
       {"v4.rgba", "float4"}, {"i3.zzzz", "int4"},   {"m32._m00", "float"},   {"m32._11_22", "float2"},
