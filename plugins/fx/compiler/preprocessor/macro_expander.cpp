@@ -147,9 +147,8 @@ bool MacroExpander::collect_arguments(const Macro& macro, const Token& name, std
   return true;
 }
 
-TokenList MacroExpander::argument_for(const Macro& macro, const std::vector<TokenList>& arguments, int index,
-                                      bool raw, bool& placemarker) {
-  (void)macro;
+TokenList MacroExpander::argument_for(const std::vector<TokenList>& arguments, int index, bool raw,
+                                      bool& placemarker) {
   const TokenList& argument = arguments[static_cast<std::size_t>(index)];
   placemarker = argument.empty();
   return raw ? argument : expand_list(argument);
@@ -175,8 +174,8 @@ TokenList MacroExpander::substitute(const Macro& macro, const Token& use, const 
       pieces.push_back({{}, true});
     } else if (is_parameter(macro, token)) {
       bool placemarker = false;
-      TokenList tokens = argument_for(macro, arguments, macro.parameter_index(token.text), pasted_left || pasted_right,
-                                      placemarker);
+      TokenList tokens =
+          argument_for(arguments, macro.parameter_index(token.text), pasted_left || pasted_right, placemarker);
       if (!tokens.empty()) tokens.front().space_before = token.space_before;
       pieces.push_back({std::move(tokens), false});
     } else {

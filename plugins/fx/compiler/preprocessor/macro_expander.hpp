@@ -34,8 +34,8 @@ class MacroExpander {
                          std::vector<TokenList>& arguments, Token& right_paren);
   TokenList substitute(const Macro& macro, const Token& use, const std::vector<TokenList>& arguments,
                        const std::vector<std::uint32_t>& hide_set);
-  TokenList argument_for(const Macro& macro, const std::vector<TokenList>& arguments, int index, bool raw,
-                         bool& placemarker);
+  // An argument as substituted: unexpanded next to # or ## (raw), fully expanded otherwise.
+  TokenList argument_for(const std::vector<TokenList>& arguments, int index, bool raw, bool& placemarker);
   Token builtin_value(const Macro& macro, const Token& use) const;
   Token stringize(const TokenList& argument, const Token& use) const;
   bool paste(Token& left, const Token& right, const Token& use);
