@@ -2,6 +2,7 @@
 #include <cctype>
 
 #include "../literals.hpp"
+#include "../operator_precedence.hpp"
 #include "nesting_guard.hpp"
 #include "parser.hpp"
 
@@ -25,25 +26,19 @@ bool assignment_operator(const Token& token) {
   }
 }
 
-// Binary operator levels, loosest (0: ||) to tightest (9: * / %).
-int binary_level(const Token& token) {
-  if (token.kind != TokenKind::kPunct) return -1;
-  switch (token.punct) {
-    case Punct::kPipePipe: return 0;
-    case Punct::kAmpAmp: return 1;
-    case Punct::kPipe: return 2;
-    case Punct::kCaret: return 3;
-    case Punct::kAmp: return 4;
-    case Punct::kEqualEqual: case Punct::kBangEqual: return 5;
-    case Punct::kLess: case Punct::kGreater: case Punct::kLessEqual: case Punct::kGreaterEqual: return 6;
-    case Punct::kShiftLeft: case Punct::kShiftRight: return 7;
-    case Punct::kPlus: case Punct::kMinus: return 8;
-    case Punct::kStar: case Punct::kSlash: case Punct::kPercent: return 9;
-    default: return -1;
-  }
-}
+// Counts the operators one loop chains, and gives them back when the loop's expression is done.
+class ChainScope {
+ public:
+  explicit ChainScope(long& total) : total_(total) {}
+  ~ChainScope() { total_ -= local_; }
+  ChainScope(const ChainScope&) = delete;
+  ChainScope& operator=(const ChainScope&) = delete;
+  long& count() { return local_; }
 
-constexpr int kTightestBinaryLevel = 9;
+ private:
+  long& total_;
+  long local_ = 0;
+};
 
 }  // namespace
 
@@ -91,15 +86,10 @@ ExprPtr Parser::parse_conditional() {
 
 ExprPtr Parser::parse_binary(int level) {
   ExprPtr left = level > kTightestBinaryLevel ? parse_unary() : parse_binary(level + 1);
-  long chained = 0;
-  struct Restore {
-    long& total;
-    long& local;
-    ~Restore() { total -= local; }
-  } restore{chain_, chained};
-  while (left && binary_level(peek()) == level && level <= kTightestBinaryLevel) {
+  ChainScope chain(chain_);
+  while (left && binary_precedence(peek()) == level && level <= kTightestBinaryLevel) {
     if (in_annotation_ && (at(Punct::kGreater) || at(Punct::kGreaterEqual) || at(Punct::kShiftRight))) break;
-    if (!extend_chain(chained)) return nullptr;
+    if (!extend_chain(chain.count())) return nullptr;
     const Token& op = advance();
     ExprPtr binary = make(ExprKind::kBinary, op.location);
     binary->op = op.punct;
@@ -152,17 +142,12 @@ ExprPtr Parser::parse_unary() {
 }
 
 ExprPtr Parser::parse_postfix(ExprPtr expression) {
-  long chained = 0;
-  struct Restore {
-    long& total;
-    long& local;
-    ~Restore() { total -= local; }
-  } restore{chain_, chained};
+  ChainScope chain(chain_);
   while (expression) {
     const Token& token = peek();
     if (token.is(Punct::kDot) || token.is(Punct::kLeftBracket) || token.is(Punct::kPlusPlus) ||
         token.is(Punct::kMinusMinus) || token.is(Punct::kLeftParen))
-      if (!extend_chain(chained)) return nullptr;
+      if (!extend_chain(chain.count())) return nullptr;
     if (token.is(Punct::kDot)) {
       ExprPtr member = make(ExprKind::kMember, advance().location);
       if (!expect_identifier(member->text, "a member name or swizzle after '.'")) return nullptr;

@@ -2,6 +2,7 @@
 
 #include "../limits.hpp"
 #include "../literals.hpp"
+#include "../operator_precedence.hpp"
 
 namespace pfx::fx {
 namespace {
@@ -20,13 +21,13 @@ class IfEvaluator {
   }
 
  private:
-  // Binary levels from loosest to tightest (C's precedence).
+  // Binary levels from loosest to tightest (operator_precedence.hpp).
   long long binary(int level) {
-    if (level == 10) return unary();
+    if (level > kTightestBinaryLevel) return unary();
     long long left = binary(level + 1);
     while (!failed_ && position_ < tokens_.size()) {
-      Punct op = tokens_[position_].kind == TokenKind::kPunct ? tokens_[position_].punct : Punct::kNone;
-      if (level_of(op) != level) break;
+      if (binary_precedence(tokens_[position_]) != level) break;
+      Punct op = tokens_[position_].punct;
       SourceLocation where = tokens_[position_++].location;
       long long right = binary(level + 1);
       left = apply(op, left, right, where);
@@ -34,21 +35,7 @@ class IfEvaluator {
     return left;
   }
 
-  static int level_of(Punct op) {
-    switch (op) {
-      case Punct::kPipePipe: return 0;
-      case Punct::kAmpAmp: return 1;
-      case Punct::kPipe: return 2;
-      case Punct::kCaret: return 3;
-      case Punct::kAmp: return 4;
-      case Punct::kEqualEqual: case Punct::kBangEqual: return 5;
-      case Punct::kLess: case Punct::kGreater: case Punct::kLessEqual: case Punct::kGreaterEqual: return 6;
-      case Punct::kShiftLeft: case Punct::kShiftRight: return 7;
-      case Punct::kPlus: case Punct::kMinus: return 8;
-      case Punct::kStar: case Punct::kSlash: case Punct::kPercent: return 9;
-      default: return -1;
-    }
-  }
+
 
   long long apply(Punct op, long long a, long long b, SourceLocation where) {
     using U = unsigned long long;
