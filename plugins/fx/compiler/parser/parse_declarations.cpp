@@ -61,14 +61,7 @@ DeclPtr Parser::parse_struct() {
     if (peek().kind == TokenKind::kEnd) return error_at(structure.location, "struct is never closed"), nullptr;
     unsigned qualifiers = parse_qualifiers();
     TypeSyntax type;
-    if (!parse_type(type)) return nullptr;
-    do {
-      VariableDecl field;
-      field.qualifiers = qualifiers;
-      field.type = type;
-      if (!parse_declarator(field, false)) return nullptr;
-      structure.fields.push_back(std::move(field));
-    } while (accept(Punct::kComma));
+    if (!parse_type(type) || !parse_declarators(qualifiers, type, false, structure.fields)) return nullptr;
     if (!expect(Punct::kSemicolon, "after a struct member")) return nullptr;
   }
   if (!expect(Punct::kSemicolon, "after a struct")) return nullptr;
@@ -98,15 +91,8 @@ DeclPtr Parser::parse_function_or_variables(std::vector<Attribute> attributes) {
     return declaration;
   }
   declaration->kind = DeclKind::kVariables;
-  bool state_block = false;
-  do {
-    VariableDecl variable;
-    variable.qualifiers = qualifiers;
-    variable.type = type;
-    if (!parse_declarator(variable, true)) return nullptr;
-    state_block = variable.has_state_block;
-    declaration->variables.push_back(std::move(variable));
-  } while (accept(Punct::kComma));
+  if (!parse_declarators(qualifiers, type, true, declaration->variables)) return nullptr;
+  bool state_block = declaration->variables.back().has_state_block;  // "texture t { ... }" may end there
   if (!accept(Punct::kSemicolon) && !state_block) return error_here("expected ';' after a declaration"), nullptr;
   return declaration;
 }
@@ -137,6 +123,18 @@ bool Parser::parse_parameter(VariableDecl& parameter) {
     parameter.initializer = parse_assignment();
     if (!parameter.initializer) return false;
   }
+  return true;
+}
+
+bool Parser::parse_declarators(unsigned qualifiers, const TypeSyntax& type, bool global,
+                               std::vector<VariableDecl>& out) {
+  do {
+    VariableDecl variable;
+    variable.qualifiers = qualifiers;
+    variable.type = type;
+    if (!parse_declarator(variable, global)) return false;
+    out.push_back(std::move(variable));
+  } while (accept(Punct::kComma));
   return true;
 }
 

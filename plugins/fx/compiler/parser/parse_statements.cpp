@@ -184,14 +184,7 @@ StmtPtr Parser::parse_local_declaration() {
   StmtPtr statement = make(StmtKind::kDeclaration, peek().location);
   unsigned qualifiers = parse_qualifiers();
   TypeSyntax type;
-  if (!parse_type(type)) return nullptr;
-  do {
-    VariableDecl variable;
-    variable.qualifiers = qualifiers;
-    variable.type = type;
-    if (!parse_declarator(variable, false)) return nullptr;
-    statement->variables.push_back(std::move(variable));
-  } while (accept(Punct::kComma));
+  if (!parse_type(type) || !parse_declarators(qualifiers, type, false, statement->variables)) return nullptr;
   if (!expect(Punct::kSemicolon, "after a declaration")) return nullptr;
   return statement;
 }

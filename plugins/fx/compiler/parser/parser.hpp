@@ -77,6 +77,8 @@ class Parser {
   DeclPtr parse_function_or_variables(std::vector<Attribute> attributes);
   bool parse_function_rest(FunctionDecl& function);
   bool parse_parameter(VariableDecl& parameter);
+  // One or more comma-separated declarators sharing qualifiers and a type.
+  bool parse_declarators(unsigned qualifiers, const TypeSyntax& type, bool global, std::vector<VariableDecl>& out);
   bool parse_declarator(VariableDecl& variable, bool global);
   bool parse_array_sizes(std::vector<ExprPtr>& sizes);
   bool parse_semantic(std::string& semantic);
