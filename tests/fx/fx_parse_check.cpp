@@ -1,0 +1,31 @@
+// A developer's tool, not a test: runs the FX front end over the files named on the command line
+// (include folders with -I) and prints each file's diagnostics and a count of those that parse.
+// Used by hand on shader collections that must not be committed here.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "ast/ast_printer.hpp"
+#include "front_end.hpp"
+
+int main(int argc, char** argv) {
+  pfx::fx::FrontEndOptions options;
+  std::vector<std::string> files;
+  bool dump = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string argument = argv[i];
+    if (argument == "--dump") dump = true;
+    else if (argument.rfind("-I", 0) == 0) options.preprocessor.include_folders.push_back(argument.substr(2));
+    else files.push_back(argument);
+  }
+  int parsed = 0;
+  for (const std::string& file : files) {
+    auto result = pfx::fx::compile_front_end(file, options);
+    if (result->ok()) ++parsed;
+    if (dump) std::printf("%s", pfx::fx::print_unit(result->unit).c_str());
+    std::string text = result->diagnostics.format_all();
+    std::printf("%s %s\n%s", result->ok() ? "OK  " : "FAIL", file.c_str(), text.c_str());
+  }
+  std::printf("%d of %zu files parse\n", parsed, files.size());
+  return parsed == static_cast<int>(files.size()) ? 0 : 1;
+}
