@@ -48,7 +48,8 @@ bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* er
   if (!bridge->worker->run(
           [&] {
             ran = bridge->gl->run(host_bytes, int(image.width), int(image.height), is_bgra(image.format),
-                                  bridge->transfer, time_seconds, bridge->frames, error);
+                                  bridge->transfer, time_seconds, bridge->frames,
+                                  GlFrame::Readback{image.app_pixels, image.result_pixels}, error);
           },
           &worker_error)) {
     *error = worker_error;

@@ -10,6 +10,14 @@ void swap_red_blue(GLuint texture, bool swap) {
   glTextureParameteri(texture, GL_TEXTURE_SWIZZLE_B, swap ? GL_RED : GL_BLUE);
 }
 
+// The frame's bytes as R, G, B, A: a read-back ignores the swizzle, and GL_BGRA reads a texture
+// holding B, G, R, A bytes in that order.
+void read_rgba(GLuint texture, int width, int height, bool bgra, uint8_t* out) {
+  if (!out) return;
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(texture, 0, bgra ? GL_BGRA : GL_RGBA, GL_UNSIGNED_BYTE, width * height * 4, out);
+}
+
 }  // namespace
 
 bool GlFrame::create(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* error) {
@@ -36,7 +44,7 @@ GLuint GlFrame::staging(int width, int height) {
 }
 
 bool GlFrame::run(void* host_bytes, int width, int height, bool bgra, app::Transfer transfer, double time_seconds,
-                  uint64_t frame_index, std::string* error) {
+                  uint64_t frame_index, const Readback& readback, std::string* error) {
   while (glGetError() != GL_NO_ERROR) {
   }
   const GLuint io = host_bytes ? staging(width, height) : shared_.texture();
@@ -44,6 +52,7 @@ bool GlFrame::run(void* host_bytes, int width, int height, bool bgra, app::Trans
     // Rows of 4-byte texels: any unpack alignment fits; the bridge's context has no unpack buffer.
     glTextureSubImage2D(io, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, host_bytes);
   }
+  read_rgba(io, width, height, bgra, readback.app_pixels);
   frame_.resize(width, height);
   swap_red_blue(io, bgra);
   frame_.decode_texture(io, transfer);
@@ -54,6 +63,7 @@ bool GlFrame::run(void* host_bytes, int width, int height, bool bgra, app::Trans
   swap_red_blue(result, bgra);
   frame_.encode_texture(result, io, transfer);
   swap_red_blue(result, false);
+  read_rgba(io, width, height, bgra, readback.result_pixels);
   if (host_bytes) {
     glGetTextureImage(io, 0, GL_RGBA, GL_UNSIGNED_BYTE, width * height * 4, host_bytes);
   }

@@ -24,9 +24,14 @@ class GlFrame {
   GlMemory& shared() { return shared_; }
   // Runs the chain over the frame: from host_bytes (tightly packed RGBA8 rows, top row first, read
   // and written back) when not null, else in the shared texture. bgra: the bytes are B, G, R, A.
-  // Returns after the GL finished. False with *error; host_bytes then holds what it held.
+  // app_pixels and result_pixels, when not null, receive the frame before and after as RGBA
+  // (pfx_vk_image says how). Returns after the GL finished. False with *error.
+  struct Readback {
+    uint8_t* app_pixels = nullptr;
+    uint8_t* result_pixels = nullptr;
+  };
   bool run(void* host_bytes, int width, int height, bool bgra, app::Transfer transfer, double time_seconds,
-           uint64_t frame_index, std::string* error);
+           uint64_t frame_index, const Readback& readback, std::string* error);
 
  private:
   GLuint staging(int width, int height);

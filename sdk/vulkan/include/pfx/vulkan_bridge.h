@@ -65,7 +65,9 @@ typedef struct pfx_vk_bridge_desc {
    * without them the bridge takes the host-memory path. */
   int device_has_bridge_extensions;
   /* The chain, as pfx-render's options: effect ids separated by ',' ("bloom,dof"), "none" for no
-   * effect, NULL or "" for the preset's chain (no effect without a preset). */
+   * effect, "" for the preset's chain (no effect without a preset), NULL for the preset's chain or
+   * else pfx-inject's default chain: every effect found that needs nothing but colour, in pfx's
+   * order (those left out are logged). */
   const char* chain;
   const char* set;          /* "effect.param=value" assignments separated by ';', or NULL */
   const char* preset;       /* a pfx-view preset file, or NULL */
@@ -105,6 +107,11 @@ typedef struct pfx_vk_image {
   /* Signalled when the result is in the image; VK_NULL_HANDLE: none. Work the caller submits to the
    * same queue afterwards sees the result anyway (the bridge's last barrier covers all commands). */
   VkSemaphore signal_semaphore;
+  /* When not NULL, width * height * 4 bytes that receive the image as it came (app_pixels) and as
+   * it goes back (result_pixels): R, G, B, A whatever the format, row 0 the top row. For captures
+   * and tests; each costs a read-back. */
+  uint8_t* app_pixels;
+  uint8_t* result_pixels;
 } pfx_vk_image;
 
 /* Runs the chain over the image (the N-th call is frame N - 1 for effects that animate) and submits
