@@ -10,11 +10,12 @@
 namespace pfx::vulkan_layer {
 namespace {
 
-VkLayerDeviceCreateInfo* link_info(const VkDeviceCreateInfo* info) {
+// The loader's structure of the given kind: the link to the next layer, or its callbacks.
+VkLayerDeviceCreateInfo* loader_info(const VkDeviceCreateInfo* info, VkLayerFunction function) {
   auto* item = static_cast<const VkBaseInStructure*>(info->pNext);
   for (; item; item = item->pNext) {
     auto* layer_info = reinterpret_cast<VkLayerDeviceCreateInfo*>(const_cast<VkBaseInStructure*>(item));
-    if (item->sType == VK_STRUCTURE_TYPE_LOADER_DEVICE_CREATE_INFO && layer_info->function == VK_LAYER_LINK_INFO)
+    if (item->sType == VK_STRUCTURE_TYPE_LOADER_DEVICE_CREATE_INFO && layer_info->function == function)
       return layer_info;
   }
   return nullptr;
@@ -69,7 +70,8 @@ void keep_functions(Device* d) {
 
 VKAPI_ATTR VkResult VKAPI_CALL CreateDevice(VkPhysicalDevice physical_device, const VkDeviceCreateInfo* info,
                                             const VkAllocationCallbacks* allocator, VkDevice* device) {
-  VkLayerDeviceCreateInfo* link = link_info(info);
+  VkLayerDeviceCreateInfo* link = loader_info(info, VK_LAYER_LINK_INFO);
+  const VkLayerDeviceCreateInfo* callbacks = loader_info(info, VK_LOADER_DATA_CALLBACK);
   if (!link || !link->u.pLayerInfo) return VK_ERROR_INITIALIZATION_FAILED;
   const PFN_vkGetInstanceProcAddr next_instance = link->u.pLayerInfo->pfnNextGetInstanceProcAddr;
   const PFN_vkGetDeviceProcAddr next_device_proc = link->u.pLayerInfo->pfnNextGetDeviceProcAddr;
@@ -103,6 +105,7 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateDevice(VkPhysicalDevice physical_device, co
   record->next_instance_proc = next_instance;
   record->next_get_proc = next_device_proc;
   record->bridge_extensions = bridge_extensions;
+  record->set_loader_data = callbacks ? callbacks->u.pfnSetDeviceLoaderData : nullptr;
   keep_functions(record.get());
   std::lock_guard<std::mutex> lock(state().mutex);
   state().devices[key_of(*device)] = std::move(record);

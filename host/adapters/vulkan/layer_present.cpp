@@ -44,6 +44,7 @@ pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
   desc.transfer = settings.transfer;
   desc.plugin_path = settings.plugin_path;
   desc.log = log_from_bridge;
+  desc.set_device_loader_data = d->set_loader_data;
   pfx_vk_bridge* bridge = nullptr;
   char error[1024] = "";
   if (pfx_vk_bridge_create(&desc, &bridge, error, sizeof error) != PFX_VK_OK) {

@@ -41,6 +41,7 @@ struct Device {
   VkInstance instance = VK_NULL_HANDLE;
   PFN_vkGetInstanceProcAddr next_instance_proc = nullptr;
   PFN_vkGetDeviceProcAddr next_get_proc = nullptr;
+  PFN_vkSetDeviceLoaderData set_loader_data = nullptr;  // the loader's, for the bridge's command buffers
   PFN_vkDestroyDevice DestroyDevice = nullptr;
   PFN_vkGetDeviceQueue GetDeviceQueue = nullptr;
   PFN_vkGetDeviceQueue2 GetDeviceQueue2 = nullptr;

@@ -187,7 +187,7 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_des
   }
   bridge->transport = std::make_unique<vk::Transport>(bridge->functions, desc->device, desc->physical_device,
                                                       desc->queue);
-  if (!bridge->transport->init(desc->queue_family_index, &message)) {
+  if (!bridge->transport->init(desc->queue_family_index, desc->set_device_loader_data, &message)) {
     vk::copy_error(message, error, error_size);
     pfx_vk_bridge_destroy(bridge.release());
     return PFX_VK_VULKAN_FAILED;

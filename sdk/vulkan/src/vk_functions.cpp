@@ -19,12 +19,13 @@ bool load_functions(VkInstance instance, VkDevice device, PFN_vkGetInstanceProcA
   Functions f;
   f.GetPhysicalDeviceMemoryProperties = reinterpret_cast<PFN_vkGetPhysicalDeviceMemoryProperties>(
       get_instance_proc_addr(instance, "vkGetPhysicalDeviceMemoryProperties"));
+  // The extension's name first: an instance made for Vulkan 1.0 may call it only by that name (the
+  // core one is there, but calling it breaks the rules); a newer one without the extension gets null.
   f.GetPhysicalDeviceProperties2 = reinterpret_cast<PFN_vkGetPhysicalDeviceProperties2>(
-      get_instance_proc_addr(instance, "vkGetPhysicalDeviceProperties2"));
-  // An instance made for Vulkan 1.0 offers it only under its extension's name.
+      get_instance_proc_addr(instance, "vkGetPhysicalDeviceProperties2KHR"));
   if (!f.GetPhysicalDeviceProperties2)
     f.GetPhysicalDeviceProperties2 = reinterpret_cast<PFN_vkGetPhysicalDeviceProperties2>(
-        get_instance_proc_addr(instance, "vkGetPhysicalDeviceProperties2KHR"));
+        get_instance_proc_addr(instance, "vkGetPhysicalDeviceProperties2"));
   if (!f.GetPhysicalDeviceMemoryProperties) {
     *error = "the Vulkan instance does not give vkGetPhysicalDeviceMemoryProperties";
     return false;

@@ -17,7 +17,7 @@ Transport::~Transport() {
   if (pool_) f_.DestroyCommandPool(device_, pool_, nullptr);  // frees its command buffers
 }
 
-bool Transport::init(uint32_t queue_family_index, std::string* error) {
+bool Transport::init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error) {
   VkCommandPoolCreateInfo pool_info{};
   pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
   pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -33,6 +33,10 @@ bool Transport::init(uint32_t queue_family_index, std::string* error) {
     result = f_.AllocateCommandBuffers(device_, &info, buffers);
     in_ = buffers[0];
     out_ = buffers[1];
+    // A command buffer is a dispatchable handle: made below the loader, it gets its dispatch
+    // table only from the loader's callback.
+    if (result == VK_SUCCESS && set_loader_data) result = set_loader_data(device_, in_);
+    if (result == VK_SUCCESS && set_loader_data) result = set_loader_data(device_, out_);
   }
   VkFenceCreateInfo fence_info{};
   fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;

@@ -23,8 +23,10 @@ class Transport {
   Transport(const Transport&) = delete;
   Transport& operator=(const Transport&) = delete;
 
-  // The command pool, its two command buffers and fences; false with *error.
-  bool init(uint32_t queue_family_index, std::string* error);
+  // The command pool, its two command buffers and fences; false with *error. set_loader_data,
+  // when not null, is called on each command buffer (pfx_vk_bridge_desc says why).
+  using SetLoaderData = VkResult(VKAPI_PTR*)(VkDevice, void*);
+  bool init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error);
 
   // Makes the go-between for a width x height RGBA8 frame: SHARED, an exportable image whose
   // memory *fd (a new descriptor the caller owns) and *memory_size describe; HOST, a mapped buffer

@@ -76,6 +76,9 @@ typedef struct pfx_vk_bridge_desc {
   uint32_t flags;           /* PFX_VK_FORCE_HOST_MEMORY */
   pfx_vk_log_fn log;        /* NULL: messages go nowhere */
   void* log_user;
+  /* For a Vulkan layer: the loader's vkSetDeviceLoaderData (vk_layer.h), which the bridge calls on
+   * the command buffers it allocates so the layers below it can dispatch them. NULL for an engine. */
+  VkResult(VKAPI_PTR* set_device_loader_data)(VkDevice device, void* object);
 } pfx_vk_bridge_desc;
 
 typedef struct pfx_vk_bridge pfx_vk_bridge;
