@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <vulkan/vulkan.h>
+
 #include "inject_run.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -173,4 +175,58 @@ TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variabl
   REQUIRE(launched.exit_code == 0);
   REQUIRE(by_hand.run.exit_code == 0);
   CHECK(difference(pfx::test::read_png_file(folder.file("launched.png")), by_hand.presented).first == 0);
+}
+
+namespace {
+
+// The name of lavapipe's device, which mpv must be told: libplacebo passes over software devices
+// unless one is named.
+std::string lavapipe_device_name() {
+  VkInstanceCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+  VkInstance instance = VK_NULL_HANDLE;
+  REQUIRE(vkCreateInstance(&info, nullptr, &instance) == VK_SUCCESS);
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(instance, &count, devices.data());
+  std::string name;
+  for (VkPhysicalDevice device : devices) {
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(device, &properties);
+    if (properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) name = properties.deviceName;
+  }
+  vkDestroyInstance(instance, nullptr);
+  return name;
+}
+
+}  // namespace
+
+TEST_CASE("mpv playing through its Vulkan output shows bloom, the frame pfx-render gives, and ends normally", "[mpv]") {
+  ScratchFolder folder("vulkan-mpv");
+  const std::string device = lavapipe_device_name();
+  REQUIRE(!device.empty());
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("mpv.log"),
+                                   "PFX_INJECT_CAPTURE=10:" + folder.file("mpv")};
+  add_sanitizer_runtime(&argv);
+  // A clip made by FFmpeg's test source inside mpv (colour bars, a moving gradient, a clock).
+  for (const std::string& arg : {std::string(PFX_MPV), std::string("--no-config"), std::string("--really-quiet"),
+                                 std::string("--vo=gpu"), std::string("--gpu-api=vulkan"), "--vulkan-device=" + device,
+                                 std::string("--no-audio"), std::string("--frames=15"),
+                                 std::string("av://lavfi:testsrc2=size=320x240:rate=25:duration=1")})
+    argv.push_back(arg);
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
+  INFO(run.output << pfx::test::read_text_file(folder.file("mpv.log")));
+  REQUIRE(run.exit_code == 0);
+  const pfx::app::DisplayImage presented = pfx::test::read_png_file(folder.file("mpv.png"));
+  const pfx::app::DisplayImage app = pfx::test::read_png_file(folder.file("mpv.app.png"));
+  const auto [changed_by, changed] = difference(presented, app);
+  CHECK(changed_by >= 16);
+  CHECK(changed >= 320 * 240 / 20);
+  const pfx::test::RunResult render =
+      pfx::test::run_program({PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("mpv.app.png"),
+                              "--chain", "bloom", "--out", folder.file("render.png")});
+  REQUIRE(render.exit_code == 0);
+  CHECK(difference(presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
 }
