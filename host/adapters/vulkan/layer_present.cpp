@@ -1,12 +1,14 @@
 // vkQueuePresentKHR as the layer sees it: each presented image goes through the bridge (which waits
 // on the application's semaphores and signals the image's own), and the present waits on those.
 // Any failure turns the device into a pass-through, said once.
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <vector>
 
 #include "layer_calls.hpp"
 #include "layer_capture.hpp"
+#include "process_memory.hpp"
 #include "layer_state.hpp"
 
 namespace pfx::vulkan_layer {
@@ -122,6 +124,10 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
     result = d->QueuePresentKHR(queue, &ours);
   }
   lock.unlock();  // the application's exit handlers may destroy its device through the layer
+  const auto& report_at = layer_inject_settings().resources_at;
+  if (std::find(report_at.begin(), report_at.end(), frame) != report_at.end())
+    log_line("frame " + std::to_string(frame) + ": resident memory " + std::to_string(inject::resident_kib()) +
+             " KiB; heap in use " + std::to_string(inject::heap_bytes_in_use()) + " bytes");
   if (frame == quit_after()) {
     log_line("frame " + std::to_string(frame) + ": quitting, as asked");
     std::exit(0);
