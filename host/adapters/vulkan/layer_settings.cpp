@@ -7,6 +7,8 @@
 #include "inject_settings.hpp"
 #include "layer_calls.hpp"
 
+extern char** environ;
+
 namespace pfx::vulkan_layer {
 namespace {
 
@@ -32,7 +34,10 @@ Loaded& loaded() {
     l->settings = inject::settings_from_environment([](const char* name) -> const char* { return std::getenv(name); },
                                                     &problems);
     l->log = std::make_unique<inject::InjectLog>(l->settings.log_file);
-    for (const auto& problem : problems) l->log->line("ignored " + problem);
+    std::vector<std::string> names;
+    for (char** entry = environ; *entry; ++entry) names.push_back(std::string(*entry).substr(0, std::string(*entry).find('=')));
+    for (const auto& problem : inject::unknown_variables(names)) problems.push_back(problem);
+    for (const auto& problem : problems) l->log->line("(vulkan) ignored " + problem);
     if (l->settings.chain) {
       l->chain = l->settings.chain->empty() ? "none" : joined(*l->settings.chain, ",");
       l->bridge.chain = l->chain.c_str();
