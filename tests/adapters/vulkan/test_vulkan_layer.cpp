@@ -12,9 +12,12 @@
 #include <string>
 #include <vector>
 
+#include <X11/Xlib.h>
+#include <unistd.h>
 #include <vulkan/vulkan.h>
 
 #include "inject_run.hpp"
+#include "view_process.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <link.h>
@@ -311,4 +314,63 @@ TEST_CASE("vkBasalt's CAS and pfx's bloom in one stack, in either order", "[vkcu
           1);
     CHECK(difference(both.presented, both.app).first >= 8);
   }
+}
+
+namespace {
+
+// Resizes the top-level window of size from_width x from_height on the test's X display (vkcube
+// names none; the test's Xvfb runs nothing else); false when there is none.
+bool resize_window(unsigned from_width, unsigned from_height, unsigned width, unsigned height) {
+  Display* display = XOpenDisplay(nullptr);
+  if (!display) return false;
+  Window root = DefaultRootWindow(display), parent = 0, *children = nullptr;
+  unsigned count = 0;
+  bool found = false;
+  if (XQueryTree(display, root, &root, &parent, &children, &count)) {
+    for (unsigned i = 0; i < count && !found; ++i) {
+      XWindowAttributes attributes{};
+      if (XGetWindowAttributes(display, children[i], &attributes) && unsigned(attributes.width) == from_width &&
+          unsigned(attributes.height) == from_height) {
+        XResizeWindow(display, children[i], width, height);
+        found = true;
+      }
+    }
+    if (children) XFree(children);
+  }
+  XSync(display, False);
+  XCloseDisplay(display);
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("vkcube resized mid-run: the re-created swapchain's frames go through the chain at their new size",
+          "[vkcube][resize]") {
+  ScratchFolder folder("vulkan-resize");
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_QUIT_AFTER=400",
+                                   "PFX_INJECT_CAPTURE=400:" + folder.file("frame400")};
+  add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--width", "320", "--height", "240"}) argv.push_back(arg);
+  pfx::test::ViewerProcess vkcube(argv);
+  REQUIRE(!vkcube.wait_for_line("frames go through", 60).empty());
+  bool resized = false;
+  for (int attempt = 0; attempt < 50 && !resized; ++attempt) {
+    resized = resize_window(320, 240, 200, 150);
+    if (!resized) usleep(100000);
+  }
+  REQUIRE(resized);
+  REQUIRE(vkcube.wait_exit(120) == 0);
+  INFO(vkcube.output());
+  // The last frame is of the new size, and bloom ran over it as pfx-render runs it.
+  const std::string last = folder.file("frame400");
+  const pfx::app::DisplayImage presented = pfx::test::read_png_file(last + ".png");
+  CHECK(presented.width == 200);
+  CHECK(presented.height == 150);
+  const pfx::test::RunResult render = pfx::test::run_program(
+      {PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", last + ".app.png", "--chain", "bloom", "--out",
+       folder.file("render.png")});
+  REQUIRE(render.exit_code == 0);
+  CHECK(difference(presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
+  CHECK(vkcube.output().find("pass through") == std::string::npos);
 }
