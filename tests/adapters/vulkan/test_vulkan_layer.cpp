@@ -60,6 +60,16 @@ struct Frame {
 
 // vkcube for 8 frames at 320x240 with the layer on and pfx-inject's variables `settings`
 // (NAME=VALUE), frame 5 captured.
+// pfx's layer through a manifest of the explicit kind in `folder`, so that VK_INSTANCE_LAYERS can
+// place it among other layers (the loader puts every implicit layer above the explicit ones).
+void write_explicit_manifest(const ScratchFolder& folder) {
+  std::ofstream(folder.file("pfx_explicit.json"))
+      << "{\"file_format_version\": \"1.0.0\", \"layer\": {\"name\": \"VK_LAYER_PFX_post_effects\", \"type\": "
+         "\"GLOBAL\", \"library_path\": \"" PFX_LAYER_LIBRARY "\", \"api_version\": \"1.3.0\", "
+         "\"implementation_version\": \"1\", \"description\": \"pfx\", \"functions\": {\"vkGetInstanceProcAddr\": "
+         "\"pfx_layer_GetInstanceProcAddr\", \"vkGetDeviceProcAddr\": \"pfx_layer_GetDeviceProcAddr\"}}}\n";
+}
+
 Frame vkcube_frame(const ScratchFolder& folder, const std::string& name, const std::vector<std::string>& settings,
                    bool validation = false) {
   std::vector<std::string> argv = {"/usr/bin/env",
@@ -148,6 +158,37 @@ TEST_CASE("the Khronos validation layer below the layer reports no error, on eit
     CHECK(frame.run.output.find("Validation") == std::string::npos);
     CHECK(frame.presented.width == 320);  // the layer did run
   }
+}
+
+TEST_CASE("the Khronos validation layer above the layer reports no error", "[vkcube]") {
+  // What the application sees of pfx's layer (its swapchains, its presents) is checked from above.
+  // Layers enabled by VK_INSTANCE_LAYERS always go below the implicit ones, so the validation
+  // layer comes in as an implicit layer of its own, through a copy of its manifest found before
+  // pfx's (the loader puts the implicit manifest it finds first nearest the application).
+  ScratchFolder folder("vulkan-validation-above");
+  std::filesystem::create_directories(folder.file("vulkan/implicit_layer.d"));
+  std::ifstream official(PFX_VALIDATION_MANIFEST);
+  std::string manifest((std::istreambuf_iterator<char>(official)), std::istreambuf_iterator<char>());
+  const size_t type = manifest.find("\"type\"");
+  REQUIRE(type != std::string::npos);
+  manifest.insert(type, "\"enable_environment\": {\"PFX_TEST_VALIDATION\": \"1\"}, "
+                        "\"disable_environment\": {\"PFX_TEST_NO_VALIDATION\": \"1\"}, ");
+  std::ofstream(folder.file("vulkan/implicit_layer.d/validation.json")) << manifest;
+  const Frame frame = vkcube_frame(folder, "validated",
+                                   {"XDG_DATA_HOME=" + folder.path(), "XDG_DATA_DIRS=" PFX_BUILD_SHARE ":/usr/share",
+                                    "PFX_TEST_VALIDATION=1", "VK_LOADER_DEBUG=layer", "PFX_INJECT_CHAIN=bloom"});
+  INFO(frame.run.output << frame.log);
+  REQUIRE(frame.run.exit_code == 0);
+  // The loader's account of the device's layers, application side first.
+  const size_t stack = frame.run.output.find("vkCreateDevice layer callstack setup");
+  REQUIRE(stack != std::string::npos);
+  const size_t validation = frame.run.output.find("VK_LAYER_KHRONOS_validation", stack);
+  const size_t pfx = frame.run.output.find("VK_LAYER_PFX_post_effects", stack);
+  REQUIRE(validation != std::string::npos);
+  REQUIRE(pfx != std::string::npos);
+  CHECK(validation < pfx);
+  CHECK(frame.run.output.find("Validation") == std::string::npos);
+  CHECK(frame.presented.width == 320);  // the layer did run
 }
 
 TEST_CASE("a setting that does not apply: vkcube's frames pass through, said in one line", "[vkcube]") {
@@ -293,13 +334,7 @@ TEST_CASE("vkBasalt's CAS and pfx's bloom in one stack, in either order", "[vkcu
     CHECK(difference(both.presented, render_bloom(folder.file("none.png"), folder.file("above-render.png"))).first <= 1);
   }
   SECTION("pfx below vkBasalt (pfx's layer enabled as an explicit one)") {
-    // The same layer through a manifest of the explicit kind, which the loader puts below every
-    // implicit layer.
-    std::ofstream(folder.file("pfx_explicit.json"))
-        << "{\"file_format_version\": \"1.0.0\", \"layer\": {\"name\": \"VK_LAYER_PFX_post_effects\", \"type\": "
-           "\"GLOBAL\", \"library_path\": \"" PFX_LAYER_LIBRARY "\", \"api_version\": \"1.3.0\", "
-           "\"implementation_version\": \"1\", \"description\": \"pfx\", \"functions\": {\"vkGetInstanceProcAddr\": "
-           "\"pfx_layer_GetInstanceProcAddr\", \"vkGetDeviceProcAddr\": \"pfx_layer_GetDeviceProcAddr\"}}}\n";
+    write_explicit_manifest(folder);
     const Frame both = vkcube_frame(folder, "below",
                                     {"XDG_DATA_HOME=" + folder.path(), "VK_LAYER_PATH=" + folder.path(),
                                      "VK_INSTANCE_LAYERS=VK_LAYER_PFX_post_effects", "PFX_INJECT_CHAIN=bloom",
