@@ -37,10 +37,12 @@ namespace pfx::vk {
 
 // The steps of pfx_vk_bridge_create, each false with *error.
 bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::string* error);
-// Without a chain given: the preset's, else pfx-inject's default chain (every effect found that
-// needs nothing but colour, in pfx's order).
+// Without a chain given: the preset's, else every effect found in pfx's order.
 bool default_chain_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::ChainRecipe* recipe,
                           std::string* error);
+// Leaves out of the default chain, or switches off in a chosen one, every effect that needs more
+// than colour (colour_fit.cpp).
+bool fit_recipe_to_colour(pfx_vk_bridge* bridge, app::ChainRecipe* recipe, std::string* error);
 bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, const app::ChainRecipe& recipe,
                      std::string* error);
 

@@ -7,7 +7,6 @@
 #include "bridge.hpp"
 #include "chain_settings.hpp"
 #include "cli_text.hpp"
-#include "colour_only.hpp"
 #include "headless_context.hpp"
 
 namespace pfx::vk {
@@ -19,12 +18,6 @@ void copy_error(const std::string& message, char* error, size_t error_size) {
   if (!error || !error_size) return;
   std::strncpy(error, message.c_str(), error_size - 1);
   error[error_size - 1] = '\0';
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
 }
 
 bool forced_host_memory(const pfx_vk_bridge_desc& desc) {
@@ -97,23 +90,6 @@ bool default_chain_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc,
     *error = problems.front().message;
     return false;
   }
-  if (recipe->chosen) return true;  // the preset's chain
-  // An application's frame is colour alone: effects that need more are left out, as pfx-inject does.
-  std::vector<adapters::EffectInputs> inputs;
-  if (!bridge->worker->run([&] { inputs = adapters::classify_effects(*bridge->registry); }, error)) return false;
-  std::string left_out;
-  std::vector<app::PresetEffect> kept;
-  for (const auto& effect : recipe->effects) {
-    for (const auto& input : inputs) {
-      if (input.id != effect.id) continue;
-      if (input.colour_only) kept.push_back(effect);
-      else left_out += (left_out.empty() ? "" : ", ") + effect.id + " (needs " +
-                       (input.needs.empty() ? input.error : joined(input.needs)) + ")";
-    }
-  }
-  recipe->effects = kept;
-  if (!left_out.empty())
-    bridge->say(0, "left out of the default chain, as an application's frame cannot give what they need: " + left_out);
   return true;
 }
 
@@ -172,7 +148,8 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_des
     return PFX_VK_BAD_SETTINGS;
   }
   bridge->worker = adapters::GlWorker::start();
-  if (!desc->chain && !vk::default_chain_recipe(bridge.get(), *desc, &recipe, &message)) {
+  if ((!desc->chain && !vk::default_chain_recipe(bridge.get(), *desc, &recipe, &message)) ||
+      !vk::fit_recipe_to_colour(bridge.get(), &recipe, &message)) {
     vk::copy_error(message, error, error_size);
     const bool has_gl = !bridge->worker->renderer().empty();
     pfx_vk_bridge_destroy(bridge.release());

@@ -409,3 +409,13 @@ TEST_CASE("vkcube resized mid-run: the re-created swapchain's frames go through 
   CHECK(difference(presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
   CHECK(vkcube.output().find("pass through") == std::string::npos);
 }
+
+TEST_CASE("an effect of a chosen chain that needs depth is switched off, said once, and the rest runs", "[vkcube]") {
+  ScratchFolder folder("vulkan-depth");
+  const Frame with_dof = vkcube_frame(folder, "dof-bloom", {"PFX_INJECT_CHAIN=dof,bloom"});
+  const Frame bloom = vkcube_frame(folder, "bloom", {"PFX_INJECT_CHAIN=bloom"});
+  INFO(with_dof.run.output << with_dof.log);
+  REQUIRE(with_dof.run.exit_code == 0);
+  CHECK(with_dof.log.find("dof off: needs depth") != std::string::npos);
+  CHECK(difference(with_dof.presented, bloom.presented).first == 0);
+}
