@@ -147,6 +147,17 @@ std::vector<Row> vulkan_rows(const fs::path& scratch) {
   };
 }
 
+// vkcube for `frames` frames with the row's variables.
+std::vector<std::string> vkcube_command(const Row& row, int frames, const Options& options) {
+  std::vector<std::string> argv = {"env"};
+  for (const auto& word : words(row.what)) argv.push_back(word);
+  for (const std::string& arg : {std::string("vkcube"), std::string("--c"), std::to_string(frames),
+                                 std::string("--width"), std::to_string(options.width), std::string("--height"),
+                                 std::to_string(options.height)})
+    argv.push_back(arg);
+  return argv;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -193,15 +204,7 @@ int main(int argc, char** argv) {
       {"gst-launch-1.0", "gleffects effect=glow", "gleffects effect=glow !", "no filter (upload, download)"},
   };
   auto command = [&](const Row& row, int frames) {
-    if (row.host == "vkcube") {
-      std::vector<std::string> argv = {"env"};
-      for (const auto& word : words(row.what)) argv.push_back(word);
-      for (const std::string& arg : {std::string("vkcube"), std::string("--c"), std::to_string(frames),
-                                     std::string("--width"), std::to_string(options.width), std::string("--height"),
-                                     std::to_string(options.height)})
-        argv.push_back(arg);
-      return argv;
-    }
+    if (row.host == "vkcube") return vkcube_command(row, frames, options);
     if (row.host == "ffmpeg")
       return std::vector<std::string>{"ffmpeg", "-hide_banner", "-loglevel", "error", "-i", clip, "-frames:v",
                                       std::to_string(frames), "-vf", row.what, "-f", "null", "-"};
