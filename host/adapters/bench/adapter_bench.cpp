@@ -6,10 +6,12 @@
 // pass at the same size is timed in this process before and after the rows: the unit the adapters'
 // extra time is quoted in, since absolute times on a shared software renderer drift.
 //
-//   pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE]
+//   pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE] [--vulkan]
 //
 // The adapters are the ones beside this program (BIN/../lib/frei0r-1, BIN/../lib/gstreamer-1.0);
 // ffmpeg's glow comes from Debian's frei0r-plugins, gleffects from gstreamer1.0-gl.
+// --vulkan measures the Vulkan layer instead (BIN/../share/vulkan/implicit_layer.d), in vkcube
+// (vulkan-tools) on a display (xvfb-run), beside vkBasalt's CAS (package vkbasalt) as the peer.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,6 +49,7 @@ struct Options {
   int short_frames = 8, long_frames = 32;
   int runs = 3;
   std::string json;
+  bool vulkan = false;
 };
 
 double median(std::vector<double> values) {
@@ -118,6 +121,8 @@ bool parse(int argc, char** argv, Options* options) {
       if (options->runs < 1) return false;
     } else if (arg == "--json" && has_value) {
       options->json = argv[++i];
+    } else if (arg == "--vulkan") {
+      options->vulkan = true;
     } else {
       return false;
     }
@@ -125,12 +130,41 @@ bool parse(int argc, char** argv, Options* options) {
   return true;
 }
 
+// vkcube alone, through pfx's layer on both paths, and through vkBasalt; each row's `what` is the
+// variables it runs with.
+std::vector<Row> vulkan_rows(const fs::path& scratch) {
+  std::ofstream(scratch / "vkBasalt.conf") << "effects = cas\n";
+  const std::string alone = "alone (layers off)";
+  return {
+      {"vkcube", alone, "DISABLE_PFX_VULKAN=1", ""},
+      {"vkcube", "pfx layer chain=none, shared memory", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none", alone},
+      {"vkcube", "pfx layer chain=bloom, shared memory", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=bloom", alone},
+      {"vkcube", "pfx layer chain=none, host memory", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none PFX_VK_HOST_MEMORY=1",
+       alone},
+      {"vkcube", "pfx layer chain=bloom, host memory",
+       "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=bloom PFX_VK_HOST_MEMORY=1", alone},
+      {"vkcube", "vkBasalt cas", "ENABLE_VKBASALT=1 VKBASALT_CONFIG_FILE=" + (scratch / "vkBasalt.conf").string(), alone},
+  };
+}
+
+// vkcube for `frames` frames with the row's variables.
+std::vector<std::string> vkcube_command(const Row& row, int frames, const Options& options) {
+  std::vector<std::string> argv = {"env"};
+  for (const auto& word : words(row.what)) argv.push_back(word);
+  for (const std::string& arg : {std::string("vkcube"), std::string("--c"), std::to_string(frames),
+                                 std::string("--width"), std::to_string(options.width), std::string("--height"),
+                                 std::to_string(options.height)})
+    argv.push_back(arg);
+  return argv;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Options options;
   if (!parse(argc, argv, &options)) {
-    std::fputs("usage: pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE]\n", stderr);
+    std::fputs("usage: pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE] [--vulkan]\n",
+               stderr);
     return pfx::exit_code::kUsage;
   }
   std::string error;
@@ -140,9 +174,12 @@ int main(int argc, char** argv) {
     return pfx::exit_code::kInternal;
   }
   const fs::path lib = fs::path(pfx::app::executable_directory()) / ".." / "lib";
+  const char* data_dirs = std::getenv("XDG_DATA_DIRS");
   const std::vector<std::string> environment = {
       "FREI0R_PATH=" + (lib / "frei0r-1").string() + ":/usr/lib/frei0r-1",
-      "GST_PLUGIN_PATH=" + (lib / "gstreamer-1.0").string(), "GST_GL_PLATFORM=egl", "GST_GL_WINDOW=egl-device"};
+      "GST_PLUGIN_PATH=" + (lib / "gstreamer-1.0").string(), "GST_GL_PLATFORM=egl", "GST_GL_WINDOW=egl-device",
+      // Where the loader finds pfx's layer manifest in a build tree (pfx-inject does the same).
+      "XDG_DATA_DIRS=" + (lib / ".." / "share").string() + ":" + (data_dirs ? data_dirs : "/usr/local/share:/usr/share")};
   const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height);
   const fs::path scratch = fs::temp_directory_path() / ("pfx-adapter-bench-" + std::to_string(getpid()));
   fs::create_directories(scratch);
@@ -154,7 +191,7 @@ int main(int argc, char** argv) {
     return pfx::exit_code::kInternal;
   }
 
-  std::vector<Row> rows = {
+  std::vector<Row> rows = options.vulkan ? vulkan_rows(scratch) : std::vector<Row>{
       {"ffmpeg", "no filter (decode, to RGBA)", "format=rgba", ""},
       {"ffmpeg", "pfx_chain chain=none", "format=rgba,frei0r=filter_name=pfx_chain:filter_params=none",
        "no filter (decode, to RGBA)"},
@@ -167,6 +204,7 @@ int main(int argc, char** argv) {
       {"gst-launch-1.0", "gleffects effect=glow", "gleffects effect=glow !", "no filter (upload, download)"},
   };
   auto command = [&](const Row& row, int frames) {
+    if (row.host == "vkcube") return vkcube_command(row, frames, options);
     if (row.host == "ffmpeg")
       return std::vector<std::string>{"ffmpeg", "-hide_banner", "-loglevel", "error", "-i", clip, "-frames:v",
                                       std::to_string(frames), "-vf", row.what, "-f", "null", "-"};

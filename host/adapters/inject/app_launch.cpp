@@ -7,9 +7,11 @@
 
 #include <cerrno>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
 
 #include "inject_options.hpp"
+#include "vulkan_enable.hpp"
 #include "plugin_directory.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -111,6 +113,13 @@ std::vector<std::string> child_environment(const InjectSettings& settings, const
     environment.push_back(variable);
   }
   environment.push_back("LD_PRELOAD=" + preload);
+  std::vector<std::string> replaced;
+  const std::vector<std::string> vulkan = vulkan_layer_environment(environment, &replaced);
+  for (const auto& name : replaced)
+    environment.erase(std::remove_if(environment.begin(), environment.end(),
+                                     [&](const std::string& v) { return v.rfind(name + "=", 0) == 0; }),
+                      environment.end());
+  environment.insert(environment.end(), vulkan.begin(), vulkan.end());
   InjectSettings complete = settings;
   complete.plugin_dirs = plugin_folders(settings);
   for (const auto& variable : settings_to_environment(complete)) environment.push_back(variable);

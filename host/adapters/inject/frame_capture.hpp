@@ -14,8 +14,6 @@
 
 namespace pfx::inject {
 
-// The prefixes to write for the `frame`-th presented frame (all:PREFIX gets its %d filled in).
-std::vector<std::string> capture_prefixes(const std::vector<Capture>& captures, uint64_t frame);
 // An RGBA16F texture of width x height as a half-float EXR. False with *error.
 bool write_texture_exr(GLuint texture, int width, int height, const std::string& path, std::string* error);
 bool write_presented_png(const app::DisplayImage& image, const std::string& path, std::string* error);

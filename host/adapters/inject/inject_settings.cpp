@@ -213,4 +213,18 @@ std::vector<std::string> settings_to_environment(const InjectSettings& settings)
   return vars;
 }
 
+std::vector<std::string> capture_prefixes(const std::vector<Capture>& captures, uint64_t frame) {
+  std::vector<std::string> prefixes;
+  for (const auto& capture : captures) {
+    if (capture.every_frame) {
+      std::string prefix = capture.prefix;
+      prefix.replace(prefix.find("%d"), 2, std::to_string(frame));
+      prefixes.push_back(prefix);
+    } else if (capture.frame == frame) {
+      prefixes.push_back(capture.prefix);
+    }
+  }
+  return prefixes;
+}
+
 }  // namespace pfx::inject

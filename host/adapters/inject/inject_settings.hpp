@@ -68,6 +68,8 @@ constexpr const char* kAll[] = {kChain,     kPreset,    kSet,    kPlugins, kDept
                                 kTimings};
 }  // namespace env
 
+// The prefixes to write for the `frame`-th presented frame (all:PREFIX gets its %d filled in).
+std::vector<std::string> capture_prefixes(const std::vector<Capture>& captures, uint64_t frame);
 // "12:shot" or "all:shot.%d"; false with *error saying what is wrong.
 bool parse_capture(const std::string& text, Capture* out, std::string* error);
 // "500,5000": presented frame numbers from 1; false with *error naming the item that is not one.

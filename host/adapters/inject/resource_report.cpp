@@ -1,11 +1,10 @@
 #include "resource_report.hpp"
 
-#include <malloc.h>
-#include <unistd.h>
-
 #include <cstdio>
 
 #include <glad/gl.h>
+
+#include "process_memory.hpp"
 
 namespace pfx::inject {
 namespace {
@@ -16,25 +15,6 @@ int count(GLboolean (*is)(GLuint)) {
   int live = 0;
   for (GLuint name = 1; name <= kNamesLooked; ++name) live += is(name) ? 1 : 0;
   return live;
-}
-
-// The second field of /proc/self/statm: resident pages.
-uint64_t resident_kib() {
-  std::FILE* file = std::fopen("/proc/self/statm", "r");
-  if (!file) return 0;
-  unsigned long long size = 0, resident = 0;
-  const int read = std::fscanf(file, "%llu %llu", &size, &resident);
-  std::fclose(file);
-  return read == 2 ? resident * static_cast<uint64_t>(sysconf(_SC_PAGESIZE)) / 1024 : 0;
-}
-
-// Bytes the C library's allocator has handed out and not had back, over all its arenas (small
-// blocks and the ones it maps on their own). Unlike resident memory this does not move when the
-// allocator keeps freed pages, the kernel merges pages or a pool maps a fresh chunk: a block lost
-// per frame shows here as itself.
-uint64_t heap_bytes_in_use() {
-  const struct mallinfo2 info = mallinfo2();
-  return static_cast<uint64_t>(info.uordblks) + static_cast<uint64_t>(info.hblkhd);
 }
 
 }  // namespace

@@ -1,0 +1,138 @@
+// vkQueuePresentKHR as the layer sees it: each presented image goes through the bridge (which waits
+// on the application's semaphores and signals the image's own), and the present waits on those.
+// Any failure turns the device into a pass-through, said once.
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <vector>
+
+#include "layer_calls.hpp"
+#include "layer_capture.hpp"
+#include "process_memory.hpp"
+#include "layer_state.hpp"
+
+namespace pfx::vulkan_layer {
+namespace {
+
+void log_from_bridge(void*, int level, const char* message) {
+  log_line(std::string(level >= 2 ? "error: " : level == 1 ? "warning: " : "") + message);
+}
+
+// The bridge of the presenting queue, made at its first present; null (and the device a
+// pass-through) when it cannot be.
+pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
+  auto found = d->bridges.find(queue);
+  if (found != d->bridges.end()) return found->second;
+  const auto family = d->queue_families.find(queue);
+  if (family == d->queue_families.end()) {
+    log_once("unknown queue", "a present on a queue the layer did not see handed out: frames pass through");
+    d->failed = true;
+    return nullptr;
+  }
+  const BridgeSettings& settings = bridge_settings();
+  pfx_vk_bridge_desc desc{};
+  desc.struct_size = sizeof desc;
+  desc.instance = d->instance;
+  desc.physical_device = d->physical_device;
+  desc.device = d->handle;
+  desc.get_instance_proc_addr = d->next_instance_proc;
+  desc.get_device_proc_addr = d->next_get_proc;
+  desc.queue = queue;
+  desc.queue_family_index = family->second;
+  desc.device_has_bridge_extensions = d->bridge_extensions;
+  desc.chain = settings.chain;
+  desc.set = settings.set;
+  desc.preset = settings.preset;
+  desc.transfer = settings.transfer;
+  desc.plugin_path = settings.plugin_path;
+  desc.log = log_from_bridge;
+  desc.set_device_loader_data = d->set_loader_data;
+  pfx_vk_bridge* bridge = nullptr;
+  char error[1024] = "";
+  if (pfx_vk_bridge_create(&desc, &bridge, error, sizeof error) != PFX_VK_OK) {
+    log_line(std::string("frames pass through: ") + error);
+    d->failed = true;
+    return nullptr;
+  }
+  d->bridges[queue] = bridge;
+  return bridge;
+}
+
+// Counted from 1 over every swapchain of the process, as pfx-inject counts over every context.
+std::atomic<uint64_t> presented{0};
+
+// Runs the image through the bridge (with the captures asked for this frame); false when the
+// device must pass through from now on. The image's semaphore is signalled either way.
+bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame) {
+  const std::vector<std::string> prefixes = capture_prefixes_for(frame);
+  std::vector<uint8_t> app, result;
+  if (!prefixes.empty()) {
+    app.resize(size_t(image->width) * image->height * 4);
+    result.resize(app.size());
+    image->app_pixels = app.data();
+    image->result_pixels = result.data();
+  }
+  const pfx_vk_status status = pfx_vk_bridge_run(bridge, image);
+  if (status != PFX_VK_OK) {
+    log_line("frame " + std::to_string(frame) + ": frames pass through from now on: " +
+             pfx_vk_bridge_last_error(bridge));
+    return false;
+  }
+  for (const auto& prefix : prefixes) write_capture(prefix, image->width, image->height, app, result);
+  return true;
+}
+
+}  // namespace
+
+VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInfoKHR* info) {
+  std::unique_lock<std::mutex> lock(state().mutex);
+  Device* d = find_device(key_of(queue));
+  if (!d) return VK_ERROR_DEVICE_LOST;  // a queue of no device the loader gave us cannot be presented on
+  const uint64_t frame = ++presented;
+  std::vector<VkSemaphore> waits;
+  for (uint32_t i = 0; i < info->swapchainCount && !d->failed; ++i) {
+    auto found = d->swapchains.find(info->pSwapchains[i]);
+    if (found == d->swapchains.end() || !found->second->usable) continue;
+    const Swapchain& s = *found->second;
+    const uint32_t index = info->pImageIndices[i];
+    if (index >= s.images.size()) continue;
+    pfx_vk_bridge* bridge = bridge_for(d, queue);
+    if (!bridge) break;
+    pfx_vk_image image{};
+    image.struct_size = sizeof image;
+    image.image = s.images[index];
+    image.format = s.format;
+    image.width = s.extent.width;
+    image.height = s.extent.height;
+    image.layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    if (waits.empty()) {  // the application's semaphores, waited on once, by the first image's copy
+      image.wait_semaphore_count = info->waitSemaphoreCount;
+      image.wait_semaphores = info->pWaitSemaphores;
+    }
+    image.signal_semaphore = s.done[index];
+    if (!run_image(bridge, &image, frame)) d->failed = true;
+    // Whatever happened, the bridge waited on the semaphores and signalled the image's own.
+    waits.push_back(s.done[index]);
+  }
+  VkResult result = VK_SUCCESS;
+  if (waits.empty()) {
+    result = d->QueuePresentKHR(queue, info);
+  } else {
+    VkPresentInfoKHR ours = *info;
+    ours.waitSemaphoreCount = static_cast<uint32_t>(waits.size());
+    ours.pWaitSemaphores = waits.data();
+    result = d->QueuePresentKHR(queue, &ours);
+  }
+  lock.unlock();  // the application's exit handlers may destroy its device through the layer
+  const auto& report_at = layer_inject_settings().resources_at;
+  if (std::find(report_at.begin(), report_at.end(), frame) != report_at.end())
+    log_line("frame " + std::to_string(frame) + ": resident memory " + std::to_string(inject::resident_kib()) +
+             " KiB; heap in use " + std::to_string(inject::heap_bytes_in_use()) + " bytes");
+  if (frame == quit_after()) {
+    log_line("frame " + std::to_string(frame) + ": quitting, as asked");
+    std::exit(0);
+  }
+  return result;
+}
+
+}  // namespace pfx::vulkan_layer

@@ -1,0 +1,136 @@
+/* pfx's Vulkan bridge: runs a pfx chain over a VkImage of the caller's (docs/sdk.md, "Vulkan").
+ *
+ * Plain C99. Link libpfxvulkan. The bridge owns an OpenGL 4.5 context on a thread of its own (EGL,
+ * never the caller's GL), copies the image into memory that context shares with the Vulkan device
+ * (VK_KHR_external_memory_fd + GL_EXT_memory_object_fd), runs the chain there, and copies the
+ * result back into the image. Where sharing is not offered (an extension missing, the GL device's
+ * UUIDs not those of the Vulkan device) or is switched off, it goes through host memory instead:
+ * the same pixels, slower. Either way the two APIs are ordered by waiting for a fence on the Vulkan
+ * side and for the GL to finish on the other.
+ *
+ * The image holds an 8-bit display-referred frame (what a swapchain image holds): it is decoded to
+ * linear light, the effects start at their display-referred defaults, and the result is encoded
+ * back. Row 0 of the image is its top row, as Vulkan presents it.
+ *
+ * Growth: every struct starts with struct_size; later versions only append fields, and a reader
+ * reads a field only when struct_size covers it (the rule of pfx/core.h). */
+#ifndef PFX_VULKAN_BRIDGE_H
+#define PFX_VULKAN_BRIDGE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <vulkan/vulkan.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(PFX_VULKAN_BUILDING)
+#define PFX_VK_API __attribute__((visibility("default")))
+#else
+#define PFX_VK_API
+#endif
+
+typedef enum pfx_vk_status {
+  PFX_VK_OK = 0,
+  PFX_VK_BAD_ARGUMENT = 1,   /* a null pointer, a struct_size too small, a format the bridge does not take */
+  PFX_VK_BAD_SETTINGS = 2,   /* the chain, an assignment or the preset does not apply */
+  PFX_VK_NO_GL = 3,          /* no OpenGL 4.5 context could be made */
+  PFX_VK_VULKAN_FAILED = 4,  /* a Vulkan call failed (allocation, submission, a lost device) */
+  PFX_VK_CHAIN_FAILED = 5    /* an effect or a pass failed; the image was left as it was */
+} pfx_vk_status;
+
+/* Flags of pfx_vk_bridge_desc. */
+#define PFX_VK_FORCE_HOST_MEMORY 0x1u /* never share memory; also forced by PFX_VK_HOST_MEMORY=1 */
+
+/* The log callback: level 0 information, 1 warning, 2 error. Called on any thread. */
+typedef void (*pfx_vk_log_fn)(void* user, int level, const char* message);
+
+typedef struct pfx_vk_bridge_desc {
+  uint32_t struct_size; /* sizeof(pfx_vk_bridge_desc) */
+  /* The device the images belong to. Functions are looked up through the two loaders given, so a
+   * Vulkan layer can hand the next layer's. */
+  VkInstance instance;
+  VkPhysicalDevice physical_device;
+  VkDevice device;
+  PFN_vkGetInstanceProcAddr get_instance_proc_addr;
+  PFN_vkGetDeviceProcAddr get_device_proc_addr;
+  /* The queue the bridge submits its copies to, and its family (it must do transfers: any graphics
+   * or compute queue does). The caller does not use the queue from another thread during
+   * pfx_vk_bridge_run, as Vulkan asks of every queue submission. */
+  VkQueue queue;
+  uint32_t queue_family_index;
+  /* Whether the device was created with every extension pfx_vk_bridge_device_extensions lists:
+   * without them the bridge takes the host-memory path. */
+  int device_has_bridge_extensions;
+  /* The chain, as pfx-render's options: effect ids separated by ',' ("bloom,dof"), "none" for no
+   * effect, "" for the preset's chain (no effect without a preset), NULL for the preset's chain or
+   * else pfx-inject's default chain: every effect found that needs nothing but colour, in pfx's
+   * order (those left out are logged). */
+  const char* chain;
+  const char* set;          /* "effect.param=value" assignments separated by ';', or NULL */
+  const char* preset;       /* a pfx-view preset file, or NULL */
+  const char* transfer;     /* "srgb" (NULL: the default) or "linear": how the 8-bit values relate to light */
+  const char* plugin_path;  /* plugin folders separated by ':'; NULL: the folder beside libpfxvulkan and PFX_PLUGIN_PATH */
+  uint32_t flags;           /* PFX_VK_FORCE_HOST_MEMORY */
+  pfx_vk_log_fn log;        /* NULL: messages go nowhere */
+  void* log_user;
+  /* For a Vulkan layer: the loader's vkSetDeviceLoaderData (vk_layer.h), which the bridge calls on
+   * the command buffers it allocates so the layers below it can dispatch them. NULL for an engine. */
+  VkResult(VKAPI_PTR* set_device_loader_data)(VkDevice device, void* object);
+} pfx_vk_bridge_desc;
+
+typedef struct pfx_vk_bridge pfx_vk_bridge;
+
+/* The device extensions the shared-memory path needs; a layer adds them when the application
+ * creates its device. *count gets their number. */
+PFX_VK_API const char* const* pfx_vk_bridge_device_extensions(uint32_t* count);
+
+/* Loads the plugins, checks the settings and starts the GL thread. The effects compile at the first
+ * run. On failure *out is NULL and, when error is not NULL, error (of error_size bytes) says why. */
+PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_desc* desc, pfx_vk_bridge** out, char* error,
+                                              size_t error_size);
+/* Waits for the bridge's work on the device to end and frees everything it made. NULL is a no-op. */
+PFX_VK_API void pfx_vk_bridge_destroy(pfx_vk_bridge* bridge);
+
+typedef struct pfx_vk_image {
+  uint32_t struct_size; /* sizeof(pfx_vk_image) */
+  VkImage image;        /* 2D, one layer, one level, usage TRANSFER_SRC and TRANSFER_DST, not multisampled */
+  /* B8G8R8A8 or R8G8B8A8, UNORM or SRGB (the bytes are read as they are: both are display-referred
+   * 8-bit values). */
+  VkFormat format;
+  uint32_t width, height;
+  VkImageLayout layout; /* the layout it is in, and will be left in (PRESENT_SRC_KHR for a swapchain image) */
+  /* Binary semaphores to wait on before the image is read (the application's rendering), with the
+   * stages that wait (NULL: TRANSFER for each). */
+  uint32_t wait_semaphore_count;
+  const VkSemaphore* wait_semaphores;
+  const VkPipelineStageFlags* wait_stages;
+  /* Signalled when the result is in the image; VK_NULL_HANDLE: none. Work the caller submits to the
+   * same queue afterwards sees the result anyway (the bridge's last barrier covers all commands). */
+  VkSemaphore signal_semaphore;
+  /* When not NULL, width * height * 4 bytes that receive the image as it came (app_pixels) and as
+   * it goes back (result_pixels): R, G, B, A whatever the format, row 0 the top row. For captures
+   * and tests; each costs a read-back. */
+  uint8_t* app_pixels;
+  uint8_t* result_pixels;
+} pfx_vk_image;
+
+/* Runs the chain over the image (the N-th call is frame N - 1 for effects that animate) and submits
+ * the copy of the result back. On failure the image holds what it held (the copy back is not made),
+ * wait_semaphores are still waited on and signal_semaphore still signalled, so the caller can go on
+ * as if the bridge were not there. */
+PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, const pfx_vk_image* image);
+
+/* "shared memory" or "host memory": the path the last run took (before the first run: the path the
+ * next one will try). */
+PFX_VK_API const char* pfx_vk_bridge_path(const pfx_vk_bridge* bridge);
+/* What the last failure was, or "" (valid until the next call on the bridge). */
+PFX_VK_API const char* pfx_vk_bridge_last_error(const pfx_vk_bridge* bridge);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PFX_VULKAN_BRIDGE_H */

@@ -1,0 +1,49 @@
+// What a pfx_vk_bridge is (vulkan_bridge.h): the Vulkan device's functions and the transport on
+// the caller's side, the plugins and the GL thread with the chain on the other.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <pfx/host/plugin_registry.hpp>
+#include <pfx/vulkan_bridge.h>
+
+#include "gl_frame.hpp"
+#include "gl_worker.hpp"
+#include "vk_transport.hpp"
+
+struct pfx_vk_bridge {
+  pfx_vk_log_fn log = nullptr;
+  void* log_user = nullptr;
+  pfx::vk::Functions functions;
+  std::unique_ptr<pfx::vk::Transport> transport;
+  std::unique_ptr<pfx::host::PluginRegistry> registry;
+  std::shared_ptr<pfx::adapters::GlWorker> worker;
+  std::unique_ptr<pfx::vk::GlFrame> gl;  // made, used and destroyed on the worker
+  pfx::app::Transfer transfer = pfx::app::Transfer::SRGB;
+  pfx::vk::Path path = pfx::vk::Path::HOST;
+  uint64_t frames = 0;
+  std::chrono::steady_clock::time_point first_run;
+  std::string last_error;
+
+  void say(int level, const std::string& message) const {
+    if (log) log(log_user, level, message.c_str());
+  }
+};
+
+namespace pfx::vk {
+
+// The steps of pfx_vk_bridge_create, each false with *error.
+bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::string* error);
+// Without a chain given: the preset's, else every effect found in pfx's order.
+bool default_chain_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::ChainRecipe* recipe,
+                          std::string* error);
+// Leaves out of the default chain, or switches off in a chosen one, every effect that needs more
+// than colour (colour_fit.cpp).
+bool fit_recipe_to_colour(pfx_vk_bridge* bridge, app::ChainRecipe* recipe, std::string* error);
+bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, const app::ChainRecipe& recipe,
+                     std::string* error);
+
+}  // namespace pfx::vk

@@ -1,0 +1,99 @@
+// pfx_vk_bridge_run: one frame's trip (vulkan_bridge.h), and the bridge's state for the caller.
+#include "bridge.hpp"
+
+namespace pfx::vk {
+namespace {
+
+bool is_bgra(VkFormat format) {
+  return format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
+}
+
+bool takes_format(VkFormat format) {
+  return is_bgra(format) || format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_R8G8B8A8_SRGB;
+}
+
+// Makes the go-between for the image's size; when sharing fails, says so once and moves to host
+// memory for good.
+bool prepare(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* error) {
+  if (bridge->path == Path::SHARED) {
+    int fd = -1;
+    uint64_t size = 0;
+    std::string why;
+    bool ready = bridge->transport->prepare(Path::SHARED, image.width, image.height, &fd, &size, &why);
+    if (ready && fd >= 0) {
+      std::string worker_error;
+      if (!bridge->worker->run(
+              [&] { ready = bridge->gl->shared().import(fd, size, int(image.width), int(image.height), &why); },
+              &worker_error)) {
+        ready = false;
+        why = worker_error;
+      }
+    }
+    if (ready) return true;
+    bridge->say(1, "sharing memory with the GL failed (" + why + "): frames go through host memory from now on");
+    bridge->path = Path::HOST;
+  }
+  int unused_fd = -1;
+  uint64_t unused_size = 0;
+  return bridge->transport->prepare(Path::HOST, image.width, image.height, &unused_fd, &unused_size, error);
+}
+
+bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* error) {
+  if (bridge->frames == 0) bridge->first_run = std::chrono::steady_clock::now();
+  const double time_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - bridge->first_run).count();
+  void* host_bytes = bridge->path == Path::HOST ? bridge->transport->mapped() : nullptr;
+  bool ran = false;
+  std::string worker_error;
+  if (!bridge->worker->run(
+          [&] {
+            ran = bridge->gl->run(host_bytes, int(image.width), int(image.height), is_bgra(image.format),
+                                  bridge->transfer, time_seconds, bridge->frames,
+                                  GlFrame::Readback{image.app_pixels, image.result_pixels}, error);
+          },
+          &worker_error)) {
+    *error = worker_error;
+    return false;
+  }
+  ++bridge->frames;
+  return ran;
+}
+
+}  // namespace
+}  // namespace pfx::vk
+
+using namespace pfx;
+
+extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, const pfx_vk_image* image) {
+  if (!bridge) return PFX_VK_BAD_ARGUMENT;
+  bridge->last_error.clear();
+  std::string error;
+  if (!image || image->struct_size < sizeof(pfx_vk_image) || !image->image || !image->width || !image->height ||
+      !vk::takes_format(image->format)) {
+    bridge->last_error = "pfx_vk_bridge_run: a null image, a struct_size too small, or a format the bridge does not take";
+    // The caller's semaphores still pass, so its frame goes on as if the bridge were not there.
+    if (image && image->struct_size >= sizeof(pfx_vk_image)) bridge->transport->copy_out(*image, false, false, &error);
+    return PFX_VK_BAD_ARGUMENT;
+  }
+  if (!vk::prepare(bridge, *image, &error) || !bridge->transport->copy_in(*image, &error)) {
+    bridge->last_error = error;
+    bridge->transport->copy_out(*image, false, false, &error);
+    return PFX_VK_VULKAN_FAILED;
+  }
+  const bool ran = vk::run_chain(bridge, *image, &error);
+  if (!ran) bridge->last_error = error;
+  if (!bridge->transport->copy_out(*image, true, ran, &error)) {
+    bridge->last_error = error;
+    return PFX_VK_VULKAN_FAILED;
+  }
+  return ran ? PFX_VK_OK : PFX_VK_CHAIN_FAILED;
+}
+
+extern "C" PFX_VK_API const char* pfx_vk_bridge_path(const pfx_vk_bridge* bridge) {
+  if (!bridge) return "";
+  return bridge->path == vk::Path::SHARED ? "shared memory" : "host memory";
+}
+
+extern "C" PFX_VK_API const char* pfx_vk_bridge_last_error(const pfx_vk_bridge* bridge) {
+  return bridge ? bridge->last_error.c_str() : "";
+}

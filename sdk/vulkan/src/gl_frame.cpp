@@ -1,0 +1,74 @@
+#include "gl_frame.hpp"
+
+namespace pfx::vk {
+namespace {
+
+// B, G, R, A bytes in an RGBA8 texture read as R, G, B, A when red and blue trade places; the
+// swizzle also holds for texelFetch, so the shared transfer programs need no BGRA variant.
+void swap_red_blue(GLuint texture, bool swap) {
+  glTextureParameteri(texture, GL_TEXTURE_SWIZZLE_R, swap ? GL_BLUE : GL_RED);
+  glTextureParameteri(texture, GL_TEXTURE_SWIZZLE_B, swap ? GL_RED : GL_BLUE);
+}
+
+// The frame's bytes as R, G, B, A: a read-back ignores the swizzle, and GL_BGRA reads a texture
+// holding B, G, R, A bytes in that order.
+void read_rgba(GLuint texture, int width, int height, bool bgra, uint8_t* out) {
+  if (!out) return;
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(texture, 0, bgra ? GL_BGRA : GL_RGBA, GL_UNSIGNED_BYTE, width * height * 4, out);
+}
+
+}  // namespace
+
+bool GlFrame::create(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* error) {
+  if (!frame_.create(error)) return false;
+  std::vector<std::string> notes;
+  chain_ = adapters::FrameChain::build(registry, recipe, "set", &notes, error);
+  return chain_ != nullptr;
+}
+
+GlFrame::~GlFrame() {
+  chain_.reset();
+  shared_.release();
+  if (staging_) glDeleteTextures(1, &staging_);
+}
+
+GLuint GlFrame::staging(int width, int height) {
+  if (staging_ && staging_width_ == width && staging_height_ == height) return staging_;
+  if (staging_) glDeleteTextures(1, &staging_);
+  glCreateTextures(GL_TEXTURE_2D, 1, &staging_);
+  glTextureStorage2D(staging_, 1, GL_RGBA8, width, height);
+  staging_width_ = width;
+  staging_height_ = height;
+  return staging_;
+}
+
+bool GlFrame::run(void* host_bytes, int width, int height, bool bgra, app::Transfer transfer, double time_seconds,
+                  uint64_t frame_index, const Readback& readback, std::string* error) {
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  const GLuint io = host_bytes ? staging(width, height) : shared_.texture();
+  if (host_bytes) {
+    // Rows of 4-byte texels: any unpack alignment fits; the bridge's context has no unpack buffer.
+    glTextureSubImage2D(io, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, host_bytes);
+  }
+  read_rgba(io, width, height, bgra, readback.app_pixels);
+  frame_.resize(width, height);
+  swap_red_blue(io, bgra);
+  frame_.decode_texture(io, transfer);
+  GLuint result = 0;
+  if (!chain_->render(frame_, time_seconds, frame_index, &result, error)) return false;
+  // The encode writes R, G, B, A through a framebuffer, where no swizzle applies: the result's
+  // channels are swapped on the way in instead.
+  swap_red_blue(result, bgra);
+  frame_.encode_texture(result, io, transfer);
+  swap_red_blue(result, false);
+  read_rgba(io, width, height, bgra, readback.result_pixels);
+  if (host_bytes) {
+    glGetTextureImage(io, 0, GL_RGBA, GL_UNSIGNED_BYTE, width * height * 4, host_bytes);
+  }
+  glFinish();
+  return adapters::no_gl_error(error);
+}
+
+}  // namespace pfx::vk

@@ -1,0 +1,45 @@
+// The GL half of a frame's trip through the bridge, on the bridge's GL thread: the frame (in
+// memory shared with Vulkan, or uploaded from host memory) decoded into the chain's linear
+// RGBA16F, the chain, the result encoded back into the same place. Images arrive top row first,
+// as Vulkan stores them, and DisplayFrame flips them into GL's bottom-row-first order and back.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <pfx/host/plugin_registry.hpp>
+
+#include "display_frame.hpp"
+#include "frame_chain.hpp"
+#include "gl_memory.hpp"
+
+namespace pfx::vk {
+
+class GlFrame {
+ public:
+  // Compiles the transfer programs and creates the effects; false with *error.
+  bool create(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* error);
+  ~GlFrame();
+
+  GlMemory& shared() { return shared_; }
+  // Runs the chain over the frame: from host_bytes (tightly packed RGBA8 rows, top row first, read
+  // and written back) when not null, else in the shared texture. bgra: the bytes are B, G, R, A.
+  // app_pixels and result_pixels, when not null, receive the frame before and after as RGBA
+  // (pfx_vk_image says how). Returns after the GL finished. False with *error.
+  struct Readback {
+    uint8_t* app_pixels = nullptr;
+    uint8_t* result_pixels = nullptr;
+  };
+  bool run(void* host_bytes, int width, int height, bool bgra, app::Transfer transfer, double time_seconds,
+           uint64_t frame_index, const Readback& readback, std::string* error);
+
+ private:
+  GLuint staging(int width, int height);
+  gl::DisplayFrame frame_;
+  std::unique_ptr<adapters::FrameChain> chain_;
+  GlMemory shared_;
+  GLuint staging_ = 0;
+  int staging_width_ = 0, staging_height_ = 0;
+};
+
+}  // namespace pfx::vk

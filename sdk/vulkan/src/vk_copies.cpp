@@ -1,0 +1,150 @@
+// The two submissions of a frame (vk_transport.hpp): in, and back out.
+#include "vk_transport.hpp"
+
+namespace pfx::vk {
+namespace {
+
+VkImageMemoryBarrier barrier_for(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
+                                 VkAccessFlags dst_access) {
+  VkImageMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  barrier.srcAccessMask = src_access;
+  barrier.dstAccessMask = dst_access;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  return barrier;
+}
+
+VkCommandBufferBeginInfo one_time() {
+  VkCommandBufferBeginInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  return info;
+}
+
+constexpr VkAccessFlags kAnyAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+
+}  // namespace
+
+void Transport::record_copy_in(VkCommandBuffer commands, const pfx_vk_image& image) {
+  // The go-between stays in GENERAL: the GL side reads and writes it between submissions, and
+  // without shared semaphores there is no way to hand a layout over.
+  const VkImageLayout between_from = between_fresh_ ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_GENERAL;
+  VkImageMemoryBarrier before[2] = {
+      barrier_for(image.image, image.layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_MEMORY_WRITE_BIT,
+                  VK_ACCESS_TRANSFER_READ_BIT),
+      barrier_for(between_image_, between_from, VK_IMAGE_LAYOUT_GENERAL, kAnyAccess, VK_ACCESS_TRANSFER_WRITE_BIT)};
+  f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
+                        0, nullptr, between_image_ ? 2 : 1, before);
+  between_fresh_ = false;
+  const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  if (between_image_) {
+    // A raw copy: B8G8R8A8 and R8G8B8A8, UNORM or SRGB, are all 32-bit texels; the GL side
+    // swizzles and decodes.
+    VkImageCopy region{};
+    region.srcSubresource = layers;
+    region.dstSubresource = layers;
+    region.extent = {width_, height_, 1};
+    f_.CmdCopyImage(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, between_image_,
+                    VK_IMAGE_LAYOUT_GENERAL, 1, &region);
+  } else {
+    VkBufferImageCopy region{};  // rows tightly packed, row 0 the image's top row
+    region.imageSubresource = layers;
+    region.imageExtent = {width_, height_, 1};
+    f_.CmdCopyImageToBuffer(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, between_buffer_, 1,
+                            &region);
+  }
+  // The copy's writes made available to the host, and to the GL reading the same memory.
+  VkMemoryBarrier after{};
+  after.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  after.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_MEMORY_READ_BIT;
+  f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                        VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 1, &after, 0, nullptr, 0,
+                        nullptr);
+}
+
+bool Transport::copy_in(const pfx_vk_image& image, std::string* error) {
+  wait_idle();
+  f_.ResetCommandBuffer(in_, 0);
+  const VkCommandBufferBeginInfo begin = one_time();
+  VkResult result = f_.BeginCommandBuffer(in_, &begin);
+  if (result == VK_SUCCESS) {
+    record_copy_in(in_, image);
+    result = f_.EndCommandBuffer(in_);
+  }
+  if (result != VK_SUCCESS) {
+    *error = "could not record the copy in: " + result_name(result);
+    return false;
+  }
+  if (!submit(in_, in_done_, image, true, false, error)) return false;
+  result = f_.WaitForFences(device_, 1, &in_done_, VK_TRUE, UINT64_MAX);
+  f_.ResetFences(device_, 1, &in_done_);
+  if (result != VK_SUCCESS) *error = "waiting for the copy in failed: " + result_name(result);
+  return result == VK_SUCCESS;
+}
+
+void Transport::record_copy_back(VkCommandBuffer commands, const pfx_vk_image& image) {
+  VkImageMemoryBarrier to_dst = barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
+  // The GL's (or the host's) writes to the go-between finished before this submission.
+  VkMemoryBarrier between{};
+  between.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  between.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  between.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &between, 0, nullptr, 1, &to_dst);
+  const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  if (between_image_) {
+    VkImageCopy region{};
+    region.srcSubresource = layers;
+    region.dstSubresource = layers;
+    region.extent = {width_, height_, 1};
+    f_.CmdCopyImage(commands, between_image_, VK_IMAGE_LAYOUT_GENERAL, image.image,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  } else {
+    VkBufferImageCopy region{};
+    region.imageSubresource = layers;
+    region.imageExtent = {width_, height_, 1};
+    f_.CmdCopyBufferToImage(commands, between_buffer_, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                            &region);
+  }
+  VkImageMemoryBarrier back = barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, image.layout,
+                                          VK_ACCESS_TRANSFER_WRITE_BIT, kAnyAccess);
+  f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr,
+                        0, nullptr, 1, &back);
+}
+
+bool Transport::copy_out(const pfx_vk_image& image, bool copied_in, bool copy_back, std::string* error) {
+  VkCommandBuffer commands = VK_NULL_HANDLE;
+  if (copied_in) {
+    f_.ResetCommandBuffer(out_, 0);
+    const VkCommandBufferBeginInfo begin = one_time();
+    VkResult result = f_.BeginCommandBuffer(out_, &begin);
+    if (result == VK_SUCCESS) {
+      if (copy_back) {
+        record_copy_back(out_, image);
+      } else {
+        VkImageMemoryBarrier back = barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.layout, 0,
+                                                kAnyAccess);
+        f_.CmdPipelineBarrier(out_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
+                              nullptr, 0, nullptr, 1, &back);
+      }
+      result = f_.EndCommandBuffer(out_);
+    }
+    if (result != VK_SUCCESS) {
+      *error = "could not record the copy back: " + result_name(result);
+      return false;
+    }
+    commands = out_;
+  }
+  if (!submit(commands, out_done_, image, !copied_in, true, error)) return false;
+  out_pending_ = true;
+  return true;
+}
+
+}  // namespace pfx::vk

@@ -1,0 +1,211 @@
+#include "vk_transport.hpp"
+
+#include <vector>
+
+namespace pfx::vk {
+namespace {
+
+constexpr VkFormat kBetweenFormat = VK_FORMAT_R8G8B8A8_UNORM;
+
+}  // namespace
+
+Transport::~Transport() {
+  wait_idle();
+  release_between();
+  if (in_done_) f_.DestroyFence(device_, in_done_, nullptr);
+  if (out_done_) f_.DestroyFence(device_, out_done_, nullptr);
+  if (pool_) f_.DestroyCommandPool(device_, pool_, nullptr);  // frees its command buffers
+}
+
+bool Transport::init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error) {
+  VkCommandPoolCreateInfo pool_info{};
+  pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool_info.queueFamilyIndex = queue_family_index;
+  VkResult result = f_.CreateCommandPool(device_, &pool_info, nullptr, &pool_);
+  if (result == VK_SUCCESS) {
+    VkCommandBufferAllocateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    info.commandPool = pool_;
+    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    info.commandBufferCount = 2;
+    VkCommandBuffer buffers[2] = {};
+    result = f_.AllocateCommandBuffers(device_, &info, buffers);
+    in_ = buffers[0];
+    out_ = buffers[1];
+    // A command buffer is a dispatchable handle: made below the loader, it gets its dispatch
+    // table only from the loader's callback.
+    if (result == VK_SUCCESS && set_loader_data) result = set_loader_data(device_, in_);
+    if (result == VK_SUCCESS && set_loader_data) result = set_loader_data(device_, out_);
+  }
+  VkFenceCreateInfo fence_info{};
+  fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  if (result == VK_SUCCESS) result = f_.CreateFence(device_, &fence_info, nullptr, &in_done_);
+  if (result == VK_SUCCESS) result = f_.CreateFence(device_, &fence_info, nullptr, &out_done_);
+  if (result != VK_SUCCESS) *error = "could not make the bridge's command buffers: " + result_name(result);
+  return result == VK_SUCCESS;
+}
+
+void Transport::wait_idle() {
+  if (!out_pending_) return;
+  f_.WaitForFences(device_, 1, &out_done_, VK_TRUE, UINT64_MAX);
+  f_.ResetFences(device_, 1, &out_done_);
+  out_pending_ = false;
+}
+
+void Transport::release_between() {
+  if (mapped_) f_.UnmapMemory(device_, memory_);
+  if (between_image_) f_.DestroyImage(device_, between_image_, nullptr);
+  if (between_buffer_) f_.DestroyBuffer(device_, between_buffer_, nullptr);
+  if (memory_) f_.FreeMemory(device_, memory_, nullptr);
+  mapped_ = nullptr;
+  between_image_ = VK_NULL_HANDLE;
+  between_buffer_ = VK_NULL_HANDLE;
+  memory_ = VK_NULL_HANDLE;
+  width_ = height_ = 0;
+}
+
+bool Transport::prepared(Path path, uint32_t width, uint32_t height) const {
+  return memory_ && path_ == path && width_ == width && height_ == height;
+}
+
+bool Transport::allocate(const VkMemoryRequirements& needs, VkMemoryPropertyFlags want, const void* next,
+                         VkDeviceMemory* memory, std::string* error) {
+  VkPhysicalDeviceMemoryProperties properties{};
+  f_.GetPhysicalDeviceMemoryProperties(physical_device_, &properties);
+  for (uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
+    if (!(needs.memoryTypeBits & (1u << i)) || (properties.memoryTypes[i].propertyFlags & want) != want) continue;
+    VkMemoryAllocateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+    info.pNext = next;
+    info.allocationSize = needs.size;
+    info.memoryTypeIndex = i;
+    const VkResult result = f_.AllocateMemory(device_, &info, nullptr, memory);
+    if (result == VK_SUCCESS) return true;
+    *error = "could not allocate the bridge's memory: " + result_name(result);
+    return false;
+  }
+  *error = "no Vulkan memory type fits the bridge's go-between";
+  return false;
+}
+
+bool Transport::make_shared_image(std::string* error) {
+  VkExternalMemoryImageCreateInfo external{};
+  external.sType = VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_IMAGE_CREATE_INFO;
+  external.handleTypes = VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT;
+  VkImageCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+  info.pNext = &external;
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = kBetweenFormat;
+  info.extent = {width_, height_, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  // What the GL does with it too: samples it and renders into it.
+  info.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkResult result = f_.CreateImage(device_, &info, nullptr, &between_image_);
+  if (result != VK_SUCCESS) {
+    *error = "could not make an exportable image: " + result_name(result);
+    return false;
+  }
+  VkMemoryRequirements needs{};
+  f_.GetImageMemoryRequirements(device_, between_image_, &needs);
+  VkExportMemoryAllocateInfo export_info{};
+  export_info.sType = VK_STRUCTURE_TYPE_EXPORT_MEMORY_ALLOCATE_INFO;
+  export_info.handleTypes = VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT;
+  if (!allocate(needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &export_info, &memory_, error) &&
+      !allocate(needs, 0, &export_info, &memory_, error))
+    return false;
+  result = f_.BindImageMemory(device_, between_image_, memory_, 0);
+  if (result != VK_SUCCESS) {
+    *error = "could not bind the exportable image's memory: " + result_name(result);
+    return false;
+  }
+  between_fresh_ = true;
+  return true;
+}
+
+bool Transport::make_host_buffer(std::string* error) {
+  VkBufferCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  info.size = row_bytes() * height_;
+  info.usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkResult result = f_.CreateBuffer(device_, &info, nullptr, &between_buffer_);
+  if (result != VK_SUCCESS) {
+    *error = "could not make the host-memory buffer: " + result_name(result);
+    return false;
+  }
+  VkMemoryRequirements needs{};
+  f_.GetBufferMemoryRequirements(device_, between_buffer_, &needs);
+  const VkMemoryPropertyFlags visible = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  // Cached memory reads back at memory speed; uncached is a fallback every device has.
+  if (!allocate(needs, visible | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, nullptr, &memory_, error) &&
+      !allocate(needs, visible, nullptr, &memory_, error))
+    return false;
+  result = f_.BindBufferMemory(device_, between_buffer_, memory_, 0);
+  if (result == VK_SUCCESS) result = f_.MapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_);
+  if (result != VK_SUCCESS) *error = "could not map the host-memory buffer: " + result_name(result);
+  return result == VK_SUCCESS;
+}
+
+bool Transport::prepare(Path path, uint32_t width, uint32_t height, int* fd, uint64_t* memory_size,
+                        std::string* error) {
+  *fd = -1;  // the go-between the GL side already has serves
+  if (prepared(path, width, height)) return true;
+  wait_idle();
+  release_between();
+  path_ = path;
+  width_ = width;
+  height_ = height;
+  const bool made = path == Path::SHARED ? make_shared_image(error) : make_host_buffer(error);
+  if (!made) {
+    release_between();
+    return false;
+  }
+  if (path == Path::HOST) return true;
+  VkMemoryGetFdInfoKHR fd_info{};
+  fd_info.sType = VK_STRUCTURE_TYPE_MEMORY_GET_FD_INFO_KHR;
+  fd_info.memory = memory_;
+  fd_info.handleType = VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT;
+  const VkResult result = f_.GetMemoryFdKHR(device_, &fd_info, fd);
+  if (result != VK_SUCCESS) {
+    *error = "could not export the image's memory: " + result_name(result);
+    release_between();
+    return false;
+  }
+  VkMemoryRequirements needs{};
+  f_.GetImageMemoryRequirements(device_, between_image_, &needs);
+  *memory_size = needs.size;
+  return true;
+}
+
+bool Transport::submit(VkCommandBuffer commands, VkFence fence, const pfx_vk_image& image, bool wait, bool signal,
+                       std::string* error) {
+  std::vector<VkPipelineStageFlags> stages(image.wait_semaphore_count, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  if (image.wait_stages)
+    for (uint32_t i = 0; i < image.wait_semaphore_count; ++i) stages[i] = image.wait_stages[i];
+  VkSubmitInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  if (wait && image.wait_semaphore_count) {
+    info.waitSemaphoreCount = image.wait_semaphore_count;
+    info.pWaitSemaphores = image.wait_semaphores;
+    info.pWaitDstStageMask = stages.data();
+  }
+  info.commandBufferCount = commands ? 1 : 0;
+  info.pCommandBuffers = commands ? &commands : nullptr;
+  if (signal && image.signal_semaphore) {
+    info.signalSemaphoreCount = 1;
+    info.pSignalSemaphores = &image.signal_semaphore;
+  }
+  const VkResult result = f_.QueueSubmit(queue_, 1, &info, fence);
+  if (result != VK_SUCCESS) *error = "vkQueueSubmit failed: " + result_name(result);
+  return result == VK_SUCCESS;
+}
+
+}  // namespace pfx::vk

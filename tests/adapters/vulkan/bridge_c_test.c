@@ -1,0 +1,318 @@
+/* A Vulkan program in plain C, written from pfx/vulkan_bridge.h and docs/sdk.md alone, as an engine
+ * would use the bridge: it puts a PNG into a VkImage of its own, runs a pfx chain over the image
+ * through the bridge, reads the image back and compares it with a PNG pfx-render made from the same
+ * input (within one code value).
+ *
+ *   bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra shared|host
+ *
+ * "shared" lets the bridge share memory (and fails if it did not); "host" forces host memory.
+ * Exit status 0 when every pixel's R, G and B are within one code of EXPECTED. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <pfx/vulkan_bridge.h>
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+
+typedef struct context {
+  VkInstance instance;
+  VkPhysicalDevice physical_device;
+  VkDevice device;
+  VkQueue queue;
+  uint32_t family;
+  int has_bridge_extensions;
+  VkCommandPool pool;
+} context;
+
+typedef struct gpu_image {
+  VkImage image;
+  VkDeviceMemory image_memory;
+  VkBuffer buffer; /* host-visible, tightly packed rows: the upload and the read-back */
+  VkDeviceMemory buffer_memory;
+  void* mapped;
+  uint32_t width, height;
+} gpu_image;
+
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+/* Under LeakSanitizer (./run test's second pass): the Vulkan loader unloads lavapipe at
+ * vkDestroyInstance, and a block lavapipe keeps in its globals for the life of the process then
+ * points nowhere and is reported as a leak of whatever is mapped there now (128 bytes, seen as
+ * libpfxvulkan's or "<unknown module>"; with lavapipe kept loaded there is none). Keeping the
+ * driver mapped lets LeakSanitizer see the block held, as it is. */
+static void keep_driver_mapped(void) { (void)dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE); }
+#else
+static void keep_driver_mapped(void) {}
+#endif
+
+static int fail(const char* what) {
+  fprintf(stderr, "bridge_c_test: %s\n", what);
+  return 0;
+}
+
+static VkPhysicalDevice pick_device(VkInstance instance) {
+  VkPhysicalDevice devices[16];
+  uint32_t count = 16, i;
+  VkPhysicalDevice chosen = VK_NULL_HANDLE;
+  if (vkEnumeratePhysicalDevices(instance, &count, devices) < 0 || count == 0) return VK_NULL_HANDLE;
+  chosen = devices[0];
+  for (i = 0; i < count; ++i) {
+    VkPhysicalDeviceProperties properties;
+    vkGetPhysicalDeviceProperties(devices[i], &properties);
+    if (properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) chosen = devices[i];
+  }
+  return chosen;
+}
+
+/* Whether the device offers every extension the bridge's shared-memory path needs. */
+static int offers_extensions(VkPhysicalDevice device, const char* const* wanted, uint32_t wanted_count) {
+  VkExtensionProperties offered[512];
+  uint32_t count = 512, i, j;
+  vkEnumerateDeviceExtensionProperties(device, NULL, &count, offered);
+  for (i = 0; i < wanted_count; ++i) {
+    int found = 0;
+    for (j = 0; j < count; ++j) found |= strcmp(offered[j].extensionName, wanted[i]) == 0;
+    if (!found) return 0;
+  }
+  return 1;
+}
+
+static int make_context(context* c) {
+  VkApplicationInfo app = {VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  VkInstanceCreateInfo instance_info = {VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  VkQueueFamilyProperties families[16];
+  uint32_t family_count = 16, extension_count = 0;
+  const char* const* extensions = pfx_vk_bridge_device_extensions(&extension_count);
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue_info = {VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  VkDeviceCreateInfo device_info = {VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  VkCommandPoolCreateInfo pool_info = {VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  app.apiVersion = VK_API_VERSION_1_1;
+  instance_info.pApplicationInfo = &app;
+  if (vkCreateInstance(&instance_info, NULL, &c->instance) != VK_SUCCESS) return fail("no Vulkan instance");
+  c->physical_device = pick_device(c->instance);
+  if (!c->physical_device) return fail("no Vulkan device");
+  vkGetPhysicalDeviceQueueFamilyProperties(c->physical_device, &family_count, families);
+  for (c->family = 0; c->family < family_count; ++c->family)
+    if (families[c->family].queueFlags & VK_QUEUE_GRAPHICS_BIT) break;
+  if (c->family == family_count) return fail("no graphics queue");
+  queue_info.queueFamilyIndex = c->family;
+  queue_info.queueCount = 1;
+  queue_info.pQueuePriorities = &priority;
+  device_info.queueCreateInfoCount = 1;
+  device_info.pQueueCreateInfos = &queue_info;
+  c->has_bridge_extensions = offers_extensions(c->physical_device, extensions, extension_count);
+  if (c->has_bridge_extensions) {
+    device_info.enabledExtensionCount = extension_count;
+    device_info.ppEnabledExtensionNames = extensions;
+  }
+  if (vkCreateDevice(c->physical_device, &device_info, NULL, &c->device) != VK_SUCCESS) return fail("no device");
+  vkGetDeviceQueue(c->device, c->family, 0, &c->queue);
+  pool_info.queueFamilyIndex = c->family;
+  return vkCreateCommandPool(c->device, &pool_info, NULL, &c->pool) == VK_SUCCESS || fail("no command pool");
+}
+
+static int memory_type(const context* c, uint32_t bits, VkMemoryPropertyFlags flags) {
+  VkPhysicalDeviceMemoryProperties properties;
+  uint32_t i;
+  vkGetPhysicalDeviceMemoryProperties(c->physical_device, &properties);
+  for (i = 0; i < properties.memoryTypeCount; ++i)
+    if ((bits & (1u << i)) && (properties.memoryTypes[i].propertyFlags & flags) == flags) return (int)i;
+  return -1;
+}
+
+static int allocate(const context* c, VkMemoryRequirements needs, VkMemoryPropertyFlags flags, VkDeviceMemory* out) {
+  VkMemoryAllocateInfo info = {VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  const int type = memory_type(c, needs.memoryTypeBits, flags);
+  if (type < 0) return fail("no memory type");
+  info.allocationSize = needs.size;
+  info.memoryTypeIndex = (uint32_t)type;
+  return vkAllocateMemory(c->device, &info, NULL, out) == VK_SUCCESS || fail("out of memory");
+}
+
+static int make_image(const context* c, VkFormat format, uint32_t width, uint32_t height, gpu_image* g) {
+  VkImageCreateInfo info = {VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  VkBufferCreateInfo buffer_info = {VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  VkMemoryRequirements needs;
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = format;
+  info.extent.width = width;
+  info.extent.height = height;
+  info.extent.depth = 1;
+  info.mipLevels = info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT; /* what the bridge asks */
+  g->width = width;
+  g->height = height;
+  if (vkCreateImage(c->device, &info, NULL, &g->image) != VK_SUCCESS) return fail("no image");
+  vkGetImageMemoryRequirements(c->device, g->image, &needs);
+  if (!allocate(c, needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &g->image_memory)) return 0;
+  vkBindImageMemory(c->device, g->image, g->image_memory, 0);
+  buffer_info.size = (VkDeviceSize)width * height * 4;
+  buffer_info.usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  if (vkCreateBuffer(c->device, &buffer_info, NULL, &g->buffer) != VK_SUCCESS) return fail("no buffer");
+  vkGetBufferMemoryRequirements(c->device, g->buffer, &needs);
+  if (!allocate(c, needs, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                &g->buffer_memory))
+    return 0;
+  vkBindBufferMemory(c->device, g->buffer, g->buffer_memory, 0);
+  return vkMapMemory(c->device, g->buffer_memory, 0, VK_WHOLE_SIZE, 0, &g->mapped) == VK_SUCCESS || fail("no map");
+}
+
+static void layout_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to) {
+  VkImageMemoryBarrier barrier = {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+  barrier.subresourceRange.levelCount = barrier.subresourceRange.layerCount = 1;
+  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, NULL,
+                       0, NULL, 1, &barrier);
+}
+
+/* upload: buffer -> image, leaving it GENERAL (a layout an engine might hand over); else image -> buffer. */
+static int transfer(const context* c, const gpu_image* g, int upload) {
+  VkCommandBufferAllocateInfo info = {VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  VkCommandBufferBeginInfo begin = {VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  VkSubmitInfo submit = {VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  VkBufferImageCopy region;
+  VkCommandBuffer commands;
+  memset(&region, 0, sizeof region);
+  region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+  region.imageSubresource.layerCount = 1;
+  region.imageExtent.width = g->width;
+  region.imageExtent.height = g->height;
+  region.imageExtent.depth = 1;
+  info.commandPool = c->pool;
+  info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  info.commandBufferCount = 1;
+  if (vkAllocateCommandBuffers(c->device, &info, &commands) != VK_SUCCESS) return fail("no command buffer");
+  vkBeginCommandBuffer(commands, &begin);
+  if (upload) {
+    layout_barrier(commands, g->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    vkCmdCopyBufferToImage(commands, g->buffer, g->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    layout_barrier(commands, g->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
+  } else {
+    vkCmdCopyImageToBuffer(commands, g->image, VK_IMAGE_LAYOUT_GENERAL, g->buffer, 1, &region);
+  }
+  vkEndCommandBuffer(commands);
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commands;
+  if (vkQueueSubmit(c->queue, 1, &submit, VK_NULL_HANDLE) != VK_SUCCESS) return fail("submit failed");
+  vkQueueWaitIdle(c->queue);
+  vkFreeCommandBuffers(c->device, c->pool, 1, &commands);
+  return 1;
+}
+
+static void log_line(void* user, int level, const char* message) {
+  (void)user;
+  fprintf(stderr, "bridge (%d): %s\n", level, message);
+}
+
+static int run_bridge(const context* c, const gpu_image* g, VkFormat format, const char* plugins, const char* chain,
+                      int host_memory, const char* want_path) {
+  pfx_vk_bridge_desc desc;
+  pfx_vk_image image;
+  pfx_vk_bridge* bridge = NULL;
+  char error[512];
+  pfx_vk_status status;
+  memset(&desc, 0, sizeof desc);
+  desc.struct_size = sizeof desc;
+  desc.instance = c->instance;
+  desc.physical_device = c->physical_device;
+  desc.device = c->device;
+  desc.get_instance_proc_addr = vkGetInstanceProcAddr;
+  desc.get_device_proc_addr = vkGetDeviceProcAddr;
+  desc.queue = c->queue;
+  desc.queue_family_index = c->family;
+  desc.device_has_bridge_extensions = c->has_bridge_extensions;
+  desc.chain = chain;
+  desc.plugin_path = plugins;
+  desc.flags = host_memory ? PFX_VK_FORCE_HOST_MEMORY : 0;
+  desc.log = log_line;
+  if (pfx_vk_bridge_create(&desc, &bridge, error, sizeof error) != PFX_VK_OK) return fail(error);
+  memset(&image, 0, sizeof image);
+  image.struct_size = sizeof image;
+  image.image = g->image;
+  image.format = format;
+  image.width = g->width;
+  image.height = g->height;
+  image.layout = VK_IMAGE_LAYOUT_GENERAL;
+  status = pfx_vk_bridge_run(bridge, &image);
+  if (status != PFX_VK_OK) fprintf(stderr, "bridge_c_test: run: %s\n", pfx_vk_bridge_last_error(bridge));
+  printf("path: %s\n", pfx_vk_bridge_path(bridge));
+  if (strcmp(pfx_vk_bridge_path(bridge), want_path) != 0) status = PFX_VK_BAD_ARGUMENT;
+  vkQueueWaitIdle(c->queue);
+  pfx_vk_bridge_destroy(bridge);
+  return status == PFX_VK_OK || fail("the bridge did not run as asked");
+}
+
+/* The largest difference of R, G or B; *changed counts pixels that differ from `input`. */
+static int compare(const unsigned char* got, const unsigned char* want, const unsigned char* input, size_t pixels,
+                   int bgra, size_t* changed) {
+  size_t i;
+  int c, worst = 0;
+  *changed = 0;
+  for (i = 0; i < pixels; ++i) {
+    int differs = 0;
+    for (c = 0; c < 3; ++c) {
+      const int g = got[i * 4 + (size_t)(bgra ? 2 - c : c)];
+      const int d = abs(g - (int)want[i * 4 + (size_t)c]);
+      if (d > worst) worst = d;
+      differs |= g != input[i * 4 + (size_t)c];
+    }
+    *changed += (size_t)differs;
+  }
+  return worst;
+}
+
+int main(int argc, char** argv) {
+  context c;
+  gpu_image g;
+  int width, height, want_width, want_height, channels, bgra, worst;
+  unsigned char *input, *want;
+  size_t i, pixels, changed;
+  VkFormat format;
+  if (argc != 7) return fail("usage: bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra shared|host"), 2;
+  input = stbi_load(argv[1], &width, &height, &channels, 4);
+  want = stbi_load(argv[2], &want_width, &want_height, &channels, 4);
+  if (!input || !want || want_width != width || want_height != height) return fail("could not read the PNGs"), 2;
+  bgra = strcmp(argv[5], "bgra") == 0;
+  format = bgra ? VK_FORMAT_B8G8R8A8_UNORM : VK_FORMAT_R8G8B8A8_UNORM;
+  pixels = (size_t)width * (size_t)height;
+  memset(&c, 0, sizeof c);
+  memset(&g, 0, sizeof g);
+  keep_driver_mapped();
+  if (!make_context(&c) || !make_image(&c, format, (uint32_t)width, (uint32_t)height, &g)) return 1;
+  for (i = 0; i < pixels; ++i) {
+    unsigned char* out = (unsigned char*)g.mapped + i * 4;
+    out[0] = input[i * 4 + (bgra ? 2 : 0)];
+    out[1] = input[i * 4 + 1];
+    out[2] = input[i * 4 + (bgra ? 0 : 2)];
+    out[3] = input[i * 4 + 3];
+  }
+  if (!transfer(&c, &g, 1)) return 1;
+  if (!run_bridge(&c, &g, format, argv[3], argv[4], strcmp(argv[6], "host") == 0, strcmp(argv[6], "host") == 0 ? "host memory" : "shared memory"))
+    return 1;
+  if (!transfer(&c, &g, 0)) return 1;
+  worst = compare((const unsigned char*)g.mapped, want, input, pixels, bgra, &changed);
+  printf("largest difference from the expected picture: %d codes; %lu of %lu pixels changed by the chain\n", worst,
+         (unsigned long)changed, (unsigned long)pixels);
+  vkDestroyBuffer(c.device, g.buffer, NULL);
+  vkFreeMemory(c.device, g.buffer_memory, NULL);
+  vkDestroyImage(c.device, g.image, NULL);
+  vkFreeMemory(c.device, g.image_memory, NULL);
+  vkDestroyCommandPool(c.device, c.pool, NULL);
+  vkDestroyDevice(c.device, NULL);
+  vkDestroyInstance(c.instance, NULL);
+  stbi_image_free(input);
+  stbi_image_free(want);
+  /* An effect that changed nothing would make a comparison with an unchanged picture pass. */
+  if (strcmp(argv[4], "none") != 0 && changed == 0) return fail("the chain changed no pixel"), 1;
+  return worst <= 1 ? 0 : 1;
+}

@@ -1,0 +1,428 @@
+// The Vulkan layer inside vkcube (package vulkan-tools), which no one here wrote, on lavapipe under
+// Xvfb. vkcube turns its cube by a fixed step per frame, so its frame N is the same picture in
+// every run: frame 5 through the layer with no effect (the bridge's copy in and out, bit for bit
+// the application's frame: tests "vulkan.bridge") is the pristine frame, and pfx-render on it is
+// what frame 5 through bloom must be.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <X11/Xlib.h>
+#include <unistd.h>
+#include <vulkan/vulkan.h>
+
+#include "inject_run.hpp"
+#include "view_process.hpp"
+
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+#include <link.h>
+
+#include <cstring>
+#endif
+
+namespace {
+
+// The sanitizer pass (./run test) builds the layer with AddressSanitizer and the loader opens it in
+// vkcube, which is not: the runtime must then come first in the process, and vkcube's and the
+// drivers' own allocations are not ours to judge (pfx-inject's tests do the same with glxgears).
+void add_sanitizer_runtime(std::vector<std::string>* argv) {
+#if defined(__SANITIZE_ADDRESS__)
+  std::string runtime;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* out) {
+        if (info->dlpi_name && std::strstr(info->dlpi_name, "libasan.so")) {
+          *static_cast<std::string*>(out) = info->dlpi_name;
+          return 1;
+        }
+        return 0;
+      },
+      &runtime);
+  argv->push_back("LD_PRELOAD=" + runtime);
+  const char* asan_options = std::getenv("ASAN_OPTIONS");
+  argv->push_back(std::string("ASAN_OPTIONS=") + (asan_options ? asan_options : "") + ":detect_leaks=0");
+#else
+  (void)argv;
+#endif
+}
+
+using pfx::test::ScratchFolder;
+
+struct Frame {
+  pfx::test::RunResult run;
+  std::string log;
+  pfx::app::DisplayImage presented, app;
+};
+
+// vkcube for 8 frames at 320x240 with the layer on and pfx-inject's variables `settings`
+// (NAME=VALUE), frame 5 captured.
+// pfx's layer through a manifest of the explicit kind in `folder`, so that VK_INSTANCE_LAYERS can
+// place it among other layers (the loader puts every implicit layer above the explicit ones).
+void write_explicit_manifest(const ScratchFolder& folder) {
+  std::ofstream(folder.file("pfx_explicit.json"))
+      << "{\"file_format_version\": \"1.0.0\", \"layer\": {\"name\": \"VK_LAYER_PFX_post_effects\", \"type\": "
+         "\"GLOBAL\", \"library_path\": \"" PFX_LAYER_LIBRARY "\", \"api_version\": \"1.3.0\", "
+         "\"implementation_version\": \"1\", \"description\": \"pfx\", \"functions\": {\"vkGetInstanceProcAddr\": "
+         "\"pfx_layer_GetInstanceProcAddr\", \"vkGetDeviceProcAddr\": \"pfx_layer_GetDeviceProcAddr\"}}}\n";
+}
+
+Frame vkcube_frame(const ScratchFolder& folder, const std::string& name, const std::vector<std::string>& settings,
+                   bool validation = false) {
+  std::vector<std::string> argv = {"/usr/bin/env",
+                                   "XDG_DATA_HOME=" PFX_BUILD_SHARE,
+                                   "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_LOG=" + folder.file(name + ".log"),
+                                   "PFX_INJECT_CAPTURE=5:" + folder.file(name)};
+  argv.insert(argv.end(), settings.begin(), settings.end());
+  if (validation) argv.push_back("VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation");
+  add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "8", "--width", "320", "--height", "240"}) argv.push_back(arg);
+  Frame frame;
+  frame.run = pfx::test::run_program(argv, 120);
+  frame.log = pfx::test::read_text_file(folder.file(name + ".log"));
+  // A run whose frames passed through captured nothing.
+  if (std::filesystem::exists(folder.file(name + ".png"))) {
+    frame.presented = pfx::test::read_png_file(folder.file(name + ".png"));
+    frame.app = pfx::test::read_png_file(folder.file(name + ".app.png"));
+  }
+  return frame;
+}
+
+// The largest difference of any channel, and how many pixels differ at all.
+std::pair<int, size_t> difference(const pfx::app::DisplayImage& a, const pfx::app::DisplayImage& b) {
+  REQUIRE(a.width == b.width);
+  REQUIRE(a.height == b.height);
+  REQUIRE(a.channels == b.channels);
+  int worst = 0;
+  size_t differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += size_t(a.channels)) {
+    int here = 0;
+    for (size_t c = 0; c < size_t(a.channels); ++c) here = std::max(here, std::abs(a.pixels[i + c] - b.pixels[i + c]));
+    worst = std::max(worst, here);
+    differing += here > 0;
+  }
+  return {worst, differing};
+}
+
+}  // namespace
+
+TEST_CASE("vkcube's frame 5 through bloom is pfx-render's bloom of the pristine frame 5, within one code", "[vkcube]") {
+  ScratchFolder folder("vulkan-vkcube");
+  const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none"});
+  INFO(pristine.run.output << pristine.log);
+  REQUIRE(pristine.run.exit_code == 0);
+  REQUIRE(pristine.presented.width == 320);
+  CHECK(difference(pristine.presented, pristine.app).first == 0);  // no effect: the frame untouched
+
+  const Frame bloom = vkcube_frame(folder, "bloom", {"PFX_INJECT_CHAIN=bloom"});
+  INFO(bloom.run.output << bloom.log);
+  REQUIRE(bloom.run.exit_code == 0);
+  CHECK(bloom.log.find("shared with the GL") != std::string::npos);
+  // The application drew the same frame 5 in both runs.
+  CHECK(difference(bloom.app, pristine.app).first == 0);
+  const pfx::test::RunResult render =
+      pfx::test::run_program({PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("none.png"),
+                              "--chain", "bloom", "--out", folder.file("render.png")});
+  INFO(render.output);
+  REQUIRE(render.exit_code == 0);
+  const auto [worst, differing] = difference(bloom.presented, pfx::test::read_png_file(folder.file("render.png")));
+  CHECK(worst <= 1);
+  // Bloom at its display-referred defaults shows on vkcube's frame: round the bright logo and
+  // edges (measured: 1,403 pixels, by up to 20 codes).
+  const auto [changed_by, changed] = difference(bloom.presented, pristine.presented);
+  CHECK(changed_by >= 8);
+  CHECK(changed >= 320 * 240 / 100);
+}
+
+TEST_CASE("through host memory vkcube's frame 5 is the shared-memory frame, bit for bit", "[vkcube]") {
+  ScratchFolder folder("vulkan-host-memory");
+  const Frame shared = vkcube_frame(folder, "shared", {"PFX_INJECT_CHAIN=bloom"});
+  const Frame host = vkcube_frame(folder, "host", {"PFX_INJECT_CHAIN=bloom", "PFX_VK_HOST_MEMORY=1"});
+  INFO(shared.run.output << shared.log << host.run.output << host.log);
+  REQUIRE(shared.run.exit_code == 0);
+  REQUIRE(host.run.exit_code == 0);
+  CHECK(host.log.find("host memory asked for") != std::string::npos);
+  CHECK(difference(host.presented, shared.presented).first == 0);
+}
+
+TEST_CASE("the Khronos validation layer below the layer reports no error, on either path", "[vkcube]") {
+  ScratchFolder folder("vulkan-validation");
+  for (const char* host_memory : {"PFX_VK_HOST_MEMORY=0", "PFX_VK_HOST_MEMORY=1"}) {
+    const Frame frame = vkcube_frame(folder, "validated", {"PFX_INJECT_CHAIN=bloom", host_memory}, true);
+    INFO(host_memory << "\n" << frame.run.output << frame.log);
+    REQUIRE(frame.run.exit_code == 0);
+    CHECK(frame.run.output.find("Validation") == std::string::npos);
+    CHECK(frame.presented.width == 320);  // the layer did run
+  }
+}
+
+TEST_CASE("the Khronos validation layer above the layer reports no error", "[vkcube]") {
+  // What the application sees of pfx's layer (its swapchains, its presents) is checked from above.
+  // Layers enabled by VK_INSTANCE_LAYERS always go below the implicit ones, so the validation
+  // layer comes in as an implicit layer of its own, through a copy of its manifest found before
+  // pfx's (the loader puts the implicit manifest it finds first nearest the application).
+  ScratchFolder folder("vulkan-validation-above");
+  std::filesystem::create_directories(folder.file("vulkan/implicit_layer.d"));
+  std::ifstream official(PFX_VALIDATION_MANIFEST);
+  std::string manifest((std::istreambuf_iterator<char>(official)), std::istreambuf_iterator<char>());
+  const size_t type = manifest.find("\"type\"");
+  REQUIRE(type != std::string::npos);
+  manifest.insert(type, "\"enable_environment\": {\"PFX_TEST_VALIDATION\": \"1\"}, "
+                        "\"disable_environment\": {\"PFX_TEST_NO_VALIDATION\": \"1\"}, ");
+  std::ofstream(folder.file("vulkan/implicit_layer.d/validation.json")) << manifest;
+  const Frame frame = vkcube_frame(folder, "validated",
+                                   {"XDG_DATA_HOME=" + folder.path(), "XDG_DATA_DIRS=" PFX_BUILD_SHARE ":/usr/share",
+                                    "PFX_TEST_VALIDATION=1", "VK_LOADER_DEBUG=layer", "PFX_INJECT_CHAIN=bloom"});
+  INFO(frame.run.output << frame.log);
+  REQUIRE(frame.run.exit_code == 0);
+  // The loader's account of the device's layers, application side first.
+  const size_t stack = frame.run.output.find("vkCreateDevice layer callstack setup");
+  REQUIRE(stack != std::string::npos);
+  const size_t validation = frame.run.output.find("VK_LAYER_KHRONOS_validation", stack);
+  const size_t pfx = frame.run.output.find("VK_LAYER_PFX_post_effects", stack);
+  REQUIRE(validation != std::string::npos);
+  REQUIRE(pfx != std::string::npos);
+  CHECK(validation < pfx);
+  CHECK(frame.run.output.find("Validation") == std::string::npos);
+  CHECK(frame.presented.width == 320);  // the layer did run
+}
+
+TEST_CASE("a setting that does not apply: vkcube's frames pass through, said in one line", "[vkcube]") {
+  ScratchFolder folder("vulkan-bad-setting");
+  int run = 0;
+  for (const char* setting : {"PFX_INJECT_CHAIN=nosuch", "PFX_INJECT_SET=bloom.threshold=abc"}) {
+    const Frame frame = vkcube_frame(folder, "bad" + std::to_string(++run), {setting});
+    INFO(setting << "\n" << frame.run.output << frame.log);
+    CHECK(frame.run.exit_code == 0);
+    CHECK(std::count(frame.log.begin(), frame.log.end(), '\n') == 1);
+    CHECK(frame.log.find("frames pass through") != std::string::npos);
+    CHECK(frame.presented.width == 0);  // nothing ran, so no capture
+  }
+}
+
+TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variables set by hand do", "[vkcube]") {
+  ScratchFolder folder("vulkan-launcher");
+  const Frame by_hand = vkcube_frame(folder, "by-hand", {"PFX_INJECT_CHAIN=bloom"});
+  std::vector<std::string> argv = {"/usr/bin/env"};
+  add_sanitizer_runtime(&argv);
+  for (const std::string& arg : {std::string(PFX_INJECT), std::string("--chain"), std::string("bloom"),
+                                std::string("--capture"), "5:" + folder.file("launched"), std::string("--quit-after"),
+                                std::string("8"), std::string("--log"), folder.file("launched.log"), std::string("--"),
+                                std::string(PFX_VKCUBE), std::string("--width"), std::string("320"),
+                                std::string("--height"), std::string("240")})
+    argv.push_back(arg);
+  const pfx::test::RunResult launched = pfx::test::run_program(argv, 120);
+  INFO(launched.output << pfx::test::read_text_file(folder.file("launched.log")) << by_hand.log);
+  REQUIRE(launched.exit_code == 0);
+  REQUIRE(by_hand.run.exit_code == 0);
+  CHECK(difference(pfx::test::read_png_file(folder.file("launched.png")), by_hand.presented).first == 0);
+}
+
+namespace {
+
+// The name of lavapipe's device, which mpv must be told: libplacebo passes over software devices
+// unless one is named.
+std::string lavapipe_device_name() {
+#if defined(__SANITIZE_ADDRESS__)
+  // The loader unloads lavapipe at vkDestroyInstance, and a block lavapipe keeps in its globals for
+  // the process's life then points nowhere and is reported as a leak at exit (128 bytes, "<unknown
+  // module>"): kept mapped, LeakSanitizer sees it held (bridge_c_test.c does the same).
+  (void)dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
+#endif
+  VkInstanceCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+  VkInstance instance = VK_NULL_HANDLE;
+  REQUIRE(vkCreateInstance(&info, nullptr, &instance) == VK_SUCCESS);
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(instance, &count, devices.data());
+  std::string name;
+  for (VkPhysicalDevice device : devices) {
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(device, &properties);
+    if (properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) name = properties.deviceName;
+  }
+  vkDestroyInstance(instance, nullptr);
+  return name;
+}
+
+}  // namespace
+
+TEST_CASE("mpv playing through its Vulkan output shows bloom, the frame pfx-render gives, and ends normally", "[mpv]") {
+  ScratchFolder folder("vulkan-mpv");
+  const std::string device = lavapipe_device_name();
+  REQUIRE(!device.empty());
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("mpv.log"),
+                                   "PFX_INJECT_CAPTURE=10:" + folder.file("mpv")};
+  add_sanitizer_runtime(&argv);
+  // A clip made by FFmpeg's test source inside mpv (colour bars, a moving gradient, a clock).
+  for (const std::string& arg : {std::string(PFX_MPV), std::string("--no-config"), std::string("--really-quiet"),
+                                 std::string("--vo=gpu"), std::string("--gpu-api=vulkan"), "--vulkan-device=" + device,
+                                 std::string("--no-audio"), std::string("--frames=15"),
+                                 std::string("av://lavfi:testsrc2=size=320x240:rate=25:duration=1")})
+    argv.push_back(arg);
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
+  INFO(run.output << pfx::test::read_text_file(folder.file("mpv.log")));
+  REQUIRE(run.exit_code == 0);
+  const pfx::app::DisplayImage presented = pfx::test::read_png_file(folder.file("mpv.png"));
+  const pfx::app::DisplayImage app = pfx::test::read_png_file(folder.file("mpv.app.png"));
+  const auto [changed_by, changed] = difference(presented, app);
+  CHECK(changed_by >= 16);
+  CHECK(changed >= 320 * 240 / 20);
+  const pfx::test::RunResult render =
+      pfx::test::run_program({PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("mpv.app.png"),
+                              "--chain", "bloom", "--out", folder.file("render.png")});
+  REQUIRE(render.exit_code == 0);
+  CHECK(difference(presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
+}
+
+namespace {
+
+// "frame 5000: resident memory 98765 KiB; heap in use 1234567 bytes" -> 1234567, or -1.
+long long heap_at(const std::string& log, uint64_t frame) {
+  const std::string key = "frame " + std::to_string(frame) + ": resident memory ";
+  const size_t at = log.find(key);
+  if (at == std::string::npos) return -1;
+  const size_t heap = log.find("heap in use ", at);
+  return heap == std::string::npos ? -1 : std::atoll(log.c_str() + heap + 12);
+}
+
+}  // namespace
+
+TEST_CASE("5,000 presents of vkcube through the default chain do not grow the heap", "[vkcube][long]") {
+  // The heap holds what lavapipe and llvmpipe allocate for every Vulkan and GL object too (their
+  // images and textures are malloc'd), so a leaked image, texture or command buffer shows here.
+  // The bound is half of what a 16-byte block lost per frame adds over 2,000 frames.
+  ScratchFolder folder("vulkan-5000");
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_LOG=" + folder.file("long.log"),
+                                   "PFX_INJECT_RESOURCES_AT=1000,3000,5000"};
+  add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "5000", "--width", "64", "--height", "64"}) argv.push_back(arg);
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 300);
+  const std::string log = pfx::test::read_text_file(folder.file("long.log"));
+  INFO(run.output << log);
+  REQUIRE(run.exit_code == 0);
+  CHECK(log.find("left out of the default chain") != std::string::npos);
+  const long long first = heap_at(log, 1000), middle = heap_at(log, 3000), last = heap_at(log, 5000);
+  REQUIRE(first > 0);
+  REQUIRE(middle > 0);
+  REQUIRE(last > 0);
+  CHECK(middle - first <= 16000);
+  CHECK(last - middle <= 16000);
+}
+
+TEST_CASE("vkBasalt's CAS and pfx's bloom in one stack, in either order", "[vkcube][vkbasalt]") {
+  ScratchFolder folder("vulkan-vkbasalt");
+  std::ofstream(folder.file("vkBasalt.conf")) << "effects = cas\n";
+  const std::string basalt = "VKBASALT_CONFIG_FILE=" + folder.file("vkBasalt.conf");
+  const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none"});
+  REQUIRE(pristine.run.exit_code == 0);
+  auto render_bloom = [&](const std::string& input, const std::string& output) {
+    const pfx::test::RunResult render = pfx::test::run_program(
+        {PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", input, "--chain", "bloom", "--out", output});
+    REQUIRE(render.exit_code == 0);
+    return pfx::test::read_png_file(output);
+  };
+
+  SECTION("pfx above vkBasalt (both implicit; the loader puts the manifest found first nearest the application)") {
+    const Frame both = vkcube_frame(folder, "above", {"PFX_INJECT_CHAIN=bloom", "ENABLE_VKBASALT=1", basalt});
+    INFO(both.run.output << both.log);
+    REQUIRE(both.run.exit_code == 0);
+    // pfx sees the application's frame and gives bloom's; vkBasalt then works on what pfx presents.
+    CHECK(difference(both.app, pristine.app).first == 0);
+    CHECK(difference(both.presented, render_bloom(folder.file("none.png"), folder.file("above-render.png"))).first <= 1);
+  }
+  SECTION("pfx below vkBasalt (pfx's layer enabled as an explicit one)") {
+    write_explicit_manifest(folder);
+    const Frame both = vkcube_frame(folder, "below",
+                                    {"XDG_DATA_HOME=" + folder.path(), "VK_LAYER_PATH=" + folder.path(),
+                                     "VK_INSTANCE_LAYERS=VK_LAYER_PFX_post_effects", "PFX_INJECT_CHAIN=bloom",
+                                     "ENABLE_VKBASALT=1", basalt});
+    INFO(both.run.output << both.log);
+    REQUIRE(both.run.exit_code == 0);
+    // vkBasalt's sharpening reached pfx, and pfx's bloom went over it.
+    const auto [sharpened_by, sharpened] = difference(both.app, pristine.app);
+    CHECK(sharpened_by >= 8);
+    CHECK(sharpened >= 320 * 240 / 100);
+    CHECK(difference(both.presented, render_bloom(folder.file("below.app.png"), folder.file("below-render.png"))).first <=
+          1);
+    CHECK(difference(both.presented, both.app).first >= 8);
+  }
+}
+
+namespace {
+
+// Resizes the top-level window of size from_width x from_height on the test's X display (vkcube
+// names none; the test's Xvfb runs nothing else); false when there is none.
+bool resize_window(unsigned from_width, unsigned from_height, unsigned width, unsigned height) {
+  Display* display = XOpenDisplay(nullptr);
+  if (!display) return false;
+  Window root = DefaultRootWindow(display), parent = 0, *children = nullptr;
+  unsigned count = 0;
+  bool found = false;
+  if (XQueryTree(display, root, &root, &parent, &children, &count)) {
+    for (unsigned i = 0; i < count && !found; ++i) {
+      XWindowAttributes attributes{};
+      if (XGetWindowAttributes(display, children[i], &attributes) && unsigned(attributes.width) == from_width &&
+          unsigned(attributes.height) == from_height) {
+        XResizeWindow(display, children[i], width, height);
+        found = true;
+      }
+    }
+    if (children) XFree(children);
+  }
+  XSync(display, False);
+  XCloseDisplay(display);
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("vkcube resized mid-run: the re-created swapchain's frames go through the chain at their new size",
+          "[vkcube][resize]") {
+  ScratchFolder folder("vulkan-resize");
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_QUIT_AFTER=400",
+                                   "PFX_INJECT_CAPTURE=400:" + folder.file("frame400")};
+  add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--width", "320", "--height", "240"}) argv.push_back(arg);
+  pfx::test::ViewerProcess vkcube(argv);
+  REQUIRE(!vkcube.wait_for_line("frames go through", 60).empty());
+  bool resized = false;
+  for (int attempt = 0; attempt < 50 && !resized; ++attempt) {
+    resized = resize_window(320, 240, 200, 150);
+    if (!resized) usleep(100000);
+  }
+  REQUIRE(resized);
+  REQUIRE(vkcube.wait_exit(120) == 0);
+  INFO(vkcube.output());
+  // The last frame is of the new size, and bloom ran over it as pfx-render runs it.
+  const std::string last = folder.file("frame400");
+  const pfx::app::DisplayImage presented = pfx::test::read_png_file(last + ".png");
+  CHECK(presented.width == 200);
+  CHECK(presented.height == 150);
+  const pfx::test::RunResult render = pfx::test::run_program(
+      {PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", last + ".app.png", "--chain", "bloom", "--out",
+       folder.file("render.png")});
+  REQUIRE(render.exit_code == 0);
+  CHECK(difference(presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
+  CHECK(vkcube.output().find("pass through") == std::string::npos);
+}
+
+TEST_CASE("an effect of a chosen chain that needs depth is switched off, said once, and the rest runs", "[vkcube]") {
+  ScratchFolder folder("vulkan-depth");
+  const Frame with_dof = vkcube_frame(folder, "dof-bloom", {"PFX_INJECT_CHAIN=dof,bloom"});
+  const Frame bloom = vkcube_frame(folder, "bloom", {"PFX_INJECT_CHAIN=bloom"});
+  INFO(with_dof.run.output << with_dof.log);
+  REQUIRE(with_dof.run.exit_code == 0);
+  CHECK(with_dof.log.find("dof off: needs depth") != std::string::npos);
+  CHECK(difference(with_dof.presented, bloom.presented).first == 0);
+}
