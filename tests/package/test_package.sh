@@ -2,7 +2,8 @@
 # The Debian package as a user gets it: installed with dpkg into a root made for this test, then,
 # with no environment variable set, every host finds what it installed where that host looks:
 # pfx-render its plugins, GStreamer the element, ffmpeg the frei0r plugin, Debian's python3 the
-# module, libobs the OBS module, pfx-inject its library, pkg-config the SDK. Then dpkg -r removes
+# module, libobs the OBS module, pfx-inject its library, Vulkan's loader the layer, pkg-config the
+# SDK. Then dpkg -r removes
 # every file it installed. Last, lintian: an error of lintian's fails the pass, warnings are shown.
 #
 # The root: this machine's own root seen through an overlay whose upper layer is a scratch tmpfs,
@@ -101,6 +102,12 @@ else
 fi
 check "pfx-inject runs bloom in glxgears with its installed library" \
   "xvfb-run -a -s '-screen 0 320x240x24 -nolisten tcp' pfx-inject --chain bloom --quit-after 3 -- glxgears"
+check "the Vulkan loader finds the layer's manifest in /usr/share/vulkan and its library" \
+  "python3 -c \"
+import json; layer = json.load(open('/usr/share/vulkan/implicit_layer.d/pfx_layer.json'))['layer']
+import os; assert os.path.isfile(layer['library_path']), layer\" &&
+   { ENABLE_PFX_VULKAN=1 vulkaninfo --summary > /tmp/vulkaninfo.txt 2>&1 || true; } &&
+   grep -q VK_LAYER_PFX_post_effects /tmp/vulkaninfo.txt"
 check "pkg-config and the licence: the SDK's pfx.pc, /usr/share/doc/pfx/copyright" \
   "test \"\$(pkg-config --variable=plugindir pfx)\" = /usr/lib/pfx/plugins && pkg-config --cflags pfx &&
    test -s /usr/share/doc/pfx/copyright && test -s /usr/share/doc/pfx/LICENSE"
