@@ -12,6 +12,8 @@
 #include <obs-module.h>
 #include <obs-nix-platform.h>
 #include <obs.h>
+
+#include "obs_test_video.hpp"
 // Last: Xlib's macros (None, Always) clash with names in the headers above.
 #include <X11/Xlib.h>
 
@@ -47,17 +49,7 @@ bool start_obs(Display* display) {
   obs_set_nix_platform(OBS_NIX_PLATFORM_X11_EGL);
   obs_set_nix_platform_display(display);
   if (!obs_startup("en-US", nullptr, nullptr)) return false;
-  obs_video_info video{};
-  video.graphics_module = "libobs-opengl";
-  video.fps_num = 30;
-  video.fps_den = 1;
-  video.base_width = video.output_width = 64;
-  video.base_height = video.output_height = 48;
-  video.output_format = VIDEO_FORMAT_RGBA;
-  video.colorspace = VIDEO_CS_SRGB;
-  video.range = VIDEO_RANGE_FULL;
-  video.scale_type = OBS_SCALE_BILINEAR;
-  video.gpu_conversion = true;
+  obs_video_info video = pfx::test::obs_test_video();
   return obs_reset_video(&video) == OBS_VIDEO_SUCCESS;
 }
 

@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 #include <obs-nix-platform.h>
+
+#include "obs_test_video.hpp"
 // Last: Xlib's macros (None, Always) clash with names in the headers above.
 #include <X11/Xlib.h>
 
@@ -51,17 +53,7 @@ ObsSession::ObsSession() {
   obs_set_nix_platform(OBS_NIX_PLATFORM_X11_EGL);
   obs_set_nix_platform_display(g_display);
   REQUIRE(obs_startup("en-US", nullptr, nullptr));
-  obs_video_info video{};
-  video.graphics_module = "libobs-opengl";
-  video.fps_num = 30;
-  video.fps_den = 1;
-  video.base_width = video.output_width = 64;
-  video.base_height = video.output_height = 48;
-  video.output_format = VIDEO_FORMAT_RGBA;
-  video.colorspace = VIDEO_CS_SRGB;
-  video.range = VIDEO_RANGE_FULL;
-  video.scale_type = OBS_SCALE_BILINEAR;
-  video.gpu_conversion = true;
+  obs_video_info video = obs_test_video();
   INFO(log());
   REQUIRE(obs_reset_video(&video) == OBS_VIDEO_SUCCESS);
   const std::string stock = OBS_STOCK_MODULE_DIR, stock_data = OBS_STOCK_DATA_DIR;
