@@ -62,7 +62,8 @@ install(FILES ${PROJECT_BINARY_DIR}/cmake/pfxConfig.cmake ${PROJECT_BINARY_DIR}/
 # ---- pkg-config ----------------------------------------------------------------------------------
 # Relocatable: the prefix is found from the .pc file's own folder, so `cmake --install --prefix X`
 # (chosen after configure) and a copied install tree both give right paths.
-if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}")
+# A /usr install (the Debian package) is not moved: its paths are written out plainly.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}" OR CMAKE_INSTALL_PREFIX STREQUAL "/usr")
   set(PFX_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
   set(PFX_PC_LIBDIR "${CMAKE_INSTALL_FULL_LIBDIR}")
   set(PFX_PC_INCLUDEDIR "${CMAKE_INSTALL_FULL_INCLUDEDIR}")

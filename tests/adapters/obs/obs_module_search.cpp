@@ -6,6 +6,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -28,9 +29,14 @@ struct Found {
   std::string folder, bin, data;
 };
 
+// libobs joins its folders as they are ("/usr//lib/..."): compared after normalising.
+std::string normal(const char* path) { return std::filesystem::path(path).lexically_normal().string(); }
+
 void remember_pfx_obs(void* param, const obs_module_info2* info) {
   auto* found = static_cast<Found*>(param);
-  if (std::string(info->name) == "pfx-obs" && std::string(info->bin_path).rfind(found->folder, 0) == 0) {
+  if (std::string(info->name) != "pfx-obs") return;
+  std::printf("libobs's module search: pfx-obs at %s\n", info->bin_path);
+  if (normal(info->bin_path).rfind(found->folder, 0) == 0) {
     found->bin = info->bin_path;
     found->data = info->data_path;
   }
