@@ -296,7 +296,7 @@ TEST_CASE("process state: each fixture that rearranges its host fails the check,
     // The rest of the plugin is a working effect: only this check fails (the thread left running
     // and the changed directory included, which no other check looks for).
     for (const auto& c : plugin["checks"])
-      if (c["check"] != "process state") CHECK(c["status"] == "pass");
+      if (c["check"] != "process state") CHECK(c["status"] == (c["check"] == "heap growth" ? kHeapStatus : "pass"));
   }
 }
 
