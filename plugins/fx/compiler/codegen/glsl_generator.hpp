@@ -1,0 +1,47 @@
+#pragma once
+// GLSL 4.50 from the checked tree, one program per pass: the functions the pass's entry points
+// reach, the globals they use, and a main() that maps HLSL semantics onto GLSL's built-ins and
+// interface variables.
+//
+// How HLSL's meaning is kept (docs/fx.md has the user's view):
+//  - Matrices: HLSL floatRxC is stored as GLSL matRxC (R columns of C rows), so GLSL's m[i] is
+//    HLSL's row i, constructors take their arguments in the same order, and mul() becomes a GLSL
+//    product with its operands swapped.
+//  - Rows: FX texture coordinates start at the top of the picture, GL's textures at the bottom.
+//    Every texture keeps GL's convention and the generated code flips v (and texel rows, gather
+//    order, SV_Position's y and ddy's sign) where FX code meets GL.
+//  - Operators and intrinsics whose HLSL meaning differs from GLSL's (fmod, %, integer division
+//    and remainder, frac, lerp, vector comparisons and logic, component-wise matrix '*') are
+//    written out with HLSL's meaning.
+#include <string>
+#include <vector>
+
+#include "../diagnostics.hpp"
+#include "../model/effect_model.hpp"
+
+namespace pfx::fx {
+
+struct GeneratedPass {
+  // GLSL sources: vertex and fragment for a draw, compute for a dispatch.
+  std::string vertex, fragment, compute;
+  // Texture unit i samples model.samplers[sampler_units[i]]; image unit i is
+  // model.storages[image_units[i]].
+  std::vector<int> sampler_units;
+  std::vector<int> image_units;
+  // Uniforms the program reads (indices into model.uniforms); each is a plain GLSL uniform named
+  // model.global_names[decl].
+  std::vector<int> uniforms;
+  // The pixel shader may leave a pixel unwritten (discard or clip): a pass rendering to the back
+  // buffer must then start from its contents.
+  bool may_discard = false;
+  // Interface: the generated program reads the height of its render target from this uniform to
+  // flip SV_Position (absent from programs that do not use it).
+  static constexpr const char* kTargetHeightUniform = "pfx_target_height";
+};
+
+// Generates the program of `pass`. Errors (what GLSL cannot express) go to `diagnostics` with the
+// FX location; the result is then incomplete.
+GeneratedPass generate_pass(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass,
+                            Diagnostics& diagnostics);
+
+}  // namespace pfx::fx

@@ -1,0 +1,110 @@
+// Statements and function definitions.
+#include "glsl_writer.hpp"
+
+namespace pfx::fx {
+namespace {
+
+std::string pad(int indent) { return std::string(static_cast<std::size_t>(indent) * 2, ' '); }
+
+}  // namespace
+
+void GlslWriter::line_directive(SourceLocation where, std::string& out) {
+  // Driver messages then name the FX file (by its index) and line the code came from.
+  if (where.line > 0) out += "#line " + std::to_string(where.line) + " " + std::to_string(where.file) + "\n";
+}
+
+void GlslWriter::declaration(const VariableDecl& v, int indent, std::string& out) {
+  out += pad(indent) + type(v.resolved) + " " + name_of(v) + array_suffix(v.resolved);
+  if (v.initializer) {
+    if (v.initializer->kind == ExprKind::kInitList) out += " = " + init_list(*v.initializer, v.resolved);
+    else out += " = " + expr(*v.initializer);
+  }
+  out += ";\n";
+}
+
+void GlslWriter::statement(const Stmt& s, int indent, std::string& out) {
+  std::string p = pad(indent);
+  line_directive(s.location, out);
+  switch (s.kind) {
+    case StmtKind::kEmpty: out += p + ";\n"; return;
+    case StmtKind::kExpression: out += p + expr(*s.expression) + ";\n"; return;
+    case StmtKind::kDeclaration:
+      for (const VariableDecl& v : s.variables) declaration(v, indent, out);
+      return;
+    case StmtKind::kBlock:
+      out += p + "{\n";
+      for (const StmtPtr& child : s.statements) statement(*child, indent + 1, out);
+      out += p + "}\n";
+      return;
+    case StmtKind::kIf:
+      out += p + "if (" + expr(*s.expression) + ")\n";
+      statement(*s.body, indent + 1, out);
+      if (s.else_body) {
+        out += p + "else\n";
+        statement(*s.else_body, indent + 1, out);
+      }
+      return;
+    case StmtKind::kFor: {
+      // The initialiser goes in a block of its own so several declarators keep GLSL's rules.
+      out += p + "{\n";
+      if (s.init) statement(*s.init, indent + 1, out);
+      out += p + "  for (; " + (s.expression ? expr(*s.expression) : std::string("true")) + "; " +
+             (s.increment ? expr(*s.increment) : std::string()) + ")\n";
+      statement(*s.body, indent + 2, out);
+      out += p + "}\n";
+      return;
+    }
+    case StmtKind::kWhile:
+      out += p + "while (" + expr(*s.expression) + ")\n";
+      statement(*s.body, indent + 1, out);
+      return;
+    case StmtKind::kDoWhile:
+      out += p + "do\n";
+      statement(*s.body, indent + 1, out);
+      out += p + "while (" + expr(*s.expression) + ");\n";
+      return;
+    case StmtKind::kSwitch: {
+      const Type& t = s.expression->resolved;
+      std::string selector = expr(*s.expression);
+      if (t.base != BaseType::kInt && t.base != BaseType::kUint) selector = "int(" + selector + ")";
+      out += p + "switch (" + selector + ") {\n";
+      for (const SwitchCase& c : s.cases) {
+        for (const ExprPtr& label : c.labels) out += p + "  case " + expr(*label) + ":\n";
+        if (c.has_default) out += p + "  default:\n";
+        for (const StmtPtr& child : c.body) statement(*child, indent + 2, out);
+        if (c.body.empty() && &c == &s.cases.back()) out += p + "    break;\n";  // GLSL wants a statement after the last label
+      }
+      out += p + "}\n";
+      return;
+    }
+    case StmtKind::kBreak: out += p + "break;\n"; return;
+    case StmtKind::kContinue: out += p + "continue;\n"; return;
+    case StmtKind::kReturn: out += p + "return" + (s.expression ? " " + expr(*s.expression) : std::string()) + ";\n"; return;
+    case StmtKind::kDiscard:
+      if (stage_ != Stage::kPixel) error(s.location, "'discard' is only allowed in a pixel shader");
+      uses_discard = true;
+      out += p + "discard;\n";
+      return;
+  }
+}
+
+void GlslWriter::function(const FunctionDecl& f, std::string& out) {
+  line_directive(f.location, out);
+  auto it = model_.function_names.find(&f);
+  out += type(f.resolved) + " " + (it != model_.function_names.end() ? it->second : f.name) + "(";
+  for (std::size_t i = 0; i < f.parameters.size(); ++i) {
+    const VariableDecl& p = f.parameters[i];
+    bool in = (p.qualifiers & kQualIn) != 0, o = (p.qualifiers & kQualOut) != 0;
+    std::string qualifier = in && o ? "inout " : o ? "out " : "";
+    out += (i ? ", " : "") + qualifier + type(p.resolved) + " " + name_of(p) + array_suffix(p.resolved);
+  }
+  out += ")";
+  if (!f.body) {
+    out += ";\n";
+    return;
+  }
+  out += "\n";
+  statement(*f.body, 0, out);
+}
+
+}  // namespace pfx::fx

@@ -1,0 +1,89 @@
+// GLSL spellings of FX types, and HLSL's conversions between them.
+#include "glsl_writer.hpp"
+
+namespace pfx::fx {
+namespace {
+
+const char* scalar_name(BaseType base) {
+  switch (base) {
+    case BaseType::kBool: return "bool";
+    case BaseType::kInt: return "int";
+    case BaseType::kUint: return "uint";
+    default: return "float";  // half and double compute as float, as ReShade does
+  }
+}
+
+const char* vector_prefix(BaseType base) {
+  switch (base) {
+    case BaseType::kBool: return "bvec";
+    case BaseType::kInt: return "ivec";
+    case BaseType::kUint: return "uvec";
+    default: return "vec";
+  }
+}
+
+const char* object_prefix(BaseType element) {
+  return element == BaseType::kInt ? "i" : element == BaseType::kUint ? "u" : "";
+}
+
+}  // namespace
+
+std::string GlslWriter::type(const Type& t) const {
+  switch (t.base) {
+    case BaseType::kVoid: return "void";
+    case BaseType::kStruct: {
+      auto it = t.structure ? model_.struct_names.find(t.structure) : model_.struct_names.end();
+      return it != model_.struct_names.end() ? it->second : "void";
+    }
+    case BaseType::kSampler: return std::string(object_prefix(t.element_base)) + "sampler" + std::to_string(t.dimension) + "D";
+    case BaseType::kStorage: return std::string(object_prefix(t.element_base)) + "image" + std::to_string(t.dimension) + "D";
+    case BaseType::kTexture:
+    case BaseType::kString: return "void";
+    default: break;
+  }
+  if (t.shape == Shape::kScalar) return scalar_name(t.base);
+  if (t.shape == Shape::kVector) return vector_prefix(t.base) + std::to_string(t.rows);
+  // HLSL floatRxC is GLSL matRxC: R columns (HLSL's rows) of C components.
+  return t.rows == t.columns ? "mat" + std::to_string(t.rows) : "mat" + std::to_string(t.rows) + "x" + std::to_string(t.columns);
+}
+
+std::string GlslWriter::array_suffix(const Type& t) const {
+  std::string out;
+  for (int size : t.array) out += "[" + std::to_string(size) + "]";
+  return out;
+}
+
+std::string GlslWriter::full_type(const Type& t) const { return type(t) + array_suffix(t); }
+
+std::string GlslWriter::splat(const std::string& scalar, const Type& to) {
+  if (to.is_scalar()) return type(to) + "(" + scalar + ")";
+  if (to.is_vector()) return type(to) + "(" + scalar + ")";
+  // GLSL's mat(x) puts x on the diagonal only; HLSL's (float2x2)x fills every component.
+  std::string text = type(to) + "(";
+  for (int i = 0; i < to.components(); ++i) text += (i ? ", float(" : "float(") + scalar + ")";
+  return text + ")";
+}
+
+std::string GlslWriter::cast(const std::string& text, const Type& from, const Type& to) {
+  if (from == to) return text;
+  if (!from.is_numeric() || !to.is_numeric()) return text;  // structs and arrays convert only to themselves
+  if (from.is_scalar()) return splat(text, to);
+  if (to.is_scalar()) {
+    std::string first = from.is_matrix() ? "(" + text + ")[0][0]" : "(" + text + ").x";
+    return from.base == to.base ? first : type(to) + "(" + first + ")";
+  }
+  if (to.is_matrix()) {
+    if (from.is_matrix()) return type(to) + "(" + text + ")";  // the upper-left part, as in HLSL
+    // A vector of as many components fills the matrix row by row; GLSL reads it column by column,
+    // which is the same order here (a GLSL column is an HLSL row).
+    return type(to) + "(" + cast(text, from, Type::vector(BaseType::kFloat, from.rows)) + ")";
+  }
+  if (from.is_matrix()) {  // to a vector: the matrix's components row by row
+    std::string parts;
+    for (int r = 0; r < from.rows; ++r) parts += (r ? ", " : "") + std::string("(") + text + ")[" + std::to_string(r) + "]";
+    return type(to) + "(" + type(Type::vector(to.base, from.components())) + "(" + parts + "))";
+  }
+  return type(to) + "(" + text + ")";  // GLSL truncates a longer vector and converts the base
+}
+
+}  // namespace pfx::fx

@@ -1,0 +1,71 @@
+#pragma once
+// The code generator's working parts, shared by its files: types and conversions
+// (glsl_types.cpp), expressions (glsl_expressions.cpp), intrinsics (glsl_intrinsics.cpp),
+// statements and functions (glsl_statements.cpp). glsl_program.cpp puts a program together.
+#include <set>
+#include <string>
+
+#include "../diagnostics.hpp"
+#include "../model/effect_model.hpp"
+
+namespace pfx::fx {
+
+enum class Stage { kVertex, kPixel, kCompute };
+
+class GlslWriter {
+ public:
+  GlslWriter(const EffectModel& model, Diagnostics& diagnostics, Stage stage)
+      : model_(model), diagnostics_(diagnostics), stage_(stage) {}
+
+  // Types (glsl_types.cpp). `type` has no array dimensions; `full_type` adds them ("float[3]").
+  std::string type(const Type& t) const;
+  std::string full_type(const Type& t) const;
+  std::string array_suffix(const Type& t) const;
+  // `text`, of type `from`, as a value of type `to` with HLSL's conversion rules.
+  std::string cast(const std::string& text, const Type& from, const Type& to);
+  // A constructor call for `to` from a scalar repeated ("vec3(x)", a matrix filled with it).
+  std::string splat(const std::string& scalar, const Type& to);
+
+  // Expressions (glsl_expressions.cpp).
+  std::string expr(const Expr& e);
+  std::string init_list(const Expr& list, const Type& target);
+  std::string name_of(const VariableDecl& variable) const;
+  std::string literal(const Expr& e);
+
+  // Intrinsics (glsl_intrinsics.cpp).
+  std::string intrinsic(const Expr& e);
+
+  // Statements and functions (glsl_statements.cpp).
+  void statement(const Stmt& s, int indent, std::string& out);
+  void function(const FunctionDecl& f, std::string& out);
+  void declaration(const VariableDecl& v, int indent, std::string& out);
+  void line_directive(SourceLocation where, std::string& out);
+
+  // What the written code used: globals (uniforms, samplers, storages, statics), helper functions
+  // of the prelude, discard.
+  std::set<const VariableDecl*> used_globals;
+  std::set<std::string> helpers;
+  bool uses_discard = false;
+  Stage stage() const { return stage_; }
+  const EffectModel& model() const { return model_; }
+  void error(SourceLocation where, const std::string& message) { diagnostics_.error(where, message); }
+
+ private:
+  std::string binary(const Expr& e);
+  std::string unary(const Expr& e);
+  std::string assignment(const Expr& e);
+  std::string member(const Expr& e);
+  std::string call(const Expr& e);
+  std::string construct(const Expr& e);
+  std::string texture_call(const Expr& e, const std::string& name);
+  std::string sampled(const std::string& call, const Expr& e);
+
+  const EffectModel& model_;
+  Diagnostics& diagnostics_;
+  Stage stage_;
+};
+
+// The GLSL helper functions a program needs, by the names GlslWriter::helpers holds.
+std::string prelude(const std::set<std::string>& helpers);
+
+}  // namespace pfx::fx
