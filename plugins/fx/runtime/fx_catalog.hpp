@@ -1,0 +1,50 @@
+#pragma once
+// Every FX technique the plugin offers, found once per process (on the first call of the effect
+// factory, never in init): each `*.fx` file under the folders of PFX_FX_PATH (':'-separated,
+// searched with their sub-folders) and the folder installed beside the plugin, compiled up to its
+// model at a nominal frame size. Each technique becomes an effect "fx_<technique>" with its
+// uniforms as parameters; a file that fails is kept with its error and stops nothing else.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <pfx/effect.h>
+
+#include "front_end.hpp"
+#include "fx_parameters.hpp"
+
+namespace pfx_fx {
+
+struct FxEffectEntry {
+  std::string id, label, description;
+  std::string file;       // the .fx file
+  std::string technique;  // the technique's name in it
+  int technique_index = 0;
+  ParamTable params;
+  pfx_effect_desc desc{};
+};
+
+struct FxLoadError {
+  std::string file;
+  std::string message;  // "file:line:column: error: ..." lines
+};
+
+struct FxCatalog {
+  std::vector<std::unique_ptr<FxEffectEntry>> effects;
+  std::vector<FxLoadError> errors;
+};
+
+// The catalog, built on the first call (thread-safe).
+const FxCatalog& catalog();
+
+// The preprocessor options every compile uses at this frame size: the shader folders (a
+// collection's own ReShade.fxh) and then pfx's own headers as include folders.
+pfx::fx::FrontEndOptions compile_options(int width, int height);
+// The folders searched for effects: PFX_FX_PATH's, then the installed one.
+std::vector<std::string> search_folders();
+
+// Where the plugin library lies (its folder); the built-in headers are in <folder>/fx/include and
+// the installed effects in <folder>/fx/shaders.
+std::string plugin_folder();
+
+}  // namespace pfx_fx

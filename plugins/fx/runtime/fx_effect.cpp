@@ -1,0 +1,74 @@
+#include "fx_effect.hpp"
+
+#include <array>
+#include <utility>
+
+#include <pfx/cpp/plugin_entry.hpp>
+
+#include "fx_instance.hpp"
+
+namespace pfx_fx {
+namespace {
+
+using CreateFn = pfx_status (*)(const pfx_host*, void**);
+
+pfx_status create_effect(std::size_t index, const pfx_host* host, void** out_instance) {
+  if (!out_instance || !pfx::plugin::usable_host(host)) return PFX_INVALID_ARGUMENT;
+  const FxCatalog& c = catalog();
+  if (index >= c.effects.size()) return PFX_INVALID_ARGUMENT;
+  return pfx::plugin::without_exceptions([&] {
+    auto instance = std::make_unique<FxInstance>(*c.effects[index], host);
+    if (!instance->create_gl()) return PFX_GL_ERROR;
+    *out_instance = instance.release();
+    return PFX_OK;
+  });
+}
+
+template <std::size_t I>
+pfx_status create_at(const pfx_host* host, void** out_instance) {
+  return create_effect(I, host, out_instance);
+}
+
+template <std::size_t... I>
+constexpr std::array<CreateFn, sizeof...(I)> create_table(std::index_sequence<I...>) {
+  return {&create_at<I>...};
+}
+
+constexpr std::array<CreateFn, kMaxEffects> kCreate = create_table(std::make_index_sequence<kMaxEffects>{});
+
+void destroy(void* instance) {
+  try {
+    delete static_cast<FxInstance*>(instance);
+  } catch (...) {  // nothing may unwind through the C ABI
+  }
+}
+
+pfx_status declare(void* instance, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
+  if (!instance || !pfx::plugin::usable_declare_arguments(frame, params, out)) return PFX_INVALID_ARGUMENT;
+  return pfx::plugin::without_exceptions([&] { return static_cast<FxInstance*>(instance)->declare(frame, params, out); });
+}
+
+pfx_status run_pass(void* instance, const pfx_pass_context* context) {
+  if (!instance || !context || context->struct_size < PFX_PASS_CONTEXT_MIN_SIZE) return PFX_INVALID_ARGUMENT;
+  return pfx::plugin::without_exceptions([&] { return static_cast<FxInstance*>(instance)->run_pass(context); });
+}
+
+}  // namespace
+
+void fill_effect_desc(FxEffectEntry& entry, std::size_t index) {
+  pfx_effect_desc& d = entry.desc;
+  d = {};
+  d.struct_size = sizeof(pfx_effect_desc);
+  d.id = entry.id.c_str();
+  d.label = entry.label.c_str();
+  d.description = entry.description.c_str();
+  d.params = entry.params.descs.empty() ? nullptr : entry.params.descs.data();
+  d.param_count = static_cast<uint32_t>(entry.params.descs.size());
+  d.create = index < kMaxEffects ? kCreate[index] : nullptr;
+  d.destroy = destroy;
+  d.declare = declare;
+  d.run_pass = run_pass;
+  d.report_json = nullptr;
+}
+
+}  // namespace pfx_fx

@@ -1,0 +1,424 @@
+#include "fx_instance.hpp"
+
+#include <cstring>
+#include <regex>
+
+#include <pfx/cpp/gl_program.hpp>
+#include <pfx/cpp/srgb_glsl.hpp>
+
+#include "fx_texture_files.hpp"
+
+namespace pfx_fx {
+namespace {
+
+using pfx::fx::GeneratedPass;
+using pfx::fx::PassInfo;
+
+// Linear light -> the display-referred 8-bit values FX shaders expect, as the hosts' transfer
+// programs encode an 8-bit frame: clamped to [0, 1], NaN -> 0.
+const char* kEncodeMain = R"(
+layout(binding = 0) uniform sampler2D scene_color;
+layout(location = 0) out vec4 display;
+void main() {
+  vec4 value = texelFetch(scene_color, ivec2(gl_FragCoord.xy), 0);
+  value = clamp(mix(value, vec4(0.0), isnan(value)), 0.0, 1.0);
+  display = vec4(pfx_srgb_encode(value.rgb), value.a);
+}
+)";
+
+const char* kDecodeMain = R"(
+layout(binding = 0) uniform sampler2D back_buffer;
+layout(location = 0) out vec4 color;
+void main() {
+  vec4 value = texelFetch(back_buffer, ivec2(gl_FragCoord.xy), 0);
+  color = vec4(pfx_srgb_decode(value.rgb), value.a);
+}
+)";
+
+GLuint transfer_program(const char* main, std::string* error) {
+  std::string source = std::string("#version 450 core\n") + pfx::gl::srgb_glsl_functions() + main;
+  return pfx::gl::build_fullscreen_program(source.c_str(), error);
+}
+
+// The driver's "0:12(5): error" names the source string; the generated code's #line directives
+// made that the FX file's index, so the message can name the file.
+std::string with_file_names(const std::string& log, const pfx::fx::FileNames& names) {
+  std::string out;
+  std::regex location(R"((^|\n)(\d+):(\d+)\((\d+)\))");
+  std::size_t last = 0;
+  for (std::sregex_iterator it(log.begin(), log.end(), location), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    out += log.substr(last, static_cast<std::size_t>(m.position(0)) - last);
+    std::size_t file = std::stoul(m[2].str());
+    std::string name = file < names.size() ? names.name(static_cast<std::uint32_t>(file)) : m[2].str();
+    out += m[1].str() + name + ":" + m[3].str() + ":" + m[4].str();
+    last = static_cast<std::size_t>(m.position(0) + m.length(0));
+  }
+  return out + log.substr(last);
+}
+
+void upload(GLuint program, GLint location, const pfx::fx::Type& type, const std::vector<double>& v) {
+  if (location < 0 || v.empty()) return;
+  GLsizei count = 1;
+  for (int size : type.array) count *= size;
+  int n = type.components();
+  if (type.is_floating() || type.base == pfx::fx::BaseType::kFloat) {
+    std::vector<float> f(v.begin(), v.end());
+    if (type.shape == pfx::fx::Shape::kMatrix) {
+      // GLSL matRxC (see the code generator): R columns, the data row by row of the HLSL matrix.
+      int key = type.rows * 10 + type.columns;
+      switch (key) {
+        case 22: glProgramUniformMatrix2fv(program, location, count, GL_FALSE, f.data()); break;
+        case 33: glProgramUniformMatrix3fv(program, location, count, GL_FALSE, f.data()); break;
+        case 44: glProgramUniformMatrix4fv(program, location, count, GL_FALSE, f.data()); break;
+        case 23: glProgramUniformMatrix2x3fv(program, location, count, GL_FALSE, f.data()); break;
+        case 24: glProgramUniformMatrix2x4fv(program, location, count, GL_FALSE, f.data()); break;
+        case 32: glProgramUniformMatrix3x2fv(program, location, count, GL_FALSE, f.data()); break;
+        case 34: glProgramUniformMatrix3x4fv(program, location, count, GL_FALSE, f.data()); break;
+        case 42: glProgramUniformMatrix4x2fv(program, location, count, GL_FALSE, f.data()); break;
+        case 43: glProgramUniformMatrix4x3fv(program, location, count, GL_FALSE, f.data()); break;
+        default: break;
+      }
+      return;
+    }
+    switch (n) {
+      case 1: glProgramUniform1fv(program, location, count, f.data()); break;
+      case 2: glProgramUniform2fv(program, location, count, f.data()); break;
+      case 3: glProgramUniform3fv(program, location, count, f.data()); break;
+      default: glProgramUniform4fv(program, location, count, f.data()); break;
+    }
+    return;
+  }
+  if (type.base == pfx::fx::BaseType::kUint) {
+    std::vector<GLuint> u;
+    for (double x : v) u.push_back(static_cast<GLuint>(static_cast<long long>(x)));
+    switch (n) {
+      case 1: glProgramUniform1uiv(program, location, count, u.data()); break;
+      case 2: glProgramUniform2uiv(program, location, count, u.data()); break;
+      case 3: glProgramUniform3uiv(program, location, count, u.data()); break;
+      default: glProgramUniform4uiv(program, location, count, u.data()); break;
+    }
+    return;
+  }
+  std::vector<GLint> i;  // int and bool
+  for (double x : v) i.push_back(static_cast<GLint>(x));
+  switch (n) {
+    case 1: glProgramUniform1iv(program, location, count, i.data()); break;
+    case 2: glProgramUniform2iv(program, location, count, i.data()); break;
+    case 3: glProgramUniform3iv(program, location, count, i.data()); break;
+    default: glProgramUniform4iv(program, location, count, i.data()); break;
+  }
+}
+
+// Framebuffer bindings and viewport as the host set them, put back when a pass returns.
+struct SavedTargets {
+  GLint draw = 0, read = 0, viewport[4] = {0, 0, 0, 0};
+  SavedTargets() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+  }
+  ~SavedTargets() {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  }
+};
+
+}  // namespace
+
+FxInstance::~FxInstance() {
+  release_gl();
+  if (encode_program_) glDeleteProgram(encode_program_);
+  if (decode_program_) glDeleteProgram(decode_program_);
+  if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+}
+
+void FxInstance::log(pfx_log_level level, const std::string& message) const {
+  host_->log(host_->host_data, level, ("fx: " + entry_.id + ": " + message).c_str());
+}
+
+bool FxInstance::create_gl() {
+  if (!pfx::gl::load_gl_or_log(host_, "fx")) return false;
+  std::string error;
+  encode_program_ = transfer_program(kEncodeMain, &error);
+  if (encode_program_) decode_program_ = transfer_program(kDecodeMain, &error);
+  if (!decode_program_) {
+    log(PFX_LOG_ERROR, "the colour transfer programs did not build: " + error);
+    return false;
+  }
+  glCreateFramebuffers(1, &framebuffer_);
+  return true;
+}
+
+const pfx::fx::TechniqueInfo& FxInstance::technique() const {
+  return compiled_->model.techniques[static_cast<std::size_t>(entry_.technique_index)];
+}
+
+bool FxInstance::compile_source(int width, int height) {
+  compiled_width_ = width, compiled_height_ = height;
+  gl_current_ = false;
+  passes_.clear();
+  compiled_ = pfx::fx::compile_effect(entry_.file, compile_options(width, height), true);
+  if (!compiled_->ok()) {
+    log(PFX_LOG_ERROR, "does not compile at " + std::to_string(width) + "x" + std::to_string(height) + ":\n" + compiled_->errors());
+    compiled_.reset();
+    return false;
+  }
+  const auto& techniques = compiled_->model.techniques;
+  if (static_cast<std::size_t>(entry_.technique_index) >= techniques.size() ||
+      techniques[static_cast<std::size_t>(entry_.technique_index)].name != entry_.technique) {
+    log(PFX_LOG_ERROR, "technique '" + entry_.technique + "' is not in " + entry_.file + " at this frame size");
+    compiled_.reset();
+    return false;
+  }
+  const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
+  needs_depth_ = false;
+  for (const GeneratedPass& g : generated)
+    for (int s : g.sampler_units) {
+      int t = compiled_->model.samplers[static_cast<std::size_t>(s)].texture;
+      needs_depth_ = needs_depth_ || (t >= 0 && compiled_->model.textures[static_cast<std::size_t>(t)].semantic == pfx::fx::TextureSemantic::kDepth);
+    }
+  // Names first: the descriptors point into these strings, which must not move afterwards.
+  pass_names_.clear();
+  pass_names_.push_back("encode");
+  for (std::size_t i = 0; i < technique().passes.size(); ++i)
+    pass_names_.push_back(technique().passes[i].name.empty() ? "pass" + std::to_string(i) : technique().passes[i].name);
+  pass_names_.push_back("decode");
+  color_input_[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  color_input_[1] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
+  for (std::size_t i = 0; i < pass_names_.size(); ++i) {
+    pfx_pass_desc p{};
+    p.struct_size = sizeof(pfx_pass_desc);
+    p.name = pass_names_[i].c_str();
+    p.kind = PFX_PASS_CUSTOM;
+    p.user_tag = static_cast<uint32_t>(i);
+    if (i == 0) {
+      p.inputs = color_input_;
+      p.input_count = needs_depth_ ? 2 : 1;
+    }
+    if (i + 1 == pass_names_.size()) p.output = PFX_OUTPUT_NAME;
+    passes_.push_back(p);
+  }
+  uniforms_.reset(compiled_->model);
+  return true;
+}
+
+pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
+  (void)params;
+  int w = static_cast<int>(frame->width), h = static_cast<int>(frame->height);
+  if (!compiled_ || w != compiled_width_ || h != compiled_height_) {
+    if (!compiled_ && w == compiled_width_ && h == compiled_height_) return PFX_ERROR;  // failed at this size already
+    if (!compile_source(w, h)) return PFX_ERROR;
+  }
+  if (needs_depth_ && !(frame->inputs & PFX_INPUT_DEPTH)) return PFX_MISSING_INPUT;
+  out->passes = passes_.data();
+  out->pass_count = static_cast<uint32_t>(passes_.size());
+  return PFX_OK;
+}
+
+void FxInstance::release_gl() {
+  for (PassProgram& p : programs_)
+    if (p.program) glDeleteProgram(p.program);
+  programs_.clear();
+  for (GlTexture& t : textures_) delete_texture(t);
+  textures_.clear();
+  if (!samplers_.empty()) glDeleteSamplers(static_cast<GLsizei>(samplers_.size()), samplers_.data());
+  samplers_.clear();
+  delete_texture(back_buffer_[0]);
+  delete_texture(back_buffer_[1]);
+  gl_current_ = false;
+}
+
+bool FxInstance::build_gl() {
+  release_gl();
+  const pfx::fx::EffectModel& model = compiled_->model;
+  std::string error;
+  const GlFormat f = gl_format(pfx::fx::TextureFormat::kRGBA8);
+  for (GlTexture& b : back_buffer_)
+    if (!create_texture_2d(compiled_width_, compiled_height_, f.internal, f.srgb_internal, b, error)) return log(PFX_LOG_ERROR, error), false;
+  textures_.resize(model.textures.size());
+  for (std::size_t i = 0; i < model.textures.size(); ++i) {
+    const pfx::fx::TextureInfo& info = model.textures[i];
+    if (info.semantic != pfx::fx::TextureSemantic::kNone) continue;
+    if (!create_texture(info, textures_[i], error)) return log(PFX_LOG_ERROR, "texture '" + info.name + "': " + error), false;
+    if (!info.source.empty() && !load_texture_file(info, entry_.file, textures_[i], error))
+      return log(PFX_LOG_ERROR, "texture '" + info.name + "': " + error), false;
+  }
+  for (const pfx::fx::SamplerInfo& s : model.samplers) {
+    int levels = s.texture >= 0 && textures_[static_cast<std::size_t>(s.texture)].texture ? textures_[static_cast<std::size_t>(s.texture)].levels : 1;
+    samplers_.push_back(create_sampler(s, levels));
+  }
+  const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
+  for (std::size_t i = 0; i < generated.size(); ++i) {
+    const GeneratedPass& g = generated[i];
+    const PassInfo& pass = technique().passes[i];
+    PassProgram p;
+    std::string message;
+    if (!g.compute.empty()) {
+      p.program = pfx::gl::build_compute_program(g.compute.c_str(), &message);
+    } else {
+      const char* sources[2] = {g.vertex.c_str(), g.fragment.c_str()};
+      const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+      p.program = pfx::gl::build_program(stages, sources, 2, &message);
+    }
+    if (!p.program) {
+      log(PFX_LOG_ERROR, "pass '" + pass_names_[i + 1] + "': the GL refused the generated GLSL (a compiler bug, please report it):\n" +
+                             with_file_names(message, compiled_->front->names));
+      return false;
+    }
+    for (int u : g.uniforms)
+      p.uniform_locations.push_back(glGetUniformLocation(p.program, model.global_names.at(model.uniforms[static_cast<std::size_t>(u)].decl).c_str()));
+    p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
+    // A pass that may leave pixels of the back buffer unwritten starts from a copy of it.
+    bool standard_vs = pass.vertex_shader && pass.vertex_shader->name == "PostProcessVS";
+    p.covers_target = standard_vs && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !g.may_discard && pass.vertex_count == 3 &&
+                      pass.topology == pfx::fx::Topology::kTriangleList;
+    programs_.push_back(p);
+  }
+  gl_current_ = true;
+  return true;
+}
+
+pfx_status FxInstance::run_pass(const pfx_pass_context* context) {
+  if (!compiled_) return PFX_ERROR;
+  if (!gl_current_ && !build_gl()) {
+    release_gl();
+    return PFX_GL_ERROR;
+  }
+  uint32_t index = context->pass_index;
+  if (index == 0) run_encode(*context);
+  else if (index + 1 == passes_.size()) run_decode(*context);
+  else run_fx_pass(static_cast<int>(index) - 1, *context);
+  return PFX_OK;
+}
+
+void FxInstance::run_encode(const pfx_pass_context& context) {
+  depth_texture_ = context.input_count > 1 ? context.inputs[1].texture : 0;
+  uniforms_.update(compiled_->model, entry_.params, context.params, *context.frame, depth_texture_ != 0);
+  SavedTargets saved;
+  current_ = 0;
+  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, back_buffer_[0].texture, 0);
+  for (int i = 1; i < pfx::fx::kMaxRenderTargets; ++i) glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), 0, 0);
+  glNamedFramebufferDrawBuffer(framebuffer_, GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, compiled_width_, compiled_height_);
+  glUseProgram(encode_program_);  // unit 0: the frame's colour, bound by the host
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void FxInstance::run_decode(const pfx_pass_context& context) {
+  (void)context;  // the host bound the output and its viewport
+  glBindTextureUnit(0, back_buffer_[current_].texture);
+  glUseProgram(decode_program_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+GLuint FxInstance::texture_for_sampler(const pfx::fx::SamplerInfo& sampler) const {
+  if (sampler.texture < 0) return 0;
+  const pfx::fx::TextureInfo& info = compiled_->model.textures[static_cast<std::size_t>(sampler.texture)];
+  if (info.semantic == pfx::fx::TextureSemantic::kDepth) return depth_texture_;
+  const GlTexture& t = info.semantic == pfx::fx::TextureSemantic::kColor ? back_buffer_[current_] : textures_[static_cast<std::size_t>(sampler.texture)];
+  return sampler.srgb && t.srgb_view ? t.srgb_view : t.texture;
+}
+
+void FxInstance::bind_resources(const GeneratedPass& g, const PassProgram& p, int target_height) {
+  const pfx::fx::EffectModel& model = compiled_->model;
+  for (std::size_t unit = 0; unit < g.sampler_units.size(); ++unit) {
+    const pfx::fx::SamplerInfo& s = model.samplers[static_cast<std::size_t>(g.sampler_units[unit])];
+    glBindTextureUnit(static_cast<GLuint>(unit), texture_for_sampler(s));
+    glBindSampler(static_cast<GLuint>(unit), samplers_[static_cast<std::size_t>(g.sampler_units[unit])]);
+  }
+  for (std::size_t unit = 0; unit < g.image_units.size(); ++unit) {
+    const pfx::fx::StorageInfo& s = model.storages[static_cast<std::size_t>(g.image_units[unit])];
+    const GlTexture& t = textures_[static_cast<std::size_t>(s.texture)];
+    glBindImageTexture(static_cast<GLuint>(unit), t.texture, s.mip_level, t.target == GL_TEXTURE_3D ? GL_TRUE : GL_FALSE, 0, GL_READ_WRITE, t.internal);
+  }
+  for (std::size_t k = 0; k < g.uniforms.size(); ++k) {
+    const pfx::fx::UniformInfo& u = model.uniforms[static_cast<std::size_t>(g.uniforms[k])];
+    upload(p.program, p.uniform_locations[k], u.type, uniforms_.of(g.uniforms[k]));
+  }
+  if (p.target_height_location >= 0) glProgramUniform1f(p.program, p.target_height_location, static_cast<float>(target_height));
+}
+
+void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
+  (void)context;
+  const PassInfo& pass = technique().passes[static_cast<std::size_t>(index)];
+  const GeneratedPass& g = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)][static_cast<std::size_t>(index)];
+  const PassProgram& p = programs_[static_cast<std::size_t>(index)];
+  const pfx::fx::EffectModel& model = compiled_->model;
+  if (!g.compute.empty()) {
+    bind_resources(g, p, compiled_height_);
+    glUseProgram(p.program);
+    glDispatchCompute(static_cast<GLuint>(pass.dispatch[0]), static_cast<GLuint>(pass.dispatch[1]), static_cast<GLuint>(pass.dispatch[2]));
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    if (pass.generate_mipmaps)
+      for (int unit : g.image_units) {
+        const GlTexture& t = textures_[static_cast<std::size_t>(model.storages[static_cast<std::size_t>(unit)].texture)];
+        if (t.levels > 1) glGenerateTextureMipmap(t.texture);
+      }
+    return;
+  }
+  SavedTargets saved;
+  int count = std::max(1, pass.render_target_count);
+  int width = compiled_width_, height = compiled_height_;
+  GLenum buffers[pfx::fx::kMaxRenderTargets];
+  for (int i = 0; i < pfx::fx::kMaxRenderTargets; ++i) {
+    GLuint texture = 0;
+    if (i < count) {
+      const GlTexture& t = pass.render_target_count == 0 ? back_buffer_[1 - current_] : textures_[static_cast<std::size_t>(pass.render_targets[i])];
+      texture = pass.srgb_write && t.srgb_view ? t.srgb_view : t.texture;
+      if (i == 0) width = t.width, height = t.height;
+      buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+    }
+    glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), texture, 0);
+  }
+  if (pass.render_target_count == 0 && !p.covers_target)
+    glCopyImageSubData(back_buffer_[current_].texture, GL_TEXTURE_2D, 0, 0, 0, 0, back_buffer_[1 - current_].texture, GL_TEXTURE_2D, 0, 0, 0, 0,
+                       compiled_width_, compiled_height_, 1);
+  glNamedFramebufferDrawBuffers(framebuffer_, count, buffers);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, width, height);
+  if (pass.clear_render_targets)
+    for (int i = 0; i < count; ++i) {
+      const GLuint zeros[4] = {0, 0, 0, 0};
+      int integral = pass.render_target_count ? pfx::fx::integer_class(model.textures[static_cast<std::size_t>(pass.render_targets[i])].format) : 0;
+      if (integral == 1) glClearNamedFramebufferiv(framebuffer_, GL_COLOR, i, reinterpret_cast<const GLint*>(zeros));
+      else if (integral == 2) glClearNamedFramebufferuiv(framebuffer_, GL_COLOR, i, zeros);
+      else glClearNamedFramebufferfv(framebuffer_, GL_COLOR, i, reinterpret_cast<const GLfloat*>(zeros));
+    }
+  if (pass.srgb_write) glEnable(GL_FRAMEBUFFER_SRGB);
+  for (int i = 0; i < count; ++i) {
+    const pfx::fx::BlendTarget& b = pass.blend[i];
+    if (b.enable) {
+      glEnablei(GL_BLEND, static_cast<GLuint>(i));
+      glBlendEquationSeparatei(static_cast<GLuint>(i), gl_blend_op(b.color_op), gl_blend_op(b.alpha_op));
+      glBlendFuncSeparatei(static_cast<GLuint>(i), gl_blend_factor(b.src), gl_blend_factor(b.dest), gl_blend_factor(b.src_alpha),
+                           gl_blend_factor(b.dest_alpha));
+    }
+    glColorMaski(static_cast<GLuint>(i), b.write_mask & 1, (b.write_mask >> 1) & 1, (b.write_mask >> 2) & 1, (b.write_mask >> 3) & 1);
+  }
+  bind_resources(g, p, height);
+  glUseProgram(p.program);
+  glDrawArrays(gl_topology(pass.topology), 0, pass.vertex_count);
+  // Put back what the GL state contract protects: blending off with (ADD, ONE, ONE), every
+  // colour written, no sRGB encoding.
+  for (int i = 0; i < count; ++i) {
+    glDisablei(GL_BLEND, static_cast<GLuint>(i));
+    glBlendEquationi(static_cast<GLuint>(i), GL_FUNC_ADD);
+    glBlendFunci(static_cast<GLuint>(i), GL_ONE, GL_ONE);
+    glColorMaski(static_cast<GLuint>(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+  if (pass.srgb_write) glDisable(GL_FRAMEBUFFER_SRGB);
+  if (pass.render_target_count == 0) {
+    current_ = 1 - current_;
+    return;
+  }
+  if (pass.generate_mipmaps)
+    for (int i = 0; i < pass.render_target_count; ++i) {
+      const GlTexture& t = textures_[static_cast<std::size_t>(pass.render_targets[i])];
+      if (t.levels > 1) glGenerateTextureMipmap(t.texture);
+    }
+}
+
+}  // namespace pfx_fx

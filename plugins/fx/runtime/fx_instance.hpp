@@ -1,0 +1,73 @@
+#pragma once
+// An instance of an FX technique. Its passes, as pfx sees them:
+//   encode   the frame's linear colour -> the 8-bit, sRGB-encoded back buffer FX shaders expect
+//   pass i   each pass of the technique, on the effect's own textures (kept from frame to frame,
+//            as FX effects expect) or the back buffer
+//   decode   the back buffer -> the effect's output, linear again
+// The FX source is compiled again when the frame size changes (BUFFER_WIDTH and its kin are
+// constants of the source), on the CPU in declare and into GL programs in the next run.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glad/gl.h>
+#include <pfx/effect.h>
+
+#include "effect_compiler.hpp"
+#include "fx_catalog.hpp"
+#include "fx_gl_objects.hpp"
+#include "fx_uniform_values.hpp"
+
+namespace pfx_fx {
+
+class FxInstance {
+ public:
+  FxInstance(const FxEffectEntry& entry, const pfx_host* host) : entry_(entry), host_(host) {}
+  ~FxInstance();
+  bool create_gl();  // the programs that do not depend on the source: encode and decode
+  pfx_status declare(const pfx_frame* frame, const pfx_value* params, pfx_declaration* out);
+  pfx_status run_pass(const pfx_pass_context* context);
+
+ private:
+  struct PassProgram {
+    GLuint program = 0;
+    std::vector<GLint> uniform_locations;  // per GeneratedPass::uniforms entry
+    GLint target_height_location = -1;
+    bool covers_target = true;  // draws every pixel of the back buffer (no copy needed first)
+  };
+
+  bool compile_source(int width, int height);  // CPU
+  bool build_gl();                             // GL, for the compiled source
+  void release_gl();
+  void log(pfx_log_level level, const std::string& message) const;
+  void run_encode(const pfx_pass_context& context);
+  void run_decode(const pfx_pass_context& context);
+  void run_fx_pass(int index, const pfx_pass_context& context);
+  void bind_resources(const pfx::fx::GeneratedPass& generated, const PassProgram& program, int target_height);
+  GLuint texture_for_sampler(const pfx::fx::SamplerInfo& sampler) const;
+  const pfx::fx::TechniqueInfo& technique() const;
+
+  const FxEffectEntry& entry_;
+  const pfx_host* host_;
+
+  // CPU side, for the compiled size.
+  std::unique_ptr<pfx::fx::CompiledEffect> compiled_;
+  int compiled_width_ = 0, compiled_height_ = 0;
+  bool needs_depth_ = false;
+  std::vector<pfx_pass_desc> passes_;
+  std::vector<std::string> pass_names_;
+  pfx_pass_input color_input_[2]{};
+  UniformValues uniforms_;
+
+  // GL side.
+  bool gl_current_ = false;  // built for compiled_
+  GLuint encode_program_ = 0, decode_program_ = 0, framebuffer_ = 0;
+  std::vector<PassProgram> programs_;
+  std::vector<GlTexture> textures_;  // per model texture (unused for the back buffer and depth)
+  std::vector<GLuint> samplers_;
+  GlTexture back_buffer_[2];
+  int current_ = 0;  // which back buffer holds the picture
+  GLuint depth_texture_ = 0;
+};
+
+}  // namespace pfx_fx

@@ -1,0 +1,38 @@
+// The FX plugin's entry point: an effect factory whose effects are the techniques of the ReShade
+// FX files found at run time (fx_catalog.hpp). init stays cheap, as the ABI asks: the folders are
+// read on the factory's first call.
+#include <algorithm>
+
+#include <pfx/cpp/plugin_entry.hpp>
+#include <pfx/pfx.h>
+
+#include "fx_catalog.hpp"
+#include "fx_effect.hpp"
+
+namespace pfx_fx {
+namespace {
+
+uint32_t effect_count() {
+  try {
+    return static_cast<uint32_t>(std::min(catalog().effects.size(), kMaxEffects));
+  } catch (...) {
+    return 0;
+  }
+}
+
+const pfx_effect_desc* get_effect(uint32_t index) {
+  try {
+    return index < effect_count() ? &catalog().effects[index]->desc : nullptr;
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+constexpr pfx_effect_factory kFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
+
+constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.fx").name("pfx ReShade FX").version("0.1.0").effect_factory(&kFactory);
+
+}  // namespace
+}  // namespace pfx_fx
+
+PFX_PLUGIN_ENTRY(pfx_fx::kPlugin)
