@@ -17,7 +17,7 @@ struct Sizes {
   size_t minimum, today;
 };
 
-// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.4).
+// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.5).
 const std::map<std::string, Sizes>& pinned() {
   static const std::map<std::string, Sizes> sizes = {
       {"pfx_entry", {64, 64}},          {"pfx_host", {48, 56}},
@@ -29,7 +29,7 @@ const std::map<std::string, Sizes>& pinned() {
       {"pfx_reference_request", {64, 88}}, {"pfx_importer_factory", {24, 24}},
       {"pfx_importer_desc", {56, 56}},  {"pfx_import_request", {64, 64}},
       {"pfx_import_result", {184, 184}}, {"pfx_import_material", {80, 104}},
-      {"pfx_thread_pool", {32, 32}}};
+      {"pfx_thread_pool", {32, 32}},    {"pfx_source_factory", {40, 40}}};
   return sizes;
 }
 
@@ -53,7 +53,8 @@ std::map<std::string, Sizes> compiled() {
           PFX_SIZES(pfx_import_request, PFX_IMPORT_REQUEST_MIN_SIZE),
           PFX_SIZES(pfx_import_result, PFX_IMPORT_RESULT_MIN_SIZE),
           PFX_SIZES(pfx_import_material, PFX_IMPORT_MATERIAL_MIN_SIZE),
-          PFX_SIZES(pfx_thread_pool, PFX_THREAD_POOL_MIN_SIZE)};
+          PFX_SIZES(pfx_thread_pool, PFX_THREAD_POOL_MIN_SIZE),
+          PFX_SIZES(pfx_source_factory, PFX_SOURCE_FACTORY_MIN_SIZE)};
 }
 #undef PFX_SIZES
 

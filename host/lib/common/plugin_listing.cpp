@@ -135,7 +135,16 @@ std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const
     p["path"] = plugin->path;
     p["abi"] = std::to_string(PFX_ABI_MAJOR) + "." + std::to_string(plugin->abi_minor);
     p["effects"] = nlohmann::ordered_json::array();
-    for (const pfx_effect_desc* effect : plugin->effects) p["effects"].push_back(effect_json(*effect));
+    for (const pfx_effect_desc* effect : plugin->effects) {
+      nlohmann::ordered_json e = effect_json(*effect);
+      // An effect made from a ReShade FX file (the FX plugin): which file, which technique.
+      auto source = plugin->effect_sources.find(effect->id);
+      if (source != plugin->effect_sources.end()) {
+        e["fx_file"] = source->second.file;
+        e["fx_technique"] = source->second.name;
+      }
+      p["effects"].push_back(e);
+    }
     root["plugins"].push_back(p);
   }
   root["load_errors"] = load_errors;

@@ -59,7 +59,11 @@ std::string file_stem(const std::string& path) { return fs::path(path).stem().st
 void add_file(FxCatalog& c, const std::string& file, std::set<std::string>& ids) {
   auto compiled = pfx::fx::compile_effect(file, compile_options(kNominalWidth, kNominalHeight), false);
   if (!compiled->ok()) {
-    c.errors.push_back({file, compiled->errors()});
+    // The errors only (warnings are the author's business), without the final newline.
+    std::string message;
+    for (const pfx::fx::Diagnostic& d : compiled->front->diagnostics.all())
+      if (d.severity == pfx::fx::Severity::kError) message += (message.empty() ? "" : "\n") + compiled->front->diagnostics.format(d);
+    c.errors.push_back({file, message});
     return;
   }
   const pfx::fx::EffectModel& model = compiled->model;
@@ -111,6 +115,12 @@ pfx::fx::FrontEndOptions compile_options(int width, int height) {
   options.preprocessor.buffer_width = width;
   options.preprocessor.buffer_height = height;
   options.preprocessor.include_folders = include_folders();
+  // The depth pfx hands FX effects (fx_instance.hpp) is what these settings of ReShade.fxh read
+  // right; defined here, they hold for a collection's own ReShade.fxh too (it only sets them
+  // when they are not defined).
+  options.preprocessor.defines = {{"RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN", "0"}, {"RESHADE_DEPTH_INPUT_IS_REVERSED", "0"},
+                                  {"RESHADE_DEPTH_INPUT_IS_LOGARITHMIC", "0"}, {"RESHADE_DEPTH_MULTIPLIER", "1"},
+                                  {"RESHADE_DEPTH_LINEARIZATION_FAR_PLANE", "1000.0"}};
   return options;
 }
 

@@ -35,6 +35,31 @@ void main() {
 }
 )";
 
+// pfx depth (window depth, reversed window depth, or metres) -> linear L in [0, 1] from the near to
+// the far plane -> the window depth d of a projection with near 1 and far F = 1000, which
+// GetLinearizedDepth turns back into L: d / (F - d (F - 1)) = L.
+const char* kDepthMain = R"(
+layout(binding = 1) uniform sampler2D scene_depth;
+layout(location = 0) uniform int encoding;  // 1 hardware, 2 reversed, 3 linear metres
+layout(location = 1) uniform float near_plane;
+layout(location = 2) uniform float far_plane;  // may be +infinity
+layout(location = 0) out float fx_depth;
+void main() {
+  float d = texelFetch(scene_depth, ivec2(gl_FragCoord.xy), 0).r;
+  float z;  // metres
+  if (encoding == 3) z = d;
+  else {
+    if (encoding == 2) d = 1.0 - d;
+    // Window depth of a standard projection, finite or infinite far plane.
+    z = isinf(far_plane) ? near_plane / max(1.0 - d, 1e-30) : near_plane * far_plane / max(far_plane - d * (far_plane - near_plane), 1e-30);
+  }
+  float linear_depth = isinf(far_plane) ? 1.0 - near_plane / max(z, near_plane) : (z - near_plane) / (far_plane - near_plane);
+  linear_depth = clamp(isnan(linear_depth) ? 1.0 : linear_depth, 0.0, 1.0);
+  const float F = 1000.0;
+  fx_depth = linear_depth * F / (1.0 + linear_depth * (F - 1.0));
+}
+)";
+
 GLuint transfer_program(const char* main, std::string* error) {
   std::string source = std::string("#version 450 core\n") + pfx::gl::srgb_glsl_functions() + main;
   return pfx::gl::build_fullscreen_program(source.c_str(), error);
@@ -131,6 +156,7 @@ FxInstance::~FxInstance() {
   release_gl();
   if (encode_program_) glDeleteProgram(encode_program_);
   if (decode_program_) glDeleteProgram(decode_program_);
+  if (depth_program_) glDeleteProgram(depth_program_);
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
 }
 
@@ -143,7 +169,8 @@ bool FxInstance::create_gl() {
   std::string error;
   encode_program_ = transfer_program(kEncodeMain, &error);
   if (encode_program_) decode_program_ = transfer_program(kDecodeMain, &error);
-  if (!decode_program_) {
+  if (decode_program_) depth_program_ = transfer_program(kDepthMain, &error);
+  if (!depth_program_) {
     log(PFX_LOG_ERROR, "the colour transfer programs did not build: " + error);
     return false;
   }
@@ -211,7 +238,14 @@ pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, 
     if (!compiled_ && w == compiled_width_ && h == compiled_height_) return PFX_ERROR;  // failed at this size already
     if (!compile_source(w, h)) return PFX_ERROR;
   }
-  if (needs_depth_ && !(frame->inputs & PFX_INPUT_DEPTH)) return PFX_MISSING_INPUT;
+  // An effect that samples depth runs without it too (ReShade's effects test bufready_depth, or
+  // read the far plane): its depth input is declared only when the frame has one.
+  depth_in_frame_ = needs_depth_ && (frame->inputs & PFX_INPUT_DEPTH) && frame->depth_encoding != PFX_DEPTH_NONE;
+  passes_[0].input_count = depth_in_frame_ ? 2 : 1;
+  if (needs_depth_ && !depth_in_frame_ && !told_no_depth_) {
+    told_no_depth_ = true;
+    log(PFX_LOG_INFO, "this frame has no depth: the effect's depth buffer reads as the far plane");
+  }
   out->passes = passes_.data();
   out->pass_count = static_cast<uint32_t>(passes_.size());
   return PFX_OK;
@@ -227,6 +261,7 @@ void FxInstance::release_gl() {
   samplers_.clear();
   delete_texture(back_buffer_[0]);
   delete_texture(back_buffer_[1]);
+  delete_texture(fx_depth_);
   gl_current_ = false;
 }
 
@@ -237,6 +272,11 @@ bool FxInstance::build_gl() {
   const GlFormat f = gl_format(pfx::fx::TextureFormat::kRGBA8);
   for (GlTexture& b : back_buffer_)
     if (!create_texture_2d(compiled_width_, compiled_height_, f.internal, f.srgb_internal, b, error)) return log(PFX_LOG_ERROR, error), false;
+  if (needs_depth_) {
+    if (!create_texture_2d(compiled_width_, compiled_height_, GL_R32F, 0, fx_depth_, error)) return log(PFX_LOG_ERROR, error), false;
+    const float far = 1.0f;
+    glClearTexImage(fx_depth_.texture, 0, GL_RED, GL_FLOAT, &far);
+  }
   textures_.resize(model.textures.size());
   for (std::size_t i = 0; i < model.textures.size(); ++i) {
     const pfx::fx::TextureInfo& info = model.textures[i];
@@ -294,9 +334,10 @@ pfx_status FxInstance::run_pass(const pfx_pass_context* context) {
 }
 
 void FxInstance::run_encode(const pfx_pass_context& context) {
-  depth_texture_ = context.input_count > 1 ? context.inputs[1].texture : 0;
-  uniforms_.update(compiled_->model, entry_.params, context.params, *context.frame, depth_texture_ != 0);
+  bool depth = context.input_count > 1;
+  uniforms_.update(compiled_->model, entry_.params, context.params, *context.frame, depth);
   SavedTargets saved;
+  if (depth) convert_depth(context);
   current_ = 0;
   glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, back_buffer_[0].texture, 0);
   for (int i = 1; i < pfx::fx::kMaxRenderTargets; ++i) glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), 0, 0);
@@ -304,6 +345,20 @@ void FxInstance::run_encode(const pfx_pass_context& context) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glViewport(0, 0, compiled_width_, compiled_height_);
   glUseProgram(encode_program_);  // unit 0: the frame's colour, bound by the host
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void FxInstance::convert_depth(const pfx_pass_context& context) {
+  const pfx_frame& frame = *context.frame;
+  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, fx_depth_.texture, 0);
+  for (int i = 1; i < pfx::fx::kMaxRenderTargets; ++i) glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), 0, 0);
+  glNamedFramebufferDrawBuffer(framebuffer_, GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, compiled_width_, compiled_height_);
+  glProgramUniform1i(depth_program_, 0, static_cast<GLint>(frame.depth_encoding));
+  glProgramUniform1f(depth_program_, 1, frame.camera.near_plane);
+  glProgramUniform1f(depth_program_, 2, frame.camera.far_plane);
+  glUseProgram(depth_program_);  // unit 1: the frame's depth, bound by the host
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -317,7 +372,7 @@ void FxInstance::run_decode(const pfx_pass_context& context) {
 GLuint FxInstance::texture_for_sampler(const pfx::fx::SamplerInfo& sampler) const {
   if (sampler.texture < 0) return 0;
   const pfx::fx::TextureInfo& info = compiled_->model.textures[static_cast<std::size_t>(sampler.texture)];
-  if (info.semantic == pfx::fx::TextureSemantic::kDepth) return depth_texture_;
+  if (info.semantic == pfx::fx::TextureSemantic::kDepth) return fx_depth_.texture;
   const GlTexture& t = info.semantic == pfx::fx::TextureSemantic::kColor ? back_buffer_[current_] : textures_[static_cast<std::size_t>(sampler.texture)];
   return sampler.srgb && t.srgb_view ? t.srgb_view : t.texture;
 }

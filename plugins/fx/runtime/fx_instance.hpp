@@ -41,6 +41,7 @@ class FxInstance {
   void release_gl();
   void log(pfx_log_level level, const std::string& message) const;
   void run_encode(const pfx_pass_context& context);
+  void convert_depth(const pfx_pass_context& context);
   void run_decode(const pfx_pass_context& context);
   void run_fx_pass(int index, const pfx_pass_context& context);
   void bind_resources(const pfx::fx::GeneratedPass& generated, const PassProgram& program, int target_height);
@@ -61,13 +62,19 @@ class FxInstance {
 
   // GL side.
   bool gl_current_ = false;  // built for compiled_
-  GLuint encode_program_ = 0, decode_program_ = 0, framebuffer_ = 0;
+  GLuint encode_program_ = 0, decode_program_ = 0, depth_program_ = 0, framebuffer_ = 0;
   std::vector<PassProgram> programs_;
   std::vector<GlTexture> textures_;  // per model texture (unused for the back buffer and depth)
   std::vector<GLuint> samplers_;
   GlTexture back_buffer_[2];
   int current_ = 0;  // which back buffer holds the picture
-  GLuint depth_texture_ = 0;
+  // FX's depth buffer: the frame's depth as standard window depth of a projection with its far
+  // plane 1000 near planes away (what ReShade.fxh's GetLinearizedDepth reads with the settings
+  // compile_options defines), made by depth_program_ from any pfx depth encoding. Without depth
+  // in the frame it is one texel at the far plane.
+  GlTexture fx_depth_;
+  bool depth_in_frame_ = false;
+  bool told_no_depth_ = false;
 };
 
 }  // namespace pfx_fx

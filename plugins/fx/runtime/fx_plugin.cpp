@@ -28,9 +28,52 @@ const pfx_effect_desc* get_effect(uint32_t index) {
   }
 }
 
-constexpr pfx_effect_factory kFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
+const FxEffectEntry* find_entry(const char* effect_id) {
+  if (!effect_id) return nullptr;
+  for (const auto& entry : catalog().effects)
+    if (entry->id == effect_id) return entry.get();
+  return nullptr;
+}
 
-constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.fx").name("pfx ReShade FX").version("0.1.0").effect_factory(&kFactory);
+const char* effect_file(const char* effect_id) {
+  try {
+    const FxEffectEntry* entry = find_entry(effect_id);
+    return entry ? entry->file.c_str() : nullptr;
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+const char* effect_source_name(const char* effect_id) {
+  try {
+    const FxEffectEntry* entry = find_entry(effect_id);
+    return entry ? entry->technique.c_str() : nullptr;
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+uint32_t error_count() {
+  try {
+    return static_cast<uint32_t>(catalog().errors.size());
+  } catch (...) {
+    return 0;
+  }
+}
+
+const char* error(uint32_t index) {
+  try {
+    return index < catalog().errors.size() ? catalog().errors[index].message.c_str() : nullptr;
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+constexpr pfx_effect_factory kFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
+constexpr pfx_source_factory kSources = {sizeof(pfx_source_factory), effect_file, effect_source_name, error_count, error};
+
+constexpr auto kPlugin =
+    pfx::plugin::Plugin("org.pfx.fx").name("pfx ReShade FX").version("0.1.0").effect_factory(&kFactory).sources(&kSources);
 
 }  // namespace
 }  // namespace pfx_fx

@@ -41,9 +41,18 @@ std::vector<std::string> candidate_folders(const std::string& effect_file) {
 
 std::string find_texture_file(const std::string& name, const std::string& effect_file) {
   std::error_code ec;
-  for (const std::string& folder : candidate_folders(effect_file)) {
+  std::vector<std::string> folders = candidate_folders(effect_file);
+  for (const std::string& folder : folders) {
     fs::path candidate = fs::path(folder) / name;
     if (fs::is_regular_file(candidate, ec)) return candidate.string();
+  }
+  // Collections keep their textures in sub-folders (Textures/SweetFX/AreaTex.png), as ReShade's
+  // default texture search path (Textures\**) allows.
+  fs::path wanted = fs::path(name).filename();
+  for (const std::string& folder : folders) {
+    if (fs::path(folder).filename() != "Textures" || !fs::is_directory(folder, ec)) continue;
+    for (fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().filename() == wanted && it->is_regular_file(ec)) return it->path().string();
   }
   return "";
 }

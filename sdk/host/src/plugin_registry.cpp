@@ -229,6 +229,22 @@ void take_references(const pfx_entry& entry, Plugin* plugin, HostLayoutDescripto
     plugin->references = &descriptors->references;
 }
 
+// Where the plugin's effects came from and which files gave none ("pfx.sources/1"), copied so
+// they outlive a reload of the plugin.
+void take_sources(const pfx_entry& entry, Plugin* plugin) {
+  auto sources = static_cast<const pfx_source_factory*>(entry.get_factory(PFX_SOURCES_FACTORY_ID));
+  if (!sources || sources->struct_size < PFX_SOURCE_FACTORY_MIN_SIZE) return;
+  if (sources->effect_file && sources->effect_source_name)
+    for (const pfx_effect_desc* effect : plugin->effects) {
+      const char* file = sources->effect_file(effect->id);
+      const char* name = sources->effect_source_name(effect->id);
+      if (file) plugin->effect_sources[effect->id] = {file, name ? name : ""};
+    }
+  if (sources->error_count && sources->error)
+    for (uint32_t i = 0, n = sources->error_count(); i < n; ++i)
+      if (const char* message = sources->error(i)) plugin->source_errors.push_back(message);
+}
+
 }  // namespace
 
 bool PluginRegistry::open_plugin(const std::string& path, const std::string& file, const Plugin* replacing, Opened* out,
@@ -275,6 +291,7 @@ bool PluginRegistry::open_plugin(const std::string& path, const std::string& fil
     return fail(reason);
   }
   take_references(*entry, plugin.get(), descriptors.get());
+  take_sources(*entry, plugin.get());
   plugin->descriptors = std::move(descriptors);
 
   record->library = library;
@@ -353,7 +370,13 @@ std::vector<std::string> PluginRegistry::load_directory(const std::string& direc
   std::sort(files.begin(), files.end());
   for (const auto& file : files) {
     std::string error;
-    if (!load(file, &error)) errors.push_back(error);
+    if (!load(file, &error)) {
+      errors.push_back(error);
+      continue;
+    }
+    // A plugin that makes its effects from files reports the files it could not use with them.
+    const auto& messages = plugins_.back()->source_errors;
+    errors.insert(errors.end(), messages.begin(), messages.end());
   }
   return errors;
 }

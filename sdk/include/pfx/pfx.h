@@ -9,5 +9,6 @@
 #include "pfx/depth.h"
 #include "pfx/reference.h"
 #include "pfx/services.h"
+#include "pfx/sources.h"
 
 #endif /* PFX_PFX_H */

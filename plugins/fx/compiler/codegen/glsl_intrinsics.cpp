@@ -132,7 +132,12 @@ std::string GlslWriter::texture_call(const Expr& e, const std::string& name) {
   helpers.insert("flip");
   // Coordinates in [0, 1] with v from the top -> GL's; texel offsets likewise.
   auto uv = [&](const std::string& c) { return d == 1 ? c : "pfx_flip(" + vec + "(" + c + "))"; };
-  auto offset = [&](const std::string& o) { return d == 1 ? "int(" + o + ")" : "pfx_flip_offset(" + ivec + "(" + o + "))"; };
+  // Offsets must stay constant expressions for GLSL: flipped inline, not through a function.
+  auto offset = [&](const std::string& o) {
+    if (d == 1) return "int(" + o + ")";
+    std::string v = ivec + "(" + o + ")";
+    return ivec + "(" + v + ".x, -(" + v + ".y)" + (d == 3 ? ", " + v + ".z" : std::string()) + ")";
+  };
   auto texel = [&](const std::string& c, const std::string& height) {
     return d == 1 ? "int(" + c + ")" : "pfx_flip_texel(" + ivec + "(" + c + "), " + height + ")";
   };

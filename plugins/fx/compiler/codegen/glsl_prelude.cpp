@@ -39,8 +39,6 @@ std::string prelude(const std::set<std::string>& helpers) {
            "vec3 pfx_flip(vec3 c) { return vec3(c.x, 1.0 - c.y, c.z); }\n"
            "ivec2 pfx_flip_texel(ivec2 c, int h) { return ivec2(c.x, h - 1 - c.y); }\n"
            "ivec3 pfx_flip_texel(ivec3 c, int h) { return ivec3(c.x, h - 1 - c.y, c.z); }\n"
-           "ivec2 pfx_flip_offset(ivec2 o) { return ivec2(o.x, -o.y); }\n"
-           "ivec3 pfx_flip_offset(ivec3 o) { return ivec3(o.x, -o.y, o.z); }\n"
            "vec2 pfx_flip_offset(vec2 o) { return vec2(o.x, -o.y); }\n"
            "vec3 pfx_flip_offset(vec3 o) { return vec3(o.x, -o.y, o.z); }\n";
   }

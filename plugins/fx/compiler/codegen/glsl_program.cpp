@@ -54,7 +54,17 @@ std::vector<Slot> slots(const std::string& access, const Type& type, const std::
     }
     return out;
   }
-  return {{access, type, normalized(semantic), where}};
+  std::string name = normalized(semantic);
+  if (type.is_array() && type.array.size() == 1) {
+    // An array takes as many semantic indices as it has elements: TEXCOORD1, TEXCOORD2, ...
+    std::size_t digits = name.find_last_not_of("0123456789") + 1;
+    int first = digits < name.size() ? std::stoi(name.substr(digits)) : 0;
+    std::vector<Slot> out;
+    for (int k = 0; k < type.array[0]; ++k)
+      out.push_back({access + "[" + std::to_string(k) + "]", type.element(), name.substr(0, digits) + std::to_string(first + k), where});
+    return out;
+  }
+  return {{access, type, name, where}};
 }
 
 // Every slot an entry point reads (inputs) or writes (outputs).
@@ -330,7 +340,9 @@ class ProgramBuilder {
   }
 
   std::string entry_point(GlslWriter& w, Stage which, const FunctionDecl& f, const std::set<const VariableDecl*>& globals) {
-    std::string out = "#line 1 0\nvoid main() {\n";
+    std::string out;
+    w.line_directive(f.location, out);
+    out += "void main() {\n";
     if (which == Stage::kVertex)
       for (const auto& [semantic, base] : varyings_) out += "  pfx_v_" + semantic + " = " + interface_type(base) + "(0);\n";
     // Statics start as HLSL's do: their initialiser, or zero.

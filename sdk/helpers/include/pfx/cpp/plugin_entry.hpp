@@ -56,8 +56,10 @@ pfx_status without_exceptions(Work&& work) {
 // get_factory for a plugin offering these factories (nullptr for a kind it does not offer):
 // the factory for the id, or nullptr for an id it does not know.
 inline const void* factory_for(const char* factory_id, const pfx_effect_factory* effects,
-                               const pfx_reference_factory* references, const pfx_importer_factory* importers = nullptr) {
+                               const pfx_reference_factory* references, const pfx_importer_factory* importers = nullptr,
+                               const pfx_source_factory* sources = nullptr) {
   if (!factory_id) return nullptr;
+  if (sources && std::strcmp(factory_id, PFX_SOURCES_FACTORY_ID) == 0) return sources;
   if (effects && std::strcmp(factory_id, PFX_EFFECTS_FACTORY_ID) == 0) return effects;
   if (references && std::strcmp(factory_id, PFX_REFERENCES_FACTORY_ID) == 0) return references;
   if (importers && std::strcmp(factory_id, PFX_IMPORTERS_FACTORY_ID) == 0) return importers;
@@ -114,6 +116,12 @@ class Plugin {
     p.own_effect_factory_ = true;
     return p;
   }
+  // Where effects made at run time came from ("pfx.sources/1", pfx/sources.h).
+  constexpr Plugin sources(const pfx_source_factory* factory) const {
+    Plugin p = *this;
+    p.sources_ = factory;
+    return p;
+  }
   constexpr Plugin references(const pfx_reference_factory* factory) const {
     Plugin p = *this;
     p.references_ = factory;
@@ -149,6 +157,7 @@ class Plugin {
   uint32_t effect_count_ = 0;
   const pfx_effect_factory* effect_factory_ = nullptr;
   const pfx_reference_factory* references_ = nullptr;
+  const pfx_source_factory* sources_ = nullptr;
   const pfx_importer_desc* const* importers_ = nullptr;
   uint32_t importer_count_ = 0;
   bool own_effect_factory_ = false;
@@ -184,7 +193,7 @@ struct Entry {
     const pfx_effect_factory* effects = P.own_effect_factory_ ? P.effect_factory_
                                         : P.effect_count_     ? &kEffects
                                                               : nullptr;
-    return factory_for(factory_id, effects, P.references_, P.importer_count_ ? &kImporters : nullptr);
+    return factory_for(factory_id, effects, P.references_, P.importer_count_ ? &kImporters : nullptr, P.sources_);
   }
 
   static constexpr pfx_entry kEntry = {sizeof(pfx_entry), PFX_ABI_MAJOR, PFX_ABI_MINOR, P.id_,      P.name_,

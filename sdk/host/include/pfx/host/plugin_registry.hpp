@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +47,14 @@ struct Plugin {
   std::vector<const pfx_importer_desc*> importers;
   // The plugin's CPU references ("pfx.references/1"), or null when it ships none.
   const pfx_reference_factory* references = nullptr;
+  // For effects made from files at run time ("pfx.sources/1", ABI 1.5): the file and the name in
+  // it of each (by effect id), and the files that gave no effect, each with its compiler's message
+  // ("FILE:LINE:COLUMN: error: ..."). Empty for other plugins.
+  struct EffectSource {
+    std::string file, name;
+  };
+  std::map<std::string, EffectSource> effect_sources;
+  std::vector<std::string> source_errors;
   // The services this plugin was given (host_data points back at the registry's record).
   const pfx_host* host = nullptr;
   // What effects, importers and references point into: this host's layout of the plugin's own

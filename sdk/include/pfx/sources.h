@@ -1,0 +1,33 @@
+/* pfx C ABI v1 — effects made from source files (since 1.5). A plugin that makes its effects at run
+ * time from files it finds (the FX plugin: one effect per technique of each ReShade FX file) says
+ * which file and which part of it each effect came from, and which files it could not use and why,
+ * so hosts can list them. Optional: get_factory(PFX_SOURCES_FACTORY_ID) returns NULL when the plugin
+ * has none. Any thread, no GL; the strings live until deinit. */
+#ifndef PFX_SOURCES_H
+#define PFX_SOURCES_H
+
+#include "pfx/core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define PFX_SOURCES_FACTORY_ID "pfx.sources/1"
+
+typedef struct pfx_source_factory {
+  uint32_t struct_size;
+  /* The file effect `effect_id` was made from, or NULL for an effect of another kind. */
+  const char* (*effect_file)(const char* effect_id);
+  /* Its name in that file (an FX technique's name), or NULL. */
+  const char* (*effect_source_name)(const char* effect_id);
+  /* The files that gave no effect, each as a compiler reports it: "FILE:LINE:COLUMN: error: ...",
+   * one problem per line. */
+  uint32_t (*error_count)(void);
+  const char* (*error)(uint32_t index);
+} pfx_source_factory;
+#define PFX_SOURCE_FACTORY_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_source_factory, error)
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* PFX_SOURCES_H */
