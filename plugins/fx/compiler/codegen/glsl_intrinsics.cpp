@@ -16,10 +16,10 @@ const std::map<std::string, std::string>& renamed() {
       {"ceil", "ceil"},       {"clamp", "clamp"},     {"cos", "cos"},           {"cosh", "cosh"},
       {"cross", "cross"},     {"degrees", "degrees"}, {"determinant", "determinant"}, {"distance", "distance"},
       {"dot", "dot"},         {"exp", "exp"},         {"exp2", "exp2"},         {"floor", "floor"},
-      {"fwidth", "fwidth"},   {"isinf", "isinf"},     {"isnan", "isnan"},       {"ldexp", "ldexp"},
+      {"fwidth", "fwidth"},   {"isinf", "isinf"},     {"isnan", "isnan"},
       {"length", "length"},   {"log", "log"},         {"log2", "log2"},         {"max", "max"},
       {"min", "min"},         {"normalize", "normalize"}, {"pow", "pow"},       {"radians", "radians"},
-      {"reflect", "reflect"}, {"refract", "refract"}, {"sin", "sin"},           {"sinh", "sinh"},
+      {"reflect", "reflect"}, {"sin", "sin"},           {"sinh", "sinh"},
       {"smoothstep", "smoothstep"}, {"sqrt", "sqrt"}, {"step", "step"},         {"tan", "tan"},
       {"tanh", "tanh"},       {"transpose", "transpose"}, {"trunc", "trunc"},   {"frac", "fract"},
       {"lerp", "mix"},        {"rsqrt", "inversesqrt"}, {"atan2", "atan"},      {"round", "roundEven"},
@@ -66,6 +66,10 @@ std::string GlslWriter::intrinsic(const Expr& e) {
     std::string f = name == "ddy" ? "dFdy" : name == "ddy_coarse" ? "dFdyCoarse" : "dFdyFine";
     return "(-" + f + "(" + a[0] + "))";
   }
+  // HLSL's ldexp takes a float exponent; GLSL's an int one.
+  if (name == "ldexp") return "(" + a[0] + " * exp2(" + a[1] + "))";
+  // refract's index of refraction is a scalar, whatever width the analysis gave it.
+  if (name == "refract") return "refract(" + a[0] + ", " + a[1] + ", " + cast(a[2], type_of(2), Type::scalar(BaseType::kFloat)) + ")";
   if (name == "saturate") return "clamp(" + a[0] + ", 0.0, 1.0)";
   if (name == "rcp") return "(" + cast("1.0", Type::scalar(BaseType::kFloat), e.resolved) + " / " + a[0] + ")";
   if (name == "log10") return "(log2(" + a[0] + ") * 0.301029995663981)";

@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""Runs one FX conformance file through pfx-render and judges the picture it makes.
+
+usage: run_conformance.py PFX_RENDER FILE.fx OUT_DIR
+
+The file says in its header comments how it is judged; every expected value comes from the file
+(numbers worked out by hand) or from numpy here, never from the compiler under test:
+
+  // technique: NAME          the technique to run (default: the file's name)
+  // size: WxH                the input picture's size (default 64x4)
+  // input: gradient|nan      the input: an 8-bit gradient PNG (default), or an EXR holding NaN,
+                              +Inf, -Inf, 70000, -1 and ordinary values
+  // expect: checks           every pixel green: the shader checked its own results (default).
+                              Check i covers the pixel columns [i*CELL, (i+1)*CELL); a red one
+                              names the check that failed.
+  // expect: input            the output equals the input, byte for byte
+  // expect: invert           the output is 255 - the input in R, G and B
+  // expect: finite           the output (EXR) is finite everywhere and in [0, 1]
+  // cell: N                  columns per check (default 4)
+  // frames: N                render N frames of a sequence (the last is judged)
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import OpenImageIO as oiio
+
+
+def header(path):
+    settings = {"size": "64x4", "input": "gradient", "expect": "checks", "cell": "4", "frames": "1"}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"\s*//\s*(technique|size|input|expect|cell|frames):\s*(\S+)", line)
+            if m:
+                settings[m.group(1)] = m.group(2)
+    settings.setdefault("technique", os.path.splitext(os.path.basename(path))[0])
+    return settings
+
+
+def write(path, pixels, fmt):
+    spec = oiio.ImageSpec(pixels.shape[1], pixels.shape[0], pixels.shape[2], fmt)
+    out = oiio.ImageOutput.create(path)
+    out.open(path, spec)
+    out.write_image(pixels)
+    out.close()
+
+
+def read(path, fmt):
+    buf = oiio.ImageBuf(path)
+    return buf.get_pixels(fmt)
+
+
+def make_input(settings, folder):
+    w, h = (int(v) for v in settings["size"].split("x"))
+    if settings["input"] == "nan":
+        values = np.array([np.nan, np.inf, -np.inf, 70000.0, -1.0, 0.5, 0.0, 1.0], dtype=np.float32)
+        pixels = np.zeros((h, w, 4), dtype=np.float32)
+        for y in range(h):
+            for x in range(w):
+                pixels[y, x, :3] = values[(x + y) % len(values)]
+                pixels[y, x, 3] = 1.0
+        path = os.path.join(folder, "input.exr")
+        write(path, pixels, oiio.FLOAT)
+        return path, pixels
+    y, x = np.mgrid[0:h, 0:w]
+    pixels = np.zeros((h, w, 4), dtype=np.uint8)
+    pixels[..., 0] = (x * 37 + y * 11) % 256
+    pixels[..., 1] = (x * 5 + y * 67) % 256
+    pixels[..., 2] = (x * 3 + 128) % 256
+    pixels[..., 3] = 255
+    path = os.path.join(folder, "input.png")
+    write(path, pixels, oiio.UINT8)
+    return path, pixels
+
+
+def main():
+    render, fx_file, folder = sys.argv[1:4]
+    settings = header(fx_file)
+    os.makedirs(folder, exist_ok=True)
+    input_path, input_pixels = make_input(settings, folder)
+    exr = settings["expect"] == "finite"
+    out_path = os.path.join(folder, "output.exr" if exr else "output.png")
+    env = dict(os.environ, PFX_FX_PATH=fx_file)
+    technique = "fx_" + re.sub(r"[^a-z0-9]+", "_", settings["technique"].lower()).strip("_")
+    command = [render, "--input", input_path, "--chain", technique, "--out", out_path]
+    frames = int(settings["frames"])
+    if frames > 1:
+        # A sequence of the same picture: the effect sees frame indices 0 .. N-1.
+        pattern = os.path.join(folder, "seq.%04d" + os.path.splitext(input_path)[1])
+        for i in range(frames):
+            shutil.copyfile(input_path, pattern % i)
+        out_pattern = os.path.join(folder, "out.%04d" + os.path.splitext(out_path)[1])
+        command = [render, "--input", pattern, "--frames", "0-%d" % (frames - 1), "--overwrite", "--chain", technique, "--out", out_pattern]
+        out_path = out_pattern % (frames - 1)
+    result = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
+    if result.returncode != 0:
+        print(" ".join(command))
+        print(result.stdout + result.stderr)
+        print("FAIL: pfx-render exited with %d" % result.returncode)
+        return 1
+    if settings["expect"] == "finite":
+        out = read(out_path, oiio.FLOAT)[..., :3]
+        bad = ~np.isfinite(out) | (out < 0) | (out > 1)
+        if bad.any():
+            print("FAIL: %d values not finite or outside [0, 1], e.g. %s" % (bad.sum(), out[bad][:8]))
+            return 1
+        print("ok: every value finite and in [0, 1]")
+        return 0
+    out = read(out_path, oiio.UINT8).astype(int)
+    if settings["expect"] == "input" or settings["expect"] == "invert":
+        want = input_pixels[..., :3].astype(int)
+        if settings["expect"] == "invert":
+            want = 255 - want
+        diff = np.abs(out[..., :3] - want)
+        if diff.max() > 0:
+            ys, xs = np.nonzero(diff.max(axis=2))
+            print("FAIL: %d pixels differ, up to %d codes; first at (%d, %d): %s, expected %s"
+                  % (len(xs), diff.max(), xs[0], ys[0], out[ys[0], xs[0], :3], want[ys[0], xs[0]]))
+            return 1
+        print("ok: %s, byte for byte" % settings["expect"])
+        return 0
+    cell = int(settings["cell"])
+    green = (out[..., 1] > 200) & (out[..., 0] < 50)
+    failed = sorted(set(int(x) // cell for x in np.nonzero(~green)[1]))
+    checks = out.shape[1] // cell
+    if failed:
+        print("FAIL: checks %s of %d (columns of %d pixels; see the comments in %s)" % (failed, checks, cell, fx_file))
+        return 1
+    print("ok: %d checks" % checks)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
