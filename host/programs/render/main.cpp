@@ -98,8 +98,9 @@ bool render_sequence_frame(const RenderOptions& options, const Look& look, const
                            std::string* error) {
   RenderInput input;
   RenderResult result;
-  if (!input.load_image(options, files.input, files.depth, look.camera, display, error) ||
-      !render_frame(chain, input, display, input_transfer(options), &result, error) ||
+  if (!input.load_image(options, files.input, files.depth, look.camera, display, error)) return false;
+  input.set_sequence_frame(files.frame);
+  if (!render_frame(chain, input, display, input_transfer(options), &result, error) ||
       !write_outputs(files.outputs, options.float_exr, look.tone, result, error))
     return false;
   *report = report_json(renderer, input.frame(), chain.report(), result.image, files.outputs,

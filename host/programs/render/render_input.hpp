@@ -39,6 +39,12 @@ class RenderInput {
                   const PresetCamera& camera, DisplayInput* display, std::string* error);
 
   const pfx_frame& frame() const { return frame_; }
+  // Frame `number` of a sequence: its index, and its time at 24 frames a second (effects that
+  // animate, ReShade FX's timer and framecount, see it advance).
+  void set_sequence_frame(long long number) {
+    frame_.frame_index = static_cast<uint64_t>(number < 0 ? 0 : number);
+    frame_.time_seconds = static_cast<double>(number) / 24.0;
+  }
   const host::FrameTextures& textures() const { return textures_; }
   // Which channels of the input (and depth) file became the frame, in words.
   const InputReport& files_read() const { return files_read_; }

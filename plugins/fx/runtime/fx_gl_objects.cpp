@@ -87,20 +87,21 @@ GLenum gl_address(pfx::fx::AddressMode mode) {
 
 }  // namespace
 
-GLuint create_sampler(const pfx::fx::SamplerInfo& info, int texture_levels) {
+GLuint create_sampler(const pfx::fx::SamplerInfo& info, int texture_levels, bool integer_texture) {
   using pfx::fx::FilterMode;
   GLuint sampler = 0;
   glCreateSamplers(1, &sampler);
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, static_cast<GLint>(gl_address(info.address[0])));
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_address(info.address[1])));
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_R, static_cast<GLint>(gl_address(info.address[2])));
-  bool min_linear = info.min_filter == FilterMode::kLinear, mip_linear = info.mip_filter == FilterMode::kLinear;
+  bool min_linear = !integer_texture && info.min_filter == FilterMode::kLinear;
+  bool mip_linear = !integer_texture && info.mip_filter == FilterMode::kLinear;
   // A texture of one level samples it whatever the mip filter says, as in Direct3D.
   GLenum min = texture_levels <= 1 ? (min_linear ? GL_LINEAR : GL_NEAREST)
                : min_linear        ? (mip_linear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST)
                                    : (mip_linear ? GL_NEAREST_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST);
   glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min));
-  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, info.mag_filter == FilterMode::kLinear ? GL_LINEAR : GL_NEAREST);
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, !integer_texture && info.mag_filter == FilterMode::kLinear ? GL_LINEAR : GL_NEAREST);
   glSamplerParameterf(sampler, GL_TEXTURE_MIN_LOD, info.min_lod);
   glSamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, info.max_lod);
   glSamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, info.lod_bias);

@@ -32,8 +32,9 @@ bool create_texture(const pfx::fx::TextureInfo& info, GlTexture& out, std::strin
 bool create_texture_2d(int width, int height, GLenum internal, GLenum srgb_internal, GlTexture& out, std::string& error);
 void delete_texture(GlTexture& texture);
 
-// A sampler object with the FX sampler's states.
-GLuint create_sampler(const pfx::fx::SamplerInfo& info, int texture_levels);
+// A sampler object with the FX sampler's states. Integer textures are read texel by texel: GL
+// would call them incomplete under a linear filter, and every read would give 0.
+GLuint create_sampler(const pfx::fx::SamplerInfo& info, int texture_levels, bool integer_texture);
 
 GLenum gl_blend_op(pfx::fx::BlendOp op);
 GLenum gl_blend_factor(pfx::fx::BlendFactor factor);

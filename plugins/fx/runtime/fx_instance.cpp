@@ -286,8 +286,10 @@ bool FxInstance::build_gl() {
       return log(PFX_LOG_ERROR, "texture '" + info.name + "': " + error), false;
   }
   for (const pfx::fx::SamplerInfo& s : model.samplers) {
-    int levels = s.texture >= 0 && textures_[static_cast<std::size_t>(s.texture)].texture ? textures_[static_cast<std::size_t>(s.texture)].levels : 1;
-    samplers_.push_back(create_sampler(s, levels));
+    std::size_t t = static_cast<std::size_t>(std::max(s.texture, 0));
+    int levels = s.texture >= 0 && textures_[t].texture ? textures_[t].levels : 1;
+    bool integer = s.texture >= 0 && pfx::fx::integer_class(model.textures[t].format) != 0;
+    samplers_.push_back(create_sampler(s, levels, integer));
   }
   const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
   for (std::size_t i = 0; i < generated.size(); ++i) {

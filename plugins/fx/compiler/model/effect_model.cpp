@@ -324,6 +324,10 @@ class ModelBuilder {
         if (info.render_targets[i] < 0) diagnostics_.error(p.location, "RenderTarget" + std::to_string(i) + " is missing between targets");
       for (int i = 0; i < info.render_target_count; ++i) {
         int t = info.render_targets[i];
+        const TextureInfo* first = info.render_targets[0] >= 0 ? &m_.textures[static_cast<std::size_t>(info.render_targets[0])] : nullptr;
+        if (t >= 0 && first && (m_.textures[static_cast<std::size_t>(t)].width != first->width || m_.textures[static_cast<std::size_t>(t)].height != first->height))
+          diagnostics_.error(p.location, "the render targets of one pass must have one size ('" + m_.textures[static_cast<std::size_t>(t)].name +
+                                             "' differs from '" + first->name + "')");
         if (t >= 0 && m_.textures[static_cast<std::size_t>(t)].semantic == TextureSemantic::kDepth)
           diagnostics_.error(p.location, "a pass cannot render to the depth buffer");
         if (t >= 0 && m_.textures[static_cast<std::size_t>(t)].semantic == TextureSemantic::kColor) info.render_target_count = 0;
