@@ -1,14 +1,15 @@
-// libFuzzer target for the FX compiler's front end (plugins/fx/compiler): any bytes as an effect
-// file, with one header it may include. Whatever the input, the front end returns (no crash, no
-// hang: every recursion is bounded by plugins/fx/compiler/limits.hpp), every error has a
-// location in a known file, and an accepted effect's whole tree can be walked.
+// libFuzzer target for the FX compiler (plugins/fx/compiler): any bytes as an effect file, with one
+// header it may include. Whatever the input, the compiler returns (no crash, no hang: every
+// recursion is bounded by plugins/fx/compiler/limits.hpp), every error has a location in a known
+// file, an accepted effect's whole tree can be walked, and its model and the GLSL of every pass
+// are generated.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
 #include "ast/ast_printer.hpp"
-#include "front_end.hpp"
+#include "effect_compiler.hpp"
 
 namespace {
 
@@ -29,11 +30,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   };
   pfx::fx::FrontEndOptions options;
   options.preprocessor.include_folders = {"inc"};
-  auto result = pfx::fx::compile_front_end("main.fx", options, reader);
-  for (const pfx::fx::Diagnostic& d : result->diagnostics.all()) {
-    if (d.location.file >= result->names.size()) std::abort();  // a location must name a known file
-    if (result->diagnostics.format(d).empty()) std::abort();
+  auto compiled = pfx::fx::compile_effect("main.fx", options, true, reader);
+  const pfx::fx::FrontEndResult& result = *compiled->front;
+  for (const pfx::fx::Diagnostic& d : result.diagnostics.all()) {
+    if (d.location.file >= result.names.size()) std::abort();  // a location must name a known file
+    if (result.diagnostics.format(d).empty()) std::abort();
   }
-  if (result->ok()) (void)pfx::fx::print_unit(result->unit);  // the whole tree is well-formed
+  if (result.ok()) (void)pfx::fx::print_unit(result.unit);  // the whole tree is well-formed
+  // Every pass that generated has its program's stages.
+  for (const auto& technique : compiled->passes)
+    for (const auto& pass : technique)
+      if (pass.compute.empty() && (pass.vertex.empty() != pass.fragment.empty())) std::abort();
   return 0;
 }

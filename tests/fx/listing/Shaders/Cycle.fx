@@ -1,0 +1,3 @@
+// An #include cycle: refused with a message, not a hang.
+#include "Cycle.fx"
+technique Cycle { pass { } }

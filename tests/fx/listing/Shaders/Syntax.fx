@@ -1,0 +1,4 @@
+// A syntax error on line 3.
+technique Syntax {
+  pass { VertexShader = ; }
+}

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""The FX plugin over a folder of good and broken effects (tests/fx/listing).
+
+usage: test_fx_listing.py PFX_RENDER LISTING_DIR OUT_DIR
+
+Checks that pfx-render --list --json lists every technique of the good file with its file and
+technique name, label and parameters; that each broken file (a type error, a syntax error, an
+#include cycle) is in load_errors with its file, line and column; and that the good effect renders,
+with its image texture found in the collection's Textures folder and the right way up.
+"""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import OpenImageIO as oiio
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+def main():
+    render, listing, out = sys.argv[1:4]
+    os.makedirs(out, exist_ok=True)
+    env = dict(os.environ, PFX_FX_PATH=os.path.join(listing, "Shaders"))
+    listed = subprocess.run([render, "--list", "--json"], env=env, capture_output=True, text=True, timeout=300)
+    check(listed.returncode == 0, "--list exited with %d: %s" % (listed.returncode, listed.stderr))
+    data = json.loads(listed.stdout)
+    effects = {e["id"]: e for p in data["plugins"] for e in p["effects"]}
+    for id_, technique in (("fx_goodtint", "GoodTint"), ("fx_goodsecond", "GoodSecond")):
+        e = effects.get(id_)
+        check(e is not None, "%s is not listed" % id_)
+        if e:
+            check(e.get("fx_file", "").endswith("Shaders/Good.fx"), "%s: fx_file is %r" % (id_, e.get("fx_file")))
+            check(e.get("fx_technique") == technique, "%s: fx_technique is %r" % (id_, e.get("fx_technique")))
+    tint = effects.get("fx_goodtint", {})
+    check(tint.get("label") == "Good tint", "the label is %r, not the technique's ui_label" % tint.get("label"))
+    params = {p["id"]: p for p in tint.get("parameters", [])}
+    check("amount" in params and params["amount"].get("label") == "Amount", "parameter amount missing: %s" % list(params))
+    errors = data["load_errors"]
+    for where in ("sub/Broken.fx:5:10: error:", "Syntax.fx:3:25: error:", "Cycle.fx:2:2: error: #include cycle"):
+        check(any(where in e for e in errors), "load_errors lacks %r: %s" % (where, errors))
+    check(not any("Good.fx" in e for e in errors), "Good.fx is in load_errors: %s" % errors)
+
+    # 4x4 input; the stamp's top-left texel is red, so the top-left pixel becomes half red.
+    pixels = np.full((4, 4, 4), 255, dtype=np.uint8)
+    pixels[..., :3] = 100
+    source = os.path.join(out, "input.png")
+    spec = oiio.ImageSpec(4, 4, 4, oiio.UINT8)
+    image = oiio.ImageOutput.create(source)
+    image.open(source, spec)
+    image.write_image(pixels)
+    image.close()
+    for amount, expected in (("0.5", [178, 50, 50]), ("0", [100, 100, 100])):
+        target = os.path.join(out, "tint_%s.png" % amount)
+        run = subprocess.run([render, "--input", source, "--chain", "fx_goodtint", "--set", "fx_goodtint.amount=" + amount,
+                              "--out", target], env=env, capture_output=True, text=True, timeout=300)
+        check(run.returncode == 0, "rendering fx_goodtint failed: %s" % run.stderr)
+        if run.returncode == 0:
+            got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[0, 0, :3].astype(int)
+            check(np.abs(got - np.array(expected)).max() <= 1, "amount %s: top-left pixel %s, expected %s" % (amount, got, expected))
+    for f in failures:
+        print("FAIL:", f)
+    if not failures:
+        print("ok: listing, load errors, rendering with an image texture")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
