@@ -6,7 +6,9 @@ usage: test_fx_listing.py PFX_RENDER LISTING_DIR OUT_DIR
 Checks that pfx-render --list --json lists every technique of the good file with its file and
 technique name, label and parameters; that each broken file (a type error, a syntax error, an
 #include cycle) is in load_errors with its file, line and column; and that the good effect renders,
-with its image texture found in the collection's Textures folder and the right way up.
+with its image texture found in the collection's Textures folder and the right way up; and that
+a ReShade preset (.ini) drives pfx-render: its enabled techniques in TechniqueSorting's order with
+its values, and what it names that is not there in one warning.
 """
 import json
 import os
@@ -64,10 +66,30 @@ def main():
         if run.returncode == 0:
             got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[0, 0, :3].astype(int)
             check(np.abs(got - np.array(expected)).max() <= 1, "amount %s: top-left pixel %s, expected %s" % (amount, got, expected))
+    # A ReShade preset: GoodTint enabled with Amount 0 (the picture unchanged), GoodSecond not
+    # enabled, a technique and a value that do not exist.
+    preset = os.path.join(out, "look.ini")
+    with open(preset, "w") as f:
+        f.write("PreprocessorDefinitions=\n"
+                "Techniques=Missing@Missing.fx,GoodTint@Good.fx\n"
+                "TechniqueSorting=GoodTint@Good.fx,GoodSecond@Good.fx,Missing@Missing.fx\n\n"
+                "[Good.fx]\nAmount=0.000000\nNoSuchValue=3\n")
+    target = os.path.join(out, "preset.png")
+    run = subprocess.run([render, "--input", source, "--preset", preset, "--out", target, "--json"], env=env,
+                         capture_output=True, text=True, timeout=300)
+    check(run.returncode == 0, "rendering with the ReShade preset failed: %s" % run.stderr)
+    warnings = [line for line in run.stderr.splitlines() if "not found, left out" in line]
+    check(len(warnings) == 1 and "fx_missing" in warnings[0] and "fx_goodtint.nosuchvalue" in warnings[0],
+          "expected one warning naming fx_missing and fx_goodtint.nosuchvalue: %s" % run.stderr)
+    if run.returncode == 0:
+        report = json.loads(run.stdout)
+        check(report.get("effects") == ["fx_goodtint"], "the chain is not [fx_goodtint]: %s" % report.get("effects"))
+        got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[..., :3].astype(int)
+        check(np.abs(got - 100).max() == 0, "Amount=0 from the preset did not reach the effect: %s" % got[0, 0])
     for f in failures:
         print("FAIL:", f)
     if not failures:
-        print("ok: listing, load errors, rendering with an image texture")
+        print("ok: listing, load errors, rendering with an image texture, a ReShade preset")
     return 1 if failures else 0
 
 

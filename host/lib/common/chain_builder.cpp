@@ -72,6 +72,16 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
     if (store.from_json(preset.parameters_json, &error)) recipe.parameters_json = preset.parameters_json;
     else problems->push_back({RecipeProblem::PRESET, preset_path + ": parameters: " + error});
   }
+  // A ReShade preset's values: those no loaded effect has are named in one problem.
+  std::vector<std::string> applied;
+  std::vector<std::string> left_out = apply_preset_assignments(store, preset.assignments, &applied);
+  recipe.sets.insert(recipe.sets.begin(), applied.begin(), applied.end());
+  if (!left_out.empty()) {
+    std::string names;
+    for (const auto& a : left_out) names += (names.empty() ? "" : ", ") + a.substr(0, a.find('='));
+    problems->push_back({RecipeProblem::PRESET, preset_path + ": not found, left out: " + names});
+  }
+  for (const auto& note : preset.notes) notes->push_back(preset_path + ": " + note);
   for (const auto& assignment : sets) {
     std::string note;
     if (!store.set_assignment(assignment, &error, &note)) {
@@ -82,6 +92,24 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
     if (!note.empty()) notes->push_back(assignment + ": " + note);
   }
   return recipe;
+}
+
+std::vector<std::string> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
+                                                  std::vector<std::string>* applied) {
+  std::vector<std::string> left_out;
+  for (const auto& alternatives : assignments) {
+    bool done = false;
+    for (const auto& assignment : alternatives) {
+      std::string error, note;
+      if (store.set_assignment(assignment, &error, &note)) {
+        if (applied) applied->push_back(assignment);
+        done = true;
+        break;
+      }
+    }
+    if (!done && !alternatives.empty()) left_out.push_back(alternatives.front());
+  }
+  return left_out;
 }
 
 bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error,

@@ -29,6 +29,11 @@ struct ChainRecipe {
 };
 
 // One thing of the settings that does not apply, and where it came from.
+// Applies a preset's one-by-one assignments (Preset::assignments) to `store`, each by the first of
+// its alternatives that applies; returns those none of whose alternatives did ("fx_x.y=1").
+std::vector<std::string> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
+                                                  std::vector<std::string>* applied = nullptr);
+
 struct RecipeProblem {
   enum Source { CHAIN, PRESET, SET } source;
   std::string message;

@@ -1,4 +1,5 @@
 #include "preset.hpp"
+#include "reshade_preset.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -165,7 +166,8 @@ bool read_preset(const std::string& path, Preset* out, std::string* error) {
   std::ostringstream text;
   text << in.rdbuf();
   std::string message;
-  if (!parse_preset(text.str(), out, &message)) {
+  const bool reshade = looks_like_reshade_preset(text.str());
+  if (!(reshade ? parse_reshade_preset(text.str(), out, &message) : parse_preset(text.str(), out, &message))) {
     if (error) *error = path + ": " + message;
     return false;
   }

@@ -40,6 +40,15 @@ struct PresetCamera {
 struct Preset {
   std::optional<std::vector<PresetEffect>> chain;
   std::string parameters_json;  // a JSON object text, or empty for none
+  // Values applied one by one after parameters_json ("effect.param=value"), each given by the
+  // alternatives to try in turn; one none of whose alternatives applies is left out with a
+  // warning, and the rest still apply. A ReShade preset's values come this way
+  // (reshade_preset.hpp): it may name what no loaded effect has.
+  std::vector<std::vector<std::string>> assignments;
+  std::vector<std::string> notes;  // what the reader could not carry over, for the host to say
+  // A ReShade preset: effects of its chain that are not loaded are left out with a warning instead
+  // of failing the chain.
+  bool from_reshade = false;
   PresetCamera camera;
   std::optional<double> exposure_ev;
   std::optional<ToneCurve> tone;
@@ -49,7 +58,8 @@ struct Preset {
 // number"). Values are checked here as far as they can be without plugins: the effect ids and the
 // parameter values are checked when applied (ParamStore::from_json, Chain::add).
 bool parse_preset(const std::string& json, Preset* out, std::string* error);
-// Reads and parses a file; errors start with "PATH: ".
+// Reads and parses a file, a pfx JSON preset or a ReShade preset (.ini, reshade_preset.hpp);
+// errors start with "PATH: ".
 bool read_preset(const std::string& path, Preset* out, std::string* error);
 std::string preset_to_json(const Preset& preset);
 // Writes atomically (atomic_file.hpp).

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "chain_builder.hpp"
 #include "default_chain.hpp"
 #include "exit_codes.hpp"
 #include "timing_choice.hpp"
@@ -25,6 +26,15 @@ int RenderChain::build(const RenderOptions& options, const Preset& preset, std::
     for (const auto& id : options.chain_given ? options.chain : default_chain(registry_)) effects.push_back({id, true});
   else
     effects = *preset.chain;
+  // A ReShade preset may name techniques no loaded file has: one warning, and the rest runs.
+  std::vector<std::string> left_out;
+  if (preset.from_reshade && !options.chain_given) {
+    std::vector<PresetEffect> found;
+    for (const auto& effect : effects)
+      if (registry_.find_effect(effect.id)) found.push_back(effect);
+      else left_out.push_back(effect.id);
+    effects = found;
+  }
   for (const auto& effect : effects) {
     if (!chain_.add(effect.id, message)) return exit_code::kEffectError;
     chain_.set_enabled(chain_.size() - 1, effect.enabled);
@@ -34,6 +44,14 @@ int RenderChain::build(const RenderOptions& options, const Preset& preset, std::
     *message = options.preset + ": parameters: " + *message;
     return exit_code::kBadInput;
   }
+  for (const auto& assignment : apply_preset_assignments(params_, preset.assignments))
+    left_out.push_back(assignment.substr(0, assignment.find('=')));
+  if (!left_out.empty()) {
+    std::string names;
+    for (const auto& name : left_out) names += (names.empty() ? "" : ", ") + name;
+    std::fprintf(stderr, "pfx-render: warning: %s: not found, left out: %s\n", options.preset.c_str(), names.c_str());
+  }
+  for (const auto& note : preset.notes) std::fprintf(stderr, "pfx-render: note: %s: %s\n", options.preset.c_str(), note.c_str());
   for (const auto& assignment : options.sets) {
     std::string note;
     if (!params_.set_assignment(assignment, message, &note)) {

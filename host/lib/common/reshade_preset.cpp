@@ -1,0 +1,137 @@
+#include "reshade_preset.hpp"
+
+#include <map>
+#include <sstream>
+
+namespace pfx::app {
+namespace {
+
+std::string trimmed(const std::string& text) {
+  std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator))
+    if (!trimmed(part).empty()) parts.push_back(trimmed(part));
+  return parts;
+}
+
+struct Technique {
+  std::string name, file;  // file "" in presets older than ReShade 4 ("Techniques=A,B")
+};
+
+Technique technique_of(const std::string& entry) {
+  std::size_t at = entry.find('@');
+  if (at == std::string::npos) return {entry, ""};
+  return {entry.substr(0, at), entry.substr(at + 1)};
+}
+
+std::string file_name_of(const std::string& path) {
+  std::size_t slash = path.find_last_of("/\\");
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+}  // namespace
+
+std::string fx_identifier(const std::string& name) {
+  std::string id;
+  for (char c : name) {
+    char lower = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+    if ((lower >= 'a' && lower <= 'z') || (lower >= '0' && lower <= '9')) id += lower;
+    else if (!id.empty() && id.back() != '_') id += '_';
+  }
+  while (!id.empty() && id.back() == '_') id.pop_back();
+  return id.empty() ? "value" : id;
+}
+
+bool looks_like_reshade_preset(const std::string& text) {
+  std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos || text[first] == '{') return false;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    line = trimmed(line);
+    if (line.rfind("Techniques", 0) == 0 || line.rfind("TechniqueSorting", 0) == 0 || line.rfind("PreprocessorDefinitions", 0) == 0 ||
+        (line.size() > 2 && line.front() == '['))
+      return true;
+  }
+  return false;
+}
+
+bool parse_reshade_preset(const std::string& text, Preset* out, std::string* error) {
+  std::map<std::string, std::string> globals;
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> sections;  // by file name
+  std::string section;
+  std::istringstream in(text);
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    line = trimmed(line);
+    if (line.empty() || line[0] == ';' || line[0] == '#') continue;
+    if (line.front() == '[') {
+      if (line.back() != ']') {
+        if (error) *error = "line " + std::to_string(number) + ": a section name needs a closing ']'";
+        return false;
+      }
+      section = file_name_of(trimmed(line.substr(1, line.size() - 2)));
+      sections[section];
+      continue;
+    }
+    std::size_t equals = line.find('=');
+    if (equals == std::string::npos) {
+      if (error) *error = "line " + std::to_string(number) + ": expected NAME=VALUE, found '" + line + "'";
+      return false;
+    }
+    std::string key = trimmed(line.substr(0, equals)), value = trimmed(line.substr(equals + 1));
+    if (section.empty()) globals[key] = value;
+    else sections[section].emplace_back(key, value);
+  }
+  std::vector<Technique> enabled;
+  for (const std::string& entry : split(globals["Techniques"], ',')) enabled.push_back(technique_of(entry));
+  std::vector<Technique> order;
+  for (const std::string& entry : split(globals["TechniqueSorting"], ',')) order.push_back(technique_of(entry));
+  auto is_enabled = [&](const Technique& t) {
+    for (const Technique& e : enabled)
+      if (e.name == t.name && (e.file.empty() || t.file.empty() || e.file == t.file)) return true;
+    return false;
+  };
+  std::vector<Technique> chain;
+  for (const Technique& t : order)
+    if (is_enabled(t)) chain.push_back(t);
+  for (const Technique& t : enabled) {  // enabled ones TechniqueSorting does not name run last
+    bool placed = false;
+    for (const Technique& c : chain) placed = placed || (c.name == t.name && c.file == t.file);
+    if (!placed) chain.push_back(t);
+  }
+  out->from_reshade = true;
+  out->chain = std::vector<PresetEffect>{};
+  for (const Technique& t : chain) {
+    std::string effect = "fx_" + fx_identifier(t.name);
+    out->chain->push_back({effect, true});
+    // The values of the technique's file, or of every file when the preset does not say which.
+    for (const auto& [file, values] : sections) {
+      if (!t.file.empty() && file != file_name_of(t.file)) continue;
+      for (const auto& [name, value] : values) {
+        std::string id = effect + "." + fx_identifier(name);
+        std::vector<std::string> parts = split(value, ',');
+        if (parts.size() == 4) {
+          out->assignments.push_back({id + "=" + parts[0] + "," + parts[1] + "," + parts[2]});
+          out->assignments.push_back({id + "_alpha=" + parts[3], id + "_w=" + parts[3]});
+        } else {
+          out->assignments.push_back({id + "=" + value});
+        }
+      }
+    }
+  }
+  if (globals.count("PreprocessorDefinitions") && !trimmed(globals["PreprocessorDefinitions"]).empty())
+    out->notes.push_back("PreprocessorDefinitions are not applied: the effects compile with their own defaults");
+  return true;
+}
+
+}  // namespace pfx::app

@@ -1,0 +1,33 @@
+// ReShade preset files (.ini) as pfx presets, so a look made in ReShade drives pfx's hosts:
+//
+//   PreprocessorDefinitions=NAME=VALUE,...
+//   Techniques=LumaSharpen@LumaSharpen.fx,Vibrance@Vibrance.fx      (the enabled techniques)
+//   TechniqueSorting=Vibrance@Vibrance.fx,LumaSharpen@LumaSharpen.fx (the order they run in)
+//   [LumaSharpen.fx]
+//   sharp_strength=0.650000
+//   VibranceRGBBalance=1.000000,1.000000,1.000000
+//
+// Each enabled technique becomes the FX plugin's effect fx_<technique> (its id rule: lower case,
+// other characters '_'), in TechniqueSorting's order (Techniques' when there is none); each value
+// of a technique's file becomes an assignment to that effect's parameter of the uniform's name. A
+// float4 value sets the parameter of its first three components and the "_alpha" or "_w" one of
+// its fourth, whichever the effect has.
+#pragma once
+
+#include <string>
+
+#include "preset.hpp"
+
+namespace pfx::app {
+
+// Whether the text is a ReShade preset rather than a pfx JSON preset.
+bool looks_like_reshade_preset(const std::string& text);
+
+// Fills out->chain and out->assignments; false with *error for a file that is not one.
+bool parse_reshade_preset(const std::string& text, Preset* out, std::string* error);
+
+// The FX plugin's id for a technique or uniform name: lower case, every run of other characters
+// one '_', none at either end ("fUISharpness" -> "fuisharpness", "Sharp Strength" -> "sharp_strength").
+std::string fx_identifier(const std::string& name);
+
+}  // namespace pfx::app
