@@ -112,6 +112,17 @@ std::vector<std::string> apply_preset_assignments(host::ParamStore& store, const
   return left_out;
 }
 
+std::vector<std::string> drop_unloaded_reshade_effects(Preset& preset, const host::PluginRegistry& registry) {
+  std::vector<std::string> dropped;
+  if (!preset.from_reshade || !preset.chain) return dropped;
+  std::vector<PresetEffect> kept;
+  for (const auto& effect : *preset.chain)
+    if (registry.find_effect(effect.id)) kept.push_back(effect);
+    else dropped.push_back(effect.id);
+  preset.chain = kept;
+  return dropped;
+}
+
 bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error,
                  std::vector<std::string>* notes, const std::string& set_origin) {
   for (const auto& effect : recipe.effects) {

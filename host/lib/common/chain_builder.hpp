@@ -34,6 +34,10 @@ struct ChainRecipe {
 std::vector<std::string> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
                                                   std::vector<std::string>* applied = nullptr);
 
+// A ReShade preset's chain without the effects no loaded plugin has (returned, for one warning);
+// other presets are left as they are.
+std::vector<std::string> drop_unloaded_reshade_effects(Preset& preset, const host::PluginRegistry& registry);
+
 struct RecipeProblem {
   enum Source { CHAIN, PRESET, SET } source;
   std::string message;

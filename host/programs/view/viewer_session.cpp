@@ -9,6 +9,7 @@
 #include <pfx/host/hot_reload.hpp>
 
 #include "camera_settings.hpp"
+#include "chain_builder.hpp"
 #include "default_chain.hpp"
 #include "exit_codes.hpp"
 #include "frame_files.hpp"
@@ -57,6 +58,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   std::string message;
   const std::string& start = options.attach.empty() ? options.preset : options.attach;
   if (!start.empty() && !read_preset(start, &preset, &message)) return fail(exit_code::kBadInput, message);
+  std::vector<std::string> left_out = drop_unloaded_reshade_effects(preset, *self->registry_);
 
   self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
   self->chain_->set_timing(default_timing(renderer));
@@ -70,6 +72,14 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
   if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
     return fail(exit_code::kBadInput, options.preset + ": parameters: " + message);
+  for (const auto& assignment : apply_preset_assignments(self->params_, preset.assignments))
+    left_out.push_back(assignment.substr(0, assignment.find('=')));
+  if (!left_out.empty()) {
+    std::string names;
+    for (const auto& name : left_out) names += (names.empty() ? "" : ", ") + name;
+    self->warning(start + ": not found, left out: " + names);
+  }
+  for (const auto& note : preset.notes) self->info(start + ": " + note);
   for (const auto& assignment : options.sets) {
     std::string note;
     if (!self->params_.set_assignment(assignment, &message, &note)) return fail(exit_code::kUsage, "--set " + message);
@@ -77,6 +87,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   }
 
   self->preset_path_ = !options.save_preset.empty() ? options.save_preset
+                       : preset.from_reshade         ? options.preset + ".pfx.json"  // never written over a ReShade preset
                        : !options.preset.empty()     ? options.preset
                                                      : "pfx-preset.json";
   self->shots_dir_ = options.shots_dir;
@@ -209,7 +220,9 @@ Preset ViewerSession::current_preset() const {
   return preset;
 }
 
-bool ViewerSession::apply_preset(const Preset& preset, std::string* error) {
+bool ViewerSession::apply_preset(const Preset& given, std::string* error) {
+  Preset preset = given;
+  drop_unloaded_reshade_effects(preset, *registry_);
   if (preset.chain)
     for (const auto& effect : *preset.chain)
       if (!registry_->find_effect(effect.id)) {
@@ -231,6 +244,7 @@ bool ViewerSession::apply_preset(const Preset& preset, std::string* error) {
     *error = "parameters: " + *error;
     return false;
   }
+  apply_preset_assignments(values, preset.assignments);  // a ReShade preset's: what fits applies
   Camera camera;
   if (source_) {
     camera = source_->camera();
