@@ -8,7 +8,9 @@ technique name, label and parameters; that each broken file (a type error, a syn
 #include cycle) is in load_errors with its file, line and column; and that the good effect renders,
 with its image texture found in the collection's Textures folder and the right way up; and that
 a ReShade preset (.ini) drives pfx-render: its enabled techniques in TechniqueSorting's order with
-its values, and what it names that is not there in one warning.
+its values, and what it names that is not there in one warning; and that pfx-fx-check reports the
+folder: both techniques compiled, ran, finite and changing the picture, the three broken files
+not compiled, exit status 1.
 """
 import json
 import os
@@ -86,10 +88,24 @@ def main():
         check(report.get("effects") == ["fx_goodtint"], "the chain is not [fx_goodtint]: %s" % report.get("effects"))
         got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[..., :3].astype(int)
         check(np.abs(got - 100).max() == 0, "Amount=0 from the preset did not reach the effect: %s" % got[0, 0])
+    tool = os.path.join(os.path.dirname(render), "pfx-fx-check")
+    checked = subprocess.run([tool, "--json", "--picture", source, os.path.join(listing, "Shaders")], capture_output=True, text=True,
+                             timeout=600)
+    check(checked.returncode == 1, "pfx-fx-check exited with %d, not 1 (broken files): %s" % (checked.returncode, checked.stderr))
+    try:
+        table = json.loads(checked.stdout)
+        rows = {r["technique"]: r for r in table["techniques"]}
+        for name in ("GoodTint", "GoodSecond"):
+            r = rows.get(name, {})
+            check(r.get("ran") and r.get("finite") and r.get("changed") and r.get("compile_ms") is not None and r.get("run_ms") is not None,
+                  "pfx-fx-check's row for %s: %s" % (name, r))
+        check(len(table["files_not_compiled"]) == 3, "pfx-fx-check's files not compiled: %s" % table["files_not_compiled"])
+    except (ValueError, KeyError) as e:
+        check(False, "pfx-fx-check --json gave no table (%s): %s" % (e, checked.stdout[:400]))
     for f in failures:
         print("FAIL:", f)
     if not failures:
-        print("ok: listing, load errors, rendering with an image texture, a ReShade preset")
+        print("ok: listing, load errors, rendering with an image texture, a ReShade preset, pfx-fx-check")
     return 1 if failures else 0
 
 

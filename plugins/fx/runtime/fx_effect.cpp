@@ -53,6 +53,14 @@ pfx_status run_pass(void* instance, const pfx_pass_context* context) {
   return pfx::plugin::without_exceptions([&] { return static_cast<FxInstance*>(instance)->run_pass(context); });
 }
 
+const char* report_json(void* instance) {
+  try {
+    return instance ? static_cast<FxInstance*>(instance)->report_json() : nullptr;
+  } catch (...) {
+    return nullptr;
+  }
+}
+
 }  // namespace
 
 void fill_effect_desc(FxEffectEntry& entry, std::size_t index) {
@@ -68,7 +76,7 @@ void fill_effect_desc(FxEffectEntry& entry, std::size_t index) {
   d.destroy = destroy;
   d.declare = declare;
   d.run_pass = run_pass;
-  d.report_json = nullptr;
+  d.report_json = report_json;
 }
 
 }  // namespace pfx_fx

@@ -1,5 +1,7 @@
 #include "fx_instance.hpp"
 
+#include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <regex>
 
@@ -186,7 +188,9 @@ bool FxInstance::compile_source(int width, int height) {
   compiled_width_ = width, compiled_height_ = height;
   gl_current_ = false;
   passes_.clear();
+  const auto start = std::chrono::steady_clock::now();
   compiled_ = pfx::fx::compile_effect(entry_.file, compile_options(width, height), true);
+  compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!compiled_->ok()) {
     log(PFX_LOG_ERROR, "does not compile at " + std::to_string(width) + "x" + std::to_string(height) + ":\n" + compiled_->errors());
     compiled_.reset();
@@ -266,6 +270,12 @@ void FxInstance::release_gl() {
 }
 
 bool FxInstance::build_gl() {
+  const auto start = std::chrono::steady_clock::now();
+  struct Timed {
+    std::chrono::steady_clock::time_point start;
+    double* out;
+    ~Timed() { *out = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); }
+  } timed{start, &gl_build_ms_};
   release_gl();
   const pfx::fx::EffectModel& model = compiled_->model;
   std::string error;
@@ -320,6 +330,13 @@ bool FxInstance::build_gl() {
   }
   gl_current_ = true;
   return true;
+}
+
+const char* FxInstance::report_json() {
+  char text[128];
+  std::snprintf(text, sizeof text, "\"compile_ms\": %.3f, \"gl_build_ms\": %.3f", compile_ms_, gl_build_ms_);
+  report_ = text;
+  return report_.c_str();
 }
 
 pfx_status FxInstance::run_pass(const pfx_pass_context* context) {

@@ -27,6 +27,9 @@ class FxInstance {
   bool create_gl();  // the programs that do not depend on the source: encode and decode
   pfx_status declare(const pfx_frame* frame, const pfx_value* params, pfx_declaration* out);
   pfx_status run_pass(const pfx_pass_context* context);
+  // "compile_ms" (the FX source to GLSL, on the CPU) and "gl_build_ms" (the GL programs) of the
+  // last compile, for pfx-fx-check and the frame reports.
+  const char* report_json();
 
  private:
   struct PassProgram {
@@ -75,6 +78,8 @@ class FxInstance {
   GlTexture fx_depth_;
   bool depth_in_frame_ = false;
   bool told_no_depth_ = false;
+  double compile_ms_ = 0, gl_build_ms_ = 0;
+  std::string report_;
 };
 
 }  // namespace pfx_fx
