@@ -82,8 +82,12 @@ for plugin in "$PFX_PLUGIN_BUILD_DIR"/*.so; do
 done
 for plugin in "$prefix/$PFX_PLUGINDIR"/*; do
   [[ -e $plugin ]] || continue
+  # A plugin's data folder beside it (the FX plugin's fx/include) is shipped as the build has it.
+  [[ -d $plugin && -d $PFX_PLUGIN_BUILD_DIR/$(basename "$plugin") ]] && continue
   [[ -f $PFX_PLUGIN_BUILD_DIR/$(basename "$plugin") ]] || fail "$PFX_PLUGINDIR/$(basename "$plugin") is not a shipped plugin"
 done
+# The FX plugin's own ReShade.fxh, which effects that include it need.
+[[ ! -f $PFX_PLUGIN_BUILD_DIR/pfx_fx.so || -f $prefix/$PFX_PLUGINDIR/fx/include/ReShade.fxh ]] || fail "fx/include/ReShade.fxh was not installed"
 echo "ok: layout checked ($shipped shipped plugin(s))"
 
 # ---- 3. find_package(pfx) ------------------------------------------------------------------------

@@ -107,7 +107,8 @@ class Builder {
     d.id = t_.keep(unique_id(identifier_from(name) + suffix));
     std::string label = annotation_string(a, "ui_label", name);
     d.label = t_.keep(part == 'a' ? label + " (alpha)" : part == 'w' ? label + " (w)" : part && part != 'r' ? label + " (" + part + ")" : label);
-    d.tooltip = t_.keep(annotation_string(a, "ui_tooltip"));
+    // A UI shows a tooltip for every parameter; an effect without one still says what it sets.
+    d.tooltip = t_.keep(annotation_string(a, "ui_tooltip", "The effect's uniform " + u.name + " (" + pfx::fx::type_name(u.type) + ")."));
     d.unit = t_.keep(annotation_string(a, "ui_units"));
     d.group = t_.keep(annotation_string(a, "ui_category"));
     d.type = type;
