@@ -11,8 +11,9 @@ vkcube turns its cube by a fixed step per frame, so its frame 5 is the same pict
 (tests/adapters/vulkan rely on it too). Two runs of vkcube on lavapipe, with pfx's Vulkan layer
 capturing frame 5 and running no effect:
   1. without vkBasalt: the pristine frame 5;
-  2. with vkBasalt (an implicit layer, so nearer the application than pfx's layer, enabled here as
-     an explicit one) running FILE.fx: pfx's layer receives vkBasalt's output (its .app.png).
+  2. with vkBasalt running FILE.fx. vkBasalt is an implicit layer and pfx's layer is enabled here as
+     an explicit one, which the loader puts below every implicit layer: nearer the driver, so pfx's
+     layer receives vkBasalt's output (its capture's .app.png).
 Then pfx-render runs the same file's technique on the pristine frame, and every pixel of the two
 pictures must be within one code value. vkBasalt runs only a file's first technique, at vkcube's
 size (320x240): the self-checking files then compute their checks at that size on both sides,
@@ -47,7 +48,7 @@ LEFT_OUT = {
     "preprocessor.fx": "BUFFER_COLOR_BIT_DEPTH: not defined by vkBasalt",
     "render_targets.fx": "tex2Dfetch with an int2 coordinate, and `return` after `discard` (an error there: unreachable code)",
     "size_odd.fx": "tex2Dfetch with an int2 coordinate",
-    "textures.fx": "tex2Dfetch with an int2 coordinate (and the other newer texture intrinsics of the file)",
+    "textures.fx": "tex2Dfetch with an int2 coordinate",
     "uniforms.fx": "a uniform without an initial value: vkBasalt makes uniforms specialisation constants and "
                    "vkcube aborts",
 }
