@@ -184,25 +184,29 @@ const pfx::fx::TechniqueInfo& FxInstance::technique() const {
   return compiled_->model.techniques[static_cast<std::size_t>(entry_.technique_index)];
 }
 
-bool FxInstance::compile_source(int width, int height) {
-  compiled_width_ = width, compiled_height_ = height;
-  gl_current_ = false;
-  passes_.clear();
+std::unique_ptr<pfx::fx::CompiledEffect> FxInstance::compile_at(int width, int height, std::string* error) {
   const auto start = std::chrono::steady_clock::now();
-  compiled_ = pfx::fx::compile_effect(entry_.file, compile_options(width, height), true);
+  auto compiled = pfx::fx::compile_effect(entry_.file, compile_options(width, height), true);
   compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!compiled_->ok()) {
-    log(PFX_LOG_ERROR, "does not compile at " + std::to_string(width) + "x" + std::to_string(height) + ":\n" + compiled_->errors());
-    compiled_.reset();
-    return false;
+  if (!compiled->ok()) {
+    *error = "does not compile at " + std::to_string(width) + "x" + std::to_string(height) + ":\n" + compiled->errors();
+    watch(*compiled);  // an edit that fixes it is picked up too
+    return nullptr;
   }
-  const auto& techniques = compiled_->model.techniques;
+  watch(*compiled);
+  const auto& techniques = compiled->model.techniques;
   if (static_cast<std::size_t>(entry_.technique_index) >= techniques.size() ||
       techniques[static_cast<std::size_t>(entry_.technique_index)].name != entry_.technique) {
-    log(PFX_LOG_ERROR, "technique '" + entry_.technique + "' is not in " + entry_.file + " at this frame size");
-    compiled_.reset();
-    return false;
+    *error = "technique '" + entry_.technique + "' is not in " + entry_.file + " at this frame size";
+    return nullptr;
   }
+  return compiled;
+}
+
+void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
+  compiled_ = std::move(compiled);
+  gl_current_ = false;
+  passes_.clear();
   const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
   needs_depth_ = false;
   for (const GeneratedPass& g : generated)
@@ -231,17 +235,74 @@ bool FxInstance::compile_source(int width, int height) {
     if (i + 1 == pass_names_.size()) p.output = PFX_OUTPUT_NAME;
     passes_.push_back(p);
   }
-  uniforms_.reset(compiled_->model);
+  uniforms_.reset(compiled_->model, entry_.params);
+}
+
+bool FxInstance::compile_source(int width, int height) {
+  compiled_width_ = width, compiled_height_ = height;
+  std::string error;
+  auto compiled = compile_at(width, height, &error);
+  if (!compiled) {
+    log(PFX_LOG_ERROR, error);
+    compiled_.reset();
+    gl_current_ = false;
+    return false;
+  }
+  adopt(std::move(compiled));
   return true;
+}
+
+void FxInstance::watch(const pfx::fx::CompiledEffect& compiled) {
+  watched_.clear();
+  for (const std::string& file : compiled.front->preprocessed.included_files) {
+    std::error_code ec;
+    watched_.emplace_back(file, std::filesystem::last_write_time(file, ec));
+  }
+  if (watched_.empty()) watched_.emplace_back(entry_.file, std::filesystem::file_time_type{});
+}
+
+void FxInstance::reload_if_edited() {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_watch_ < std::chrono::milliseconds(kWatchIntervalMs)) return;
+  last_watch_ = now;
+  bool edited = false;
+  for (const auto& [file, time] : watched_) {
+    std::error_code ec;
+    edited = edited || std::filesystem::last_write_time(file, ec) != time;
+  }
+  if (!edited) return;
+  std::string error;
+  auto compiled = compile_at(compiled_width_, compiled_height_, &error);
+  if (!compiled) {
+    log(PFX_LOG_ERROR, "edited, and " + error + "\nThe last version that compiled keeps running.");
+    return;
+  }
+  // The host planned this frame's passes at the last declare: a version with as many passes runs
+  // from this frame on, one with another number waits for the next declare.
+  std::size_t passes = compiled->model.techniques[static_cast<std::size_t>(entry_.technique_index)].passes.size();
+  if (passes + 2 != passes_.size()) {
+    pending_ = std::move(compiled);
+    log(PFX_LOG_INFO, "reloaded " + entry_.file + "; its new passes run from the next resize or parameter change");
+    return;
+  }
+  adopt(std::move(compiled));
+  log(PFX_LOG_INFO, "reloaded " + entry_.file);
 }
 
 pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   (void)params;
   int w = static_cast<int>(frame->width), h = static_cast<int>(frame->height);
   if (!compiled_ || w != compiled_width_ || h != compiled_height_) {
-    if (!compiled_ && w == compiled_width_ && h == compiled_height_) return PFX_ERROR;  // failed at this size already
-    if (!compile_source(w, h)) return PFX_ERROR;
+    if (!compiled_ && w == compiled_width_ && h == compiled_height_) {  // failed at this size: wait for an edit
+      last_watch_ = {};
+      reload_if_edited();
+      if (pending_) adopt(std::move(pending_));
+      if (!compiled_) return PFX_ERROR;
+    } else if (!compile_source(w, h)) {
+      return PFX_ERROR;
+    }
   }
+  if (pending_) adopt(std::move(pending_));
   // An effect that samples depth runs without it too (ReShade's effects test bufready_depth, or
   // read the far plane): its depth input is declared only when the frame has one.
   depth_in_frame_ = needs_depth_ && (frame->inputs & PFX_INPUT_DEPTH) && frame->depth_encoding != PFX_DEPTH_NONE;
@@ -341,6 +402,7 @@ const char* FxInstance::report_json() {
 
 pfx_status FxInstance::run_pass(const pfx_pass_context* context) {
   if (!compiled_) return PFX_ERROR;
+  if (context->pass_index == 0) reload_if_edited();  // hosts declare only on changes; runs are every frame
   if (!gl_current_ && !build_gl()) {
     release_gl();
     return PFX_GL_ERROR;

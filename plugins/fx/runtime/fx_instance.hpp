@@ -5,7 +5,10 @@
 //            as FX effects expect) or the back buffer
 //   decode   the back buffer -> the effect's output, linear again
 // The FX source is compiled again when the frame size changes (BUFFER_WIDTH and its kin are
-// constants of the source), on the CPU in declare and into GL programs in the next run.
+// constants of the source) and when the file or one of its includes is edited, on the CPU in
+// declare and into GL programs in the next run.
+#include <chrono>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,7 +42,15 @@ class FxInstance {
     bool covers_target = true;  // draws every pixel of the back buffer (no copy needed first)
   };
 
+  // The source compiled for a frame size and checked to hold the technique, or null with *error.
+  std::unique_ptr<pfx::fx::CompiledEffect> compile_at(int width, int height, std::string* error);
+  void adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled);  // its passes, for the next run
   bool compile_source(int width, int height);  // CPU
+  // Edits: the file and its includes are looked at every kWatchIntervalMs; an edit that compiles
+  // replaces the running version (parameter values kept: the host owns them), one that does not
+  // is logged and the last version that compiled keeps running.
+  void watch(const pfx::fx::CompiledEffect& compiled);
+  void reload_if_edited();
   bool build_gl();                             // GL, for the compiled source
   void release_gl();
   void log(pfx_log_level level, const std::string& message) const;
@@ -79,6 +90,10 @@ class FxInstance {
   bool depth_in_frame_ = false;
   bool told_no_depth_ = false;
   double compile_ms_ = 0, gl_build_ms_ = 0;
+  static constexpr int kWatchIntervalMs = 500;
+  std::vector<std::pair<std::string, std::filesystem::file_time_type>> watched_;
+  std::chrono::steady_clock::time_point last_watch_{};
+  std::unique_ptr<pfx::fx::CompiledEffect> pending_;  // an edit with another pass count, for the next declare
   std::string report_;
 };
 

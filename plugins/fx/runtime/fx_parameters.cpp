@@ -146,7 +146,7 @@ class Builder {
       for (int c = 0; c < count; ++c) d.default_value.v[c] = std::min(std::max(d.default_value.v[c], d.hard_min), d.hard_max);
     }
     t_.descs.push_back(d);
-    t_.bindings.push_back({index, first, count, whole});
+    t_.bindings.push_back({u.name, index, first, count, whole});
     t_.fx_names.push_back(part == 'a' || part == 'w' ? u.name + ".w" : u.name);
   }
 

@@ -13,7 +13,8 @@
 namespace pfx_fx {
 
 struct ParamBinding {
-  int uniform = -1;     // index into the model's uniforms
+  std::string uniform_name;  // qualified: instances find it in their own compile of the file
+  int uniform = -1;     // index into the catalog's model's uniforms
   int first = 0;        // first component of the uniform this parameter writes
   int count = 1;        // components written
   bool whole = false;   // an integer uniform: round the value

@@ -17,7 +17,15 @@ std::uint64_t mix(std::uint64_t x) {
 
 }  // namespace
 
-void UniformValues::reset(const pfx::fx::EffectModel& model) {
+void UniformValues::reset(const pfx::fx::EffectModel& model, const ParamTable& params) {
+  param_uniform_.clear();
+  for (const ParamBinding& b : params.bindings) {
+    int found = -1;
+    for (std::size_t i = 0; i < model.uniforms.size() && found < 0; ++i)
+      if (model.uniforms[i].name == b.uniform_name && static_cast<int>(model.uniforms[i].initial.size()) >= b.first + b.count)
+        found = static_cast<int>(i);
+    param_uniform_.push_back(found);
+  }
   values_.clear();
   for (const auto& u : model.uniforms) values_.push_back(u.initial);
   pingpong_.assign(model.uniforms.size() * 2, 0.0);
@@ -30,12 +38,13 @@ void UniformValues::reset(const pfx::fx::EffectModel& model) {
 
 void UniformValues::update(const pfx::fx::EffectModel& model, const ParamTable& params, const pfx_value* values, const pfx_frame& frame,
                            bool depth_available) {
-  if (values_.size() != model.uniforms.size()) reset(model);
+  if (values_.size() != model.uniforms.size() || param_uniform_.size() != params.bindings.size()) reset(model, params);
   double frame_seconds = last_time_ < 0 ? 0.0 : std::max(0.0, frame.time_seconds - last_time_);
   last_time_ = frame.time_seconds;
   for (std::size_t p = 0; p < params.bindings.size(); ++p) {
     const ParamBinding& b = params.bindings[p];
-    auto& target = values_[static_cast<std::size_t>(b.uniform)];
+    if (param_uniform_[p] < 0) continue;
+    auto& target = values_[static_cast<std::size_t>(param_uniform_[p])];
     for (int c = 0; c < b.count; ++c) {
       double v = values[p].v[c];
       target[static_cast<std::size_t>(b.first + c)] = b.whole ? std::round(v) : v;

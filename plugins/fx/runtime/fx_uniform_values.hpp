@@ -14,7 +14,10 @@ namespace pfx_fx {
 
 class UniformValues {
  public:
-  void reset(const pfx::fx::EffectModel& model);
+  // Starts over for a model (a compile of the file at a frame size, or an edit of it): initial
+  // values, and where each parameter of `params` lands in this model's uniforms, found by name
+  // (a parameter whose uniform is gone is ignored).
+  void reset(const pfx::fx::EffectModel& model, const ParamTable& params);
   // Fills every uniform for this frame. `depth_available` answers source "bufready_depth".
   void update(const pfx::fx::EffectModel& model, const ParamTable& params, const pfx_value* values, const pfx_frame& frame,
               bool depth_available);
@@ -23,6 +26,7 @@ class UniformValues {
  private:
   std::vector<std::vector<double>> values_;
   std::vector<double> pingpong_;  // position and direction per uniform
+  std::vector<int> param_uniform_;  // per parameter: its uniform's index in the model, or -1
   double last_time_ = -1;
 };
 
