@@ -8,6 +8,7 @@
 #include <pfx/cpp/gl_program.hpp>
 #include <pfx/cpp/srgb_glsl.hpp>
 
+#include "fx_program_cache.hpp"
 #include "fx_texture_files.hpp"
 
 namespace pfx_fx {
@@ -363,17 +364,28 @@ bool FxInstance::build_gl() {
     samplers_.push_back(create_sampler(s, levels, integer));
   }
   const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
+  const ProgramCache cache;
+  cache_hits_ = 0;
   for (std::size_t i = 0; i < generated.size(); ++i) {
     const GeneratedPass& g = generated[i];
     const PassInfo& pass = technique().passes[i];
     PassProgram p;
     std::string message;
-    if (!g.compute.empty()) {
-      p.program = pfx::gl::build_compute_program(g.compute.c_str(), &message);
+    const std::string key = cache.key({g.vertex, g.fragment, g.compute});
+    p.program = cache.load(key);
+    if (p.program) {
+      ++cache_hits_;
     } else {
-      const char* sources[2] = {g.vertex.c_str(), g.fragment.c_str()};
-      const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-      p.program = pfx::gl::build_program(stages, sources, 2, &message);
+      if (!g.compute.empty()) {
+        const char* source = g.compute.c_str();
+        const GLenum stage = GL_COMPUTE_SHADER;
+        p.program = pfx::gl::build_program(&stage, &source, 1, &message, cache.usable());
+      } else {
+        const char* sources[2] = {g.vertex.c_str(), g.fragment.c_str()};
+        const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+        p.program = pfx::gl::build_program(stages, sources, 2, &message, cache.usable());
+      }
+      if (p.program) cache.store(key, p.program);
     }
     if (!p.program) {
       log(PFX_LOG_ERROR, "pass '" + pass_names_[i + 1] + "': the GL refused the generated GLSL (a compiler bug, please report it):\n" +
@@ -395,7 +407,8 @@ bool FxInstance::build_gl() {
 
 const char* FxInstance::report_json() {
   char text[128];
-  std::snprintf(text, sizeof text, "\"compile_ms\": %.3f, \"gl_build_ms\": %.3f", compile_ms_, gl_build_ms_);
+  std::snprintf(text, sizeof text, "\"compile_ms\": %.3f, \"gl_build_ms\": %.3f, \"programs_from_cache\": %d", compile_ms_,
+                gl_build_ms_, cache_hits_);
   report_ = text;
   return report_.c_str();
 }

@@ -30,8 +30,8 @@ class FxInstance {
   bool create_gl();  // the programs that do not depend on the source: encode and decode
   pfx_status declare(const pfx_frame* frame, const pfx_value* params, pfx_declaration* out);
   pfx_status run_pass(const pfx_pass_context* context);
-  // "compile_ms" (the FX source to GLSL, on the CPU) and "gl_build_ms" (the GL programs) of the
-  // last compile, for pfx-fx-check and the frame reports.
+  // "compile_ms" (the FX source to GLSL, on the CPU), "gl_build_ms" (the GL programs) and
+  // "programs_from_cache" of the last compile, for pfx-fx-check and the frame reports.
   const char* report_json();
 
  private:
@@ -90,6 +90,7 @@ class FxInstance {
   bool depth_in_frame_ = false;
   bool told_no_depth_ = false;
   double compile_ms_ = 0, gl_build_ms_ = 0;
+  int cache_hits_ = 0;  // programs of the last GL build that came from the disk cache
   static constexpr int kWatchIntervalMs = 500;
   std::vector<std::pair<std::string, std::filesystem::file_time_type>> watched_;
   std::chrono::steady_clock::time_point last_watch_{};

@@ -203,11 +203,14 @@ class ProgramBuilder {
 
   std::string declarations(GlslWriter& w, Stage which, const std::set<const VariableDecl*>& globals) {
     std::string out;
-    for (const auto& [decl, index] : model_.uniform_of)
-      if (globals.count(decl)) {
-        out += "uniform " + w.type(decl->resolved) + " " + model_.global_names.at(decl) + w.array_suffix(decl->resolved) + ";\n";
-        result_.uniforms.push_back(index);
-      }
+    // In the model's order, never a pointer's: the same source gives the same GLSL on every run
+    // (the program cache's key).
+    for (std::size_t index = 0; index < model_.uniforms.size(); ++index) {
+      const VariableDecl* decl = model_.uniforms[index].decl;
+      if (!globals.count(decl)) continue;
+      out += "uniform " + w.type(decl->resolved) + " " + model_.global_names.at(decl) + w.array_suffix(decl->resolved) + ";\n";
+      result_.uniforms.push_back(static_cast<int>(index));
+    }
     for (std::size_t i = 0; i < model_.samplers.size(); ++i) {
       const SamplerInfo& s = model_.samplers[i];
       if (!globals.count(s.decl)) continue;

@@ -40,10 +40,13 @@ inline bool load_gl_or_log(const pfx_host* host, const char* who) {
 }
 
 // Compiles and links one shader per stage. Returns 0 and the compiler's or linker's message in
-// *error on failure.
-inline GLuint build_program(const GLenum* stages, const char* const* sources, int count, std::string* error) {
+// *error on failure. `retrievable`: the program's binary may be read back afterwards
+// (glGetProgramBinary), for a cache of compiled programs.
+inline GLuint build_program(const GLenum* stages, const char* const* sources, int count, std::string* error,
+                            bool retrievable = false) {
   char info[2048] = "";
   GLuint program = glCreateProgram();
+  if (retrievable) glProgramParameteri(program, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
   GLint ok = 1;
   for (int i = 0; i < count && ok; ++i) {
     GLuint shader = glCreateShader(stages[i]);

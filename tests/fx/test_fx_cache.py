@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""The FX plugin's cache of compiled programs (docs/fx.md): a second start takes every program of an
+effect from the cache and gives the same picture; damaged cache files are ignored, rebuilt and
+written again; PFX_FX_CACHE=0 writes nothing.
+
+usage: test_fx_cache.py PFX_RENDER FX_FILE PICTURE OUT_DIR
+"""
+import glob
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+def main():
+    render, fx_file, picture, out = sys.argv[1:5]
+    shutil.rmtree(out, ignore_errors=True)
+    cache = os.path.join(out, "cache")
+    os.makedirs(out)
+    technique = "fx_" + os.path.splitext(os.path.basename(fx_file))[0].lower()
+
+    def run(name, **extra):
+        env = dict(os.environ, PFX_FX_PATH=fx_file, XDG_CACHE_HOME=cache, **extra)
+        target = os.path.join(out, name + ".png")
+        done = subprocess.run([render, "--input", picture, "--chain", technique, "--out", target, "--json"], env=env,
+                              capture_output=True, text=True, timeout=300)
+        check(done.returncode == 0, "%s: pfx-render failed: %s" % (name, done.stderr))
+        report = json.loads(done.stdout) if done.returncode == 0 else {}
+        own = report.get("effect_reports", {}).get(technique, {})
+        return own.get("programs_from_cache"), open(target, "rb").read() if done.returncode == 0 else b""
+
+    files = lambda: sorted(glob.glob(os.path.join(cache, "pfx", "fx-programs", "*.bin")))
+    hits, cold = run("cold")
+    check(hits == 0, "a cold start took %r programs from an empty cache" % hits)
+    check(len(files()) >= 1, "nothing was written to the cache: %s" % files())
+    hits, warm = run("warm")
+    check(hits is not None and hits >= 1, "a second start took %r programs from the cache" % hits)
+    check(warm == cold, "the cached programs gave another picture")
+    for path in files():  # damaged: every byte after the header flipped
+        data = bytearray(open(path, "rb").read())
+        for i in range(20, len(data)):
+            data[i] ^= 0xFF
+        open(path, "wb").write(bytes(data))
+    hits, damaged = run("damaged")
+    check(hits == 0, "damaged cache files were used (%r programs)" % hits)
+    check(damaged == cold, "after damaged cache files the picture differs")
+    hits, _ = run("rewritten")
+    check(hits is not None and hits >= 1, "the damaged files were not written again (%r from the cache)" % hits)
+    shutil.rmtree(cache)
+    run("off", PFX_FX_CACHE="0")
+    check(not files(), "PFX_FX_CACHE=0 wrote %s" % files())
+    for f in failures:
+        print("FAIL:", f)
+    if not failures:
+        print("ok: cold, warm, damaged, rewritten, off")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
