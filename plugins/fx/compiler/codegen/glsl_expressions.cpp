@@ -83,7 +83,6 @@ std::string GlslWriter::expr(const Expr& e) {
     case ExprKind::kString: error(e.location, "a string cannot be a value in a shader"); return "0";
     case ExprKind::kName:
       if (!e.variable) return error(e.location, "'" + e.text + "' names no variable"), "0";
-      if (model_.global_names.count(e.variable)) used_globals.insert(e.variable);
       return name_of(*e.variable);
     case ExprKind::kUnary:
     case ExprKind::kPostfix: return unary(e);

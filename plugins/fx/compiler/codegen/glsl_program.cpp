@@ -111,10 +111,8 @@ void collect(const Stmt& s, Uses& uses) {
 
 class ProgramBuilder {
  public:
-  ProgramBuilder(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics)
-      : model_(model), pass_(pass), diagnostics_(diagnostics) {
-    (void)unit;
-  }
+  ProgramBuilder(const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics)
+      : model_(model), pass_(pass), diagnostics_(diagnostics) {}
 
   GeneratedPass build() {
     if (pass_.compute_shader) {
@@ -180,7 +178,7 @@ class ProgramBuilder {
     std::string functions;
     for (const FunctionDecl* f : model_.functions)
       if (reached.count(f)) w.function(*f, functions);
-    std::string main = entry_point(w, which, definition(&entry) ? *definition(&entry) : entry, globals);
+    std::string main = entry_point(w, which, *definition(&entry), globals);
 
     std::string out = "#version 450\n";
     if (which == Stage::kCompute)
@@ -394,7 +392,8 @@ class ProgramBuilder {
 }  // namespace
 
 GeneratedPass generate_pass(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics) {
-  return ProgramBuilder(unit, model, pass, diagnostics).build();
+  (void)unit;  // the model points into it; the signature says what the result depends on
+  return ProgramBuilder(model, pass, diagnostics).build();
 }
 
 }  // namespace pfx::fx

@@ -41,9 +41,7 @@ class GlslWriter {
   void declaration(const VariableDecl& v, int indent, std::string& out);
   void line_directive(SourceLocation where, std::string& out);
 
-  // What the written code used: globals (uniforms, samplers, storages, statics), helper functions
-  // of the prelude, discard.
-  std::set<const VariableDecl*> used_globals;
+  // What the written code used: helper functions of the prelude, discard.
   std::set<std::string> helpers;
   bool uses_discard = false;
   Stage stage() const { return stage_; }
