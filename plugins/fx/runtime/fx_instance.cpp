@@ -29,12 +29,16 @@ void main() {
 }
 )";
 
+// The back buffer -> linear light. Alpha is the frame's own: FX shaders treat the back buffer's
+// alpha as scratch (FXAA keeps luma there), since a display never shows it.
 const char* kDecodeMain = R"(
-layout(binding = 0) uniform sampler2D back_buffer;
+layout(binding = 0) uniform sampler2D scene_color;
+layout(binding = 1) uniform sampler2D back_buffer;
 layout(location = 0) out vec4 color;
 void main() {
-  vec4 value = texelFetch(back_buffer, ivec2(gl_FragCoord.xy), 0);
-  color = vec4(pfx_srgb_decode(value.rgb), value.a);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  vec4 value = texelFetch(back_buffer, texel, 0);
+  color = vec4(pfx_srgb_decode(value.rgb), texelFetch(scene_color, texel, 0).a);
 }
 )";
 
@@ -233,7 +237,11 @@ void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
       p.inputs = color_input_;
       p.input_count = needs_depth_ ? 2 : 1;
     }
-    if (i + 1 == pass_names_.size()) p.output = PFX_OUTPUT_NAME;
+    if (i + 1 == pass_names_.size()) {
+      p.output = PFX_OUTPUT_NAME;
+      p.inputs = color_input_;  // the frame's alpha, kept
+      p.input_count = 1;
+    }
     passes_.push_back(p);
   }
   uniforms_.reset(compiled_->model, entry_.params);
@@ -457,8 +465,8 @@ void FxInstance::convert_depth(const pfx_pass_context& context) {
 }
 
 void FxInstance::run_decode(const pfx_pass_context& context) {
-  (void)context;  // the host bound the output and its viewport
-  glBindTextureUnit(0, back_buffer_[current_].texture);
+  (void)context;  // the host bound the output, its viewport and the frame's colour on unit 0
+  glBindTextureUnit(1, back_buffer_[current_].texture);
   glUseProgram(decode_program_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -8,12 +8,13 @@ The file says in its header comments how it is judged; every expected value come
 
   // technique: NAME          the technique to run (default: the file's name)
   // size: WxH                the input picture's size (default 64x4)
-  // input: gradient|nan      the input: an 8-bit gradient PNG (default), or an EXR holding NaN,
-                              +Inf, -Inf, 70000, -1 and ordinary values
+  // input: gradient|alpha|nan  the input: an 8-bit gradient PNG (default), the same with an alpha
+                              that varies, or an EXR holding NaN, +Inf, -Inf, 70000, -1 and
+                              ordinary values
   // expect: checks           every pixel green: the shader checked its own results (default).
                               Check i covers the pixel columns [i*CELL, (i+1)*CELL); a red one
                               names the check that failed.
-  // expect: input            the output equals the input, byte for byte
+  // expect: input            the output equals the input, byte for byte (alpha too)
   // expect: invert           the output is 255 - the input in R, G and B
   // expect: finite           the output (EXR) is finite everywhere and in [0, 1]
   // cell: N                  columns per check (default 4)
@@ -42,6 +43,7 @@ def header(path):
 
 def write(path, pixels, fmt):
     spec = oiio.ImageSpec(pixels.shape[1], pixels.shape[0], pixels.shape[2], fmt)
+    spec.attribute("oiio:UnassociatedAlpha", 1)  # the values as given, not divided by alpha
     out = oiio.ImageOutput.create(path)
     out.open(path, spec)
     out.write_image(pixels)
@@ -49,7 +51,10 @@ def write(path, pixels, fmt):
 
 
 def read(path, fmt):
-    buf = oiio.ImageBuf(path)
+    # As stored: OpenImageIO would otherwise multiply a PNG's colour by its alpha on reading.
+    config = oiio.ImageSpec()
+    config.attribute("oiio:UnassociatedAlpha", 1)
+    buf = oiio.ImageBuf(path, 0, 0, config)
     return buf.get_pixels(fmt)
 
 
@@ -70,7 +75,7 @@ def make_input(settings, folder):
     pixels[..., 0] = (x * 37 + y * 11) % 256
     pixels[..., 1] = (x * 5 + y * 67) % 256
     pixels[..., 2] = (x * 3 + 128) % 256
-    pixels[..., 3] = 255
+    pixels[..., 3] = (x * 7 + y * 13) % 256 if settings["input"] == "alpha" else 255
     path = os.path.join(folder, "input.png")
     write(path, pixels, oiio.UINT8)
     return path, pixels
@@ -111,14 +116,15 @@ def main():
         return 0
     out = read(out_path, oiio.UINT8).astype(int)
     if settings["expect"] == "input" or settings["expect"] == "invert":
-        want = input_pixels[..., :3].astype(int)
+        channels = 4 if settings["expect"] == "input" else 3
+        want = input_pixels[..., :channels].astype(int)
         if settings["expect"] == "invert":
             want = 255 - want
-        diff = np.abs(out[..., :3] - want)
+        diff = np.abs(out[..., :channels] - want)
         if diff.max() > 0:
             ys, xs = np.nonzero(diff.max(axis=2))
             print("FAIL: %d pixels differ, up to %d codes; first at (%d, %d): %s, expected %s"
-                  % (len(xs), diff.max(), xs[0], ys[0], out[ys[0], xs[0], :3], want[ys[0], xs[0]]))
+                  % (len(xs), diff.max(), xs[0], ys[0], out[ys[0], xs[0], :channels], want[ys[0], xs[0]]))
             return 1
         print("ok: %s, byte for byte" % settings["expect"])
         return 0

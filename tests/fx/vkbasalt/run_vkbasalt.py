@@ -31,7 +31,7 @@ import OpenImageIO as oiio
 VKBASALT_MANIFEST = "/usr/share/vulkan/implicit_layer.d/vkBasalt.json"
 
 # The conformance files that vkBasalt 0.3.2.8 compiles and runs on lavapipe. Each is one ctest test.
-SUBSET = ["conversions.fx", "identity.fx", "invert.fx", "nonfinite.fx", "operators.fx", "samplers.fx",
+SUBSET = ["alpha.fx", "conversions.fx", "identity.fx", "invert.fx", "nonfinite.fx", "operators.fx", "samplers.fx",
           "size_1x1.fx"]
 
 # The others, each with what vkBasalt 0.3.2.8 says or does on it (its own log, tried one by one).
