@@ -258,7 +258,22 @@ bool FxInstance::compile_source(int width, int height) {
     return false;
   }
   adopt(std::move(compiled));
+  note_ignored_features();
   return true;
+}
+
+void FxInstance::note_ignored_features() {
+  if (told_ignored_) return;
+  told_ignored_ = true;
+  const pfx::fx::FrontEndResult& front = *compiled_->front;
+  for (const pfx::fx::Pragma& pragma : front.preprocessed.pragmas)
+    if (!pragma.tokens.empty() && pragma.tokens[0].text == "reshade")
+      log(PFX_LOG_INFO, front.diagnostics.format({pfx::fx::Severity::kWarning, pragma.location,
+                                                  "'#pragma " + pfx::fx::spell(pragma.tokens) + "' is ignored"}));
+  for (const PassInfo& pass : technique().passes)
+    if (pass.stencil_enable)
+      log(PFX_LOG_INFO, front.diagnostics.format({pfx::fx::Severity::kWarning, pass.location,
+                                                  "stencil states are ignored: the pass draws every pixel its stencil test would have kept"}));
 }
 
 void FxInstance::watch(const pfx::fx::CompiledEffect& compiled) {

@@ -46,6 +46,7 @@ class FxInstance {
   std::unique_ptr<pfx::fx::CompiledEffect> compile_at(int width, int height, std::string* error);
   void adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled);  // its passes, for the next run
   bool compile_source(int width, int height);  // CPU
+  void note_ignored_features();  // once: what of the file pfx does not honour (stencil, #pragma reshade)
   // Edits: the file and its includes are looked at every kWatchIntervalMs; an edit that compiles
   // replaces the running version (parameter values kept: the host owns them), one that does not
   // is logged and the last version that compiled keeps running.
@@ -89,6 +90,7 @@ class FxInstance {
   GlTexture fx_depth_;
   bool depth_in_frame_ = false;
   bool told_no_depth_ = false;
+  bool told_ignored_ = false;
   double compile_ms_ = 0, gl_build_ms_ = 0;
   int cache_hits_ = 0;  // programs of the last GL build that came from the disk cache
   static constexpr int kWatchIntervalMs = 500;
