@@ -7,11 +7,14 @@
 // extra time is quoted in, since absolute times on a shared software renderer drift.
 //
 //   pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE] [--vulkan]
+//                     [--vkbasalt-fx FILE.fx]... [--reshade-include DIR] [--reshade-textures DIR]
 //
 // The adapters are the ones beside this program (BIN/../lib/frei0r-1, BIN/../lib/gstreamer-1.0);
 // ffmpeg's glow comes from Debian's frei0r-plugins, gleffects from gstreamer1.0-gl.
 // --vulkan measures the Vulkan layer instead (BIN/../share/vulkan/implicit_layer.d), in vkcube
 // (vulkan-tools) on a display (xvfb-run), beside vkBasalt's CAS (package vkbasalt) as the peer.
+// --vkbasalt-fx measures vkBasalt running ReShade FX files instead: vkcube alone, then one row per
+// file, so that an FX effect's cost in pfx (pfx-bench) has the peer's figure beside it.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -42,6 +45,8 @@ struct Row {
   std::string host, name, what;   // "ffmpeg", "pfx_bloom", the filter as given to the host
   std::string baseline;           // the row whose time this one's extra is measured from ("" for none)
   double ms_per_frame = 0;
+  std::string not_run = "";       // why the row was not measured ("" when it was)
+  bool fx_file = false;           // vkBasalt runs an FX file: whether it compiled is checked first
 };
 
 struct Options {
@@ -50,16 +55,40 @@ struct Options {
   int runs = 3;
   std::string json;
   bool vulkan = false;
+  std::vector<std::string> vkbasalt_fx;  // FX files for vkBasalt; rows of their own when given
+  std::string reshade_include;           // vkBasalt's reshadeIncludePath ("" for pfx's headers)
+  std::string reshade_textures;          // vkBasalt's reshadeTexturePath ("" for each file's folder)
 };
+
+const char* const kUsage =
+    "usage: pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE] [--vulkan]\n"
+    "                         [--vkbasalt-fx FILE.fx]... [--reshade-include DIR] [--reshade-textures DIR]\n"
+    "\n"
+    "What the video-host adapters (ffmpeg, GStreamer) or the Vulkan layer cost, in the real hosts: each\n"
+    "row runs SHORT and LONG frames (default 8,32), the time of one more frame is the difference of the\n"
+    "wall times over LONG-SHORT; median of N runs (default 3). The unit is a full-frame RGBA16F copy\n"
+    "pass at the same size (default 1920x1080) timed in this process before and after the rows.\n"
+    "\n"
+    "  --vulkan               vkcube (vulkan-tools) alone, through pfx's Vulkan layer (shared and host\n"
+    "                         memory, chain none and bloom) and through vkBasalt's CAS; needs a display\n"
+    "                         (xvfb-run) and a Vulkan driver (lavapipe: VK_ICD_FILENAMES)\n"
+    "  --vkbasalt-fx FILE.fx  (repeatable; implies --vulkan) the rows become vkcube alone and vkcube\n"
+    "                         through vkBasalt running each ReShade FX file (its first technique); a file\n"
+    "                         vkBasalt cannot compile is listed with its first error, not measured\n"
+    "  --reshade-include DIR  vkBasalt's reshadeIncludePath: a folder with ReShade.fxh (default: pfx's\n"
+    "                         own headers, PLUGINS/fx/include)\n"
+    "  --reshade-textures DIR vkBasalt's reshadeTexturePath (default: each FX file's folder)\n"
+    "  --json FILE            also write the rows as JSON\n";
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   return values.empty() ? 0 : values[values.size() / 2];
 }
 
-// Runs argv with `environment` added, its output to /dev/null; the wall time in seconds, or -1
-// when it failed.
-double timed_run(const std::vector<std::string>& argv, const std::vector<std::string>& environment) {
+// Runs argv with `environment` added, its output (stdout and stderr) to the file `output`; the
+// wall time in seconds, or -1 when it failed.
+double timed_run(const std::vector<std::string>& argv, const std::vector<std::string>& environment,
+                 const std::string& output = "/dev/null") {
   std::vector<std::string> variables;
   for (char** entry = environ; *entry; ++entry) variables.push_back(*entry);
   variables.insert(variables.end(), environment.begin(), environment.end());
@@ -71,8 +100,8 @@ double timed_run(const std::vector<std::string>& argv, const std::vector<std::st
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = fork();
   if (pid == 0) {
-    std::freopen("/dev/null", "w", stdout);
-    std::freopen("/dev/null", "w", stderr);
+    std::freopen(output.c_str(), "w", stdout);
+    dup2(fileno(stdout), fileno(stderr));
     execvpe(args[0], args.data(), env.data());
     _exit(127);
   }
@@ -123,6 +152,13 @@ bool parse(int argc, char** argv, Options* options) {
       options->json = argv[++i];
     } else if (arg == "--vulkan") {
       options->vulkan = true;
+    } else if (arg == "--vkbasalt-fx" && has_value) {
+      options->vkbasalt_fx.push_back(fs::absolute(argv[++i]).string());
+      options->vulkan = true;
+    } else if (arg == "--reshade-include" && has_value) {
+      options->reshade_include = fs::absolute(argv[++i]).string();
+    } else if (arg == "--reshade-textures" && has_value) {
+      options->reshade_textures = fs::absolute(argv[++i]).string();
     } else {
       return false;
     }
@@ -131,10 +167,33 @@ bool parse(int argc, char** argv, Options* options) {
 }
 
 // vkcube alone, through pfx's layer on both paths, and through vkBasalt; each row's `what` is the
-// variables it runs with.
-std::vector<Row> vulkan_rows(const fs::path& scratch) {
+// variables it runs with. With --vkbasalt-fx: vkcube alone and vkBasalt running each FX file.
+std::vector<Row> vulkan_rows(const fs::path& scratch, const Options& options) {
   std::ofstream(scratch / "vkBasalt.conf") << "effects = cas\n";
   const std::string alone = "alone (layers off)";
+  if (!options.vkbasalt_fx.empty()) {
+    std::vector<Row> rows = {{"vkcube", alone, "DISABLE_PFX_VULKAN=1", ""}};
+    const std::string include = !options.reshade_include.empty()
+                                    ? options.reshade_include
+                                    : (fs::path(pfx::app::default_plugin_directory()) / "fx" / "include").string();
+    for (size_t i = 0; i < options.vkbasalt_fx.size(); ++i) {
+      const fs::path file = options.vkbasalt_fx[i];
+      const std::string textures =
+          options.reshade_textures.empty() ? file.parent_path().string() : options.reshade_textures;
+      // vkBasalt runs its built-in effect when a name is one of its own (cas, fxaa, smaa, deband,
+      // lut, dls), whatever file the config gives that name: each file gets a name it has not.
+      const std::string name = "fx" + std::to_string(i);
+      const fs::path config = scratch / (name + ".conf");
+      std::ofstream(config) << "effects = " << name << "\n"
+                            << name << " = " << file.string() << "\n"
+                            << "reshadeIncludePath = " << include << "\n"
+                            << "reshadeTexturePath = " << textures << "\n";
+      rows.push_back({"vkcube", "vkBasalt " + file.filename().string(),
+                      "DISABLE_PFX_VULKAN=1 ENABLE_VKBASALT=1 VKBASALT_CONFIG_FILE=" + config.string(), alone});
+      rows.back().fx_file = true;
+    }
+    return rows;
+  }
   return {
       {"vkcube", alone, "DISABLE_PFX_VULKAN=1", ""},
       {"vkcube", "pfx layer chain=none, shared memory", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none", alone},
@@ -162,9 +221,13 @@ std::vector<std::string> vkcube_command(const Row& row, int frames, const Option
 
 int main(int argc, char** argv) {
   Options options;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::fputs(kUsage, stdout);
+      return pfx::exit_code::kOk;
+    }
   if (!parse(argc, argv, &options)) {
-    std::fputs("usage: pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE] [--vulkan]\n",
-               stderr);
+    std::fputs(kUsage, stderr);
     return pfx::exit_code::kUsage;
   }
   std::string error;
@@ -191,7 +254,7 @@ int main(int argc, char** argv) {
     return pfx::exit_code::kInternal;
   }
 
-  std::vector<Row> rows = options.vulkan ? vulkan_rows(scratch) : std::vector<Row>{
+  std::vector<Row> rows = options.vulkan ? vulkan_rows(scratch, options) : std::vector<Row>{
       {"ffmpeg", "no filter (decode, to RGBA)", "format=rgba", ""},
       {"ffmpeg", "pfx_chain chain=none", "format=rgba,frei0r=filter_name=pfx_chain:filter_params=none",
        "no filter (decode, to RGBA)"},
@@ -219,6 +282,24 @@ int main(int argc, char** argv) {
 
   const double copy_before = copy_pass_ms(options.width, options.height, 15);
   for (auto& row : rows) {
+    // vkBasalt goes on without an effect it cannot compile (it logs "vkBasalt err:" and vkcube ends
+    // with 0), which would time plain vkcube: one frame first, its log read.
+    if (row.fx_file) {
+      const fs::path log = scratch / "vkbasalt-check.log";
+      const bool ran = timed_run(command(row, 1), environment, log.string()) >= 0;
+      std::ifstream in(log);
+      std::string last;
+      for (std::string line; std::getline(in, line); last = line)
+        if (line.rfind("vkBasalt err:", 0) == 0) {
+          row.not_run = line.substr(13);
+          break;
+        }
+      if (row.not_run.empty() && !ran) row.not_run = " vkcube failed; its last words: " + last;
+      if (!row.not_run.empty()) {
+        std::fprintf(stderr, "%s %s: not measured:%s\n", row.host.c_str(), row.name.c_str(), row.not_run.c_str());
+        continue;
+      }
+    }
     std::vector<double> per_frame;
     for (int run = 0; run < options.runs; ++run) {
       const double short_run = timed_run(command(row, options.short_frames), environment);
@@ -243,6 +324,12 @@ int main(int argc, char** argv) {
   std::string json = "{\"renderer\": \"" + context->renderer() + "\", \"size\": \"" + size + "\", \"copy_pass_ms\": " +
                      std::to_string(copy) + ", \"rows\": [";
   for (const auto& row : rows) {
+    if (!row.not_run.empty()) {
+      std::printf("| %s | %s | | | | not measured:%s |\n", row.host.c_str(), row.name.c_str(), row.not_run.c_str());
+      json += std::string(&row == &rows.front() ? "" : ", ") + "{\"host\": \"" + row.host + "\", \"filter\": \"" +
+              row.name + "\", \"not_run\": true}";
+      continue;
+    }
     double base = 0;
     for (const auto& other : rows)
       if (other.host == row.host && other.name == row.baseline) base = other.ms_per_frame;
