@@ -29,6 +29,13 @@ class TextureFilter {
                                                std::string* error);
   ~TextureFilter();  // with the context current: its GL objects go, the host's state is put back
 
+  // Applies the settings as process() does and tells whether a frame of that size would run any
+  // pass: false when no effect is on, every effect on is a no-op with its values, or the settings
+  // do not build (*warning then says why, once per revision). The host then hands its frame on as
+  // it came instead of calling process(): nothing is decoded, copied or encoded.
+  bool runs_passes(const ChainSettings& settings, uint64_t revision, int width, int height, double time_seconds,
+                   std::string* warning);
+
   // Runs the chain the settings name over `in` into `out` (textures of width x height, RGBA8 or
   // RGB10_A2, row 0 at the top). Settings that do not build (an unknown effect, a bad
   // assignment, a missing preset) copy the frame unchanged and put the reason in *warning, once

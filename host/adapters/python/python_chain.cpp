@@ -191,6 +191,20 @@ bool PythonChain::inputs_given(const pfx_frame& frame, std::string* error) {
   return true;
 }
 
+// An 8-bit picture no pass would change: decoding and encoding give every code back, so the
+// result is a copy of its bytes, with no upload, pass or read back. (A float picture still goes
+// through the GL: the chain's colour is half float, and pfx-render's result holds that rounding.)
+void PythonChain::hand_back(const RunRequest& request, RunResult* result) {
+  result->bytes = request.bytes;
+  result->image.width = request.image.width;
+  result->image.height = request.image.height;
+  host::FrameReport skipped;
+  for (size_t i = 0; i < chain_->size(); ++i) skipped.effects_skipped.push_back(chain_->instance_name(i));
+  skipped.timing = "off";  // nothing ran to be timed
+  report_ = {{"renderer", renderer_}};
+  app::add_frame_report(skipped, &report_);
+}
+
 void PythonChain::render(const RunRequest& request, RunResult* result, std::string* error) {
   const app::Image& image = request.image;
   GLint max_size = 0;
@@ -207,6 +221,14 @@ void PythonChain::render(const RunRequest& request, RunResult* result, std::stri
   frame.time_seconds = request.time_seconds;
   frame.frame_index = request.frame_index;
   if (!inputs_given(frame, error)) return;
+  if (request.display) {
+    bool passes = false;
+    if (!chain_->plans_passes(frame, &passes, error)) return;
+    if (!passes) {
+      hand_back(request, result);
+      return;
+    }
+  }
 
   float_picture_.upload(image);  // the colour of a float picture, the depth of either
   host::FrameTextures textures = float_picture_.inputs();
