@@ -93,7 +93,7 @@ TEST_CASE("pfxfilter: a property changed while the pipeline plays applies from t
   for (int n = 4; n < 6; ++n) CHECK(same(a, c, n));  // strength 0 from frame 4: nothing added
 }
 
-TEST_CASE("pfxfilter: with no effect on, or only no-ops, each buffer is handed on as it came; a chain that runs draws "
+TEST_CASE("pfxfilter: with no effect on, or only no-ops, each buffer is handed on as it came, and a chain that runs draws "
           "a new one",
           "[adapters][gstreamer][pfxfilter]") {
   Scratch scratch;

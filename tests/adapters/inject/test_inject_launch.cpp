@@ -180,7 +180,7 @@ TEST_CASE("variables set by hand: the assignments that apply give the frame the 
   CHECK_FALSE(same_pixels(read_png_file(folder.file("hand.png")), read_png_file(folder.file("dry.png"))));
 }
 
-TEST_CASE("with no effect on, or only no-ops, no present goes through the chain; with bloom every one does") {
+TEST_CASE("with no effect on, or only no-ops, no present goes through the chain, and with bloom every one does") {
   ScratchFolder folder("untouched");
   // The count of presents whose frame was copied in, run and copied out, from the frame times
   // the library writes for --bench.
