@@ -1,6 +1,7 @@
 // A chain run from one texture to another on a host's own GL context (GStreamer's GL thread,
 // OBS's graphics thread), with no copy through the CPU: the 8-bit frame is decoded, run through
-// the chain the settings name, and encoded back. GL state the host set is put back (libpfxhost's
+// the chain the settings name, and encoded back; a frame no pass would change is not touched at
+// all (runs_passes: the host hands its own on). GL state the host set is put back (libpfxhost's
 // GlStateGuard), so what the host draws next sees what it would without pfx.
 //
 // No GL header here: hosts include their own (GStreamer's, OBS's), which cannot meet glad's.
