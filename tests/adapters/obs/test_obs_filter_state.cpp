@@ -97,6 +97,7 @@ TEST_CASE("with no effect on, or only no-ops, the chain filter draws its source 
   write_photo_crop(scratch / "in.png", 200, 180, 48, 40);
   obs_source_t* image = obs.image_source(scratch / "in.png");
   const ObsFrame plain = obs.render(image);
+  const int textures = count_gl_objects(obs).textures;
   auto values = [](const char* chain, const char* set) {
     obs_data_t* settings = obs_data_create();
     obs_data_set_string(settings, "chain", chain);
@@ -105,8 +106,6 @@ TEST_CASE("with no effect on, or only no-ops, the chain filter draws its source 
   };
   obs_data_t* none = values("none", "");
   obs_source_t* filter = obs.add_filter(image, "pfx_chain_filter", none);
-  obs.render(image);  // OBS's own first-use objects for a filtered source
-  const int textures = count_gl_objects(obs).textures;
   // Nothing drawn into a texture of the filter's, nor copied, decoded or encoded.
   CHECK(obs.render(image).rgba == plain.rgba);
   CHECK(count_gl_objects(obs).textures == textures);
