@@ -182,12 +182,36 @@ uint32_t ContextPipeline::fit_to_depth(const FrameWork& work, std::vector<std::s
   return inputs;
 }
 
+bool ContextPipeline::nothing_to_run(const FrameWork& work, bool* nothing, std::string* reason) const {
+  *nothing = !wanted_any();
+  if (*nothing) return true;
+  // An effect the fit switched off for lack of depth may come back once depth is usable: only the
+  // depth check can tell, so the frame takes the full way.
+  for (size_t i = 0; i < chain_->size(); ++i)
+    if (fit_.wanted(i) != chain_->enabled(i)) return true;
+  // Whatever the depth buffer turns out to hold: an effect may declare passes with depth and
+  // without.
+  for (uint32_t inputs : {uint32_t(PFX_INPUT_COLOR | PFX_INPUT_DEPTH), uint32_t(PFX_INPUT_COLOR)}) {
+    pfx_frame frame = frame_for(work.width, work.height, inputs);
+    frame.time_seconds = work.time_seconds;
+    frame.frame_index = work.frame;
+    bool passes = false;
+    if (!chain_->plans_passes(frame, &passes, reason)) return false;
+    if (passes) return true;
+  }
+  *nothing = true;
+  return true;
+}
+
 bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* messages, std::string* reason) {
-  // With every effect off the frame is presented as the application drew it: not a pixel is
-  // copied and no GL state is touched, unless a capture or the bench's copy pass asks for GL.
-  const bool chain_may_run = wanted_any();
+  // With every effect off or a no-op the frame is presented as the application drew it: not a
+  // pixel is copied and no GL state is touched, unless a capture or the bench's copy pass asks for
+  // GL.
   ran_passes_ = false;
-  if (!chain_may_run && work.captures.empty() && !work.measure_copy_pass) return true;
+  bool nothing = false;
+  if (!nothing_to_run(work, &nothing, reason)) return false;
+  if (nothing && work.captures.empty() && !work.measure_copy_pass) return true;
+  const bool chain_may_run = wanted_any();
   host::GlStateGuard guard(*chain_);
   copy_.resize(work.width, work.height);
   if (!depth_said_ && !copy_.has_depth()) messages->push_back("depth: none (" + copy_.depth_description() + ")");

@@ -59,6 +59,9 @@ class ContextPipeline {
   pfx_frame frame_for(int width, int height, uint32_t inputs) const;
   // Whether the user switched any effect on (InputFit may have switched some off for now).
   bool wanted_any() const;
+  // *nothing: no effect is on, or every one on is a no-op with its values whatever the depth
+  // holds, so the frame needs nothing copied. False with *reason when declare fails.
+  bool nothing_to_run(const FrameWork& work, bool* nothing, std::string* reason) const;
   // Copies and checks the back buffer's depth and fits the chain to what it holds: the inputs the
   // frame has. *ok false with *reason when fitting failed.
   uint32_t fit_to_depth(const FrameWork& work, std::vector<std::string>* messages, std::string* reason, bool* ok);
