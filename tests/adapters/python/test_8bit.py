@@ -66,22 +66,6 @@ def test_an_8_bit_picture_gives_pfx_render_s_png_bit_for_bit(photographs, tmp_pa
     assert not np.array_equal(actual, pixels), "the display defaults changed nothing: the comparison would prove nothing"
 
 
-@pytest.mark.parametrize("layout", ["rgb", "rgba"])
-def test_an_8_bit_picture_no_pass_would_change_comes_back_as_it_was_with_nothing_run(photographs, layout):
-    _, pixels = photographs[layout]
-    with pfx.Chain([]) as empty:
-        assert_same_bytes(empty.run(pixels), pixels, f"no effect on {layout}")
-        assert empty.report["passes"] == [] and empty.report["effects"] == []
-    with pfx.Chain(["bloom", "glare"]) as no_ops:
-        no_ops.set("bloom.strength", 0)
-        no_ops.set("glare.strength", 0)
-        for transfer in ("srgb", "linear"):
-            assert_same_bytes(no_ops.run(pixels, transfer=transfer), pixels, f"no-ops on {layout}, {transfer}")
-            report = no_ops.report
-            assert report["passes"] == [] and report["effects_skipped"] == ["bloom", "glare"]
-            assert report["peak_target_bytes"] == 0
-
-
 def test_transfer_linear_gives_pfx_render_s_transfer_linear(photographs, tmp_path):
     path, pixels = photographs["rgb"]
     expected = pfx_render_png(tmp_path, "--input", path, "--chain", "bloom", "--transfer", "linear")
