@@ -82,8 +82,13 @@ void TextureFilter::Impl::apply(const ChainSettings& settings, uint64_t revision
 bool TextureFilter::runs_passes(const ChainSettings& settings, uint64_t revision, int width, int height,
                                 double time_seconds, std::string* warning) {
   Impl& impl = *impl_;
-  host::GlStateGuard guard(impl.empty->chain());
-  impl.apply(settings, revision, warning);
+  if (revision != impl.applied) {
+    // Building the chain creates its effects on the host's context; the host's state is put back.
+    // Declaring needs no GL, so a frame with settings as before saves no state at all (on a driver
+    // that runs GL on a thread of its own, every query of state waits for that thread).
+    host::GlStateGuard guard(impl.empty->chain());
+    impl.apply(settings, revision, warning);
+  }
   if (!impl.chain) return false;
   bool passes = false;
   std::string why;
