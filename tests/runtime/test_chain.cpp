@@ -87,6 +87,31 @@ TEST_CASE("disabled and no-op effects cost no pass and no target, and the output
   CHECK(rig.chain->report().passes.size() == 1);
 }
 
+TEST_CASE("plans_passes says whether render would run a pass, and runs nothing itself", "[chain]") {
+  Rig rig;
+  std::string error;
+  const pfx_frame frame = pfx::test::make_frame(16, 9);
+  bool passes = true;
+  REQUIRE(rig.chain->plans_passes(frame, &passes, &error));
+  CHECK(!passes);  // no effect at all
+  REQUIRE(rig.chain->add("gain", &error));     // gain 1: a no-op
+  REQUIRE(rig.chain->add("boxblur", &error));  // disabled below
+  rig.set("boxblur.radius=3");
+  rig.chain->set_enabled(1, false);
+  passes = true;
+  REQUIRE(rig.chain->plans_passes(frame, &passes, &error));
+  CHECK(!passes);
+  rig.chain->set_enabled(1, true);
+  REQUIRE(rig.chain->plans_passes(frame, &passes, &error));
+  CHECK(passes);
+  rig.chain->set_enabled(1, false);
+  rig.set("gain.gain=2");
+  passes = false;
+  REQUIRE(rig.chain->plans_passes(frame, &passes, &error));
+  CHECK(passes);
+  CHECK(rig.chain->report().frame == 0);  // no frame was rendered
+}
+
 TEST_CASE("a two-effect chain pools its targets below their sum", "[chain][pool]") {
   Rig rig;
   std::string error;

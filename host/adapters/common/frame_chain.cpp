@@ -27,21 +27,34 @@ FrameChain::~FrameChain() {
 
 bool FrameChain::runs_effects() const { return app::any_enabled(*chain_); }
 
+pfx_frame FrameChain::describe(int width, int height, double time_seconds, uint64_t frame_index) const {
+  // A video frame is colour alone: no depth, normals or lights arrive with it.
+  pfx_frame description = app::describe_frame(width, height, PFX_INPUT_COLOR, PFX_DEPTH_NONE,
+                                              app::make_camera(app::CameraOptions{}, width, height));
+  // As the host gives it (docs/hosts.md says what each host passes); a non-finite time is none.
+  description.time_seconds = std::isfinite(time_seconds) ? time_seconds : 0.0;
+  description.frame_index = frame_index;
+  return description;
+}
+
+bool FrameChain::plans_passes(int width, int height, double time_seconds, uint64_t frame_index, bool* passes,
+                              std::string* error) const {
+  *passes = false;
+  if (!runs_effects()) return true;
+  return chain_->plans_passes(describe(width, height, time_seconds, frame_index), passes, error);
+}
+
 bool FrameChain::render(gl::DisplayFrame& frame, double time_seconds, uint64_t frame_index, GLuint* result,
                         std::string* error) {
   if (!runs_effects()) {
     *result = frame.color();
     return true;
   }
-  // A video frame is colour alone: no depth, normals or lights arrive with it.
-  pfx_frame description = app::describe_frame(frame.width(), frame.height(), PFX_INPUT_COLOR, PFX_DEPTH_NONE,
-                                              app::make_camera(app::CameraOptions{}, frame.width(), frame.height()));
-  // As the host gives it (docs/hosts.md says what each host passes); a non-finite time is none.
-  description.time_seconds = std::isfinite(time_seconds) ? time_seconds : 0.0;
-  description.frame_index = frame_index;
   host::FrameTextures textures;
   textures.color = frame.color();
-  if (!chain_->render(description, textures, frame.output(), error)) return false;
+  if (!chain_->render(describe(frame.width(), frame.height(), time_seconds, frame_index), textures, frame.output(),
+                      error))
+    return false;
   *result = frame.output();
   return true;
 }

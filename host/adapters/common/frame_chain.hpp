@@ -33,12 +33,20 @@ class FrameChain {
   // Whether any effect is on: without one the decoded frame goes straight back out.
   bool runs_effects() const;
 
+  // Whether a frame of that size and time would run any pass: false with no effect on, or when
+  // every effect on is a no-op with its values. Then the adapter hands its frame on as it came,
+  // with no decode, chain or encode (the round trip gives every 8-bit code back anyway). False
+  // with *error when an effect's declare fails.
+  bool plans_passes(int width, int height, double time_seconds, uint64_t frame_index, bool* passes,
+                    std::string* error) const;
+
   // Runs the chain over frame.color() into frame.output(); *result is the texture to encode
   // (frame.color() when no effect is on). False with *error naming the effect or pass.
   bool render(gl::DisplayFrame& frame, double time_seconds, uint64_t frame_index, GLuint* result, std::string* error);
 
  private:
   FrameChain() = default;
+  pfx_frame describe(int width, int height, double time_seconds, uint64_t frame_index) const;
   std::unique_ptr<host::ParamStore> params_;
   std::unique_ptr<host::Chain> chain_;
 };

@@ -16,6 +16,8 @@ struct TextureFilter::Impl {
   app::Transfer transfer = app::Transfer::SRGB;
   uint64_t applied = 0;
   uint64_t frames = 0;
+  // Builds the chain when the settings changed since the last call; *warning says why it did not.
+  void apply(const ChainSettings& settings, uint64_t revision, std::string* warning);
 };
 
 namespace {
@@ -64,21 +66,45 @@ TextureFilter::~TextureFilter() {
 
 bool TextureFilter::runs_chain() const { return impl_->chain != nullptr; }
 
+void TextureFilter::Impl::apply(const ChainSettings& settings, uint64_t revision, std::string* warning) {
+  if (revision == applied) return;
+  applied = revision;
+  chain.reset();
+  app::ChainRecipe recipe;
+  std::vector<std::string> notes;
+  std::string why;
+  if (resolve_chain_settings(settings, *registry, &transfer, &recipe, &why))
+    chain = FrameChain::build(*registry, recipe, "set", &notes, &why);
+  if (!chain) *warning = why + "; frames pass through unchanged";
+  for (const auto& note : notes) *warning += (warning->empty() ? "" : "; ") + note;
+}
+
+bool TextureFilter::runs_passes(const ChainSettings& settings, uint64_t revision, int width, int height,
+                                double time_seconds, std::string* warning) {
+  Impl& impl = *impl_;
+  if (revision != impl.applied) {
+    // Building the chain creates its effects on the host's context; the host's state is put back.
+    // Declaring needs no GL, so a frame with settings as before saves no state at all (on a driver
+    // that runs GL on a thread of its own, every query of state waits for that thread).
+    host::GlStateGuard guard(impl.empty->chain());
+    impl.apply(settings, revision, warning);
+  }
+  if (!impl.chain) return false;
+  bool passes = false;
+  std::string why;
+  if (!impl.chain->plans_passes(width, height, time_seconds, impl.frames + 1, &passes, &why)) {
+    *warning = why + "; frames pass through unchanged";
+    impl.chain.reset();
+    return false;
+  }
+  return passes;
+}
+
 bool TextureFilter::process(const ChainSettings& settings, uint64_t revision, uint32_t in, uint32_t out, int width,
                             int height, double time_seconds, std::string* warning, std::string* error) {
   Impl& impl = *impl_;
   host::GlStateGuard guard(impl.empty->chain());
-  if (revision != impl.applied) {
-    impl.applied = revision;
-    impl.chain.reset();
-    app::ChainRecipe recipe;
-    std::vector<std::string> notes;
-    std::string why;
-    if (resolve_chain_settings(settings, *impl.registry, &impl.transfer, &recipe, &why))
-      impl.chain = FrameChain::build(*impl.registry, recipe, "set", &notes, &why);
-    if (!impl.chain) *warning = why + "; frames pass through unchanged";
-    for (const auto& note : notes) *warning += (warning->empty() ? "" : "; ") + note;
-  }
+  impl.apply(settings, revision, warning);
   // Errors left from before are not ours to report; ours are looked for at the end.
   while (glGetError() != GL_NO_ERROR) {
   }

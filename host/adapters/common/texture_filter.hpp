@@ -1,6 +1,7 @@
 // A chain run from one texture to another on a host's own GL context (GStreamer's GL thread,
 // OBS's graphics thread), with no copy through the CPU: the 8-bit frame is decoded, run through
-// the chain the settings name, and encoded back. GL state the host set is put back (libpfxhost's
+// the chain the settings name, and encoded back; a frame no pass would change is not touched at
+// all (runs_passes: the host hands its own on). GL state the host set is put back (libpfxhost's
 // GlStateGuard), so what the host draws next sees what it would without pfx.
 //
 // No GL header here: hosts include their own (GStreamer's, OBS's), which cannot meet glad's.
@@ -28,6 +29,13 @@ class TextureFilter {
   static std::unique_ptr<TextureFilter> create(std::shared_ptr<const host::PluginRegistry> registry,
                                                std::string* error);
   ~TextureFilter();  // with the context current: its GL objects go, the host's state is put back
+
+  // Applies the settings as process() does and tells whether a frame of that size would run any
+  // pass: false when no effect is on, every effect on is a no-op with its values, or the settings
+  // do not build (*warning then says why, once per revision). The host then hands its frame on as
+  // it came instead of calling process(): nothing is decoded, copied or encoded.
+  bool runs_passes(const ChainSettings& settings, uint64_t revision, int width, int height, double time_seconds,
+                   std::string* warning);
 
   // Runs the chain the settings name over `in` into `out` (textures of width x height, RGBA8 or
   // RGB10_A2, row 0 at the top). Settings that do not build (an unknown effect, a bad

@@ -140,6 +140,14 @@ bool Instance::render(double time, const uint32_t* in, uint32_t* out, std::strin
       gl_ = std::move(side);
     }
     if (!prepare_chain(error)) return false;
+    bool passes = false;
+    if (!gl_->chain->plans_passes(width_, height_, time, frames_ + 1, &passes, error)) return false;
+    if (!passes) {
+      // Nothing would change the frame, and decoding and encoding give every code back: one copy
+      // on the CPU instead of an upload, two passes and a read back.
+      if (out != in) std::memcpy(out, in, static_cast<size_t>(width_) * height_ * 4);
+      return true;
+    }
     gl_->frame.decode_bytes(reinterpret_cast<const uint8_t*>(in), gl_->transfer);
     GLuint result = 0;
     if (!gl_->chain->render(gl_->frame, time, frames_ + 1, &result, error)) return false;

@@ -31,6 +31,11 @@ FilterGl::~FilterGl() {
   filter_.reset();  // before the registry whose plugins it runs
 }
 
+bool FilterGl::runs_passes(const adapters::ChainSettings& settings, uint64_t revision, int width, int height,
+                           double time_seconds, std::string* warning) {
+  return filter_->runs_passes(settings, revision, width, height, time_seconds, warning);
+}
+
 bool FilterGl::process(const adapters::ChainSettings& settings, uint64_t revision, uint32_t in, uint32_t out,
                        int width, int height, double time_seconds, std::string* warning, std::string* error) {
   return filter_->process(settings, revision, in, out, width, height, time_seconds, warning, error);

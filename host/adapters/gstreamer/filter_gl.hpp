@@ -25,6 +25,11 @@ class FilterGl {
                                          std::vector<std::string>* messages, std::string* error);
   ~FilterGl();
 
+  // Whether a frame of that size would run any pass (TextureFilter::runs_passes): when not, the
+  // element hands the buffer on as it came.
+  bool runs_passes(const adapters::ChainSettings& settings, uint64_t revision, int width, int height,
+                   double time_seconds, std::string* warning);
+
   // Runs the chain the settings name over `in` into `out` (textures of width x height, RGBA8 or
   // RGB10_A2, row 0 at the top). Settings that do not build (an unknown effect, a bad
   // assignment, a missing preset) copy the frame unchanged and put the reason in *warning, once

@@ -139,6 +139,32 @@ struct FrameJob {
   bool ok = false;
 };
 
+// The settings and the time of the buffer being filtered, as the streaming thread last set them.
+FrameJob frame_job(GstPfxFilter* self) {
+  FrameJob job{self, {}, 0, 0, nullptr, nullptr, {}, {}, false};
+  GST_OBJECT_LOCK(self);
+  job.settings = self->state->settings;
+  job.revision = self->state->revision;
+  job.time_seconds = self->state->time_seconds;
+  GST_OBJECT_UNLOCK(self);
+  return job;
+}
+
+void say_warning(GstPfxFilter* self, const std::string& warning) {
+  if (warning.empty() || warning == self->state->said) return;
+  self->state->said = warning;
+  GST_ELEMENT_WARNING(self, STREAM, FAILED, ("pfxfilter: %s", warning.c_str()), (nullptr));
+}
+
+void plan_on_gl_thread(GstGLContext*, gpointer data) {
+  auto* job = static_cast<FrameJob*>(data);
+  auto* filter = GST_GL_FILTER(job->self);
+  job->ok = job->self->state->gl &&
+            job->self->state->gl->runs_passes(job->settings, job->revision, GST_VIDEO_INFO_WIDTH(&filter->out_info),
+                                              GST_VIDEO_INFO_HEIGHT(&filter->out_info), job->time_seconds,
+                                              &job->warning);
+}
+
 void run_on_gl_thread(GstGLContext*, gpointer data) {
   auto* job = static_cast<FrameJob*>(data);
   auto* filter = GST_GL_FILTER(job->self);
@@ -150,34 +176,46 @@ void run_on_gl_thread(GstGLContext*, gpointer data) {
                                           &job->warning, &job->error);
 }
 
+// A frame that no pass would change (no effect on, every effect a no-op with its values, settings
+// that do not build) leaves as the very buffer that came in, as a passthrough element's does:
+// nothing is allocated, decoded, copied or encoded. Otherwise an output buffer as usual.
+GstFlowReturn prepare_output_buffer(GstBaseTransform* transform, GstBuffer* inbuf, GstBuffer** outbuf) {
+  auto* self = GST_PFX_FILTER(transform);
+  // The buffer's time reaches the chain as the frame time (seconds of stream time).
+  const GstClockTime pts = GST_BUFFER_PTS(inbuf);
+  GST_OBJECT_LOCK(self);
+  self->state->time_seconds = GST_CLOCK_TIME_IS_VALID(pts) ? static_cast<double>(pts) / GST_SECOND : 0.0;
+  GST_OBJECT_UNLOCK(self);
+  FrameJob job = frame_job(self);
+  gst_gl_context_thread_add(GST_GL_BASE_FILTER(transform)->context, plan_on_gl_thread, &job);
+  say_warning(self, job.warning);
+  if (!job.ok) {
+    // The base class neither unrefs an input it is handed back as the output nor copies it.
+    *outbuf = inbuf;
+    return GST_FLOW_OK;
+  }
+  return GST_BASE_TRANSFORM_CLASS(gst_pfx_filter_parent_class)->prepare_output_buffer(transform, inbuf, outbuf);
+}
+
+GstFlowReturn transform(GstBaseTransform* transform, GstBuffer* inbuf, GstBuffer* outbuf) {
+  // The buffer handed on as it came: nothing to draw, and no fence to set on a buffer others may
+  // share.
+  if (inbuf == outbuf) return GST_FLOW_OK;
+  return GST_BASE_TRANSFORM_CLASS(gst_pfx_filter_parent_class)->transform(transform, inbuf, outbuf);
+}
+
 gboolean filter_texture(GstGLFilter* filter, GstGLMemory* in, GstGLMemory* out) {
   auto* self = GST_PFX_FILTER(filter);
-  FrameJob job{self, {}, 0, 0, in, out, {}, {}, false};
-  GST_OBJECT_LOCK(self);
-  job.settings = self->state->settings;
-  job.revision = self->state->revision;
-  job.time_seconds = self->state->time_seconds;
-  GST_OBJECT_UNLOCK(self);
+  FrameJob job = frame_job(self);
+  job.in = in;
+  job.out = out;
   gst_gl_context_thread_add(GST_GL_BASE_FILTER(filter)->context, run_on_gl_thread, &job);
-  if (!job.warning.empty() && job.warning != self->state->said) {
-    self->state->said = job.warning;
-    GST_ELEMENT_WARNING(self, STREAM, FAILED, ("pfxfilter: %s", job.warning.c_str()), (nullptr));
-  }
+  say_warning(self, job.warning);
   if (!job.ok) {
     GST_ELEMENT_ERROR(self, STREAM, FAILED, ("pfxfilter: %s", job.error.c_str()), (nullptr));
     return FALSE;
   }
   return TRUE;
-}
-
-// The buffer's time reaches the chain as the frame time (seconds of stream time).
-gboolean filter(GstGLFilter* filter, GstBuffer* inbuf, GstBuffer* outbuf) {
-  auto* self = GST_PFX_FILTER(filter);
-  const GstClockTime pts = GST_BUFFER_PTS(inbuf);
-  GST_OBJECT_LOCK(self);
-  self->state->time_seconds = GST_CLOCK_TIME_IS_VALID(pts) ? static_cast<double>(pts) / GST_SECOND : 0.0;
-  GST_OBJECT_UNLOCK(self);
-  return gst_gl_filter_filter_texture(filter, inbuf, outbuf);
 }
 
 void install_string(GObjectClass* klass, guint id, const char* name, const char* nick, const char* blurb,
@@ -198,7 +236,7 @@ static void gst_pfx_filter_class_init(GstPfxFilterClass* klass) {
   const pfx::adapters::ChainSettings defaults;
   install_string(object_class, PROP_CHAIN, "chain", "Chain",
                  "pfx effects to run, in order, separated by ',' (e.g. bloom,glare); none: no effect, the frame is "
-                 "only decoded and encoded back; empty: the preset's chain. Effects see colour alone (no depth)",
+                 "handed on as it came; empty: the preset's chain. Effects see colour alone (no depth)",
                  defaults.chain.c_str());
   install_string(object_class, PROP_SET, "set", "Set",
                  "Parameter values, effect.param=value items separated by ';' (bloom.threshold=0.5;bloom.strength=2; "
@@ -226,8 +264,10 @@ static void gst_pfx_filter_class_init(GstPfxFilterClass* klass) {
   base_class->supported_gl_api = static_cast<GstGLAPI>(GST_GL_API_OPENGL | GST_GL_API_OPENGL3 | GST_GL_API_GLES2);
   base_class->gl_start = gl_start;
   base_class->gl_stop = gl_stop;
+  auto* transform_class = GST_BASE_TRANSFORM_CLASS(klass);
+  transform_class->prepare_output_buffer = prepare_output_buffer;
+  transform_class->transform = transform;
   auto* filter_class = GST_GL_FILTER_CLASS(klass);
-  filter_class->filter = filter;
   filter_class->filter_texture = filter_texture;
 }
 

@@ -153,7 +153,7 @@ std::string ContextPipeline::chain_text() const {
   std::string text;
   for (size_t i = 0; i < chain_->size(); ++i)
     text += (text.empty() ? "" : ",") + chain_->instance_name(i) + (fit_.wanted(i) ? "" : " (off)");
-  return text.empty() ? "none (the copy in and out only)" : text;
+  return text.empty() ? "none (frames presented as drawn)" : text;
 }
 
 bool ContextPipeline::wanted_any() const {
@@ -162,47 +162,91 @@ bool ContextPipeline::wanted_any() const {
   return false;
 }
 
+uint32_t ContextPipeline::fit_to_depth(const FrameWork& work, std::vector<std::string>* messages, std::string* reason,
+                                       bool* ok) {
+  *ok = true;
+  uint32_t inputs = PFX_INPUT_COLOR;
+  copy_.copy_depth_in();
+  if (copy_.take_depth_lost()) messages->push_back("depth: " + copy_.depth_description());
+  std::optional<DepthFinding> change;
+  if (depth_check_.update(work.frame, copy_.depth(), work.width, work.height, &change)) inputs |= PFX_INPUT_DEPTH;
+  if (change)
+    messages->push_back("frame " + std::to_string(work.frame) + ": depth: " + copy_.depth_description() + ": " +
+                        change->what +
+                        (change->usable() ? ": read as hardware depth (near " + number_text(settings_.depth_near) +
+                                                " m, far " + number_text(settings_.depth_far) + " m)"
+                                          : ": not used"));
+  const std::string lacking_depth = !copy_.has_depth() ? "the default framebuffer has none"
+                                                       : "the depth buffer holds " + depth_check_.finding().what;
+  *ok = fit_.fit(*chain_, frame_for(work.width, work.height, inputs), lacking_depth, messages, reason);
+  return inputs;
+}
+
+bool ContextPipeline::nothing_to_run(const FrameWork& work, bool* nothing, std::string* reason) const {
+  *nothing = !wanted_any();
+  if (*nothing) return true;
+  // An effect the fit switched off for lack of depth may come back once depth is usable: only the
+  // depth check can tell, so the frame takes the full way.
+  for (size_t i = 0; i < chain_->size(); ++i)
+    if (fit_.wanted(i) != chain_->enabled(i)) return true;
+  // Whatever the depth buffer turns out to hold: an effect may declare passes with depth and
+  // without.
+  for (uint32_t inputs : {uint32_t(PFX_INPUT_COLOR | PFX_INPUT_DEPTH), uint32_t(PFX_INPUT_COLOR)}) {
+    pfx_frame frame = frame_for(work.width, work.height, inputs);
+    frame.time_seconds = work.time_seconds;
+    frame.frame_index = work.frame;
+    bool passes = false;
+    if (!chain_->plans_passes(frame, &passes, reason)) return false;
+    if (passes) return true;
+  }
+  *nothing = true;
+  return true;
+}
+
 bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* messages, std::string* reason) {
+  // With every effect off or a no-op the frame is presented as the application drew it: not a
+  // pixel is copied and no GL state is touched, unless a capture or the bench's copy pass asks for
+  // GL.
+  ran_passes_ = false;
+  bool nothing = false;
+  if (!nothing_to_run(work, &nothing, reason)) return false;
+  if (nothing && work.captures.empty() && !work.measure_copy_pass) return true;
+  const bool chain_may_run = wanted_any();
   host::GlStateGuard guard(*chain_);
   copy_.resize(work.width, work.height);
   if (!depth_said_ && !copy_.has_depth()) messages->push_back("depth: none (" + copy_.depth_description() + ")");
   depth_said_ = true;
-  // With every effect off the chain would only copy: the frame goes straight back out, and its
-  // depth is not needed.
-  const bool chain_may_run = wanted_any();
-  if (!copy_.copy_in(settings_.transfer, chain_may_run, reason)) return false;
-  if (copy_.take_depth_lost()) messages->push_back("depth: " + copy_.depth_description());
-
   uint32_t inputs = PFX_INPUT_COLOR;
   if (chain_may_run) {
-    std::optional<DepthFinding> change;
-    if (depth_check_.update(work.frame, copy_.depth(), work.width, work.height, &change)) inputs |= PFX_INPUT_DEPTH;
-    if (change)
-      messages->push_back("frame " + std::to_string(work.frame) + ": depth: " + copy_.depth_description() + ": " +
-                          change->what +
-                          (change->usable() ? ": read as hardware depth (near " + number_text(settings_.depth_near) +
-                                                  " m, far " + number_text(settings_.depth_far) + " m)"
-                                            : ": not used"));
-    const std::string lacking_depth = !copy_.has_depth() ? "the default framebuffer has none"
-                                                         : "the depth buffer holds " + depth_check_.finding().what;
-    if (!fit_.fit(*chain_, frame_for(work.width, work.height, inputs), lacking_depth, messages, reason)) return false;
+    bool fitted = false;
+    inputs = fit_to_depth(work, messages, reason, &fitted);
+    if (!fitted) return false;
   }
   pfx_frame frame = frame_for(work.width, work.height, inputs);
   frame.time_seconds = work.time_seconds;
   frame.frame_index = work.frame;
+  // Effects that are all off or no-ops with their values change nothing: the frame stays in the
+  // back buffer as it is (the copy in and out would give every code back anyway).
+  bool passes = false;
+  if (chain_may_run && any_enabled(*chain_) && !chain_->plans_passes(frame, &passes, reason)) return false;
+  if ((passes || !work.captures.empty()) && !copy_.copy_colour_in(settings_.transfer, reason)) return false;
   host::FrameTextures textures;
   textures.color = copy_.color();
   if (inputs & PFX_INPUT_DEPTH) textures.depth = copy_.depth();
 
   GLuint result = copy_.color();
-  const bool chain_runs = chain_may_run && any_enabled(*chain_);
-  if (chain_runs) {
+  if (passes) {
     if (!chain_->render(frame, textures, copy_.output(), reason)) return false;
     result = copy_.output();
+    ran_passes_ = true;
   }
-  if (!work.captures.empty() && chain_runs) {
+  if (!work.captures.empty() && chain_may_run && any_enabled(*chain_)) {
+    // Without passes the chain did not run: every instance was off or a no-op.
     std::string skipped;
-    for (const auto& id : chain_->report().effects_skipped) skipped += (skipped.empty() ? "" : ",") + id;
+    if (passes)
+      for (const auto& id : chain_->report().effects_skipped) skipped += (skipped.empty() ? "" : ",") + id;
+    else
+      for (size_t i = 0; i < chain_->size(); ++i) skipped += (skipped.empty() ? "" : ",") + chain_->instance_name(i);
     if (!skipped.empty()) messages->push_back("frame " + std::to_string(work.frame) + ": skipped as no-ops or off: " + skipped);
   }
   // Every file that fails is named: one missing does not hide another.
@@ -214,7 +258,7 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
     if (!write_texture_exr(copy_.color(), work.width, work.height, prefix + ".app.exr", &error)) say(prefix + ".app.exr", error);
     if (!write_texture_exr(result, work.width, work.height, prefix + ".out.exr", &error)) say(prefix + ".out.exr", error);
   }
-  if (!settings_.dry_run) copy_.copy_out(result, settings_.transfer);
+  if (passes && !settings_.dry_run) copy_.copy_out(result, settings_.transfer);
   for (const auto& prefix : work.captures) {
     std::string error;
     if (!write_presented_png(copy_.read_back_buffer(), prefix + ".png", &error)) say(prefix + ".png", error);

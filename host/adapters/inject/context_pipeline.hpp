@@ -45,6 +45,8 @@ class ContextPipeline {
   // piece of GL state it touches is put back. False with *reason when it failed: the caller then
   // leaves this context's frames alone.
   bool process(const FrameWork& work, std::vector<std::string>* messages, std::string* reason);
+  // Whether the last process() ran passes (false: the frame was left as the application drew it).
+  bool ran_passes() const { return ran_passes_; }
   // The copy-pass unit measured on the last frame that asked (0 before).
   double copy_pass_ms() const { return copy_pass_ms_; }
   std::string chain_text() const;
@@ -57,6 +59,12 @@ class ContextPipeline {
   pfx_frame frame_for(int width, int height, uint32_t inputs) const;
   // Whether the user switched any effect on (InputFit may have switched some off for now).
   bool wanted_any() const;
+  // *nothing: no effect is on, or every one on is a no-op with its values whatever the depth
+  // holds, so the frame needs nothing copied. False with *reason when declare fails.
+  bool nothing_to_run(const FrameWork& work, bool* nothing, std::string* reason) const;
+  // Copies and checks the back buffer's depth and fits the chain to what it holds: the inputs the
+  // frame has. *ok false with *reason when fitting failed.
+  uint32_t fit_to_depth(const FrameWork& work, std::vector<std::string>* messages, std::string* reason, bool* ok);
   // Whether `recipe` names the effects the chain was built from, in the same order.
   bool same_effects(const ChainRecipe& recipe) const;
   // Puts the recipe's values and on/off flags into the chain that runs; false with *reason.
@@ -72,6 +80,7 @@ class ContextPipeline {
   bool depth_said_ = false;
   std::string renderer_;  // GL_RENDERER, to choose how passes are timed
   double copy_pass_ms_ = 0;
+  bool ran_passes_ = false;
 };
 
 }  // namespace pfx::inject

@@ -105,7 +105,25 @@ void FrameCopy::resize(int width, int height) {
   glNamedFramebufferTexture(decode_framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
 }
 
-bool FrameCopy::copy_in(Transfer transfer, bool with_depth, std::string* error) {
+void FrameCopy::copy_depth_in() {
+  if (!depth_) return;
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, read_framebuffer_);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  const GLenum depth_error = glGetError();
+  if (depth_error == GL_NO_ERROR) return;
+  depth_description_ += ", which the GL would not copy (error " + std::to_string(depth_error) +
+                        "): the chain runs without depth";
+  depth_lost_ = true;
+  glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_ATTACHMENT, 0, 0);
+  glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+  glDeleteTextures(1, &depth_);
+  depth_ = 0;
+}
+
+bool FrameCopy::copy_colour_in(Transfer transfer, std::string* error) {
   while (glGetError() != GL_NO_ERROR) {
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -114,20 +132,7 @@ bool FrameCopy::copy_in(Transfer transfer, bool with_depth, std::string* error) 
   glReadBuffer(GL_BACK);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, read_framebuffer_);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  GLenum colour_error = glGetError();
-  if (depth_ && with_depth && colour_error == GL_NO_ERROR) {
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    const GLenum depth_error = glGetError();
-    if (depth_error != GL_NO_ERROR) {
-      depth_description_ += ", which the GL would not copy (error " + std::to_string(depth_error) +
-                            "): the chain runs without depth";
-      depth_lost_ = true;
-      glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_ATTACHMENT, 0, 0);
-      glNamedFramebufferTexture(read_framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
-      glDeleteTextures(1, &depth_);
-      depth_ = 0;
-    }
-  }
+  const GLenum colour_error = glGetError();
   glReadBuffer(static_cast<GLenum>(read_buffer));
   if (colour_error != GL_NO_ERROR) {
     *error = "copying the back buffer failed (GL error " + std::to_string(colour_error) + ")";

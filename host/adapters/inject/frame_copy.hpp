@@ -35,10 +35,13 @@ class FrameCopy {
   // What the default framebuffer's depth is, or why there is none, for the log.
   const std::string& depth_description() const { return depth_description_; }
 
-  // Copies the back buffer into color() (decoded as `transfer` says) and, with_depth, depth().
-  // False with *error when GL refused; a refused depth copy only drops depth (has_depth() turns
-  // false).
-  bool copy_in(Transfer transfer, bool with_depth, std::string* error);
+  // Copies the back buffer's depth into depth(), when it has depth. A refused copy only drops
+  // depth (has_depth() turns false). Apart from the colour: depth decides whether the chain runs
+  // passes at all, and the colour is copied only when it does.
+  void copy_depth_in();
+  // Copies the back buffer into color(), decoded as `transfer` says. False with *error when GL
+  // refused.
+  bool copy_colour_in(Transfer transfer, std::string* error);
   // Encodes `texture` (RGBA16F, the frame's size) into the back buffer.
   void copy_out(GLuint texture, Transfer transfer);
 

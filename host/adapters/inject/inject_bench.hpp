@@ -1,5 +1,5 @@
 // pfx-inject --bench: what the injector costs an application, measured in one run on one machine.
-// The application runs FRAMES frames three ways (alone, with the copy in and out around an empty
+// The application runs FRAMES frames three ways (alone, with the library and an empty
 // chain, with the chain), each several times in turn; the frame time is the median interval
 // between presents, and the cost is quoted in full-frame copy passes timed inside the same
 // application at its own size.

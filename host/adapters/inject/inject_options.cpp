@@ -14,7 +14,7 @@ presented instead. The application is not changed; a context below OpenGL 4.5, a
 context or any failure leaves its frames untouched, with one line in the log.
 
   --preset FILE        a preset saved by pfx-view (chain and values); edits apply while APP runs
-  --chain LIST         effects in order, e.g. bloom,dof; "none": the copy in and out only
+  --chain LIST         effects in order, e.g. bloom,dof; "none": no effect, frames presented as drawn
                        (default: the preset's chain, else every effect found)
   --set EFFECT.P=V     a parameter value, after the preset (repeatable; bloom#2.x for a second bloom)
   --plugins DIR        plugin folder (repeatable; default: the one beside pfx-inject)

@@ -23,7 +23,7 @@ struct Capture {
 
 struct InjectSettings {
   // The effects in order; unset: the preset's chain, else every effect found. "none" on the
-  // command line gives an empty chain (the copy in and out only).
+  // command line gives an empty chain (frames presented as the application drew them).
   std::optional<std::vector<std::string>> chain;
   std::string preset;                // a pfx-view preset file, watched for changes; empty: none
   std::vector<std::string> sets;     // "effect.param=value", applied after the preset

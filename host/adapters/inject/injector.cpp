@@ -135,6 +135,7 @@ void Injector::present(const PresentCall& call) {
   const bool ok = entry.pipeline->process(work, &messages, &reason);
   for (const auto& message : messages) log_.line(message);
   if (work.measure_copy_pass) copy_pass_ms_ = entry.pipeline->copy_pass_ms();
+  if (ok && entry.pipeline->ran_passes() && !settings_.stats_file.empty()) stats_.ran_chain();
   if (!ok) {
     log_.line("frame " + std::to_string(presented_) + ": " + reason + "; this context's frames pass through untouched from now on");
     entry.pipeline.reset();

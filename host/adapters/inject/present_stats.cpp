@@ -25,6 +25,7 @@ bool PresentStats::write(const std::string& path, double copy_pass_ms, const std
   root["mode"] = mode;
   root["chain"] = chain;
   root["frames"] = stamps_.size();
+  root["frames_through_chain"] = ran_chain_;
   // A tenth of the frames (at least two) warm caches and the JIT before the median counts.
   root["frame_ms"] = median_frame_ms(std::max<size_t>(2, stamps_.size() / 10));
   root["copy_pass_ms"] = copy_pass_ms;

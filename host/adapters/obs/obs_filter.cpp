@@ -156,6 +156,16 @@ void video_render(void* data, gs_effect_t*) {
   }
   const adapters::ChainSettings& settings = filter->frame_settings;
   const uint64_t revision = filter->frame_revision;
+  const double time_seconds = static_cast<double>(obs_get_video_frame_time()) * 1e-9;
+  std::string warning, error;
+  // A frame no pass would change (no effect on, only no-ops, settings that do not build) is the
+  // source drawn as if the filter were not there: no texture drawn into, copied, decoded or encoded.
+  if (!filter->gl->runs_passes(settings, revision, static_cast<int>(width), static_cast<int>(height), time_seconds,
+                               &warning)) {
+    settled_warning(filter, warning, revision);
+    obs_source_skip_video_filter(filter->source);
+    return;
+  }
   // The filter works on the frame's 8-bit codes (sRGB-encoded video) and draws its result's codes
   // as they are: OBS's linear blending is off while it draws, and put back after.
   const bool linear_srgb = gs_get_linear_srgb();
@@ -176,8 +186,6 @@ void video_render(void* data, gs_effect_t*) {
     filter->height = height;
   }
   gs_texture_t* input = gs_texrender_get_texture(filter->input);
-  std::string warning, error;
-  const double time_seconds = static_cast<double>(obs_get_video_frame_time()) * 1e-9;
   // OBS's 8-bit textures have sRGB formats that sources draw into with sRGB writes: the stored
   // bytes are the frame's codes. Sampling such a texture would decode them, so the bytes are
   // copied as they are into a plain RGBA8 texture for pfx's own decode. The result is encoded

@@ -1,5 +1,6 @@
 #include "python_chain.hpp"
 
+#include <Imath/half.h>
 #include <glad/gl.h>
 
 #include <pfx/host/gl_error.hpp>
@@ -191,6 +192,26 @@ bool PythonChain::inputs_given(const pfx_frame& frame, std::string* error) {
   return true;
 }
 
+// A picture no pass would change, with no upload, pass or read back. An 8-bit one comes back as
+// it came: decoding and encoding give every code back. A float one comes back at the precision of
+// the chain's colour, half float, rounded to the nearest as a float16 array is.
+void PythonChain::hand_back(const RunRequest& request, RunResult* result) {
+  result->image.width = request.image.width;
+  result->image.height = request.image.height;
+  if (request.display) {
+    result->bytes = request.bytes;
+  } else {
+    result->image.rgba.resize(request.image.rgba.size());
+    for (size_t i = 0; i < request.image.rgba.size(); ++i)
+      result->image.rgba[i] = static_cast<float>(Imath::half(request.image.rgba[i]));
+  }
+  host::FrameReport skipped;
+  for (size_t i = 0; i < chain_->size(); ++i) skipped.effects_skipped.push_back(chain_->instance_name(i));
+  skipped.timing = "off";  // nothing ran to be timed
+  report_ = {{"renderer", renderer_}};
+  app::add_frame_report(skipped, &report_);
+}
+
 void PythonChain::render(const RunRequest& request, RunResult* result, std::string* error) {
   const app::Image& image = request.image;
   GLint max_size = 0;
@@ -207,6 +228,12 @@ void PythonChain::render(const RunRequest& request, RunResult* result, std::stri
   frame.time_seconds = request.time_seconds;
   frame.frame_index = request.frame_index;
   if (!inputs_given(frame, error)) return;
+  bool passes = false;
+  if (!chain_->plans_passes(frame, &passes, error)) return;
+  if (!passes) {
+    hand_back(request, result);
+    return;
+  }
 
   float_picture_.upload(image);  // the colour of a float picture, the depth of either
   host::FrameTextures textures = float_picture_.inputs();

@@ -93,6 +93,7 @@ class PythonChain {
   void check_open() const;
   void run_on_gl_thread(const std::function<void(std::string* error)>& job);
   void render(const RunRequest& request, RunResult* result, std::string* error);
+  void hand_back(const RunRequest& request, RunResult* result);
   bool inputs_given(const pfx_frame& frame, std::string* error);
   void follow_picture_defaults(bool display);
   void release_gl_objects();

@@ -51,7 +51,7 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
     preset = Preset{};
   }
   // The first chain that names something usable: the given one, then the preset's. An empty
-  // given chain ("none") is a choice too: the copy in and out only.
+  // given chain ("none") is a choice too: no effect.
   if (chain) {
     std::vector<PresetEffect> wanted;
     for (const auto& id : *chain) wanted.push_back({id, true});

@@ -64,7 +64,7 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
 // the store's remarks on assignments it adjusted.
 bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error,
                  std::vector<std::string>* notes = nullptr, const std::string& set_origin = "--set");
-// Whether any effect of the chain is switched on: with none, the copy in and out is all there is.
+// Whether any effect of the chain is switched on: with none, a host has nothing to run.
 bool any_enabled(const host::Chain& chain);
 // Every loaded effect's values at the display-referred defaults, with as many instances of each as
 // `effects` holds (at least one): the store a chain of those effects on 8-bit frames starts from.

@@ -196,6 +196,20 @@ bool Chain::inputs_needed(size_t index, const pfx_frame& frame, uint32_t* inputs
   return true;
 }
 
+bool Chain::plans_passes(const pfx_frame& frame, bool* passes, std::string* error) const {
+  *passes = false;
+  for (const auto& instance : instances_) {
+    if (!instance->enabled) continue;
+    Declaration declaration;
+    if (!declare(*instance, frame, &declaration, error)) return false;
+    if (!declaration.passes.empty()) {
+      *passes = true;
+      return true;
+    }
+  }
+  return true;
+}
+
 bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error) {
   report_.effects_skipped.clear();
   report_.effects_run.clear();

@@ -38,10 +38,36 @@ bool prepare(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* erro
   return bridge->transport->prepare(Path::HOST, image.width, image.height, &unused_fd, &unused_size, error);
 }
 
-bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* error) {
+double frame_time(pfx_vk_bridge* bridge) {
   if (bridge->frames == 0) bridge->first_run = std::chrono::steady_clock::now();
-  const double time_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - bridge->first_run).count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - bridge->first_run).count();
+}
+
+// Whether the chain would change this frame. When it would not (no effect on, or every effect a
+// no-op with its values) and the caller wants no read-back, the image is left as it is: no copy
+// in, no pass, no copy back.
+bool runs_passes(pfx_vk_bridge* bridge, const pfx_vk_image& image, bool* passes, std::string* error) {
+  if (image.app_pixels || image.result_pixels) {
+    *passes = true;
+    return true;
+  }
+  const double time_seconds = frame_time(bridge);
+  bool planned = false;
+  std::string worker_error;
+  if (!bridge->worker->run(
+          [&] {
+            planned = bridge->gl->plans_passes(int(image.width), int(image.height), time_seconds, bridge->frames,
+                                               passes, error);
+          },
+          &worker_error)) {
+    *error = worker_error;
+    return false;
+  }
+  return planned;
+}
+
+bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* error) {
+  const double time_seconds = frame_time(bridge);
   void* host_bytes = bridge->path == Path::HOST ? bridge->transport->mapped() : nullptr;
   bool ran = false;
   std::string worker_error;
@@ -74,6 +100,16 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
     // The caller's semaphores still pass, so its frame goes on as if the bridge were not there.
     if (image && image->struct_size >= sizeof(pfx_vk_image)) bridge->transport->copy_out(*image, false, false, &error);
     return PFX_VK_BAD_ARGUMENT;
+  }
+  bool passes = true;
+  if (!vk::runs_passes(bridge, *image, &passes, &error)) {
+    bridge->last_error = error;
+    bridge->transport->copy_out(*image, false, false, &error);
+    return PFX_VK_CHAIN_FAILED;
+  }
+  if (!passes) {
+    ++bridge->frames;
+    return bridge->transport->copy_out(*image, false, false, &bridge->last_error) ? PFX_VK_OK : PFX_VK_VULKAN_FAILED;
   }
   if (!vk::prepare(bridge, *image, &error) || !bridge->transport->copy_in(*image, &error)) {
     bridge->last_error = error;

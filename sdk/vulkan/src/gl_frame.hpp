@@ -22,6 +22,12 @@ class GlFrame {
   ~GlFrame();
 
   GlMemory& shared() { return shared_; }
+  // Whether a frame of that size and time would run any pass (FrameChain::plans_passes). False
+  // with *error when an effect's declare fails.
+  bool plans_passes(int width, int height, double time_seconds, uint64_t frame_index, bool* passes,
+                    std::string* error) const {
+    return chain_->plans_passes(width, height, time_seconds, frame_index, passes, error);
+  }
   // Runs the chain over the frame: from host_bytes (tightly packed RGBA8 rows, top row first, read
   // and written back) when not null, else in the shared texture. bgra: the bytes are B, G, R, A.
   // app_pixels and result_pixels, when not null, receive the frame before and after as RGBA

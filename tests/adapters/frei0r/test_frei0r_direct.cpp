@@ -137,6 +137,25 @@ TEST_CASE("frei0r: construct starts no thread and no GL, the first frame starts 
   CHECK(plugin.construct(16385, 10) == nullptr);
 }
 
+TEST_CASE("frei0r: with no effect, or only no-ops, the frame comes back as it was, also in place",
+          "[adapters][frei0r][direct]") {
+  Frei0r plugin("pfx_chain.so");
+  const auto in = frame(37, 21, 3);
+  for (const char* set : {"", "bloom.strength=0;glare.strength=0"}) {
+    f0r_instance_t instance = plugin.construct(37, 21);
+    REQUIRE(instance);
+    plugin.set_string(instance, 0, *set ? "bloom,glare" : "none");
+    plugin.set_string(instance, 1, set);
+    std::vector<uint32_t> out(in.size(), 0);
+    plugin.update(instance, 0, in.data(), out.data());
+    CHECK(out == in);
+    std::vector<uint32_t> same = in;
+    plugin.update(instance, 0.04, same.data(), same.data());
+    CHECK(same == in);
+    plugin.destruct(instance);
+  }
+}
+
 TEST_CASE("frei0r: frames render while the calling thread has a GLX or an EGL context current, which stays current and untouched",
           "[adapters][frei0r][direct]") {
   Frei0r plugin("pfx_chain.so");

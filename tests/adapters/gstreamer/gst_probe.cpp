@@ -7,6 +7,8 @@
 //                           (from the streaming thread, as a live control would)
 //     --rss N               once buffer N has passed the element, prints "rss N BYTES": the
 //                           process's resident anonymous memory (RssAnon)
+// At the end it prints "buffers N" and "handed on as they came: I,J,...": the buffers (from 0)
+// that left the element as the very buffer that entered it (a passthrough: no new frame drawn).
 // Exit code 0 at the end of the stream, 1 with the error message on a pipeline error, 2 on usage.
 // Run with the environment of host_programs.hpp, like the hosts.
 #include <gst/gst.h>
@@ -29,6 +31,8 @@ struct Probe {
   std::vector<Change> changes;
   std::vector<long> rss_at;
   long buffers = 0;
+  GstBuffer* entered = nullptr;  // the buffer that last reached the sink pad, compared, not used
+  std::string untouched;         // the buffers that left as they entered, comma-separated
 };
 
 unsigned long long rss_anon_bytes() {
@@ -39,16 +43,19 @@ unsigned long long rss_anon_bytes() {
   return 0;
 }
 
-GstPadProbeReturn before_buffer(GstPad*, GstPadProbeInfo*, gpointer data) {
+GstPadProbeReturn before_buffer(GstPad*, GstPadProbeInfo* info, gpointer data) {
   auto* probe = static_cast<Probe*>(data);
+  probe->entered = GST_PAD_PROBE_INFO_BUFFER(info);
   for (const auto& change : probe->changes)
     if (change.buffer == probe->buffers)
       gst_util_set_object_arg(G_OBJECT(probe->element), change.property.c_str(), change.value.c_str());
   return GST_PAD_PROBE_OK;
 }
 
-GstPadProbeReturn after_buffer(GstPad*, GstPadProbeInfo*, gpointer data) {
+GstPadProbeReturn after_buffer(GstPad*, GstPadProbeInfo* info, gpointer data) {
   auto* probe = static_cast<Probe*>(data);
+  if (GST_PAD_PROBE_INFO_BUFFER(info) == probe->entered)
+    probe->untouched += (probe->untouched.empty() ? "" : ",") + std::to_string(probe->buffers);
   for (long at : probe->rss_at)
     if (at == probe->buffers) std::printf("rss %ld %llu\n", at, rss_anon_bytes());
   ++probe->buffers;
@@ -115,6 +122,7 @@ int main(int argc, char** argv) {
     gst_message_unref(message);
   }
   std::printf("buffers %ld\n", probe.buffers);
+  std::printf("handed on as they came: %s\n", probe.untouched.c_str());
   gst_element_set_state(pipeline, GST_STATE_NULL);
   if (probe.element) gst_object_unref(probe.element);
   gst_object_unref(bus);

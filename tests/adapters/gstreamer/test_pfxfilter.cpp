@@ -1,6 +1,6 @@
 // pfxfilter in GStreamer pipelines, headless (EGL device platform): pfx-render's frame within one
-// code, 10-bit frames, a property changed while the pipeline plays, GStreamer's GL state left for
-// the next GL element, bad settings and a GLES context refused by name, the pipeline running to
+// code, 10-bit frames, frames no pass would change handed on untouched, a property changed while
+// the pipeline plays, GStreamer's GL state left for the next GL element, bad settings and a GLES context refused by name, the pipeline running to
 // its end.
 #include <catch2/catch.hpp>
 
@@ -91,6 +91,24 @@ TEST_CASE("pfxfilter: a property changed while the pipeline plays applies from t
   CHECK(same(a, b, 3));                              // bloom from frame 3
   CHECK(!same(a, c, 3));
   for (int n = 4; n < 6; ++n) CHECK(same(a, c, n));  // strength 0 from frame 4: nothing added
+}
+
+TEST_CASE("pfxfilter: with no effect on, or only no-ops, each buffer is handed on as it came, and a chain that runs draws "
+          "a new one",
+          "[adapters][gstreamer][pfxfilter]") {
+  Scratch scratch;
+  // Frames 0-2 no effect, 3 bloom, 4-5 bloom at strength 0 (it declares no pass).
+  RunResult r = run_host({PFX_GST_PROBE, gl_pipeline(6, "pfxfilter name=fx chain=none !", scratch / "out.rgba"),
+                          "--set", "3", "chain", "bloom", "--set", "4", "set", "bloom.strength=0"});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("buffers 6\n") != std::string::npos);
+  CHECK(r.output.find("handed on as they came: 0,1,2,4,5\n") != std::string::npos);
+  // Settings that do not build pass the frames through the same way.
+  r = run_host({PFX_GST_PROBE, gl_pipeline(2, "pfxfilter name=fx chain=nosuch !", scratch / "bad.rgba")});
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.output.find("handed on as they came: 0,1\n") != std::string::npos);
 }
 
 TEST_CASE("pfxfilter leaves GStreamer's GL state as it found it: the GL element after it draws the same picture",

@@ -21,7 +21,7 @@ void write_text(const std::string& path, const std::string& text) {
   file << text;
 }
 
-// The presented frame with every effect of the chain off (the copy in and out still done) and
+// The presented frame with every effect of the chain off (nothing copied in or out) and
 // the one presented in a dry run must be the same bits.
 void check_round_trip(const std::vector<std::string>& app, const std::string& transfer) {
   ScratchFolder folder("round-trip");

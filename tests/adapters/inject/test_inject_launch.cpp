@@ -179,3 +179,24 @@ TEST_CASE("variables set by hand: the assignments that apply give the frame the 
   REQUIRE(dry.result.exit_code == 0);
   CHECK_FALSE(same_pixels(read_png_file(folder.file("hand.png")), read_png_file(folder.file("dry.png"))));
 }
+
+TEST_CASE("with no effect on, or only no-ops, no present goes through the chain, and with bloom every one does") {
+  ScratchFolder folder("untouched");
+  // The count of presents whose frame was copied in, run and copied out, from the frame times
+  // the library writes for --bench.
+  auto through_chain = [&](const std::string& name, std::vector<std::string> variables) {
+    const std::string stats = folder.file(name + ".json");
+    variables.insert(variables.end(), {"PFX_INJECT_STATS=" + stats, "PFX_INJECT_QUIT_AFTER=6"});
+    const RunResult run = run_by_hand(variables, true);
+    const std::string text = read_text_file(stats);
+    INFO(name << ": " << run.output << text);
+    REQUIRE(run.exit_code == 0);
+    REQUIRE(text.find("\"frames\": 6,") != std::string::npos);
+    const size_t at = text.find("\"frames_through_chain\": ");
+    REQUIRE(at != std::string::npos);
+    return std::stoi(text.substr(at + std::strlen("\"frames_through_chain\": ")));
+  };
+  CHECK(through_chain("none", {"PFX_INJECT_CHAIN=none"}) == 0);
+  CHECK(through_chain("off", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_SET=bloom.strength=0"}) == 0);
+  CHECK(through_chain("bloom", {"PFX_INJECT_CHAIN=bloom"}) == 6);
+}

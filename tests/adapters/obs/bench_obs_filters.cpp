@@ -110,7 +110,12 @@ TEST_CASE("bench: a 1920x1080 frame through pfx's filters and OBS's own", "[.ben
   const Config configs[] = {
       {"OBS Sharpen (`sharpness_filter_v2`, stock)", "sharpness_filter_v2", [](obs_data_t*) {}},
       {"OBS Color Correction (`color_filter_v2`, stock)", "color_filter_v2", [](obs_data_t* s) { obs_data_set_double(s, "gamma", 0.3); }},
-      {"pfx chain, `chain=none` (copy in, decode, encode, draw)", "pfx_chain_filter", [](obs_data_t* s) { obs_data_set_string(s, "chain", "none"); }},
+      {"pfx chain, `chain=none`", "pfx_chain_filter", [](obs_data_t* s) { obs_data_set_string(s, "chain", "none"); }},
+      {"pfx chain, bloom at strength 0 (a no-op)", "pfx_chain_filter",
+       [](obs_data_t* s) {
+         obs_data_set_string(s, "chain", "bloom");
+         obs_data_set_string(s, "set", "bloom.strength=0");
+       }},
       {"pfx Bloom (defaults)", "pfx_bloom_filter", [](obs_data_t*) {}},
       {"pfx Glare (defaults)", "pfx_glare_filter", [](obs_data_t*) {}},
   };

@@ -1,6 +1,6 @@
 // What pfx's OBS filter leaves behind in OBS: no GL objects after it is removed (counted by name
-// over a hundred add/remove cycles), and GL state a stock OBS filter after it finds as it would
-// after any other source.
+// over a hundred add/remove cycles), none made while no effect would change the frame, and GL
+// state a stock OBS filter after it finds as it would after any other source.
 #include <catch2/catch.hpp>
 
 #include <EGL/egl.h>
@@ -87,6 +87,39 @@ TEST_CASE("a hundred filters added and removed leave no GL objects behind", "[ob
   INFO("after 100 cycles: " << after);
   CHECK(after == before);
   CHECK(bnum_allocs() == allocations);
+  obs_source_release(image);
+}
+
+TEST_CASE("with no effect on, or only no-ops, the chain filter draws its source as it is and makes no texture",
+          "[obs]") {
+  ObsSession& obs = ObsSession::get();
+  Scratch scratch;
+  write_photo_crop(scratch / "in.png", 200, 180, 48, 40);
+  obs_source_t* image = obs.image_source(scratch / "in.png");
+  const ObsFrame plain = obs.render(image);
+  const int textures = count_gl_objects(obs).textures;
+  auto values = [](const char* chain, const char* set) {
+    obs_data_t* settings = obs_data_create();
+    obs_data_set_string(settings, "chain", chain);
+    obs_data_set_string(settings, "set", set);
+    return settings;
+  };
+  obs_data_t* none = values("none", "");
+  obs_source_t* filter = obs.add_filter(image, "pfx_chain_filter", none);
+  // Nothing drawn into a texture of the filter's, nor copied, decoded or encoded.
+  CHECK(obs.render(image).rgba == plain.rgba);
+  CHECK(count_gl_objects(obs).textures == textures);
+  obs_data_t* no_ops = values("bloom,glare", "bloom.strength=0;glare.strength=0");
+  obs_source_update(filter, no_ops);
+  CHECK(obs.render(image).rgba == plain.rgba);
+  CHECK(count_gl_objects(obs).textures == textures);
+  // A chain that runs draws through textures of its own: the count sees them.
+  obs_data_t* bloom = values("bloom", "bloom.strength=2");
+  obs_source_update(filter, bloom);
+  CHECK(obs.render(image).rgba != plain.rgba);
+  CHECK(count_gl_objects(obs).textures > textures);
+  for (obs_data_t* settings : {none, no_ops, bloom}) obs_data_release(settings);
+  obs_source_release(filter);
   obs_source_release(image);
 }
 

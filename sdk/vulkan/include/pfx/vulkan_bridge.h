@@ -118,7 +118,9 @@ typedef struct pfx_vk_image {
 } pfx_vk_image;
 
 /* Runs the chain over the image (the N-th call is frame N - 1 for effects that animate) and submits
- * the copy of the result back. On failure the image holds what it held (the copy back is not made),
+ * the copy of the result back. A frame the chain would not change (no effect on, or every effect a
+ * no-op with its values) is left in the image as it is, with nothing copied either way, unless
+ * app_pixels or result_pixels ask for a read-back. On failure the image holds what it held (the copy back is not made),
  * wait_semaphores are still waited on and signal_semaphore still signalled, so the caller can go on
  * as if the bridge were not there. */
 PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, const pfx_vk_image* image);

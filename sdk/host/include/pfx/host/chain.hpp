@@ -94,6 +94,14 @@ class PFX_HOST_API Chain {
   // *error when declare fails.
   bool inputs_needed(size_t index, const pfx_frame& frame, uint32_t* inputs, std::string* error) const;
 
+  // Whether render() over `frame` would run any pass: every enabled instance declares with its
+  // current values (cheap by contract) and nothing runs. *passes is false when no effect is
+  // enabled or every enabled one would be skipped as a no-op. For a host that converts its frame
+  // before the chain and back after (an 8-bit frame decoded to RGBA16F): asked first, a "no" lets
+  // it hand the frame on untouched instead of converting it both ways around a copy. False with
+  // *error when declare fails.
+  bool plans_passes(const pfx_frame& frame, bool* passes, std::string* error) const;
+
   // Changing the scheme drops the times of frames still in flight.
   void set_timing(Timing timing);
   Timing timing() const { return timing_; }
