@@ -134,6 +134,11 @@ const FxCatalog& catalog() {
     for (const std::string& folder : folders)
       for (const std::string& file : fx_files(folder))
         if (seen.insert(fs::weakly_canonical(file).string()).second) add_file(c, file, ids);
+    if (c.effects.size() > kMaxEffects) {  // each effect needs one of the create functions there are
+      c.errors.push_back({"", "PFX_FX_PATH: error: " + std::to_string(c.effects.size()) + " techniques found; only the first " +
+                                  std::to_string(kMaxEffects) + " are offered"});
+      c.effects.resize(kMaxEffects);
+    }
     for (std::size_t i = 0; i < c.effects.size(); ++i) fill_effect_desc(*c.effects[i], i);
   });
   return c;

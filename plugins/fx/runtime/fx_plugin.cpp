@@ -1,7 +1,6 @@
 // The FX plugin's entry point: an effect factory whose effects are the techniques of the ReShade
 // FX files found at run time (fx_catalog.hpp). init stays cheap, as the ABI asks: the folders are
 // read on the factory's first call.
-#include <algorithm>
 
 #include <pfx/cpp/plugin_entry.hpp>
 #include <pfx/pfx.h>
@@ -14,7 +13,7 @@ namespace {
 
 uint32_t effect_count() {
   try {
-    return static_cast<uint32_t>(std::min(catalog().effects.size(), kMaxEffects));
+    return static_cast<uint32_t>(catalog().effects.size());  // at most kMaxEffects
   } catch (...) {
     return 0;
   }
