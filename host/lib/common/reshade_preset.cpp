@@ -3,6 +3,8 @@
 #include <map>
 #include <sstream>
 
+#include <pfx/cpp/identifier.hpp>
+
 namespace pfx::app {
 namespace {
 
@@ -37,17 +39,6 @@ std::string file_name_of(const std::string& path) {
 }
 
 }  // namespace
-
-std::string fx_identifier(const std::string& name) {
-  std::string id;
-  for (char c : name) {
-    char lower = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
-    if ((lower >= 'a' && lower <= 'z') || (lower >= '0' && lower <= '9')) id += lower;
-    else if (!id.empty() && id.back() != '_') id += '_';
-  }
-  while (!id.empty() && id.back() == '_') id.pop_back();
-  return id.empty() ? "value" : id;
-}
 
 bool looks_like_reshade_preset(const std::string& text) {
   std::size_t first = text.find_first_not_of(" \t\r\n");
@@ -112,13 +103,13 @@ bool parse_reshade_preset(const std::string& text, Preset* out, std::string* err
   out->from_reshade = true;
   out->chain = std::vector<PresetEffect>{};
   for (const Technique& t : chain) {
-    std::string effect = "fx_" + fx_identifier(t.name);
+    std::string effect = "fx_" + pfx::identifier_from(t.name);
     out->chain->push_back({effect, true});
     // The values of the technique's file, or of every file when the preset does not say which.
     for (const auto& [file, values] : sections) {
       if (!t.file.empty() && file != file_name_of(t.file)) continue;
       for (const auto& [name, value] : values) {
-        std::string id = effect + "." + fx_identifier(name);
+        std::string id = effect + "." + pfx::identifier_from(name);
         std::vector<std::string> parts = split(value, ',');
         if (parts.size() == 4) {
           out->assignments.push_back({id + "=" + parts[0] + "," + parts[1] + "," + parts[2]});

@@ -7,11 +7,11 @@
 //   sharp_strength=0.650000
 //   VibranceRGBBalance=1.000000,1.000000,1.000000
 //
-// Each enabled technique becomes the FX plugin's effect fx_<technique> (its id rule: lower case,
-// other characters '_'), in TechniqueSorting's order (Techniques' when there is none); each value
-// of a technique's file becomes an assignment to that effect's parameter of the uniform's name. A
-// float4 value sets the parameter of its first three components and the "_alpha" or "_w" one of
-// its fourth, whichever the effect has.
+// Each enabled technique becomes the FX plugin's effect fx_<technique> (the id rule both share is
+// pfx::identifier_from, pfx/cpp/identifier.hpp), in TechniqueSorting's order (Techniques' when
+// there is none); each value of a technique's file becomes an assignment to that effect's
+// parameter of the uniform's name. A float4 value sets the parameter of its first three
+// components and the "_alpha" or "_w" one of its fourth, whichever the effect has.
 #pragma once
 
 #include <string>
@@ -25,9 +25,5 @@ bool looks_like_reshade_preset(const std::string& text);
 
 // Fills out->chain and out->assignments; false with *error for a file that is not one.
 bool parse_reshade_preset(const std::string& text, Preset* out, std::string* error);
-
-// The FX plugin's id for a technique or uniform name: lower case, every run of other characters
-// one '_', none at either end ("fUISharpness" -> "fuisharpness", "Sharp Strength" -> "sharp_strength").
-std::string fx_identifier(const std::string& name);
 
 }  // namespace pfx::app

@@ -21,18 +21,21 @@ constexpr int kNominalWidth = 1920, kNominalHeight = 1080;
 
 }  // namespace
 
-std::vector<std::string> search_folders() {
+std::vector<std::string> folders_in_variable(const char* name) {
   std::vector<std::string> folders;
-  if (const char* path = std::getenv("PFX_FX_PATH")) {
-    std::string list = path;
-    std::size_t start = 0;
-    while (start <= list.size()) {
-      std::size_t end = list.find(':', start);
-      if (end == std::string::npos) end = list.size();
-      if (end > start) folders.push_back(list.substr(start, end - start));
-      start = end + 1;
-    }
+  const char* value = std::getenv(name);
+  std::string list = value ? value : "";
+  for (std::size_t start = 0; start < list.size();) {
+    std::size_t end = list.find(':', start);
+    if (end == std::string::npos) end = list.size();
+    if (end > start) folders.push_back(list.substr(start, end - start));
+    start = end + 1;
   }
+  return folders;
+}
+
+std::vector<std::string> search_folders() {
+  std::vector<std::string> folders = folders_in_variable("PFX_FX_PATH");
   std::string installed = plugin_folder() + "/fx/shaders";
   std::error_code ec;
   if (fs::is_directory(installed, ec)) folders.push_back(installed);

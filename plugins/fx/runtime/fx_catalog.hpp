@@ -40,6 +40,8 @@ const FxCatalog& catalog();
 // The preprocessor options every compile uses at this frame size: the shader folders (a
 // collection's own ReShade.fxh) and then pfx's own headers as include folders.
 pfx::fx::FrontEndOptions compile_options(int width, int height);
+// The folders an environment variable names, ':'-separated like PATH (empty entries skipped).
+std::vector<std::string> folders_in_variable(const char* name);
 // The folders searched for effects: PFX_FX_PATH's, then the installed one.
 std::vector<std::string> search_folders();
 

@@ -456,27 +456,30 @@ void FxInstance::run_encode(const pfx_pass_context& context) {
   SavedTargets saved;
   if (depth) convert_depth(context);
   current_ = 0;
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, back_buffer_[0].texture, 0);
-  for (int i = 1; i < pfx::fx::kMaxRenderTargets; ++i) glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), 0, 0);
-  glNamedFramebufferDrawBuffer(framebuffer_, GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glViewport(0, 0, compiled_width_, compiled_height_);
+  draw_into(&back_buffer_[0].texture, 1, compiled_width_, compiled_height_);
   glUseProgram(encode_program_);  // unit 0: the frame's colour, bound by the host
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void FxInstance::convert_depth(const pfx_pass_context& context) {
   const pfx_frame& frame = *context.frame;
-  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, fx_depth_.texture, 0);
-  for (int i = 1; i < pfx::fx::kMaxRenderTargets; ++i) glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), 0, 0);
-  glNamedFramebufferDrawBuffer(framebuffer_, GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glViewport(0, 0, compiled_width_, compiled_height_);
+  draw_into(&fx_depth_.texture, 1, compiled_width_, compiled_height_);
   glProgramUniform1i(depth_program_, 0, static_cast<GLint>(frame.depth_encoding));
   glProgramUniform1f(depth_program_, 1, frame.camera.near_plane);
   glProgramUniform1f(depth_program_, 2, frame.camera.far_plane);
   glUseProgram(depth_program_);  // unit 1: the frame's depth, bound by the host
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void FxInstance::draw_into(const GLuint* textures, int count, int width, int height) {
+  GLenum buffers[pfx::fx::kMaxRenderTargets];
+  for (int i = 0; i < pfx::fx::kMaxRenderTargets; ++i) {
+    glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), i < count ? textures[i] : 0, 0);
+    buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+  }
+  glNamedFramebufferDrawBuffers(framebuffer_, count, buffers);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, width, height);
 }
 
 void FxInstance::run_decode(const pfx_pass_context& context) {
@@ -534,23 +537,16 @@ void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
   SavedTargets saved;
   int count = std::max(1, pass.render_target_count);
   int width = compiled_width_, height = compiled_height_;
-  GLenum buffers[pfx::fx::kMaxRenderTargets];
-  for (int i = 0; i < pfx::fx::kMaxRenderTargets; ++i) {
-    GLuint texture = 0;
-    if (i < count) {
-      const GlTexture& t = pass.render_target_count == 0 ? back_buffer_[1 - current_] : textures_[static_cast<std::size_t>(pass.render_targets[i])];
-      texture = pass.srgb_write && t.srgb_view ? t.srgb_view : t.texture;
-      if (i == 0) width = t.width, height = t.height;
-      buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
-    }
-    glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), texture, 0);
+  GLuint targets[pfx::fx::kMaxRenderTargets];
+  for (int i = 0; i < count; ++i) {
+    const GlTexture& t = pass.render_target_count == 0 ? back_buffer_[1 - current_] : textures_[static_cast<std::size_t>(pass.render_targets[i])];
+    targets[i] = pass.srgb_write && t.srgb_view ? t.srgb_view : t.texture;
+    if (i == 0) width = t.width, height = t.height;
   }
   if (pass.render_target_count == 0 && !p.covers_target)
     glCopyImageSubData(back_buffer_[current_].texture, GL_TEXTURE_2D, 0, 0, 0, 0, back_buffer_[1 - current_].texture, GL_TEXTURE_2D, 0, 0, 0, 0,
                        compiled_width_, compiled_height_, 1);
-  glNamedFramebufferDrawBuffers(framebuffer_, count, buffers);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glViewport(0, 0, width, height);
+  draw_into(targets, count, width, height);
   if (pass.clear_render_targets)
     for (int i = 0; i < count; ++i) {
       const GLuint zeros[4] = {0, 0, 0, 0};

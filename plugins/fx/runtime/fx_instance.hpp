@@ -55,6 +55,9 @@ class FxInstance {
   bool build_gl();                             // GL, for the compiled source
   void release_gl();
   void log(pfx_log_level level, const std::string& message) const;
+  // Attaches `textures` as colour attachments 0..count-1 of the effect's framebuffer (the rest
+  // detached), binds it for drawing and reading, and sets the viewport.
+  void draw_into(const GLuint* textures, int count, int width, int height);
   void run_encode(const pfx_pass_context& context);
   void convert_depth(const pfx_pass_context& context);
   void run_decode(const pfx_pass_context& context);

@@ -18,18 +18,6 @@ const char* ParamTable::keep(const std::string& text) {
   return strings.back()->c_str();
 }
 
-std::string identifier_from(const std::string& name) {
-  std::string id;
-  for (char c : name) {
-    char lower = (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
-    bool ok = (lower >= 'a' && lower <= 'z') || (lower >= '0' && lower <= '9');
-    if (ok) id += lower;
-    else if (!id.empty() && id.back() != '_') id += '_';
-  }
-  while (!id.empty() && id.back() == '_') id.pop_back();
-  return id.empty() ? "value" : id;
-}
-
 namespace {
 
 // The smallest and largest component of a vector annotation, or the fallback.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <pfx/cpp/identifier.hpp>
 #include <pfx/params.h>
 
 #include "model/effect_model.hpp"
@@ -37,7 +38,6 @@ struct ParamTable {
 // arrays) and keep their initial value.
 void build_params(const pfx::fx::EffectModel& model, ParamTable& table, std::vector<std::string>& warnings);
 
-// "fUISharpness" -> "fuisharpness"; "Sharp Strength" -> "sharp_strength"; never empty.
-std::string identifier_from(const std::string& name);
+using pfx::identifier_from;  // ids of effects, parameters and items (pfx/cpp/identifier.hpp)
 
 }  // namespace pfx_fx

@@ -1,6 +1,5 @@
 #include "fx_texture_files.hpp"
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -16,16 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<std::string> candidate_folders(const std::string& effect_file) {
-  std::vector<std::string> folders;
-  if (const char* path = std::getenv("PFX_FX_TEXTURE_PATH")) {
-    std::string list = path;
-    for (std::size_t start = 0; start <= list.size();) {
-      std::size_t end = list.find(':', start);
-      if (end == std::string::npos) end = list.size();
-      if (end > start) folders.push_back(list.substr(start, end - start));
-      start = end + 1;
-    }
-  }
+  std::vector<std::string> folders = folders_in_variable("PFX_FX_TEXTURE_PATH");
   // ReShade's layout: reshade-shaders/Shaders/[...]/Effect.fx beside reshade-shaders/Textures.
   for (fs::path folder = fs::path(effect_file).parent_path(); !folder.empty(); folder = folder.parent_path()) {
     folders.push_back((folder / "Textures").string());
