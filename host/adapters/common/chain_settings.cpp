@@ -25,7 +25,8 @@ std::vector<std::string> split_assignments(const std::string& text) {
 }
 
 bool resolve_chain_settings(const ChainSettings& settings, const host::PluginRegistry& registry,
-                            app::Transfer* transfer, app::ChainRecipe* recipe, std::string* error) {
+                            app::Transfer* transfer, app::ChainRecipe* recipe, std::string* error,
+                            std::vector<std::string>* left_out) {
   // Empty is the default: ffmpeg's filter_params give every parameter before the last one named.
   const std::string transfer_text = trimmed(settings.transfer);
   if (!app::parse_transfer(transfer_text.empty() ? "srgb" : transfer_text, transfer, error)) return false;
@@ -43,14 +44,25 @@ bool resolve_chain_settings(const ChainSettings& settings, const host::PluginReg
   std::vector<std::string> notes;
   *recipe = app::make_chain_recipe(trimmed(settings.preset), chain, split_assignments(settings.set), registry,
                                    app::WithoutChain::NO_EFFECT, &problems, &notes);
+  const std::vector<std::string> described = describe_problems(problems);
+  if (left_out) {
+    left_out->insert(left_out->end(), described.begin(), described.end());
+    return true;
+  }
   if (problems.empty()) return true;
   error->clear();
+  for (const auto& problem : described) *error += (error->empty() ? "" : "; ") + problem;
+  return false;
+}
+
+std::vector<std::string> describe_problems(const std::vector<app::RecipeProblem>& problems) {
+  std::vector<std::string> described;
   for (const auto& problem : problems) {
     const char* origin = problem.source == app::RecipeProblem::CHAIN ? "chain" :
                          problem.source == app::RecipeProblem::PRESET ? "preset" : "set";
-    *error += (error->empty() ? "" : "; ") + std::string(origin) + ": " + problem.message;
+    described.push_back(std::string(origin) + ": " + problem.message);
   }
-  return false;
+  return described;
 }
 
 }  // namespace pfx::adapters

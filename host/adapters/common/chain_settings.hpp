@@ -23,9 +23,16 @@ struct ChainSettings {
 };
 
 // What a frame needs from the settings: the transfer and the chain's recipe (the preset read).
-// False with *error naming the setting and the problem.
+// False with *error naming the setting and the problem. With `left_out`, an effect, assignment or
+// preset that does not apply is left out of the recipe instead and described there ("chain: ...",
+// "set: ...", "preset: ..."), as pfx-inject does; only a bad transfer still fails.
 bool resolve_chain_settings(const ChainSettings& settings, const host::PluginRegistry& registry,
-                            app::Transfer* transfer, app::ChainRecipe* recipe, std::string* error);
+                            app::Transfer* transfer, app::ChainRecipe* recipe, std::string* error,
+                            std::vector<std::string>* left_out = nullptr);
+
+// Each problem as "chain: MESSAGE", "set: MESSAGE" or "preset: MESSAGE", after the setting it
+// came from.
+std::vector<std::string> describe_problems(const std::vector<app::RecipeProblem>& problems);
 
 // "a=1; b=2;;" -> {"a=1", "b=2"}: split at ';', blanks around each item dropped, empty items too.
 std::vector<std::string> split_assignments(const std::string& text);

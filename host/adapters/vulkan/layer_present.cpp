@@ -45,6 +45,9 @@ pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
   desc.preset = settings.preset;
   desc.transfer = settings.transfer;
   desc.plugin_path = settings.plugin_path;
+  // Settings made by hand: what does not apply is named and left out, the rest runs (pfx-inject's
+  // rule for OpenGL applications).
+  desc.flags = PFX_VK_LEAVE_OUT_BAD_SETTINGS;
   desc.log = log_from_bridge;
   desc.set_device_loader_data = d->set_loader_data;
   pfx_vk_bridge* bridge = nullptr;

@@ -53,6 +53,13 @@ Path choose_path(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, std::str
   return shares ? Path::SHARED : Path::HOST;
 }
 
+bool leaves_out_bad_settings(const pfx_vk_bridge_desc& desc) { return (desc.flags & PFX_VK_LEAVE_OUT_BAD_SETTINGS) != 0; }
+
+// What the settings name that does not apply, left out with a warning each (the flag's rule).
+void say_left_out(const pfx_vk_bridge* bridge, const std::vector<std::string>& left_out) {
+  for (const auto& item : left_out) bridge->say(1, "ignored " + item);
+}
+
 }  // namespace
 
 bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::string* error) {
@@ -86,11 +93,13 @@ bool default_chain_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc,
   const std::vector<std::string> sets = adapters::split_assignments(desc.set ? desc.set : "");
   *recipe = app::make_chain_recipe(desc.preset ? desc.preset : "", std::nullopt, sets, *bridge->registry,
                                    app::WithoutChain::DEFAULT_CHAIN, &problems, &notes);
-  if (!problems.empty()) {
-    *error = problems.front().message;
-    return false;
+  if (problems.empty()) return true;
+  if (leaves_out_bad_settings(desc)) {
+    say_left_out(bridge, adapters::describe_problems(problems));
+    return true;
   }
-  return true;
+  *error = problems.front().message;
+  return false;
 }
 
 bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, const app::ChainRecipe& recipe,
@@ -142,11 +151,14 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_des
   app::ChainRecipe recipe;
   const adapters::ChainSettings settings{desc->chain ? desc->chain : "", desc->set ? desc->set : "",
                                          desc->transfer ? desc->transfer : "", desc->preset ? desc->preset : ""};
+  std::vector<std::string> left_out;
   if (!vk::load_bridge_plugins(bridge.get(), desc->plugin_path, &message) ||
-      !adapters::resolve_chain_settings(settings, *bridge->registry, &bridge->transfer, &recipe, &message)) {
+      !adapters::resolve_chain_settings(settings, *bridge->registry, &bridge->transfer, &recipe, &message,
+                                        vk::leaves_out_bad_settings(*desc) ? &left_out : nullptr)) {
     vk::copy_error(message, error, error_size);
     return PFX_VK_BAD_SETTINGS;
   }
+  vk::say_left_out(bridge.get(), left_out);
   bridge->worker = adapters::GlWorker::start();
   if ((!desc->chain && !vk::default_chain_recipe(bridge.get(), *desc, &recipe, &message)) ||
       !vk::fit_recipe_to_colour(bridge.get(), &recipe, &message)) {

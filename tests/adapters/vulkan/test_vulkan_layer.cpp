@@ -192,16 +192,26 @@ TEST_CASE("the Khronos validation layer above the layer reports no error", "[vkc
   CHECK(frame.presented.width == 320);  // the layer did run
 }
 
-TEST_CASE("a setting that does not apply: vkcube's frames pass through, said in one line", "[vkcube]") {
+TEST_CASE("a setting that does not apply is left out, said in one line, and the rest of the chain runs", "[vkcube]") {
   ScratchFolder folder("vulkan-bad-setting");
+  const Frame bloom = vkcube_frame(folder, "bloom", {"PFX_INJECT_CHAIN=bloom"});
+  INFO(bloom.run.output << bloom.log);
+  REQUIRE(bloom.presented.width == 320);
   int run = 0;
-  for (const char* setting : {"PFX_INJECT_CHAIN=nosuch", "PFX_INJECT_SET=bloom.threshold=abc"}) {
-    const Frame frame = vkcube_frame(folder, "bad" + std::to_string(++run), {setting});
-    INFO(setting << "\n" << frame.run.output << frame.log);
+  for (const std::vector<std::string>& settings :
+       {std::vector<std::string>{"PFX_INJECT_CHAIN=nosuch,bloom"},
+        std::vector<std::string>{"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_SET=bloom.threshold=abc"}}) {
+    const Frame frame = vkcube_frame(folder, "bad" + std::to_string(++run), settings);
+    INFO(settings.back() << "\n" << frame.run.output << frame.log);
     CHECK(frame.run.exit_code == 0);
-    CHECK(std::count(frame.log.begin(), frame.log.end(), '\n') == 1);
-    CHECK(frame.log.find("frames pass through") != std::string::npos);
-    CHECK(frame.presented.width == 0);  // nothing ran, so no capture
+    size_t ignored = 0;
+    for (size_t at = frame.log.find("ignored "); at != std::string::npos; at = frame.log.find("ignored ", at + 1)) ++ignored;
+    CHECK(ignored == 1);
+    CHECK(frame.log.find(run == 1 ? "nosuch" : "threshold") != std::string::npos);
+    CHECK(frame.log.find("frames pass through") == std::string::npos);
+    // bloom at its defaults ran: the frame of the chain without the bad item.
+    REQUIRE(frame.presented.width == 320);
+    CHECK(difference(frame.presented, bloom.presented).first == 0);
   }
 }
 

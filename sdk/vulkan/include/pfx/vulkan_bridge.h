@@ -43,6 +43,10 @@ typedef enum pfx_vk_status {
 
 /* Flags of pfx_vk_bridge_desc. */
 #define PFX_VK_FORCE_HOST_MEMORY 0x1u /* never share memory; also forced by PFX_VK_HOST_MEMORY=1 */
+/* An effect of the chain, an assignment or a preset that does not apply is left out, with a warning
+ * ("ignored chain: ...") in the log, and the rest runs, as pfx-inject treats settings made by hand;
+ * without it pfx_vk_bridge_create fails with PFX_VK_BAD_SETTINGS. A bad transfer fails either way. */
+#define PFX_VK_LEAVE_OUT_BAD_SETTINGS 0x2u
 
 /* The log callback: level 0 information, 1 warning, 2 error. Called on any thread. */
 typedef void (*pfx_vk_log_fn)(void* user, int level, const char* message);
@@ -73,7 +77,7 @@ typedef struct pfx_vk_bridge_desc {
   const char* preset;       /* a pfx-view preset file, or NULL */
   const char* transfer;     /* "srgb" (NULL: the default) or "linear": how the 8-bit values relate to light */
   const char* plugin_path;  /* plugin folders separated by ':'; NULL: the folder beside libpfxvulkan and PFX_PLUGIN_PATH */
-  uint32_t flags;           /* PFX_VK_FORCE_HOST_MEMORY */
+  uint32_t flags;           /* PFX_VK_FORCE_HOST_MEMORY, PFX_VK_LEAVE_OUT_BAD_SETTINGS */
   pfx_vk_log_fn log;        /* NULL: messages go nowhere */
   void* log_user;
   /* For a Vulkan layer: the loader's vkSetDeviceLoaderData (vk_layer.h), which the bridge calls on
