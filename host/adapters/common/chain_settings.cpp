@@ -26,7 +26,7 @@ std::vector<std::string> split_assignments(const std::string& text) {
 
 bool resolve_chain_settings(const ChainSettings& settings, const host::PluginRegistry& registry,
                             app::Transfer* transfer, app::ChainRecipe* recipe, std::string* error,
-                            std::vector<std::string>* left_out) {
+                            std::vector<app::RecipeProblem>* left_out) {
   // Empty is the default: ffmpeg's filter_params give every parameter before the last one named.
   const std::string transfer_text = trimmed(settings.transfer);
   if (!app::parse_transfer(transfer_text.empty() ? "srgb" : transfer_text, transfer, error)) return false;
@@ -44,14 +44,13 @@ bool resolve_chain_settings(const ChainSettings& settings, const host::PluginReg
   std::vector<std::string> notes;
   *recipe = app::make_chain_recipe(trimmed(settings.preset), chain, split_assignments(settings.set), registry,
                                    app::WithoutChain::NO_EFFECT, &problems, &notes);
-  const std::vector<std::string> described = describe_problems(problems);
   if (left_out) {
-    left_out->insert(left_out->end(), described.begin(), described.end());
+    left_out->insert(left_out->end(), problems.begin(), problems.end());
     return true;
   }
   if (problems.empty()) return true;
   error->clear();
-  for (const auto& problem : described) *error += (error->empty() ? "" : "; ") + problem;
+  for (const auto& problem : describe_problems(problems)) *error += (error->empty() ? "" : "; ") + problem;
   return false;
 }
 

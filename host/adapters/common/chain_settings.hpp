@@ -24,11 +24,11 @@ struct ChainSettings {
 
 // What a frame needs from the settings: the transfer and the chain's recipe (the preset read).
 // False with *error naming the setting and the problem. With `left_out`, an effect, assignment or
-// preset that does not apply is left out of the recipe instead and described there ("chain: ...",
-// "set: ...", "preset: ..."), as pfx-inject does; only a bad transfer still fails.
+// preset that does not apply is left out of the recipe instead and added there (describe_problems
+// words them), as pfx-inject does; only a bad transfer still fails.
 bool resolve_chain_settings(const ChainSettings& settings, const host::PluginRegistry& registry,
                             app::Transfer* transfer, app::ChainRecipe* recipe, std::string* error,
-                            std::vector<std::string>* left_out = nullptr);
+                            std::vector<app::RecipeProblem>* left_out = nullptr);
 
 // Each problem as "chain: MESSAGE", "set: MESSAGE" or "preset: MESSAGE", after the setting it
 // came from.

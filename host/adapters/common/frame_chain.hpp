@@ -28,6 +28,15 @@ class FrameChain {
                                            std::string* error);
   ~FrameChain();
 
+  // Takes a new recipe while frames run (a preset edited in a panel): when it names the same
+  // effects in the same order only the values and on/off flags change and no effect is created
+  // again; otherwise the effects are made anew. All or nothing: false with *error and the chain
+  // as it was.
+  bool update(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, const std::string& set_origin,
+              std::vector<std::string>* notes, std::string* error);
+  // "bloom,glare (off)": the chain's instances, those switched off marked; "none" for no effect.
+  std::string text() const;
+
   host::ParamStore& params() { return *params_; }
   host::Chain& chain() { return *chain_; }
   // Whether any effect is on: without one the decoded frame goes straight back out.
@@ -46,6 +55,7 @@ class FrameChain {
 
  private:
   FrameChain() = default;
+  static std::unique_ptr<host::ParamStore> fresh_store(const host::PluginRegistry& registry);
   pfx_frame describe(int width, int height, double time_seconds, uint64_t frame_index) const;
   std::unique_ptr<host::ParamStore> params_;
   std::unique_ptr<host::Chain> chain_;

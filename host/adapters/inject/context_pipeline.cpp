@@ -110,9 +110,7 @@ bool ContextPipeline::update_values(const ChainRecipe& recipe, std::vector<std::
   for (size_t i = 0; i < chain_->size(); ++i)
     params->set_instance_count(chain_->effect_id(i), std::max(params->instance_count(chain_->effect_id(i)),
                                                               chain_->instance_number(i)));
-  if (!recipe.parameters_json.empty() && !params->from_json(recipe.parameters_json, reason)) return false;
-  for (const auto& assignment : recipe.sets)
-    if (!params->set_assignment(assignment, reason)) return false;
+  if (!app::apply_recipe_values(recipe, params.get(), reason)) return false;
   *params_ = std::move(*params);
   // The flags the recipe gives (a default chain has every effect on); InputFit takes them as the
   // user's and fits them to the frame again.

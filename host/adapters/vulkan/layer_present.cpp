@@ -18,6 +18,44 @@ void log_from_bridge(void*, int level, const char* message) {
   log_line(std::string(level >= 2 ? "error: " : level == 1 ? "warning: " : "") + message);
 }
 
+// What the bridge of `queue` is made with: the device, and pfx-inject's settings.
+pfx_vk_bridge_desc bridge_desc(const Device& d, VkQueue queue, uint32_t family) {
+  const BridgeSettings& settings = bridge_settings();
+  pfx_vk_bridge_desc desc{};
+  desc.struct_size = sizeof desc;
+  desc.instance = d.instance;
+  desc.physical_device = d.physical_device;
+  desc.device = d.handle;
+  desc.get_instance_proc_addr = d.next_instance_proc;
+  desc.get_device_proc_addr = d.next_get_proc;
+  desc.queue = queue;
+  desc.queue_family_index = family;
+  desc.device_has_bridge_extensions = d.bridge_extensions;
+  desc.chain = settings.chain;
+  desc.set = settings.set;
+  desc.preset = settings.preset;
+  desc.transfer = settings.transfer;
+  desc.plugin_path = settings.plugin_path;
+  // Settings made by hand: what does not apply is named and left out, the rest runs (pfx-inject's
+  // rule for OpenGL applications).
+  desc.flags = PFX_VK_LEAVE_OUT_BAD_SETTINGS;
+  desc.log = log_from_bridge;
+  desc.set_device_loader_data = d.set_loader_data;
+  return desc;
+}
+
+// A preset edited while the application runs (by hand, or in pfx-inject --panel's pfx-view)
+// applies to every bridge of the device; one that does not apply leaves the chain as it was.
+void reread_preset_if_changed(Device* d) {
+  if (d->bridges.empty() || !d->preset_watch || !d->preset_watch->changed()) return;
+  for (const auto& [queue, bridge] : d->bridges) {
+    const pfx_vk_bridge_desc desc = bridge_desc(*d, queue, d->queue_families.at(queue));
+    char error[1024] = "";
+    if (pfx_vk_bridge_update(bridge, &desc, error, sizeof error) != PFX_VK_OK)
+      log_line(std::string("the changed preset could not be applied (") + error + "); the previous chain keeps running");
+  }
+}
+
 // The bridge of the presenting queue, made at its first present; null (and the device a
 // pass-through) when it cannot be.
 pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
@@ -29,27 +67,11 @@ pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
     d->failed = true;
     return nullptr;
   }
-  const BridgeSettings& settings = bridge_settings();
-  pfx_vk_bridge_desc desc{};
-  desc.struct_size = sizeof desc;
-  desc.instance = d->instance;
-  desc.physical_device = d->physical_device;
-  desc.device = d->handle;
-  desc.get_instance_proc_addr = d->next_instance_proc;
-  desc.get_device_proc_addr = d->next_get_proc;
-  desc.queue = queue;
-  desc.queue_family_index = family->second;
-  desc.device_has_bridge_extensions = d->bridge_extensions;
-  desc.chain = settings.chain;
-  desc.set = settings.set;
-  desc.preset = settings.preset;
-  desc.transfer = settings.transfer;
-  desc.plugin_path = settings.plugin_path;
-  // Settings made by hand: what does not apply is named and left out, the rest runs (pfx-inject's
-  // rule for OpenGL applications).
-  desc.flags = PFX_VK_LEAVE_OUT_BAD_SETTINGS;
-  desc.log = log_from_bridge;
-  desc.set_device_loader_data = d->set_loader_data;
+  if (!d->preset_watch) {
+    const char* preset = bridge_settings().preset;
+    d->preset_watch = std::make_unique<inject::PresetWatch>(preset ? preset : "");
+  }
+  const pfx_vk_bridge_desc desc = bridge_desc(*d, queue, family->second);
   pfx_vk_bridge* bridge = nullptr;
   char error[1024] = "";
   if (pfx_vk_bridge_create(&desc, &bridge, error, sizeof error) != PFX_VK_OK) {
@@ -92,6 +114,7 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
   Device* d = find_device(key_of(queue));
   if (!d) return VK_ERROR_DEVICE_LOST;  // a queue of no device the loader gave us cannot be presented on
   const uint64_t frame = ++presented;
+  if (!d->failed) reread_preset_if_changed(d);
   std::vector<VkSemaphore> waits;
   for (uint32_t i = 0; i < info->swapchainCount && !d->failed; ++i) {
     auto found = d->swapchains.find(info->pSwapchains[i]);

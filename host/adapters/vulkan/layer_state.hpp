@@ -14,6 +14,8 @@
 
 #include <pfx/vulkan_bridge.h>
 
+#include "preset_watch.hpp"
+
 namespace pfx::vulkan_layer {
 
 struct Instance {
@@ -56,6 +58,8 @@ struct Device {
   bool failed = false;             // a chain failed: every present of the device passes through
   std::map<VkQueue, uint32_t> queue_families;
   std::map<VkQueue, pfx_vk_bridge*> bridges;  // one per presenting queue, made at its first present
+  // The preset file, from the first bridge on: an edit applies to every bridge of the device.
+  std::unique_ptr<inject::PresetWatch> preset_watch;
   std::map<VkSwapchainKHR, std::unique_ptr<Swapchain>> swapchains;
 };
 

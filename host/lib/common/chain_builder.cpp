@@ -130,6 +130,11 @@ bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore
     chain->set_enabled(chain->size() - 1, effect.enabled);
   }
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
+  return apply_recipe_values(recipe, params, error, notes, set_origin);
+}
+
+bool apply_recipe_values(const ChainRecipe& recipe, host::ParamStore* params, std::string* error,
+                         std::vector<std::string>* notes, const std::string& set_origin) {
   if (!recipe.parameters_json.empty() && !params->from_json(recipe.parameters_json, error)) {
     *error = "preset parameters: " + *error;
     return false;

@@ -64,6 +64,10 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
 // the store's remarks on assignments it adjusted.
 bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error,
                  std::vector<std::string>* notes = nullptr, const std::string& set_origin = "--set");
+// The recipe's values (the preset's, then the assignments) put into a store that already holds
+// the chain's instances; false with *error as build_chain's.
+bool apply_recipe_values(const ChainRecipe& recipe, host::ParamStore* params, std::string* error,
+                         std::vector<std::string>* notes = nullptr, const std::string& set_origin = "--set");
 // Whether any effect of the chain is switched on: with none, a host has nothing to run.
 bool any_enabled(const host::Chain& chain);
 // Every loaded effect's values at the display-referred defaults, with as many instances of each as

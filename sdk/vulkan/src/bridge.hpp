@@ -37,9 +37,15 @@ namespace pfx::vk {
 
 // The steps of pfx_vk_bridge_create, each false with *error.
 bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::string* error);
-// Without a chain given: the preset's, else every effect found in pfx's order.
-bool default_chain_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::ChainRecipe* recipe,
-                          std::string* error);
+// The recipe desc's chain, set and preset give, fitted to a frame of colour alone
+// (fit_recipe_to_colour), and the transfer. What does not apply fails it with *error, or with
+// PFX_VK_LEAVE_OUT_BAD_SETTINGS is left out and added to *left_out. Needs the plugins and the GL
+// thread.
+pfx_vk_status settings_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::Transfer* transfer,
+                              app::ChainRecipe* recipe, std::vector<app::RecipeProblem>* left_out, std::string* error);
+// Each item of the settings left out, as a warning to the log.
+void say_left_out(const pfx_vk_bridge* bridge, const std::vector<app::RecipeProblem>& left_out);
+void copy_error(const std::string& message, char* error, size_t error_size);
 // Leaves out of the default chain, or switches off in a chosen one, every effect that needs more
 // than colour (colour_fit.cpp).
 bool fit_recipe_to_colour(pfx_vk_bridge* bridge, app::ChainRecipe* recipe, std::string* error);

@@ -14,12 +14,6 @@ namespace {
 
 const char* const kDeviceExtensions[] = {"VK_KHR_external_memory", "VK_KHR_external_memory_fd"};
 
-void copy_error(const std::string& message, char* error, size_t error_size) {
-  if (!error || !error_size) return;
-  std::strncpy(error, message.c_str(), error_size - 1);
-  error[error_size - 1] = '\0';
-}
-
 bool forced_host_memory(const pfx_vk_bridge_desc& desc) {
   const char* variable = std::getenv("PFX_VK_HOST_MEMORY");
   return (desc.flags & PFX_VK_FORCE_HOST_MEMORY) || (variable && std::strcmp(variable, "1") == 0);
@@ -55,12 +49,53 @@ Path choose_path(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, std::str
 
 bool leaves_out_bad_settings(const pfx_vk_bridge_desc& desc) { return (desc.flags & PFX_VK_LEAVE_OUT_BAD_SETTINGS) != 0; }
 
-// What the settings name that does not apply, left out with a warning each (the flag's rule).
-void say_left_out(const pfx_vk_bridge* bridge, const std::vector<std::string>& left_out) {
-  for (const auto& item : left_out) bridge->say(1, "ignored " + item);
+// Without a chain given: the preset's, else every effect found in pfx's order. What does not apply
+// is an error, or goes to *left_out when that is given.
+bool default_chain_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::ChainRecipe* recipe,
+                          std::vector<app::RecipeProblem>* left_out, std::string* error) {
+  std::vector<app::RecipeProblem> problems;
+  std::vector<std::string> notes;
+  const std::vector<std::string> sets = adapters::split_assignments(desc.set ? desc.set : "");
+  *recipe = app::make_chain_recipe(desc.preset ? desc.preset : "", std::nullopt, sets, *bridge->registry,
+                                   app::WithoutChain::DEFAULT_CHAIN, &problems, &notes);
+  if (problems.empty()) return true;
+  if (left_out) {
+    left_out->insert(left_out->end(), problems.begin(), problems.end());
+    return true;
+  }
+  *error = problems.front().message;
+  return false;
 }
 
 }  // namespace
+
+void copy_error(const std::string& message, char* error, size_t error_size) {
+  if (!error || !error_size) return;
+  std::strncpy(error, message.c_str(), error_size - 1);
+  error[error_size - 1] = '\0';
+}
+
+void say_left_out(const pfx_vk_bridge* bridge, const std::vector<app::RecipeProblem>& left_out) {
+  for (const auto& item : adapters::describe_problems(left_out)) bridge->say(1, "ignored " + item);
+}
+
+pfx_vk_status settings_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::Transfer* transfer,
+                              app::ChainRecipe* recipe, std::vector<app::RecipeProblem>* left_out, std::string* error) {
+  const adapters::ChainSettings settings{desc.chain ? desc.chain : "", desc.set ? desc.set : "",
+                                         desc.transfer ? desc.transfer : "", desc.preset ? desc.preset : ""};
+  const bool lenient = leaves_out_bad_settings(desc);
+  // With no chain given the default chain's recipe reads the preset and the assignments again:
+  // what they lack is said once, from there.
+  std::vector<app::RecipeProblem> problems;
+  if (!adapters::resolve_chain_settings(settings, *bridge->registry, transfer, recipe, error, lenient ? &problems : nullptr))
+    return PFX_VK_BAD_SETTINGS;
+  if (desc.chain) left_out->insert(left_out->end(), problems.begin(), problems.end());
+  else if (!default_chain_recipe(bridge, desc, recipe, lenient ? left_out : nullptr, error))
+    return PFX_VK_BAD_SETTINGS;
+  if (!fit_recipe_to_colour(bridge, recipe, error))
+    return bridge->worker->renderer().empty() ? PFX_VK_NO_GL : PFX_VK_BAD_SETTINGS;
+  return PFX_VK_OK;
+}
 
 bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::string* error) {
   bridge->registry = std::make_unique<host::PluginRegistry>(
@@ -84,22 +119,6 @@ bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::st
     return false;
   }
   return true;
-}
-
-bool default_chain_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::ChainRecipe* recipe,
-                          std::string* error) {
-  std::vector<app::RecipeProblem> problems;
-  std::vector<std::string> notes;
-  const std::vector<std::string> sets = adapters::split_assignments(desc.set ? desc.set : "");
-  *recipe = app::make_chain_recipe(desc.preset ? desc.preset : "", std::nullopt, sets, *bridge->registry,
-                                   app::WithoutChain::DEFAULT_CHAIN, &problems, &notes);
-  if (problems.empty()) return true;
-  if (leaves_out_bad_settings(desc)) {
-    say_left_out(bridge, adapters::describe_problems(problems));
-    return true;
-  }
-  *error = problems.front().message;
-  return false;
 }
 
 bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, const app::ChainRecipe& recipe,
@@ -148,25 +167,20 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_des
     vk::copy_error(message, error, error_size);
     return PFX_VK_VULKAN_FAILED;
   }
-  app::ChainRecipe recipe;
-  const adapters::ChainSettings settings{desc->chain ? desc->chain : "", desc->set ? desc->set : "",
-                                         desc->transfer ? desc->transfer : "", desc->preset ? desc->preset : ""};
-  std::vector<std::string> left_out;
-  if (!vk::load_bridge_plugins(bridge.get(), desc->plugin_path, &message) ||
-      !adapters::resolve_chain_settings(settings, *bridge->registry, &bridge->transfer, &recipe, &message,
-                                        vk::leaves_out_bad_settings(*desc) ? &left_out : nullptr)) {
+  if (!vk::load_bridge_plugins(bridge.get(), desc->plugin_path, &message)) {
     vk::copy_error(message, error, error_size);
     return PFX_VK_BAD_SETTINGS;
   }
-  vk::say_left_out(bridge.get(), left_out);
   bridge->worker = adapters::GlWorker::start();
-  if ((!desc->chain && !vk::default_chain_recipe(bridge.get(), *desc, &recipe, &message)) ||
-      !vk::fit_recipe_to_colour(bridge.get(), &recipe, &message)) {
+  app::ChainRecipe recipe;
+  std::vector<app::RecipeProblem> left_out;
+  const pfx_vk_status settings = vk::settings_recipe(bridge.get(), *desc, &bridge->transfer, &recipe, &left_out, &message);
+  if (settings != PFX_VK_OK) {
     vk::copy_error(message, error, error_size);
-    const bool has_gl = !bridge->worker->renderer().empty();
     pfx_vk_bridge_destroy(bridge.release());
-    return has_gl ? PFX_VK_BAD_SETTINGS : PFX_VK_NO_GL;
+    return settings;
   }
+  vk::say_left_out(bridge.get(), left_out);
   if (!vk::start_bridge_gl(bridge.get(), *desc, recipe, &message)) {
     vk::copy_error(message, error, error_size);
     // A worker that made its context ran the chain's creation: then an effect failed.

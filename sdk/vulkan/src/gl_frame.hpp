@@ -21,6 +21,13 @@ class GlFrame {
   bool create(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* error);
   ~GlFrame();
 
+  // A new recipe while frames run (FrameChain::update): false with *error and the chain as it was.
+  bool update(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* error) {
+    std::vector<std::string> notes;
+    return chain_->update(registry, recipe, "set", &notes, error);
+  }
+  std::string chain_text() const { return chain_->text(); }
+
   GlMemory& shared() { return shared_; }
   // Whether a frame of that size and time would run any pass (FrameChain::plans_passes). False
   // with *error when an effect's declare fails.

@@ -215,6 +215,54 @@ TEST_CASE("a setting that does not apply is left out, said in one line, and the 
   }
 }
 
+// Replaces the file the way editors and pfx-view write one: a new file renamed over the old.
+void replace_file(const ScratchFolder& folder, const std::string& path, const std::string& text) {
+  std::ofstream(folder.file("replacing.tmp")) << text;
+  std::filesystem::rename(folder.file("replacing.tmp"), path);
+}
+
+TEST_CASE("an edited preset applies while vkcube runs, and one that does not apply leaves the chain running",
+          "[vkcube]") {
+  ScratchFolder folder("vulkan-preset-edit");
+  const std::string preset = folder.file("look.json");
+  std::ofstream(preset) << R"({"pfx_preset": 1, "chain": [{"effect": "bloom"}]})";
+  // Frame 2,000 is captured: long after the edits below, which apply within a quarter of a second.
+  std::vector<std::string> argv = {"/usr/bin/env",
+                                   "XDG_DATA_HOME=" PFX_BUILD_SHARE,
+                                   "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_PRESET=" + preset,
+                                   "PFX_INJECT_CAPTURE=2000:" + folder.file("last"),
+                                   "PFX_INJECT_QUIT_AFTER=2001"};
+  add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
+  pfx::test::ViewerProcess app(argv);
+  REQUIRE_FALSE(app.wait_for_line("frames go through", 60).empty());
+  // Other effects: made anew.
+  replace_file(folder, preset, R"({"pfx_preset": 1, "chain": [{"effect": "glare"}, {"effect": "bloom", "enabled": false}]})");
+  CHECK_FALSE(app.wait_for_line("settings applied: chain glare,bloom (off)", 10).empty());
+  replace_file(folder, preset, R"({"pfx_preset": 1, "chain": [{"effect": "no-such-effect"}]})");
+  CHECK_FALSE(app.wait_for_line("the previous chain keeps running", 10).empty());
+  // The same effects with other values and flags: the values reach the running effects.
+  const std::string last = R"({"pfx_preset": 1, "chain": [{"effect": "glare", "enabled": false}, {"effect": "bloom"}],
+                               "parameters": {"bloom": {"strength": 2.5}}})";
+  replace_file(folder, preset, last);
+  CHECK_FALSE(app.wait_for_line("settings applied: chain glare (off),bloom", 10).empty());
+  const std::string quit = app.wait_for_line("quitting, as asked", 120);
+  INFO(app.output());
+  REQUIRE_FALSE(quit.empty());
+  CHECK(app.wait_exit(30) == 0);
+  std::ofstream(folder.file("last-preset.json")) << last;
+  const pfx::test::RunResult render =
+      pfx::test::run_program({PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("last.app.png"),
+                              "--preset", folder.file("last-preset.json"), "--out", folder.file("render.png")});
+  INFO(render.output);
+  REQUIRE(render.exit_code == 0);
+  const auto presented = pfx::test::read_png_file(folder.file("last.png"));
+  CHECK(difference(presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
+  // Bloom at strength 2.5 is far from bloom at its default there.
+  CHECK(difference(presented, pfx::test::read_png_file(folder.file("last.app.png"))).first >= 8);
+}
+
 TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variables set by hand do", "[vkcube]") {
   ScratchFolder folder("vulkan-launcher");
   const Frame by_hand = vkcube_frame(folder, "by-hand", {"PFX_INJECT_CHAIN=bloom"});

@@ -95,6 +95,16 @@ PFX_VK_API const char* const* pfx_vk_bridge_device_extensions(uint32_t* count);
  * run. On failure *out is NULL and, when error is not NULL, error (of error_size bytes) says why. */
 PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_desc* desc, pfx_vk_bridge** out, char* error,
                                               size_t error_size);
+/* New settings for a running bridge, such as a preset file edited while frames run: desc's chain,
+ * set, preset, transfer and flags, read as pfx_vk_bridge_create reads them (its other members are
+ * not read: the device, queue and plugins stay). When the chain names the same effects in the same
+ * order only values and on/off flags change and no effect is created again; otherwise the effects
+ * are made anew (their programs compile now). All or nothing: on failure the chain that ran keeps
+ * running and error says why; a preset that does not read or apply fails it even with
+ * PFX_VK_LEAVE_OUT_BAD_SETTINGS. The log gets "settings applied: chain ...". Not during a
+ * pfx_vk_bridge_run of the same bridge. */
+PFX_VK_API pfx_vk_status pfx_vk_bridge_update(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc* desc, char* error,
+                                              size_t error_size);
 /* Waits for the bridge's work on the device to end and frees everything it made. NULL is a no-op. */
 PFX_VK_API void pfx_vk_bridge_destroy(pfx_vk_bridge* bridge);
 
