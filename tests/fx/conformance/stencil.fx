@@ -3,7 +3,7 @@
 // the four quarters q0..q3 of the frame's width; the stencil values after each are worked out by
 // hand in the comments, and passes that test the stencil write 1 into a texture of their own
 // (cleared first) where the test passes. A pass into a target of another size draws without
-// stencil, and a stencil pass into the back buffer keeps the pixels its test rejects.
+// stencil. (stencil_back_buffer.fx: a stencil pass into the back buffer.)
 // size: 64x4
 // frames: 2
 #include "include/check.fxh"
@@ -12,7 +12,7 @@ texture TScratch { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
 texture TEqual { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
 texture TNotEqual { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
 texture TMasked { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
-texture TSmall { Width = BUFFER_WIDTH / 2; Height = BUFFER_HEIGHT / 2; };
+texture TWide { Width = BUFFER_WIDTH + 1; Height = BUFFER_HEIGHT; };
 texture TIs252 { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
 texture TIs12 { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
 texture TLess { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
@@ -20,7 +20,7 @@ texture TGreaterEqual { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; };
 sampler SEqual { Texture = TEqual; MinFilter = POINT; MagFilter = POINT; };
 sampler SNotEqual { Texture = TNotEqual; MinFilter = POINT; MagFilter = POINT; };
 sampler SMasked { Texture = TMasked; MinFilter = POINT; MagFilter = POINT; };
-sampler SSmall { Texture = TSmall; MinFilter = POINT; MagFilter = POINT; };
+sampler SWide { Texture = TWide; MinFilter = POINT; MagFilter = POINT; };
 sampler SIs252 { Texture = TIs252; MinFilter = POINT; MagFilter = POINT; };
 sampler SIs12 { Texture = TIs12; MinFilter = POINT; MagFilter = POINT; };
 sampler SLess { Texture = TLess; MinFilter = POINT; MagFilter = POINT; };
@@ -49,7 +49,6 @@ float4 NotQ3(float4 position : SV_Position, float2 texcoord : TEXCOORD) : SV_Tar
   if (Quarter(position) == 3) discard;
   return 1.0;
 }
-float4 Red(float4 position : SV_Position, float2 texcoord : TEXCOORD) : SV_Target { return float4(1.0, 0.0, 0.0, 1.0); }
 
 // Whether the texture holds 1 in each quarter: bit q of `expected` for quarter q.
 bool Quarters(sampler s, int expected)
@@ -68,7 +67,7 @@ bool Check(int i)
   if (i == 0) return Quarters(SEqual, 3);         // EQUAL 1 where 1: q0 and q1
   if (i == 1) return Quarters(SNotEqual, 2);      // NOTEQUAL 1 where 2: q1
   if (i == 2) return Quarters(SMasked, 13);       // EQUAL 0x10 under read mask 1, even values: q0, q2, q3
-  if (i == 3) return Quarters(SSmall, 15);        // half size: no stencil, every pixel written
+  if (i == 3) return Quarters(SWide, 15);         // one column wider: no stencil, every pixel written
   if (i == 4) return Quarters(SIs252, 5);         // q0 and q2 hold 252
   if (i == 5) return Quarters(SIs12, 2);          // q1 holds 12
   if (i == 6) return Quarters(SLess, 8);          // 253 < stencil: q3 (255)
@@ -100,8 +99,9 @@ technique stencil
   // 252 12 252 255.
   pass { VertexShader = PostProcessVS; PixelShader = NotQ3; RenderTarget = TScratch; StencilEnable = true; StencilWriteMask = 0x0F;
          StencilPass = REPLACE; StencilRef = 0x3C; }
-  // A target of half the size: drawn without stencil (NEVER would reject all, ZERO would clear it).
-  pass { VertexShader = PostProcessVS; PixelShader = One; RenderTarget = TSmall; ClearRenderTargets = true; StencilEnable = true;
+  // A target one column wider than the frame: drawn without stencil (NEVER would reject all, ZERO
+  // would clear it).
+  pass { VertexShader = PostProcessVS; PixelShader = One; RenderTarget = TWide; ClearRenderTargets = true; StencilEnable = true;
          StencilFunc = NEVER; StencilFailOp = ZERO; }
   pass { VertexShader = PostProcessVS; PixelShader = One; RenderTarget = TIs252; ClearRenderTargets = true; StencilEnable = true; StencilFunc = EQUAL; StencilRef = 252; }
   pass { VertexShader = PostProcessVS; PixelShader = One; RenderTarget = TIs12; ClearRenderTargets = true; StencilEnable = true; StencilFunc = EQUAL; StencilRef = 12; }
@@ -109,6 +109,4 @@ technique stencil
   pass { VertexShader = PostProcessVS; PixelShader = One; RenderTarget = TGreaterEqual; ClearRenderTargets = true; StencilEnable = true;
          StencilFunc = GEQUAL; StencilRef = 252; }
   pass { VertexShader = PostProcessVS; PixelShader = Main; }
-  // No pixel holds 7: the back buffer keeps the verdicts.
-  pass { VertexShader = PostProcessVS; PixelShader = Red; StencilEnable = true; StencilFunc = EQUAL; StencilRef = 7; }
 }
