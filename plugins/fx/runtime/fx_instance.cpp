@@ -270,10 +270,6 @@ void FxInstance::note_ignored_features() {
     if (!pragma.tokens.empty() && pragma.tokens[0].text == "reshade")
       log(PFX_LOG_INFO, front.diagnostics.format({pfx::fx::Severity::kWarning, pragma.location,
                                                   "'#pragma " + pfx::fx::spell(pragma.tokens) + "' is ignored"}));
-  for (const PassInfo& pass : technique().passes)
-    if (pass.stencil_enable)
-      log(PFX_LOG_INFO, front.diagnostics.format({pfx::fx::Severity::kWarning, pass.location,
-                                                  "stencil states are ignored: the pass draws every pixel its stencil test would have kept"}));
 }
 
 void FxInstance::watch(const pfx::fx::CompiledEffect& compiled) {
@@ -351,6 +347,7 @@ void FxInstance::release_gl() {
   delete_texture(back_buffer_[0]);
   delete_texture(back_buffer_[1]);
   delete_texture(fx_depth_);
+  stencil_.release();
   gl_current_ = false;
 }
 
@@ -372,6 +369,7 @@ bool FxInstance::build_gl() {
     const float far = 1.0f;
     glClearTexImage(fx_depth_.texture, 0, GL_RED, GL_FLOAT, &far);
   }
+  if (!stencil_.create(technique(), compiled_width_, compiled_height_, error)) return log(PFX_LOG_ERROR, error), false;
   textures_.resize(model.textures.size());
   for (std::size_t i = 0; i < model.textures.size(); ++i) {
     const pfx::fx::TextureInfo& info = model.textures[i];
@@ -421,7 +419,7 @@ bool FxInstance::build_gl() {
     // A pass that may leave pixels of the back buffer unwritten starts from a copy of it.
     bool standard_vs = pass.vertex_shader && pass.vertex_shader->name == "PostProcessVS";
     p.covers_target = standard_vs && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !g.may_discard && pass.vertex_count == 3 &&
-                      pass.topology == pfx::fx::Topology::kTriangleList;
+                      pass.topology == pfx::fx::Topology::kTriangleList && !pass.stencil.enable;
     programs_.push_back(p);
   }
   gl_current_ = true;
@@ -457,6 +455,7 @@ void FxInstance::run_encode(const pfx_pass_context& context) {
   if (depth) convert_depth(context);
   current_ = 0;
   draw_into(&back_buffer_[0].texture, 1, compiled_width_, compiled_height_);
+  stencil_.clear(framebuffer_);  // the technique starts: zeros, as in ReShade
   glUseProgram(encode_program_);  // unit 0: the frame's colour, bound by the host
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -566,9 +565,12 @@ void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
     }
     glColorMaski(static_cast<GLuint>(i), b.write_mask & 1, (b.write_mask >> 1) & 1, (b.write_mask >> 2) & 1, (b.write_mask >> 3) & 1);
   }
+  const bool stencil = stencil_.applies(pass, width, height);
+  if (stencil) stencil_.begin(framebuffer_, pass.stencil);
   bind_resources(g, p, height);
   glUseProgram(p.program);
   glDrawArrays(gl_topology(pass.topology), 0, pass.vertex_count);
+  if (stencil) stencil_.end(framebuffer_);
   // Put back what the GL state contract protects: blending off with (ADD, ONE, ONE), every
   // colour written, no sRGB encoding.
   for (int i = 0; i < count; ++i) {

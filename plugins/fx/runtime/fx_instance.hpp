@@ -19,6 +19,7 @@
 #include "effect_compiler.hpp"
 #include "fx_catalog.hpp"
 #include "fx_gl_objects.hpp"
+#include "fx_stencil.hpp"
 #include "fx_uniform_values.hpp"
 
 namespace pfx_fx {
@@ -46,7 +47,7 @@ class FxInstance {
   std::unique_ptr<pfx::fx::CompiledEffect> compile_at(int width, int height, std::string* error);
   void adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled);  // its passes, for the next run
   bool compile_source(int width, int height);  // CPU
-  void note_ignored_features();  // once: what of the file pfx does not honour (stencil, #pragma reshade)
+  void note_ignored_features();  // once: what of the file pfx does not honour (#pragma reshade)
   // Edits: the file and its includes are looked at every kWatchIntervalMs; an edit that compiles
   // replaces the running version (parameter values kept: the host owns them), one that does not
   // is logged and the last version that compiled keeps running.
@@ -85,6 +86,7 @@ class FxInstance {
   std::vector<GlTexture> textures_;  // per model texture (unused for the back buffer and depth)
   std::vector<GLuint> samplers_;
   GlTexture back_buffer_[2];
+  FxStencil stencil_;  // when a pass enables the stencil test
   int current_ = 0;  // which back buffer holds the picture
   // FX's depth buffer: the frame's depth as standard window depth of a projection with its far
   // plane 1000 near planes away (what ReShade.fxh's GetLinearizedDepth reads with the settings

@@ -82,6 +82,28 @@ BlendFactor blend_factor_of(const Expr& value) {
   return i < 0 ? BlendFactor::kOne : static_cast<BlendFactor>(i);
 }
 
+CompareFunc compare_func_of(const Expr& value) {
+  int i = enum_index(value, {"NEVER", "LESS", "EQUAL", "LEQUAL", "GREATER", "NOTEQUAL", "GEQUAL", "ALWAYS", "LESSEQUAL", "NEQUAL",
+                             "GREATEREQUAL"});
+  if (value.kind != ExprKind::kName) return CompareFunc::kAlways;
+  switch (i) {
+    case 8: return CompareFunc::kLessEqual;
+    case 9: return CompareFunc::kNotEqual;
+    case 10: return CompareFunc::kGreaterEqual;
+    default: return i < 0 ? CompareFunc::kAlways : static_cast<CompareFunc>(i);
+  }
+}
+
+StencilOp stencil_op_of(const Expr& value) {
+  int i = enum_index(value, {"KEEP", "ZERO", "REPLACE", "INCRSAT", "DECRSAT", "INVERT", "INCR", "DECR"});
+  if (value.kind != ExprKind::kName) return StencilOp::kKeep;
+  return i < 0 ? StencilOp::kKeep : static_cast<StencilOp>(i);
+}
+
+unsigned stencil_byte(const Expr& value, unsigned fallback) {
+  return static_cast<unsigned>(integer_state(value, fallback)) & 0xFFu;
+}
+
 Annotations read_annotations(const std::vector<Annotation>& list) {
   Annotations out;
   for (const Annotation& a : list)
@@ -302,7 +324,14 @@ class ModelBuilder {
       else if (base == "DestBlendAlpha") blend.dest_alpha = blend_factor_of(value);
       else if (base == "RenderTargetWriteMask" || base == "ColorWriteEnable" || base == "ColorWriteMask")
         blend.write_mask = static_cast<unsigned>(integer_state(value, 0xF)) & 0xFu;
-      else if (base == "StencilEnable") info.stencil_enable = bool_state(value);
+      else if (base == "StencilEnable") info.stencil.enable = bool_state(value);
+      else if (base == "StencilReadMask" || base == "StencilMask") info.stencil.read_mask = stencil_byte(value, 0xFF);
+      else if (base == "StencilWriteMask") info.stencil.write_mask = stencil_byte(value, 0xFF);
+      else if (base == "StencilFunc") info.stencil.func = compare_func_of(value);
+      else if (base == "StencilRef") info.stencil.ref = stencil_byte(value, 0);
+      else if (base == "StencilPassOp" || base == "StencilPass") info.stencil.pass_op = stencil_op_of(value);
+      else if (base == "StencilFailOp" || base == "StencilFail") info.stencil.fail_op = stencil_op_of(value);
+      else if (base == "StencilDepthFailOp" || base == "StencilZFail") info.stencil.depth_fail_op = stencil_op_of(value);
       else if (base == "PrimitiveTopology" || base == "PrimitiveType") {
         int i = enum_index(value, {"POINTLIST", "LINELIST", "LINESTRIP", "TRIANGLELIST", "TRIANGLESTRIP"});
         info.topology = i < 0 ? Topology::kTriangleList : static_cast<Topology>(i);

@@ -20,6 +20,9 @@ enum class FilterMode { kPoint, kLinear };
 enum class BlendOp { kAdd, kSubtract, kRevSubtract, kMin, kMax };
 enum class BlendFactor { kZero, kOne, kSrcColor, kSrcAlpha, kInvSrcColor, kInvSrcAlpha, kDestColor, kDestAlpha, kInvDestColor, kInvDestAlpha };
 enum class Topology { kPointList, kLineList, kLineStrip, kTriangleList, kTriangleStrip };
+enum class CompareFunc { kNever, kLess, kEqual, kLessEqual, kGreater, kNotEqual, kGreaterEqual, kAlways };
+// As ReShade (and Direct3D) name them: INCR and DECR wrap around, INCRSAT and DECRSAT saturate.
+enum class StencilOp { kKeep, kZero, kReplace, kIncrSat, kDecrSat, kInvert, kIncr, kDecr };
 
 // The GLSL image format qualifier of a storage of this format ("rgba8").
 const char* glsl_image_format(TextureFormat format);
@@ -76,6 +79,16 @@ struct BlendTarget {
   unsigned write_mask = 0xF;
 };
 
+// A pass's stencil states, with ReShade's defaults. The test compares (ref & read_mask) with
+// (stencil & read_mask); the same states apply to front and back faces.
+struct StencilState {
+  bool enable = false;
+  unsigned read_mask = 0xFF, write_mask = 0xFF;
+  CompareFunc func = CompareFunc::kAlways;
+  unsigned ref = 0;
+  StencilOp pass_op = StencilOp::kKeep, fail_op = StencilOp::kKeep, depth_fail_op = StencilOp::kKeep;
+};
+
 constexpr int kMaxRenderTargets = 8;
 
 struct PassInfo {
@@ -92,7 +105,7 @@ struct PassInfo {
   bool generate_mipmaps = true;
   bool srgb_write = false;
   BlendTarget blend[kMaxRenderTargets];
-  bool stencil_enable = false;
+  StencilState stencil;
   Topology topology = Topology::kTriangleList;
   int vertex_count = 3;
 };
