@@ -62,7 +62,8 @@ class PFX_HOST_API Chain {
   // Appends an instance of an effect (created now, so its programs compile now) and registers its
   // parameters in the store if they are not there yet. The N-th instance of an effect in the
   // chain uses the store's values of "effect#N" (at the defaults when the store had no such
-  // instance). False with *error on an unknown id or a failing create.
+  // instance). False with *error on an unknown id, a failing create or a plugin that refuses the
+  // chain's source definitions (set_source_definitions).
   bool add(const std::string& effect_id, std::string* error);
   size_t size() const;
   std::string effect_id(size_t index) const;
