@@ -8,9 +8,11 @@ technique name, label and parameters; that each broken file (a type error, a syn
 #include cycle) is in load_errors with its file, line and column; and that the good effect renders,
 with its image texture found in the collection's Textures folder and the right way up; and that
 a ReShade preset (.ini) drives pfx-render: its enabled techniques in TechniqueSorting's order with
-its values, and what it names that is not there in one warning; and that pfx-fx-check reports the
-folder: both techniques compiled, ran, finite and changing the picture, the three broken files
-not compiled, exit status 1.
+its values, and what it names that is not there in one warning; that its PreprocessorDefinitions
+reach the effect (Level.fx's #ifndef default overridden) except the RESHADE_DEPTH_* settings pfx
+defines itself, which are named as ignored; that a pfx JSON preset's "source_definitions" do the
+same; and that pfx-fx-check reports the folder: the three techniques compiled, ran, finite and
+changing the picture, the three broken files not compiled, exit status 1.
 """
 import json
 import os
@@ -88,6 +90,44 @@ def main():
         check(report.get("effects") == ["fx_goodtint"], "the chain is not [fx_goodtint]: %s" % report.get("effects"))
         got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[..., :3].astype(int)
         check(np.abs(got - 100).max() == 0, "Amount=0 from the preset did not reach the effect: %s" % got[0, 0])
+    # PreprocessorDefinitions: Level.fx's grey is its macro PFX_TEST_LEVEL (0.25 by default) plus
+    # 0.125 times RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN, which pfx defines as 0 and a preset may not
+    # change. The back buffer holds sRGB-encoded 8-bit codes and the output is encoded again, so a
+    # level shows as its own 8-bit code.
+    def code(level):
+        return int(round(level * 255))
+
+    defined = "PreprocessorDefinitions= PFX_TEST_LEVEL=0.75 , RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN=1,PFX_TEST_FLAG\n"
+    json_preset = os.path.join(out, "level.json")
+    with open(json_preset, "w") as f:
+        json.dump({"pfx_preset": 1, "chain": [{"effect": "fx_definedlevel"}],
+                   "source_definitions": "PFX_TEST_LEVEL=0.5"}, f)
+    for name, text, expected, ignored in (
+            ("level_default.ini", "PreprocessorDefinitions=\n", code(0.25), False),
+            ("level_defined.ini", defined, code(0.75), True),
+            ("level.json", None, code(0.5), False)):
+        path = os.path.join(out, name)
+        if text is not None:
+            with open(path, "w") as f:
+                f.write(text + "Techniques=DefinedLevel@Level.fx\nTechniqueSorting=DefinedLevel@Level.fx\n")
+        target = os.path.join(out, name + ".png")
+        run = subprocess.run([render, "--input", source, "--preset", path, "--out", target], env=env,
+                             capture_output=True, text=True, timeout=300)
+        check(run.returncode == 0, "rendering with %s failed: %s" % (name, run.stderr))
+        if run.returncode == 0:
+            got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[..., :3].astype(int)
+            check(np.abs(got - expected).max() <= 1, "%s: the grey is %s, expected %d" % (name, got[0, 0], expected))
+        named = [line for line in run.stderr.splitlines() if "ignored" in line and "RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN" in line]
+        check(len(named) == (1 if ignored else 0), "%s: RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN named as ignored %d times: %s"
+              % (name, len(named), run.stderr))
+    malformed = os.path.join(out, "level_malformed.ini")
+    with open(malformed, "w") as f:
+        f.write("PreprocessorDefinitions=PFX_TEST_LEVEL=0.5,2BAD=1\nTechniques=DefinedLevel@Level.fx\n")
+    run = subprocess.run([render, "--input", source, "--preset", malformed, "--out", os.path.join(out, "malformed.png")], env=env,
+                         capture_output=True, text=True, timeout=300)
+    check(run.returncode != 0 and "2BAD" in run.stderr and "PreprocessorDefinitions" in run.stderr,
+          "a malformed PreprocessorDefinitions list is not refused naming the entry: %d %s" % (run.returncode, run.stderr))
+
     tool = os.path.join(os.path.dirname(render), "pfx-fx-check")
     checked = subprocess.run([tool, "--json", "--picture", source, os.path.join(listing, "Shaders")], capture_output=True, text=True,
                              timeout=600)
@@ -95,17 +135,18 @@ def main():
     try:
         table = json.loads(checked.stdout)
         rows = {r["technique"]: r for r in table["techniques"]}
-        for name in ("GoodTint", "GoodSecond"):
+        for name in ("GoodTint", "GoodSecond", "DefinedLevel"):
             r = rows.get(name, {})
             check(r.get("ran") and r.get("finite") and r.get("changed") and r.get("compile_ms") is not None and r.get("run_ms") is not None,
                   "pfx-fx-check's row for %s: %s" % (name, r))
+        check(len(rows) == 3, "pfx-fx-check's techniques: %s" % sorted(rows))
         check(len(table["files_not_compiled"]) == 3, "pfx-fx-check's files not compiled: %s" % table["files_not_compiled"])
     except (ValueError, KeyError) as e:
         check(False, "pfx-fx-check --json gave no table (%s): %s" % (e, checked.stdout[:400]))
     for f in failures:
         print("FAIL:", f)
     if not failures:
-        print("ok: listing, load errors, rendering with an image texture, a ReShade preset, pfx-fx-check")
+        print("ok: listing, load errors, rendering with an image texture, a ReShade preset and its definitions, pfx-fx-check")
     return 1 if failures else 0
 
 

@@ -81,6 +81,7 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
     for (const auto& a : left_out) names += (names.empty() ? "" : ", ") + a.substr(0, a.find('='));
     problems->push_back({RecipeProblem::PRESET, preset_path + ": not found, left out: " + names});
   }
+  recipe.source_definitions = preset.source_definitions;
   for (const auto& note : preset.notes) notes->push_back(preset_path + ": " + note);
   for (const auto& assignment : sets) {
     std::string note;
@@ -128,6 +129,10 @@ bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore
   for (const auto& effect : recipe.effects) {
     if (!chain->add(effect.id, error)) return false;
     chain->set_enabled(chain->size() - 1, effect.enabled);
+  }
+  if (!chain->set_source_definitions(recipe.source_definitions, error)) {
+    *error = "preset PreprocessorDefinitions: " + *error;
+    return false;
   }
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
   return apply_recipe_values(recipe, params, error, notes, set_origin);

@@ -26,6 +26,7 @@ struct ChainRecipe {
   bool chosen = false;
   std::string parameters_json;    // the preset's values, or empty
   std::vector<std::string> sets;  // assignments that apply, in order
+  std::string source_definitions;  // the preset's, for the effects made from source files
 };
 
 // One thing of the settings that does not apply, and where it came from.
@@ -59,8 +60,9 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
                               const std::vector<std::string>& sets, const host::PluginRegistry& registry,
                               WithoutChain without, std::vector<RecipeProblem>* problems,
                               std::vector<std::string>* notes);
-// Fills an empty chain and its store; false with *error naming the effect or assignment (an
-// assignment's error starts with `set_origin`, the option that gave it). *notes, when given, gets
+// Fills an empty chain and its store, the chain with the recipe's source definitions; false with
+// *error naming the effect, the definitions or the assignment (an assignment's error starts with
+// `set_origin`, the option that gave it). *notes, when given, gets
 // the store's remarks on assignments it adjusted.
 bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore* params, std::string* error,
                  std::vector<std::string>* notes = nullptr, const std::string& set_origin = "--set");

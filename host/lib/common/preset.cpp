@@ -134,7 +134,7 @@ bool parse_preset(const std::string& json, Preset* out, std::string* error) {
   }
   try {
     if (!root.is_object()) refuse("preset", "must be a JSON object");
-    only_known_members(root, "", {"pfx_preset", "chain", "parameters", "camera", "display"});
+    only_known_members(root, "", {"pfx_preset", "chain", "parameters", "camera", "display", "source_definitions"});
     if (!root.contains("pfx_preset") || !root["pfx_preset"].is_number_integer())
       refuse("pfx_preset", "missing: a preset starts with \"pfx_preset\": " + std::to_string(kPresetVersion));
     const auto version = root["pfx_preset"].get<long long>();
@@ -149,6 +149,10 @@ bool parse_preset(const std::string& json, Preset* out, std::string* error) {
     }
     if (root.contains("camera")) preset.camera = parse_camera(root["camera"]);
     if (root.contains("display")) parse_display(root["display"], &preset);
+    if (root.contains("source_definitions")) {
+      if (!root["source_definitions"].is_string()) refuse("source_definitions", "must be a string \"NAME=VALUE,FLAG\"");
+      preset.source_definitions = root["source_definitions"].get<std::string>();
+    }
     *out = std::move(preset);
     return true;
   } catch (const PresetError& e) {
@@ -197,6 +201,7 @@ std::string preset_to_json(const Preset& preset) {
   if (preset.exposure_ev) display["exposure_ev"] = *preset.exposure_ev;
   if (preset.tone) display["tone"] = tone_curve_name(*preset.tone);
   if (!display.empty()) root["display"] = display;
+  if (!preset.source_definitions.empty()) root["source_definitions"] = preset.source_definitions;
   return root.dump(2) + "\n";
 }
 

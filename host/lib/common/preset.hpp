@@ -7,8 +7,13 @@
 //     "parameters": {"bloom": {"threshold": 1.5, "mode": "chain"}},   (ParamStore::to_json's form)
 //     "camera": {"position": [x, y, z], "target": [x, y, z], "up": [0, 1, 0],
 //                "fovy_degrees": 45, "near": 0.1, "far": 1000},          ("far": "inf" for no far plane)
-//     "display": {"exposure_ev": 0, "tone": "linear"}
+//     "display": {"exposure_ev": 0, "tone": "linear"},
+//     "source_definitions": "NAME=VALUE,FLAG"
 //   }
+//
+// "source_definitions" are preprocessor definitions for the effects made from source files (the
+// FX plugin's), as a ReShade preset's PreprocessorDefinitions= line gives them
+// (Chain::set_source_definitions): a pfx-view copy of a ReShade preset keeps them.
 //
 // Every member but "pfx_preset" is optional, and so is each camera and display field (position,
 // target and up go together): a hand-written preset may hold only what it wants to change.
@@ -49,6 +54,9 @@ struct Preset {
   // A ReShade preset: effects of its chain that are not loaded are left out with a warning instead
   // of failing the chain.
   bool from_reshade = false;
+  // Preprocessor definitions for the effects made from source files, "NAME=VALUE,FLAG", or "" for
+  // none: a ReShade preset's PreprocessorDefinitions, checked when applied.
+  std::string source_definitions;
   PresetCamera camera;
   std::optional<double> exposure_ev;
   std::optional<ToneCurve> tone;

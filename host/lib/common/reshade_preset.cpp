@@ -120,8 +120,7 @@ bool parse_reshade_preset(const std::string& text, Preset* out, std::string* err
       }
     }
   }
-  if (globals.count("PreprocessorDefinitions") && !trimmed(globals["PreprocessorDefinitions"]).empty())
-    out->notes.push_back("PreprocessorDefinitions are not applied: the effects compile with their own defaults");
+  out->source_definitions = globals["PreprocessorDefinitions"];  // trimmed; checked when applied
   return true;
 }
 

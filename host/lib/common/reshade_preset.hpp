@@ -12,6 +12,8 @@
 // there is none); each value of a technique's file becomes an assignment to that effect's
 // parameter of the uniform's name. A float4 value sets the parameter of its first three
 // components and the "_alpha" or "_w" one of its fourth, whichever the effect has.
+// PreprocessorDefinitions become Preset::source_definitions, as written, for the FX effects
+// (Chain::set_source_definitions).
 #pragma once
 
 #include <string>
@@ -23,7 +25,7 @@ namespace pfx::app {
 // Whether the text is a ReShade preset rather than a pfx JSON preset.
 bool looks_like_reshade_preset(const std::string& text);
 
-// Fills out->chain and out->assignments; false with *error for a file that is not one.
+// Fills out->chain, out->assignments and out->source_definitions; false with *error for a file that is not one.
 bool parse_reshade_preset(const std::string& text, Preset* out, std::string* error);
 
 }  // namespace pfx::app

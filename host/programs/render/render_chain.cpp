@@ -39,6 +39,10 @@ int RenderChain::build(const RenderOptions& options, const Preset& preset, std::
     if (!chain_.add(effect.id, message)) return exit_code::kEffectError;
     chain_.set_enabled(chain_.size() - 1, effect.enabled);
   }
+  if (!chain_.set_source_definitions(preset.source_definitions, message)) {
+    *message = options.preset + ": PreprocessorDefinitions: " + *message;
+    return exit_code::kBadInput;
+  }
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
   if (!preset.parameters_json.empty() && !params_.from_json(preset.parameters_json, message)) {
     *message = options.preset + ": parameters: " + *message;

@@ -68,6 +68,8 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   else
     effects = *preset.chain;
   if (!self->build_chain(effects, &message)) return fail(exit_code::kEffectError, message);
+  if (!self->chain_->set_source_definitions(preset.source_definitions, &message))
+    return fail(exit_code::kBadInput, start + ": PreprocessorDefinitions: " + message);
 
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
   if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
@@ -211,6 +213,7 @@ Preset ViewerSession::current_preset() const {
   preset.chain.emplace();
   for (size_t i = 0; i < chain_->size(); ++i) preset.chain->push_back({chain_->effect_id(i), chain_->enabled(i)});
   preset.parameters_json = params_.to_json();
+  preset.source_definitions = chain_->source_definitions();
   if (!source_) return preset;  // attached: the chain and its values are the whole look
   const Camera& camera = source_->camera();
   preset.camera = preset_camera_of(camera);
@@ -254,6 +257,12 @@ bool ViewerSession::apply_preset(const Preset& given, std::string* error) {
       *error = "camera: far must be greater than near";
       return false;
     }
+  }
+  // The definitions are checked by the instances there are (a refused list changes nothing), and
+  // those the chain adds next get them.
+  if (!chain_->set_source_definitions(preset.source_definitions, error)) {
+    *error = "PreprocessorDefinitions: " + *error;
+    return false;
   }
   // The chain first: rebuilding it drops the values of instances it removes, which the new ones
   // then get from `values` (shaped alike, so the chain and the store agree).

@@ -1,6 +1,8 @@
 #include "fx_effect.hpp"
 
 #include <array>
+#include <mutex>
+#include <set>
 #include <utility>
 
 #include <pfx/cpp/plugin_entry.hpp>
@@ -9,6 +11,9 @@
 
 namespace pfx_fx {
 namespace {
+
+std::mutex live_mutex;
+std::set<const void*> live;  // the instances made and not destroyed
 
 using CreateFn = pfx_status (*)(const pfx_host*, void**);
 
@@ -19,6 +24,8 @@ pfx_status create_effect(std::size_t index, const pfx_host* host, void** out_ins
   return pfx::plugin::without_exceptions([&] {
     auto instance = std::make_unique<FxInstance>(*c.effects[index], host);
     if (!instance->create_gl()) return PFX_GL_ERROR;
+    std::lock_guard<std::mutex> lock(live_mutex);
+    live.insert(instance.get());
     *out_instance = instance.release();
     return PFX_OK;
   });
@@ -38,6 +45,10 @@ constexpr std::array<CreateFn, kMaxEffects> kCreate = create_table(std::make_ind
 
 void destroy(void* instance) {
   try {
+    {
+      std::lock_guard<std::mutex> lock(live_mutex);
+      live.erase(instance);
+    }
     delete static_cast<FxInstance*>(instance);
   } catch (...) {  // nothing may unwind through the C ABI
   }
@@ -62,6 +73,11 @@ const char* report_json(void* instance) {
 }
 
 }  // namespace
+
+FxInstance* live_instance(void* instance) {
+  std::lock_guard<std::mutex> lock(live_mutex);
+  return live.count(instance) ? static_cast<FxInstance*>(instance) : nullptr;
+}
 
 void fill_effect_desc(FxEffectEntry& entry, std::size_t index) {
   pfx_effect_desc& d = entry.desc;

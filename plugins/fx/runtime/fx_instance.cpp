@@ -191,7 +191,11 @@ const pfx::fx::TechniqueInfo& FxInstance::technique() const {
 
 std::unique_ptr<pfx::fx::CompiledEffect> FxInstance::compile_at(int width, int height, std::string* error) {
   const auto start = std::chrono::steady_clock::now();
-  auto compiled = pfx::fx::compile_effect(entry_.file, compile_options(width, height), true);
+  pfx::fx::FrontEndOptions options = compile_options(width, height);
+  // After the file's defaults and pfx's own, which set_definitions already left out.
+  options.preprocessor.defines.insert(options.preprocessor.defines.end(), definitions_.begin(), definitions_.end());
+  redefined_ = false;
+  auto compiled = pfx::fx::compile_effect(entry_.file, options, true);
   compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!compiled->ok()) {
     *error = "does not compile at " + std::to_string(width) + "x" + std::to_string(height) + ":\n" + compiled->errors();
@@ -283,9 +287,10 @@ void FxInstance::watch(const pfx::fx::CompiledEffect& compiled) {
 
 void FxInstance::reload_if_edited() {
   const auto now = std::chrono::steady_clock::now();
-  if (now - last_watch_ < std::chrono::milliseconds(kWatchIntervalMs)) return;
+  if (!redefined_ && now - last_watch_ < std::chrono::milliseconds(kWatchIntervalMs)) return;
   last_watch_ = now;
-  bool edited = false;
+  const bool redefined = redefined_;
+  bool edited = redefined;
   for (const auto& [file, time] : watched_) {
     std::error_code ec;
     edited = edited || std::filesystem::last_write_time(file, ec) != time;
@@ -294,7 +299,8 @@ void FxInstance::reload_if_edited() {
   std::string error;
   auto compiled = compile_at(compiled_width_, compiled_height_, &error);
   if (!compiled) {
-    log(PFX_LOG_ERROR, "edited, and " + error + "\nThe last version that compiled keeps running.");
+    log(PFX_LOG_ERROR, std::string(redefined ? "with the new preprocessor definitions, it " : "edited, and ") + error +
+                           "\nThe last version that compiled keeps running.");
     return;
   }
   // The host planned this frame's passes at the last declare: a version with as many passes runs
@@ -312,6 +318,7 @@ void FxInstance::reload_if_edited() {
 pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   (void)params;
   int w = static_cast<int>(frame->width), h = static_cast<int>(frame->height);
+  if (compiled_ && redefined_ && w == compiled_width_ && h == compiled_height_) reload_if_edited();
   if (!compiled_ || w != compiled_width_ || h != compiled_height_) {
     if (!compiled_ && w == compiled_width_ && h == compiled_height_) {  // failed at this size: wait for an edit
       last_watch_ = {};
@@ -333,6 +340,29 @@ pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, 
   }
   out->passes = passes_.data();
   out->pass_count = static_cast<uint32_t>(passes_.size());
+  return PFX_OK;
+}
+
+pfx_status FxInstance::set_definitions(const char* list) {
+  Definitions definitions;
+  std::string error;
+  if (!parse_definitions(list, &definitions, &error)) {
+    log(PFX_LOG_ERROR, "preprocessor definitions refused: " + error);
+    return PFX_INVALID_ARGUMENT;
+  }
+  // pfx converts the frame's depth itself (fx_instance.hpp): a preset's depth settings were made
+  // for a game's raw depth buffer and would read pfx's wrong.
+  const std::vector<std::string> ignored = remove_own_definitions(compile_options(1, 1).preprocessor.defines,
+                                                                  &definitions);
+  if (!ignored.empty()) {
+    std::string names;
+    for (const std::string& name : ignored) names += (names.empty() ? "" : ", ") + name;
+    log(PFX_LOG_WARNING,
+        "preprocessor definitions ignored: " + names + " (pfx hands FX effects its own depth and sets these)");
+  }
+  if (definitions == definitions_) return PFX_OK;
+  definitions_ = std::move(definitions);
+  redefined_ = true;
   return PFX_OK;
 }
 

@@ -5,8 +5,8 @@
 //            as FX effects expect) or the back buffer
 //   decode   the back buffer -> the effect's output, linear again
 // The FX source is compiled again when the frame size changes (BUFFER_WIDTH and its kin are
-// constants of the source) and when the file or one of its includes is edited, on the CPU in
-// declare and into GL programs in the next run.
+// constants of the source), when the file or one of its includes is edited and when the host sets
+// other preprocessor definitions, on the CPU in declare and into GL programs in the next run.
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -18,6 +18,7 @@
 
 #include "effect_compiler.hpp"
 #include "fx_catalog.hpp"
+#include "fx_definitions.hpp"
 #include "fx_gl_objects.hpp"
 #include "fx_stencil.hpp"
 #include "fx_uniform_values.hpp"
@@ -34,6 +35,9 @@ class FxInstance {
   // "compile_ms" (the FX source to GLSL, on the CPU), "gl_build_ms" (the GL programs) and
   // "programs_from_cache" of the last compile, for pfx-fx-check and the frame reports.
   const char* report_json();
+  // The host's preprocessor definitions (fx_definitions.hpp), compiled with from the next frame on,
+  // as an edit is. PFX_INVALID_ARGUMENT for a malformed list, which changes nothing.
+  pfx_status set_definitions(const char* list);
 
  private:
   struct PassProgram {
@@ -69,6 +73,8 @@ class FxInstance {
 
   const FxEffectEntry& entry_;
   const pfx_host* host_;
+  Definitions definitions_;  // the host's, without the names pfx defines itself
+  bool redefined_ = false;   // set since the last compile
 
   // CPU side, for the compiled size.
   std::unique_ptr<pfx::fx::CompiledEffect> compiled_;

@@ -7,6 +7,7 @@
 
 #include "fx_catalog.hpp"
 #include "fx_effect.hpp"
+#include "fx_instance.hpp"
 
 namespace pfx_fx {
 namespace {
@@ -68,8 +69,15 @@ const char* error(uint32_t index) {
   }
 }
 
+pfx_status set_definitions(void* instance, const char* definitions) {
+  FxInstance* fx = live_instance(instance);
+  if (!fx || !definitions) return PFX_INVALID_ARGUMENT;
+  return pfx::plugin::without_exceptions([&] { return fx->set_definitions(definitions); });
+}
+
 constexpr pfx_effect_factory kFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
-constexpr pfx_source_factory kSources = {sizeof(pfx_source_factory), effect_file, effect_source_name, error_count, error};
+constexpr pfx_source_factory kSources = {
+    sizeof(pfx_source_factory), effect_file, effect_source_name, error_count, error, set_definitions};
 
 constexpr auto kPlugin =
     pfx::plugin::Plugin("org.pfx.fx").name("pfx ReShade FX").version("0.1.0").effect_factory(&kFactory).sources(&kSources);

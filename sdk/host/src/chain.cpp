@@ -81,6 +81,10 @@ bool Chain::add(const std::string& effect_id, std::string* error) {
     if (error) *error = "effect '" + effect_id + "' could not be created (status " + std::to_string(status) + ")";
     return false;
   }
+  if (!define_sources(*info, handle, source_definitions_, error)) {
+    info->desc->destroy(handle);
+    return false;
+  }
   params_.hold_instance(info->desc);
   auto instance = std::make_unique<Instance>();
   instance->info = *info;
@@ -88,6 +92,30 @@ bool Chain::add(const std::string& effect_id, std::string* error) {
   instances_.push_back(std::move(instance));
   renumber();
   plan_valid_ = false;
+  return true;
+}
+
+bool Chain::define_sources(const EffectInfo& info, void* handle, const std::string& definitions,
+                           std::string* error) const {
+  const Plugin& plugin = *info.plugin;
+  if (!plugin.set_definitions || !plugin.effect_sources.count(info.desc->id)) return true;
+  const pfx_status status = plugin.set_definitions(handle, definitions.c_str());
+  if (status == PFX_OK) return true;
+  if (error)
+    *error = "effect '" + std::string(info.desc->id) + "' refused the preprocessor definitions \"" + definitions +
+             "\" (status " + std::to_string(status) + "; its plugin's log says why)";
+  return false;
+}
+
+bool Chain::set_source_definitions(const std::string& definitions, std::string* error) {
+  for (size_t i = 0; i < instances_.size(); ++i) {
+    if (define_sources(instances_[i]->info, instances_[i]->handle, definitions, error)) continue;
+    // Those before it took the list: they get the chain's own back (they took it before).
+    for (size_t j = 0; j < i; ++j)
+      define_sources(instances_[j]->info, instances_[j]->handle, source_definitions_, nullptr);
+    return false;
+  }
+  source_definitions_ = definitions;
   return true;
 }
 
@@ -148,11 +176,18 @@ bool Chain::refresh(std::vector<std::string>* dropped, std::string* error) {
     if (now->desc == instances_[i]->info.desc && now->plugin == instances_[i]->info.plugin) continue;
     void* handle = nullptr;
     pfx_status status = now->desc->create(now->plugin->host, &handle);
+    std::string refused;
+    if (status == PFX_OK && handle && !define_sources(*now, handle, source_definitions_, &refused)) {
+      now->desc->destroy(handle);
+      handle = nullptr;
+    }
     if (status != PFX_OK || !handle) {
       for (auto& made : replacements) made.info.desc->destroy(made.handle);
       if (error)
-        *error = "effect '" + std::string(now->desc->id) + "' of the new version could not be created (status " +
-                 std::to_string(status) + ")";
+        *error = !refused.empty()
+                     ? refused + " in the new version"
+                     : "effect '" + std::string(now->desc->id) + "' of the new version could not be created (status " +
+                           std::to_string(status) + ")";
       return false;
     }
     replacements.push_back({i, *now, handle});

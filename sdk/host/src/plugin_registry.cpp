@@ -230,7 +230,7 @@ void take_references(const pfx_entry& entry, Plugin* plugin, HostLayoutDescripto
 }
 
 // Where the plugin's effects came from and which files gave none ("pfx.sources/1"), copied so
-// they outlive a reload of the plugin.
+// they outlive a reload of the plugin, and how its instances take preprocessor definitions.
 void take_sources(const pfx_entry& entry, Plugin* plugin) {
   auto sources = static_cast<const pfx_source_factory*>(entry.get_factory(PFX_SOURCES_FACTORY_ID));
   if (!sources || sources->struct_size < PFX_SOURCE_FACTORY_MIN_SIZE) return;
@@ -243,6 +243,7 @@ void take_sources(const pfx_entry& entry, Plugin* plugin) {
   if (sources->error_count && sources->error)
     for (uint32_t i = 0, n = sources->error_count(); i < n; ++i)
       if (const char* message = sources->error(i)) plugin->source_errors.push_back(message);
+  if (PFX_STRUCT_HAS(sources, pfx_source_factory, set_definitions)) plugin->set_definitions = sources->set_definitions;
 }
 
 }  // namespace

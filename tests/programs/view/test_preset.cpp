@@ -1,5 +1,6 @@
 // Presets (host/lib/common/preset.hpp): every member read and written back, and a clear error naming
-// the member for every kind of bad preset.
+// the member for every kind of bad preset; a ReShade preset's PreprocessorDefinitions kept through
+// pfx-view's JSON copy.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <fstream>
 
 #include "preset.hpp"
+#include "reshade_preset.hpp"
 
 namespace fs = std::filesystem;
 using namespace pfx::app;
@@ -21,7 +23,8 @@ const char* const kFullPreset = R"({
   "parameters": {"bloom": {"threshold": 1.5, "mode": "chain"}, "gain": {"gain": 2}},
   "camera": {"position": [1, 2, 3], "target": [0, 0.5, 0], "up": [0, 1, 0],
              "fovy_degrees": 50, "near": 0.25, "far": "inf"},
-  "display": {"exposure_ev": -1.5, "tone": "aces"}
+  "display": {"exposure_ev": -1.5, "tone": "aces"},
+  "source_definitions": "PFX_LEVEL=0.75,FLAG"
 })";
 
 std::string parse_error(const std::string& json) {
@@ -52,6 +55,7 @@ TEST_CASE("a preset with every member is read as written", "[preset]") {
   CHECK(std::isinf(*p.camera.far_plane));
   CHECK(*p.exposure_ev == -1.5);
   CHECK(*p.tone == ToneCurve::Aces);
+  CHECK(p.source_definitions == "PFX_LEVEL=0.75,FLAG");
 }
 
 TEST_CASE("a preset written and read back is the same preset", "[preset]") {
@@ -98,7 +102,9 @@ TEST_CASE("bad presets are refused with the member named", "[preset][errors]") {
   CHECK(parse_error("{}") == "pfx_preset: missing: a preset starts with \"pfx_preset\": 1");
   CHECK(parse_error(R"({"pfx_preset": 2})") == "pfx_preset: version 2 is not supported (this program reads version 1)");
   CHECK(parse_error(R"({"pfx_preset": 1, "paramters": {}})") ==
-        "paramters: unknown member (known: camera, chain, display, parameters, pfx_preset)");
+        "paramters: unknown member (known: camera, chain, display, parameters, pfx_preset, source_definitions)");
+  CHECK(parse_error(R"({"pfx_preset": 1, "source_definitions": ["A=1"]})") ==
+        "source_definitions: must be a string \"NAME=VALUE,FLAG\"");
   CHECK(parse_error(R"({"pfx_preset": 1, "chain": "bloom"})").rfind("chain: must be an array", 0) == 0);
   CHECK(parse_error(R"({"pfx_preset": 1, "chain": [{"enabled": true}]})") == "chain[0].effect: must be an effect id");
   CHECK(parse_error(R"({"pfx_preset": 1, "chain": [{"effect": "bloom", "enabled": 1}]})") ==
@@ -129,4 +135,32 @@ TEST_CASE("bad presets are refused with the member named", "[preset][errors]") {
   CHECK(parse_error(R"({"pfx_preset": 1, "display": {"exposure_ev": "2"}})") == "display.exposure_ev: must be a number");
   // JSON has no NaN or infinity literal, and a number too large for a double is no valid JSON.
   CHECK(parse_error(R"({"pfx_preset": 1, "display": {"exposure_ev": 1e999}})").rfind("not valid JSON", 0) == 0);
+}
+
+TEST_CASE("a ReShade preset's PreprocessorDefinitions are kept, also in its JSON copy", "[preset][reshade]") {
+  const std::string ini =
+      "PreprocessorDefinitions= PFX_LEVEL=0.75,RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN=1 \n"
+      "Techniques=Level@Level.fx\n"
+      "TechniqueSorting=Level@Level.fx\n";
+  Preset p;
+  std::string error;
+  REQUIRE(looks_like_reshade_preset(ini));
+  REQUIRE(parse_reshade_preset(ini, &p, &error));
+  // As written (the line trimmed): the plugin that applies them reads the list.
+  CHECK(p.source_definitions == "PFX_LEVEL=0.75,RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN=1");
+  CHECK(p.notes.empty());
+  REQUIRE(p.chain);
+  CHECK((*p.chain)[0].id == "fx_level");
+
+  // pfx-view saves its look as PRESET.ini.pfx.json: the definitions travel with it.
+  const std::string json = preset_to_json(p);
+  Preset copy;
+  INFO(json);
+  REQUIRE(parse_preset(json, &copy, &error));
+  CHECK(copy.source_definitions == p.source_definitions);
+
+  Preset none;
+  REQUIRE(parse_reshade_preset("PreprocessorDefinitions=\nTechniques=Level@Level.fx\n", &none, &error));
+  CHECK(none.source_definitions.empty());
+  CHECK(preset_to_json(none).find("source_definitions") == std::string::npos);
 }

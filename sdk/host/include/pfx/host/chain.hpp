@@ -62,7 +62,8 @@ class PFX_HOST_API Chain {
   // Appends an instance of an effect (created now, so its programs compile now) and registers its
   // parameters in the store if they are not there yet. The N-th instance of an effect in the
   // chain uses the store's values of "effect#N" (at the defaults when the store had no such
-  // instance). False with *error on an unknown id or a failing create.
+  // instance). False with *error on an unknown id, a failing create or a plugin that refuses the
+  // chain's source definitions (set_source_definitions).
   bool add(const std::string& effect_id, std::string* error);
   size_t size() const;
   std::string effect_id(size_t index) const;
@@ -85,6 +86,15 @@ class PFX_HOST_API Chain {
   // are appended to *dropped). All or nothing: the new instances are created first, and when one
   // fails the old ones stay and *error names the effect. The old version must still be loaded.
   bool refresh(std::vector<std::string>* dropped, std::string* error);
+
+  // Preprocessor definitions for every instance of an effect made from a source file whose plugin
+  // takes them (pfx/sources.h's set_definitions: the FX plugin), "NAME=VALUE,FLAG" as a ReShade
+  // preset's PreprocessorDefinitions= line gives them, "" for none; chain-wide, as a preset's are.
+  // Instances added later and those refresh() re-creates get them too; each compiles with them
+  // before its next frame. False with *error naming the effect whose plugin refused them (a
+  // malformed list): the chain then keeps, and puts back, the definitions it had.
+  bool set_source_definitions(const std::string& definitions, std::string* error);
+  const std::string& source_definitions() const { return source_definitions_; }
 
   // The PFX_INPUT_* bits the instance at `index` needs with its current values over a frame like
   // `frame` (give it the inputs the host has: an effect may adapt to them): what its declaration
@@ -134,6 +144,9 @@ class PFX_HOST_API Chain {
   // The implementation limits queried when the chain was made; null without GL.
   const GlLimits* gl_limits() const;
   void renumber();
+  // Hands the chain's source definitions to a fresh instance of `info` (nothing for an effect of
+  // another kind); false with *error when its plugin refuses them.
+  bool define_sources(const EffectInfo& info, void* handle, const std::string& definitions, std::string* error) const;
 
   // A frame, step by step: check the call, declare (every frame: declare is cheap by contract),
   // plan (only when a declaration or the active set changed), execute the plan's passes.
@@ -162,6 +175,7 @@ class PFX_HOST_API Chain {
   FrameTimes times_;                // the newest complete times, kept across frames
   FrameReport report_;
   PassHook pass_hook_;
+  std::string source_definitions_;
   // GlStateGuards of this chain alive now: while there is one, render() leaves saving the
   // engine's state to it.
   mutable int guards_ = 0;

@@ -55,6 +55,9 @@ struct Plugin {
   };
   std::map<std::string, EffectSource> effect_sources;
   std::vector<std::string> source_errors;
+  // The sources factory's set_definitions (pfx/sources.h), for instances of the effects in
+  // effect_sources; null when the plugin has none (Chain::set_source_definitions calls it).
+  pfx_status (*set_definitions)(void* instance, const char* definitions) = nullptr;
   // The services this plugin was given (host_data points back at the registry's record).
   const pfx_host* host = nullptr;
   // What effects, importers and references point into: this host's layout of the plugin's own
