@@ -27,7 +27,8 @@ std::unique_ptr<host::ParamStore> FrameChain::fresh_store(const host::PluginRegi
 
 bool FrameChain::update(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
                         const std::string& set_origin, std::vector<std::string>* notes, std::string* error) {
-  bool same_effects = recipe.effects.size() == chain_->size();
+  // Other preprocessor definitions recompile the effects that take them: made anew too.
+  bool same_effects = recipe.effects.size() == chain_->size() && recipe.source_definitions == chain_->source_definitions();
   for (size_t i = 0; same_effects && i < recipe.effects.size(); ++i) same_effects = recipe.effects[i].id == chain_->effect_id(i);
   if (!same_effects) {
     std::unique_ptr<FrameChain> fresh = build(registry, recipe, set_origin, notes, error);

@@ -97,7 +97,9 @@ pfx_frame ContextPipeline::frame_for(int width, int height, uint32_t inputs) con
 }
 
 bool ContextPipeline::same_effects(const ChainRecipe& recipe) const {
-  if (!chain_ || recipe.chosen != built_.chosen || recipe.effects.size() != built_.effects.size()) return false;
+  if (!chain_ || recipe.chosen != built_.chosen || recipe.effects.size() != built_.effects.size() ||
+      recipe.source_definitions != built_.source_definitions)
+    return false;
   for (size_t i = 0; i < recipe.effects.size(); ++i)
     if (recipe.effects[i].id != built_.effects[i].id) return false;
   return true;

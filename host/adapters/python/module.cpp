@@ -38,7 +38,8 @@ py::list effects(const PluginList& plugins) {
 }
 
 std::unique_ptr<PythonChain> make_chain(const PluginList& effects, const PluginList& plugins,
-                                        const std::string& defaults, const std::string& timing) {
+                                        const std::string& defaults, const std::string& timing,
+                                        const std::optional<std::string>& preset) {
   pfx::python::ChainSettings settings;
   if (defaults == "scene")
     settings.defaults = pfx::python::Defaults::SCENE;
@@ -50,8 +51,15 @@ std::unique_ptr<PythonChain> make_chain(const PluginList& effects, const PluginL
   auto registry = pfx::python::load_plugin_set(plugins, warn);
   settings.effects = effects;
   settings.timing = timing;
-  py::gil_scoped_release release;  // the effects' programs compile now
-  return std::make_unique<PythonChain>(std::move(registry), settings);
+  settings.preset = preset.value_or("");
+  std::vector<std::string> warnings;
+  std::unique_ptr<PythonChain> chain;
+  {
+    py::gil_scoped_release release;  // the effects' programs compile now
+    chain = std::make_unique<PythonChain>(std::move(registry), settings, &warnings);
+  }
+  for (const auto& message : warnings) warn(message);
+  return chain;
 }
 
 pfx_depth_encoding depth_encoding(const std::string& name) {
@@ -140,13 +148,15 @@ PYBIND11_MODULE(pfx, m) {
                           "Effects run in order over pictures, on an OpenGL 4.5 context of the chain's own. "
                           "Use one Chain from one thread at a time; several may run at once on different threads.")
       .def(py::init(&make_chain), "effects"_a = py::none(), "plugins"_a = py::none(), "defaults"_a = "auto",
-           "timing"_a = "auto",
-           "effects: effect ids in order (an id twice makes a second instance, 'bloom#2'); None: every effect "
-           "found, in the default order. plugins: plugin files or folders; None: the folder beside the module "
+           "timing"_a = "auto", "preset"_a = py::none(),
+           "effects: effect ids in order (an id twice makes a second instance, 'bloom#2'); None: the preset's "
+           "chain, else every effect found, in the default order. plugins: plugin files or folders; None: the folder beside the module "
            "and PFX_PLUGIN_PATH. defaults: where a parameter starts until set() gives it a value: 'auto' follows "
            "each picture's dtype (the display-referred defaults for uint8, the scene-referred ones for floats), "
            "'scene' or 'display' fixes them. timing: "
-           "'auto', 'gpu', 'finish' or 'off'.")
+           "'auto', 'gpu', 'finish' or 'off'. preset: a pfx preset (JSON, as pfx-view saves) or a ReShade "
+           "preset (.ini): its chain with each effect on or off, its values (fixed, as set() fixes them) and its "
+           "preprocessor definitions; what it names that is not loaded is left out with a warning.")
       .def("set", [](PythonChain& chain, const std::string& key, const py::handle& value) {
             std::string note;
             chain.set(key, pfx::python::value_text(value), &note);

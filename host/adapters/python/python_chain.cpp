@@ -33,15 +33,16 @@ std::string canonical_key(const std::string& instance, const std::string& param)
 
 }  // namespace
 
-PythonChain::PythonChain(std::unique_ptr<host::PluginRegistry> registry, const ChainSettings& settings)
+PythonChain::PythonChain(std::unique_ptr<host::PluginRegistry> registry, const ChainSettings& settings,
+                         std::vector<std::string>* warnings)
     : worker_(adapters::GlWorker::start()), registry_(std::move(registry)) {
   defaults_ = settings.defaults;
   current_defaults_ = settings.defaults == Defaults::DISPLAY ? host::DefaultSet::DISPLAY_REFERRED
                                                              : host::DefaultSet::SCENE_REFERRED;
   params_ = std::make_unique<host::ParamStore>(current_defaults_);
   for (const auto& effect : registry_->effects()) params_->add_effect(effect.desc);
-  const std::vector<std::string> effects = settings.effects ? *settings.effects : app::default_chain(*registry_);
   try {
+    const app::ChainRecipe recipe = recipe_for(settings, warnings);
     run_on_gl_thread([&](std::string* error) {
       renderer_ = worker_->renderer();
       host::Timing timing = host::Timing::OFF;
@@ -51,12 +52,54 @@ PythonChain::PythonChain(std::unique_ptr<host::PluginRegistry> registry, const C
       }
       chain_ = std::make_unique<host::Chain>(*registry_, *params_);
       chain_->set_timing(timing);
-      for (const auto& id : effects)
-        if (!chain_->add(id, error)) return;
+      for (const auto& effect : recipe.effects) {
+        if (!chain_->add(effect.id, error)) return;
+        chain_->set_enabled(chain_->size() - 1, effect.enabled);
+      }
+      chain_->set_source_definitions(recipe.source_definitions, error);
     });
+    apply_preset_values(recipe);
   } catch (...) {
     close();
     throw;
+  }
+}
+
+app::ChainRecipe PythonChain::recipe_for(const ChainSettings& settings, std::vector<std::string>* warnings) const {
+  app::ChainRecipe recipe;
+  if (settings.preset.empty()) {
+    for (const auto& id : settings.effects ? *settings.effects : app::default_chain(*registry_)) recipe.effects.push_back({id, true});
+    return recipe;
+  }
+  // A preset that does not read is an error; in one that does, what is not there is left out,
+  // as every host of pfx's leaves it out of a ReShade preset.
+  app::Preset preset;
+  std::string error;
+  if (!app::read_preset(settings.preset, &preset, &error)) throw Error(error);
+  std::vector<app::RecipeProblem> problems;
+  std::vector<std::string> notes;
+  recipe = app::make_chain_recipe(settings.preset, settings.effects, {}, *registry_, app::WithoutChain::DEFAULT_CHAIN,
+                                  &problems, &notes);
+  for (const auto& problem : problems) {
+    if (problem.source == app::RecipeProblem::CHAIN) throw Error(problem.message);
+    warnings->push_back(problem.message);
+  }
+  warnings->insert(warnings->end(), notes.begin(), notes.end());
+  return recipe;
+}
+
+// The preset's values count as set: a picture's dtype does not move them to other defaults.
+void PythonChain::apply_preset_values(const app::ChainRecipe& recipe) {
+  std::string error;
+  if (!app::apply_recipe_values(recipe, params_.get(), &error, nullptr, "preset")) throw Error(error);
+  if (!recipe.parameters_json.empty()) {
+    const nlohmann::json parameters = nlohmann::json::parse(recipe.parameters_json);
+    for (const auto& instance : parameters.items())
+      for (const auto& value : instance.value().items()) set_keys_.insert(canonical_key(instance.key(), value.key()));
+  }
+  for (const auto& assignment : recipe.sets) {
+    std::string instance, param;
+    if (split_key(assignment.substr(0, assignment.find('=')), &instance, &param)) set_keys_.insert(canonical_key(instance, param));
   }
 }
 

@@ -21,6 +21,7 @@
 #include <pfx/host/plugin_registry.hpp>
 
 #include "camera_options.hpp"
+#include "chain_builder.hpp"
 #include "display_frame.hpp"
 #include "display_transfer.hpp"
 #include "gl_worker.hpp"
@@ -36,7 +37,11 @@ namespace pfx::python {
 enum class Defaults { AUTO, SCENE, DISPLAY };
 
 struct ChainSettings {
-  std::optional<std::vector<std::string>> effects;  // effect ids in order; none: the default chain
+  // Effect ids in order; none: the preset's chain, else the default chain.
+  std::optional<std::vector<std::string>> effects;
+  // A pfx preset (JSON) or a ReShade preset (.ini), or "": its chain, on/off flags, values and
+  // preprocessor definitions, which fix those values as set() would.
+  std::string preset;
   Defaults defaults = Defaults::AUTO;
   std::string timing = "auto";  // "auto", "gpu", "finish" or "off", as pfx-render's --timing
 };
@@ -62,8 +67,11 @@ struct RunResult {
 
 class PythonChain {
  public:
-  // Starts the GL thread and creates the effects (their programs compile now).
-  PythonChain(std::unique_ptr<host::PluginRegistry> registry, const ChainSettings& settings);
+  // Starts the GL thread and creates the effects (their programs compile now). What a preset names
+  // that is not there (an effect, a value) is left out and described in *warnings; a preset that
+  // does not read, or an effect of `effects` that is not loaded, throws.
+  PythonChain(std::unique_ptr<host::PluginRegistry> registry, const ChainSettings& settings,
+              std::vector<std::string>* warnings);
   ~PythonChain();
   PythonChain(const PythonChain&) = delete;
   PythonChain& operator=(const PythonChain&) = delete;
@@ -96,6 +104,8 @@ class PythonChain {
   void hand_back(const RunRequest& request, RunResult* result);
   bool inputs_given(const pfx_frame& frame, std::string* error);
   void follow_picture_defaults(bool display);
+  app::ChainRecipe recipe_for(const ChainSettings& settings, std::vector<std::string>* warnings) const;
+  void apply_preset_values(const app::ChainRecipe& recipe);
   void release_gl_objects();
 
   mutable std::mutex mutex_;
