@@ -114,9 +114,15 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
   Device* d = find_device(key_of(queue));
   if (!d) return VK_ERROR_DEVICE_LOST;  // a queue of no device the loader gave us cannot be presented on
   const uint64_t frame = ++presented;
-  if (!d->failed) reread_preset_if_changed(d);
+  // Frames before --from-frame pass through untouched (a splash screen), as in OpenGL applications.
+  const bool before_start = frame < layer_inject_settings().from_frame;
+  if (before_start)
+    for (const auto& prefix : capture_prefixes_for(frame))
+      log_line("frame " + std::to_string(frame) + ": capture " + prefix +
+               " not written: frames before --from-frame pass through");
+  if (!d->failed && !before_start) reread_preset_if_changed(d);
   std::vector<VkSemaphore> waits;
-  for (uint32_t i = 0; i < info->swapchainCount && !d->failed; ++i) {
+  for (uint32_t i = 0; i < info->swapchainCount && !d->failed && !before_start; ++i) {
     auto found = d->swapchains.find(info->pSwapchains[i]);
     if (found == d->swapchains.end() || !found->second->usable) continue;
     const Swapchain& s = *found->second;

@@ -263,6 +263,22 @@ TEST_CASE("an edited preset applies while vkcube runs, and one that does not app
   CHECK(difference(presented, pfx::test::read_png_file(folder.file("last.app.png"))).first >= 8);
 }
 
+TEST_CASE("frames before --from-frame pass through untouched and the chain runs from that frame on", "[vkcube]") {
+  ScratchFolder folder("vulkan-from-frame");
+  const Frame bloom = vkcube_frame(folder, "bloom", {"PFX_INJECT_CHAIN=bloom"});
+  REQUIRE(bloom.presented.width == 320);
+  const Frame late = vkcube_frame(folder, "late", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_FROM_FRAME=6"});
+  INFO(late.run.output << late.log);
+  CHECK(late.run.exit_code == 0);
+  CHECK(late.log.find("frame 5: capture") != std::string::npos);
+  CHECK(late.log.find("not written: frames before --from-frame pass through") != std::string::npos);
+  CHECK(late.presented.width == 0);  // frame 5 went by untouched, so nothing captured it
+  const Frame from5 = vkcube_frame(folder, "from5", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_FROM_FRAME=5"});
+  INFO(from5.run.output << from5.log);
+  REQUIRE(from5.presented.width == 320);
+  CHECK(difference(from5.presented, bloom.presented).first == 0);
+}
+
 TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variables set by hand do", "[vkcube]") {
   ScratchFolder folder("vulkan-launcher");
   const Frame by_hand = vkcube_frame(folder, "by-hand", {"PFX_INJECT_CHAIN=bloom"});
