@@ -1,6 +1,5 @@
 #include "frame_chain.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -13,24 +12,16 @@ std::unique_ptr<FrameChain> FrameChain::build(const host::PluginRegistry& regist
                                               const std::string& set_origin, std::vector<std::string>* notes,
                                               std::string* error) {
   std::unique_ptr<FrameChain> self(new FrameChain);
-  self->params_ = fresh_store(registry);
+  self->params_ = std::make_unique<host::ParamStore>(host::DefaultSet::DISPLAY_REFERRED);
+  for (const auto& effect : registry.effects()) self->params_->add_effect(effect.desc);
   self->chain_ = std::make_unique<host::Chain>(registry, *self->params_);
   if (!app::build_chain(recipe, self->chain_.get(), self->params_.get(), error, notes, set_origin)) return nullptr;
   return self;
 }
 
-std::unique_ptr<host::ParamStore> FrameChain::fresh_store(const host::PluginRegistry& registry) {
-  auto params = std::make_unique<host::ParamStore>(host::DefaultSet::DISPLAY_REFERRED);
-  for (const auto& effect : registry.effects()) params->add_effect(effect.desc);
-  return params;
-}
-
 bool FrameChain::update(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
                         const std::string& set_origin, std::vector<std::string>* notes, std::string* error) {
-  // Other preprocessor definitions recompile the effects that take them: made anew too.
-  bool same_effects = recipe.effects.size() == chain_->size() && recipe.source_definitions == chain_->source_definitions();
-  for (size_t i = 0; same_effects && i < recipe.effects.size(); ++i) same_effects = recipe.effects[i].id == chain_->effect_id(i);
-  if (!same_effects) {
+  if (!app::chain_holds_recipe(*chain_, recipe)) {
     std::unique_ptr<FrameChain> fresh = build(registry, recipe, set_origin, notes, error);
     if (!fresh) return false;
     chain_.reset();  // the old instances before the store they read
@@ -38,14 +29,7 @@ bool FrameChain::update(const host::PluginRegistry& registry, const app::ChainRe
     chain_ = std::move(fresh->chain_);
     return true;
   }
-  // A store shaped like the chain, filled as a new chain's would be, then put in place of the old
-  // one: the instances read their values through the same store object.
-  std::unique_ptr<host::ParamStore> params = fresh_store(registry);
-  for (size_t i = 0; i < chain_->size(); ++i)
-    params->set_instance_count(chain_->effect_id(i),
-                               std::max(params->instance_count(chain_->effect_id(i)), chain_->instance_number(i)));
-  if (!app::apply_recipe_values(recipe, params.get(), error, notes, set_origin)) return false;
-  *params_ = std::move(*params);
+  if (!app::replace_recipe_values(recipe, registry, params_.get(), error, notes, set_origin)) return false;
   for (size_t i = 0; i < chain_->size(); ++i) chain_->set_enabled(i, recipe.effects[i].enabled);
   return true;
 }

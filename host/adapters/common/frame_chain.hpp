@@ -55,7 +55,6 @@ class FrameChain {
 
  private:
   FrameChain() = default;
-  static std::unique_ptr<host::ParamStore> fresh_store(const host::PluginRegistry& registry);
   pfx_frame describe(int width, int height, double time_seconds, uint64_t frame_index) const;
   std::unique_ptr<host::ParamStore> params_;
   std::unique_ptr<host::Chain> chain_;

@@ -1,6 +1,5 @@
 #include "context_pipeline.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -97,23 +96,11 @@ pfx_frame ContextPipeline::frame_for(int width, int height, uint32_t inputs) con
 }
 
 bool ContextPipeline::same_effects(const ChainRecipe& recipe) const {
-  if (!chain_ || recipe.chosen != built_.chosen || recipe.effects.size() != built_.effects.size() ||
-      recipe.source_definitions != built_.source_definitions)
-    return false;
-  for (size_t i = 0; i < recipe.effects.size(); ++i)
-    if (recipe.effects[i].id != built_.effects[i].id) return false;
-  return true;
+  return chain_ && recipe.chosen == built_.chosen && app::chain_holds_recipe(*chain_, recipe);
 }
 
 bool ContextPipeline::update_values(const ChainRecipe& recipe, std::vector<std::string>* notes, std::string* reason) {
-  // A store shaped like the chain, filled as a new one would be, then put in place of the old:
-  // the chain reads its values through the same store.
-  auto params = make_params(registry_);
-  for (size_t i = 0; i < chain_->size(); ++i)
-    params->set_instance_count(chain_->effect_id(i), std::max(params->instance_count(chain_->effect_id(i)),
-                                                              chain_->instance_number(i)));
-  if (!app::apply_recipe_values(recipe, params.get(), reason)) return false;
-  *params_ = std::move(*params);
+  if (!app::replace_recipe_values(recipe, registry_, params_.get(), reason)) return false;
   // The flags the recipe gives (a default chain has every effect on); InputFit takes them as the
   // user's and fits them to the frame again.
   for (size_t i = 0; i < chain_->size(); ++i) chain_->set_enabled(i, !recipe.chosen || recipe.effects[i].enabled);

@@ -155,6 +155,21 @@ bool apply_recipe_values(const ChainRecipe& recipe, host::ParamStore* params, st
   return true;
 }
 
+bool chain_holds_recipe(const host::Chain& chain, const ChainRecipe& recipe) {
+  if (chain.size() != recipe.effects.size() || chain.source_definitions() != recipe.source_definitions) return false;
+  for (size_t i = 0; i < chain.size(); ++i)
+    if (chain.effect_id(i) != recipe.effects[i].id) return false;
+  return true;
+}
+
+bool replace_recipe_values(const ChainRecipe& recipe, const host::PluginRegistry& registry, host::ParamStore* params,
+                           std::string* error, std::vector<std::string>* notes, const std::string& set_origin) {
+  host::ParamStore fresh = store_for(recipe.effects, registry);
+  if (!apply_recipe_values(recipe, &fresh, error, notes, set_origin)) return false;
+  *params = std::move(fresh);
+  return true;
+}
+
 bool any_enabled(const host::Chain& chain) {
   for (size_t i = 0; i < chain.size(); ++i)
     if (chain.enabled(i)) return true;

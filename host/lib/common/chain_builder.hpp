@@ -70,6 +70,14 @@ bool build_chain(const ChainRecipe& recipe, host::Chain* chain, host::ParamStore
 // the chain's instances; false with *error as build_chain's.
 bool apply_recipe_values(const ChainRecipe& recipe, host::ParamStore* params, std::string* error,
                          std::vector<std::string>* notes = nullptr, const std::string& set_origin = "--set");
+// Whether `chain` holds the recipe's effects, in its order, with its preprocessor definitions: then a
+// new recipe changes only values and flags (replace_recipe_values), and no effect is made again.
+bool chain_holds_recipe(const host::Chain& chain, const ChainRecipe& recipe);
+// For such a chain: a store filled with the recipe's values as build_chain fills a new one, put in
+// place of `params`, the store the chain reads. All or nothing: false with *error as build_chain's.
+bool replace_recipe_values(const ChainRecipe& recipe, const host::PluginRegistry& registry, host::ParamStore* params,
+                           std::string* error, std::vector<std::string>* notes = nullptr,
+                           const std::string& set_origin = "--set");
 // Whether any effect of the chain is switched on: with none, a host has nothing to run.
 bool any_enabled(const host::Chain& chain);
 // Every loaded effect's values at the display-referred defaults, with as many instances of each as
