@@ -32,7 +32,7 @@ VKBASALT_MANIFEST = "/usr/share/vulkan/implicit_layer.d/vkBasalt.json"
 
 # The conformance files that vkBasalt 0.3.2.8 compiles and runs on lavapipe. Each is one ctest test.
 SUBSET = ["alpha.fx", "conversions.fx", "identity.fx", "invert.fx", "nonfinite.fx", "operators.fx", "samplers.fx",
-          "size_1x1.fx", "stencil.fx"]
+          "size_1x1.fx"]
 
 # The others, each with what vkBasalt 0.3.2.8 says or does on it (its own log, tried one by one).
 LEFT_OUT = {
@@ -48,6 +48,9 @@ LEFT_OUT = {
     "preprocessor.fx": "BUFFER_COLOR_BIT_DEPTH: not defined by vkBasalt",
     "render_targets.fx": "tex2Dfetch with an int2 coordinate, and `return` after `discard` (an error there: unreachable code)",
     "size_odd.fx": "tex2Dfetch with an int2 coordinate",
+    "stencil.fx": "vkBasalt's stencil results change from run to run on lavapipe (ten runs of the same frame gave five "
+                  "patterns, from every check but NOTEQUAL holding to seven of eight failing): no oracle there; "
+                  "the conformance suite holds pfx to the values worked out by hand",
     "stencil_back_buffer.fx": "a stencil pass into the back buffer: vkBasalt leaves the pixels the test rejects undefined "
                               "(black on lavapipe) where ReShade keeps the back buffer's",
     "textures.fx": "tex2Dfetch with an int2 coordinate",
@@ -65,13 +68,6 @@ VKBASALT_WRONG = {
         7: "case block with `if (a != 5) return false;` (compound assignments; HLSL: a == 9)",
         14: "case block with a for loop using continue and break (HLSL: s == 13)",
         15: "case block with a while and a do-while loop (HLSL: s == 12)",
-    },
-    # vkBasalt keeps the stencil from frame to frame; ReShade clears it when the technique starts.
-    # From the last frame's values the NOTEQUAL pass also passes in q2 and q3, and the read-mask
-    # pass misses q3; the stencil values every later check reads come out as ReShade's again.
-    "stencil.fx": {
-        1: "NOTEQUAL after the stencil of the last frame (ReShade: cleared each frame, passes in q1 only)",
-        2: "read mask after the stencil of the last frame (ReShade: passes in q0, q2 and q3)",
     },
 }
 
