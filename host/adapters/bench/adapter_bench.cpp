@@ -111,24 +111,6 @@ double timed_run(const std::vector<std::string>& argv, const std::vector<std::st
   return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? seconds : -1;
 }
 
-// The median over the copy passes of `repeats` timed draws (glFinish around each).
-double copy_pass_ms(int width, int height, int repeats) {
-  pfx::bench::CopyPass pass;
-  const uint32_t source = pfx::app::create_color_texture(width, height);
-  const uint32_t target = pfx::app::create_color_texture(width, height);
-  std::vector<double> times;
-  for (int i = 0; i < repeats + 3; ++i) {
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    pass.run(source, target, width, height);
-    glFinish();
-    if (i >= 3) times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  pfx::app::delete_texture(source);
-  pfx::app::delete_texture(target);
-  return median(times);
-}
-
 std::vector<std::string> words(const std::string& text) { return pfx::app::split_list(text, ' '); }
 
 bool parse(int argc, char** argv, Options* options) {
@@ -284,7 +266,7 @@ int main(int argc, char** argv) {
     return argv;
   };
 
-  const double copy_before = copy_pass_ms(options.width, options.height, 15);
+  const double copy_before = pfx::gl::median_copy_pass_ms(options.width, options.height, 15);
   for (auto& row : rows) {
     // vkBasalt goes on without an effect it cannot compile (it logs "vkBasalt err:" and vkcube ends
     // with 0), which would time plain vkcube: one frame first, its log read.
@@ -317,7 +299,7 @@ int main(int argc, char** argv) {
     row.ms_per_frame = median(per_frame);
     std::fprintf(stderr, "%s %s: %.1f ms a frame\n", row.host.c_str(), row.name.c_str(), row.ms_per_frame);
   }
-  const double copy_after = copy_pass_ms(options.width, options.height, 15);
+  const double copy_after = pfx::gl::median_copy_pass_ms(options.width, options.height, 15);
   const double copy = (copy_before + copy_after) / 2;
   fs::remove_all(scratch);
 

@@ -8,8 +8,9 @@
 
 #include "layer_calls.hpp"
 #include "layer_capture.hpp"
-#include "process_memory.hpp"
+#include "layer_reports.hpp"
 #include "layer_state.hpp"
+#include "process_memory.hpp"
 
 namespace pfx::vulkan_layer {
 namespace {
@@ -38,7 +39,8 @@ pfx_vk_bridge_desc bridge_desc(const Device& d, VkQueue queue, uint32_t family) 
   desc.plugin_path = settings.plugin_path;
   // Settings made by hand: what does not apply is named and left out, the rest runs (pfx-inject's
   // rule for OpenGL applications).
-  desc.flags = PFX_VK_LEAVE_OUT_BAD_SETTINGS;
+  desc.flags = PFX_VK_LEAVE_OUT_BAD_SETTINGS | (layer_inject_settings().dry_run ? PFX_VK_DRY_RUN : 0u) |
+               (layer_inject_settings().timings_file.empty() ? 0u : PFX_VK_TIME_PASSES);
   desc.log = log_from_bridge;
   desc.set_device_loader_data = d.set_loader_data;
   return desc;
@@ -103,7 +105,10 @@ bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame) {
              pfx_vk_bridge_last_error(bridge));
     return false;
   }
-  for (const auto& prefix : prefixes) write_capture(prefix, image->width, image->height, app, result);
+  // A dry run presents the application's frame: that is what PREFIX.png shows.
+  const bool dry_run = layer_inject_settings().dry_run;
+  for (const auto& prefix : prefixes) write_capture(prefix, image->width, image->height, app, dry_run ? app : result);
+  report_run(bridge, *image, frame);
   return true;
 }
 
@@ -114,15 +119,17 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
   Device* d = find_device(key_of(queue));
   if (!d) return VK_ERROR_DEVICE_LOST;  // a queue of no device the loader gave us cannot be presented on
   const uint64_t frame = ++presented;
-  // Frames before --from-frame pass through untouched (a splash screen), as in OpenGL applications.
+  // Frames before --from-frame (a splash screen) and every frame of --bench's "application alone"
+  // pass through untouched, as in OpenGL applications.
   const bool before_start = frame < layer_inject_settings().from_frame;
+  const bool untouched = before_start || layer_inject_settings().bypass;
   if (before_start)
     for (const auto& prefix : capture_prefixes_for(frame))
       log_line("frame " + std::to_string(frame) + ": capture " + prefix +
                " not written: frames before --from-frame pass through");
-  if (!d->failed && !before_start) reread_preset_if_changed(d);
+  if (!d->failed && !untouched) reread_preset_if_changed(d);
   std::vector<VkSemaphore> waits;
-  for (uint32_t i = 0; i < info->swapchainCount && !d->failed && !before_start; ++i) {
+  for (uint32_t i = 0; i < info->swapchainCount && !d->failed && !untouched; ++i) {
     auto found = d->swapchains.find(info->pSwapchains[i]);
     if (found == d->swapchains.end() || !found->second->usable) continue;
     const Swapchain& s = *found->second;
@@ -155,6 +162,7 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
     ours.pWaitSemaphores = waits.data();
     result = d->QueuePresentKHR(queue, &ours);
   }
+  report_present();
   lock.unlock();  // the application's exit handlers may destroy its device through the layer
   const auto& report_at = layer_inject_settings().resources_at;
   if (std::find(report_at.begin(), report_at.end(), frame) != report_at.end())
@@ -162,6 +170,8 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
              " KiB; heap in use " + std::to_string(inject::heap_bytes_in_use()) + " bytes");
   if (frame == quit_after()) {
     log_line("frame " + std::to_string(frame) + ": quitting, as asked");
+    std::lock_guard<std::mutex> relock(state().mutex);
+    write_bench_stats();
     std::exit(0);
   }
   return result;

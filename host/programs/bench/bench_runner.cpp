@@ -60,7 +60,7 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
     pfx::host::Timing timing = pfx::host::Timing::GPU_QUERIES;
     pfx::app::parse_timing(options.timing, renderer, &timing);  // the name was checked with the options
     results.timing = timing == pfx::host::Timing::GPU_QUERIES ? "gpu-timestamps" : "finish+clock";
-    CopyPass copy;
+    gl::CopyPass copy;
     {
       std::vector<double> times;
       for (int i = 0; i < options.warmup + options.frames; ++i) {

@@ -14,7 +14,7 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-double time_copy(CopyPass& copy, uint32_t source, uint32_t target, int w, int h, pfx::host::Timing timing) {
+double time_copy(gl::CopyPass& copy, uint32_t source, uint32_t target, int w, int h, pfx::host::Timing timing) {
   if (timing == pfx::host::Timing::GPU_QUERIES) {
     GLuint queries[2];
     glGenQueries(2, queries);

@@ -16,6 +16,6 @@ double median(std::vector<double> values);
 
 // One copy of source into target (w x h), in milliseconds: GL timestamps for GPU_QUERIES,
 // otherwise glFinish and the CPU clock around it (what AUTO means on a software renderer).
-double time_copy(CopyPass& copy, uint32_t source, uint32_t target, int w, int h, pfx::host::Timing timing);
+double time_copy(gl::CopyPass& copy, uint32_t source, uint32_t target, int w, int h, pfx::host::Timing timing);
 
 }  // namespace pfx::bench

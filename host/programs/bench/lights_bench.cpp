@@ -36,7 +36,7 @@ pfx::host::Timing renderer_timing() {
 
 // The copy pass at a size, timed as the chain times its passes: a median of frames.
 double copy_ms(int width, int height, int frames) {
-  CopyPass copy;
+  gl::CopyPass copy;
   const uint32_t a = pfx::app::create_color_texture(width, height), b = pfx::app::create_color_texture(width, height);
   time_copy(copy, a, b, width, height, renderer_timing());  // warm-up: the first use compiles
   std::vector<double> times;

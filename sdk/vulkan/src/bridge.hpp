@@ -24,6 +24,14 @@ struct pfx_vk_bridge {
   std::unique_ptr<pfx::vk::GlFrame> gl;  // made, used and destroyed on the worker
   pfx::app::Transfer transfer = pfx::app::Transfer::SRGB;
   pfx::vk::Path path = pfx::vk::Path::HOST;
+  bool dry_run = false;     // PFX_VK_DRY_RUN
+  bool ran_passes = false;  // in the last run
+  std::string chain_text;   // GlFrame::chain_text, kept on the caller's side
+  // PFX_VK_TIME_PASSES: the newest complete times, copied from the GL thread after each run, and
+  // what pfx_vk_bridge_frame_times hands out (pointing into them).
+  pfx::host::FrameTimes times;
+  std::string timing = "off";
+  mutable std::vector<pfx_vk_pass_time> pass_times;
   uint64_t frames = 0;
   std::chrono::steady_clock::time_point first_run;
   std::string last_error;
@@ -49,6 +57,8 @@ void copy_error(const std::string& message, char* error, size_t error_size);
 // Leaves out of the default chain, or switches off in a chosen one, every effect that needs more
 // than colour (colour_fit.cpp).
 bool fit_recipe_to_colour(pfx_vk_bridge* bridge, app::ChainRecipe* recipe, std::string* error);
+// How the chain times its passes for the flags given (PFX_VK_TIME_PASSES), on the GL thread.
+host::Timing timing_for(const pfx_vk_bridge* bridge, uint32_t flags);
 bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, const app::ChainRecipe& recipe,
                      std::string* error);
 

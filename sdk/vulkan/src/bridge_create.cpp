@@ -8,6 +8,7 @@
 #include "chain_settings.hpp"
 #include "cli_text.hpp"
 #include "headless_context.hpp"
+#include "timing_choice.hpp"
 
 namespace pfx::vk {
 namespace {
@@ -121,6 +122,10 @@ bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::st
   return true;
 }
 
+host::Timing timing_for(const pfx_vk_bridge* bridge, uint32_t flags) {
+  return flags & PFX_VK_TIME_PASSES ? app::default_timing(bridge->worker->renderer()) : host::Timing::OFF;
+}
+
 bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, const app::ChainRecipe& recipe,
                      std::string* error) {
   bool created = false;
@@ -128,6 +133,9 @@ bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, cons
           [&] {
             bridge->gl = std::make_unique<GlFrame>();
             created = bridge->gl->create(*bridge->registry, recipe, error);
+            if (!created) return;
+            bridge->chain_text = bridge->gl->chain_text();
+            bridge->gl->set_timing(timing_for(bridge, desc.flags));
           },
           error))
     return false;
@@ -160,6 +168,7 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_des
   auto bridge = std::make_unique<pfx_vk_bridge>();
   bridge->log = desc->log;
   bridge->log_user = desc->log_user;
+  bridge->dry_run = (desc->flags & PFX_VK_DRY_RUN) != 0;
   std::string message;
   const bool want_fd = desc->device_has_bridge_extensions != 0;
   if (!vk::load_functions(desc->instance, desc->device, desc->get_instance_proc_addr, desc->get_device_proc_addr,

@@ -1,5 +1,6 @@
 // pfx_vk_bridge_run: one frame's trip (vulkan_bridge.h), and the bridge's state for the caller.
 #include "bridge.hpp"
+#include "copy_pass.hpp"
 
 namespace pfx::vk {
 namespace {
@@ -76,6 +77,9 @@ bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* er
             ran = bridge->gl->run(host_bytes, int(image.width), int(image.height), is_bgra(image.format),
                                   bridge->transfer, time_seconds, bridge->frames,
                                   GlFrame::Readback{image.app_pixels, image.result_pixels}, error);
+            const host::FrameReport& report = bridge->gl->report();
+            bridge->timing = report.timing;
+            bridge->times = report.times;
           },
           &worker_error)) {
     *error = worker_error;
@@ -93,6 +97,7 @@ using namespace pfx;
 extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, const pfx_vk_image* image) {
   if (!bridge) return PFX_VK_BAD_ARGUMENT;
   bridge->last_error.clear();
+  bridge->ran_passes = false;
   std::string error;
   if (!image || image->struct_size < sizeof(pfx_vk_image) || !image->image || !image->width || !image->height ||
       !vk::takes_format(image->format)) {
@@ -118,7 +123,8 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
   }
   const bool ran = vk::run_chain(bridge, *image, &error);
   if (!ran) bridge->last_error = error;
-  if (!bridge->transport->copy_out(*image, true, ran, &error)) {
+  bridge->ran_passes = ran;
+  if (!bridge->transport->copy_out(*image, true, ran && !bridge->dry_run, &error)) {
     bridge->last_error = error;
     return PFX_VK_VULKAN_FAILED;
   }
@@ -128,6 +134,37 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
 extern "C" PFX_VK_API const char* pfx_vk_bridge_path(const pfx_vk_bridge* bridge) {
   if (!bridge) return "";
   return bridge->path == vk::Path::SHARED ? "shared memory" : "host memory";
+}
+
+extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_frame_times(const pfx_vk_bridge* bridge,
+                                                              pfx_vk_frame_times* times) {
+  if (!bridge || !times || times->struct_size < sizeof(pfx_vk_frame_times)) return PFX_VK_BAD_ARGUMENT;
+  // The array lives in the bridge, like the strings it points to, until the next call on it.
+  auto& passes = bridge->pass_times;
+  passes.clear();
+  for (const auto& pass : bridge->times.passes) passes.push_back({pass.effect.c_str(), pass.pass.c_str(), pass.ms});
+  times->frame = bridge->times.frame;
+  times->timing = bridge->timing.c_str();
+  times->total_ms = bridge->times.total_ms;
+  times->pass_count = static_cast<uint32_t>(passes.size());
+  times->passes = passes.data();
+  return PFX_VK_OK;
+}
+
+extern "C" PFX_VK_API const char* pfx_vk_bridge_chain(const pfx_vk_bridge* bridge) {
+  return bridge ? bridge->chain_text.c_str() : "";
+}
+
+extern "C" PFX_VK_API int pfx_vk_bridge_ran_passes(const pfx_vk_bridge* bridge) {
+  return bridge && bridge->ran_passes ? 1 : 0;
+}
+
+extern "C" PFX_VK_API double pfx_vk_bridge_copy_pass_ms(pfx_vk_bridge* bridge, uint32_t width, uint32_t height) {
+  if (!bridge || !width || !height) return 0;
+  double ms = 0;
+  std::string unused;
+  bridge->worker->run([&] { ms = gl::median_copy_pass_ms(int(width), int(height), 9); }, &unused);
+  return ms;
 }
 
 extern "C" PFX_VK_API const char* pfx_vk_bridge_last_error(const pfx_vk_bridge* bridge) {

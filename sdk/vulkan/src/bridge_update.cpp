@@ -28,7 +28,9 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_update(pfx_vk_bridge* bridge, 
     if (!bridge->worker->run(
             [&] {
               updated = bridge->gl->update(*bridge->registry, recipe, &message);
+              if (!updated) return;
               chain = bridge->gl->chain_text();
+              bridge->gl->set_timing(vk::timing_for(bridge, desc->flags));
             },
             &message) ||
         !updated)
@@ -40,6 +42,8 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_update(pfx_vk_bridge* bridge, 
   }
   vk::say_left_out(bridge, left_out);
   bridge->transfer = transfer;
+  bridge->chain_text = chain;
+  bridge->dry_run = (desc->flags & PFX_VK_DRY_RUN) != 0;
   bridge->say(0, "settings applied: chain " + chain);
   return PFX_VK_OK;
 }

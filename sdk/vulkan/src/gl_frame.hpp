@@ -24,9 +24,17 @@ class GlFrame {
   // A new recipe while frames run (FrameChain::update): false with *error and the chain as it was.
   bool update(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* error) {
     std::vector<std::string> notes;
-    return chain_->update(registry, recipe, "set", &notes, error);
+    if (!chain_->update(registry, recipe, "set", &notes, error)) return false;
+    chain_->chain().set_timing(timing_);
+    return true;
   }
   std::string chain_text() const { return chain_->text(); }
+  // How passes are timed (host::Chain::set_timing), kept when update() makes the effects anew.
+  void set_timing(host::Timing timing) {
+    timing_ = timing;
+    chain_->chain().set_timing(timing);
+  }
+  const host::FrameReport& report() const { return chain_->chain().report(); }
 
   GlMemory& shared() { return shared_; }
   // Whether a frame of that size and time would run any pass (FrameChain::plans_passes). False
@@ -51,6 +59,7 @@ class GlFrame {
   gl::DisplayFrame frame_;
   std::unique_ptr<adapters::FrameChain> chain_;
   GlMemory shared_;
+  host::Timing timing_ = host::Timing::OFF;
   GLuint staging_ = 0;
   int staging_width_ = 0, staging_height_ = 0;
 };

@@ -214,6 +214,28 @@ static void log_line(void* user, int level, const char* message) {
   fprintf(stderr, "bridge (%d): %s\n", level, message);
 }
 
+/* What the bridge says of the run: the chain, whether a pass ran, the passes' times (glFinish and a
+ * clock on a software renderer: complete at once; GPU timestamps arrive later) and the unit. */
+static int report_run(pfx_vk_bridge* bridge, const char* chain, uint32_t width, uint32_t height) {
+  pfx_vk_frame_times times;
+  const int runs_effects = strcmp(chain, "none") != 0;
+  double copy_ms;
+  uint32_t i;
+  memset(&times, 0, sizeof times);
+  times.struct_size = sizeof times;
+  if (pfx_vk_bridge_frame_times(bridge, &times) != PFX_VK_OK) return fail("pfx_vk_bridge_frame_times failed");
+  printf("chain: %s; passes ran: %d; timing: %s, frame %lu, %u passes, %.3f ms\n", pfx_vk_bridge_chain(bridge),
+         pfx_vk_bridge_ran_passes(bridge), times.timing, (unsigned long)times.frame, times.pass_count, times.total_ms);
+  for (i = 0; i < times.pass_count; ++i) printf("  %s.%s %.3f ms\n", times.passes[i].effect, times.passes[i].pass, times.passes[i].ms);
+  if (strcmp(pfx_vk_bridge_chain(bridge), chain) != 0) return fail("the bridge names another chain");
+  if (pfx_vk_bridge_ran_passes(bridge) != runs_effects) return fail("the bridge says otherwise of the passes it ran");
+  if (runs_effects && strcmp(times.timing, "finish+clock") == 0 && (times.frame != 1 || times.pass_count == 0))
+    return fail("no pass times for the frame that ran");
+  copy_ms = pfx_vk_bridge_copy_pass_ms(bridge, width, height);
+  printf("copy pass: %.3f ms\n", copy_ms);
+  return copy_ms > 0 || fail("no copy pass time");
+}
+
 static int run_bridge(const context* c, const gpu_image* g, VkFormat format, const char* plugins, const char* chain,
                       int host_memory, const char* want_path) {
   pfx_vk_bridge_desc desc;
@@ -233,7 +255,7 @@ static int run_bridge(const context* c, const gpu_image* g, VkFormat format, con
   desc.device_has_bridge_extensions = c->has_bridge_extensions;
   desc.chain = chain;
   desc.plugin_path = plugins;
-  desc.flags = host_memory ? PFX_VK_FORCE_HOST_MEMORY : 0;
+  desc.flags = (host_memory ? PFX_VK_FORCE_HOST_MEMORY : 0) | PFX_VK_TIME_PASSES;
   desc.log = log_line;
   if (pfx_vk_bridge_create(&desc, &bridge, error, sizeof error) != PFX_VK_OK) return fail(error);
   memset(&image, 0, sizeof image);
@@ -247,6 +269,7 @@ static int run_bridge(const context* c, const gpu_image* g, VkFormat format, con
   if (status != PFX_VK_OK) fprintf(stderr, "bridge_c_test: run: %s\n", pfx_vk_bridge_last_error(bridge));
   printf("path: %s\n", pfx_vk_bridge_path(bridge));
   if (strcmp(pfx_vk_bridge_path(bridge), want_path) != 0) status = PFX_VK_BAD_ARGUMENT;
+  if (status == PFX_VK_OK && !report_run(bridge, chain, image.width, image.height)) status = PFX_VK_BAD_ARGUMENT;
   vkQueueWaitIdle(c->queue);
   pfx_vk_bridge_destroy(bridge);
   return status == PFX_VK_OK || fail("the bridge did not run as asked");

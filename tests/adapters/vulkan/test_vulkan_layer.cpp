@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -295,6 +296,68 @@ TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variabl
   REQUIRE(launched.exit_code == 0);
   REQUIRE(by_hand.run.exit_code == 0);
   CHECK(difference(pfx::test::read_png_file(folder.file("launched.png")), by_hand.presented).first == 0);
+}
+
+TEST_CASE("a dry run (--dry-run) runs the chain on every present and presents vkcube's own frames", "[vkcube]") {
+  ScratchFolder folder("vulkan-dry-run");
+  const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none"});
+  REQUIRE(pristine.presented.width == 320);
+  // The frame times pfx-inject --bench reads count the presents whose frame went through a pass.
+  const std::string stats = folder.file("dry.json");
+  const Frame dry = vkcube_frame(folder, "dry", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_DRY_RUN=1",
+                                                 "PFX_INJECT_STATS=" + stats, "PFX_INJECT_QUIT_AFTER=8"});
+  const std::string text = pfx::test::read_text_file(stats);
+  INFO(dry.run.output << dry.log << text);
+  REQUIRE(dry.run.exit_code == 0);
+  REQUIRE(dry.presented.width == 320);
+  CHECK(difference(dry.presented, pristine.presented).first == 0);
+  CHECK(difference(dry.app, pristine.app).first == 0);
+  CHECK(text.find("\"frames\": 8,") != std::string::npos);
+  CHECK(text.find("\"frames_through_chain\": 8,") != std::string::npos);
+  CHECK(text.find("\"chain\": \"bloom\"") != std::string::npos);
+  // Without --dry-run the same chain changes what is presented.
+  const Frame bloom = vkcube_frame(folder, "bloom", {"PFX_INJECT_CHAIN=bloom"});
+  REQUIRE(bloom.presented.width == 320);
+  CHECK(difference(bloom.presented, pristine.presented).first > 1);
+}
+
+TEST_CASE("the pass times the panel shows come from a Vulkan application's chain too", "[vkcube]") {
+  ScratchFolder folder("vulkan-timings");
+  const std::string timings = folder.file("timings.json");
+  const Frame frame = vkcube_frame(folder, "timed", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_TIMINGS=" + timings});
+  const std::string text = pfx::test::read_text_file(timings);
+  INFO(frame.run.output << frame.log << text);
+  REQUIRE(frame.run.exit_code == 0);
+  CHECK(text.find("\"chain\":\"bloom\"") != std::string::npos);
+  // On this machine's software renderer passes are timed with glFinish and a clock.
+  CHECK(text.find("\"timing\":\"finish+clock\"") != std::string::npos);
+  // Bloom's passes, from its bright pass to its composite, each with a time.
+  CHECK(text.find("{\"effect\":\"bloom\",\"pass\":\"bright\",\"ms\":") != std::string::npos);
+  CHECK(text.find("{\"effect\":\"bloom\",\"pass\":\"composite\",\"ms\":") != std::string::npos);
+  CHECK(text.find("\"total_ms\":0,") == std::string::npos);
+}
+
+TEST_CASE("pfx-inject --bench -- vkcube reports the application alone, an empty chain and the chain", "[vkcube]") {
+  ScratchFolder folder("vulkan-bench");
+  std::vector<std::string> argv = {"/usr/bin/env"};
+  add_sanitizer_runtime(&argv);
+  for (const std::string& arg :
+       {std::string(PFX_INJECT), std::string("--chain"), std::string("bloom"), std::string("--bench"), std::string("20"),
+        std::string("--bench-runs"), std::string("1"), std::string("--bench-json"), folder.file("bench.json"),
+        std::string("--"), std::string(PFX_VKCUBE), std::string("--width"), std::string("320"), std::string("--height"),
+        std::string("240")})
+    argv.push_back(arg);
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 180);
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  for (const char* row : {"| application alone | - |", "| empty chain | none |", "| chain | bloom |"})
+    CHECK(run.output.find(row) != std::string::npos);
+  // The unit was timed on the layer's GL context, at vkcube's size.
+  const std::string json = pfx::test::read_text_file(folder.file("bench.json"));
+  INFO(json);
+  const size_t unit = json.find("\"copy_pass_ms\": ");
+  REQUIRE(unit != std::string::npos);
+  CHECK(std::stod(json.substr(unit + std::strlen("\"copy_pass_ms\": "))) > 0);
 }
 
 namespace {

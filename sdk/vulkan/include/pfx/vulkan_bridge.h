@@ -47,6 +47,12 @@ typedef enum pfx_vk_status {
  * ("ignored chain: ...") in the log, and the rest runs, as pfx-inject treats settings made by hand;
  * without it pfx_vk_bridge_create fails with PFX_VK_BAD_SETTINGS. A bad transfer fails either way. */
 #define PFX_VK_LEAVE_OUT_BAD_SETTINGS 0x2u
+/* Runs the chain on every frame as usual (result_pixels receives its result) but leaves the image
+ * as it came, as pfx-inject --dry-run does: to see what the chain costs, or to compare. */
+#define PFX_VK_DRY_RUN 0x4u
+/* Times every pass for pfx_vk_bridge_frame_times: GPU timestamps where the GL has trustworthy ones,
+ * glFinish and a clock on a software renderer (which then waits for each pass). */
+#define PFX_VK_TIME_PASSES 0x8u
 
 /* The log callback: level 0 information, 1 warning, 2 error. Called on any thread. */
 typedef void (*pfx_vk_log_fn)(void* user, int level, const char* message);
@@ -77,7 +83,8 @@ typedef struct pfx_vk_bridge_desc {
   const char* preset;       /* a pfx-view preset file, or NULL */
   const char* transfer;     /* "srgb" (NULL: the default) or "linear": how the 8-bit values relate to light */
   const char* plugin_path;  /* plugin folders separated by ':'; NULL: the folder beside libpfxvulkan and PFX_PLUGIN_PATH */
-  uint32_t flags;           /* PFX_VK_FORCE_HOST_MEMORY, PFX_VK_LEAVE_OUT_BAD_SETTINGS */
+  uint32_t flags;           /* PFX_VK_FORCE_HOST_MEMORY, PFX_VK_LEAVE_OUT_BAD_SETTINGS, PFX_VK_DRY_RUN,
+                               PFX_VK_TIME_PASSES */
   pfx_vk_log_fn log;        /* NULL: messages go nowhere */
   void* log_user;
   /* For a Vulkan layer: the loader's vkSetDeviceLoaderData (vk_layer.h), which the bridge calls on
@@ -96,7 +103,7 @@ PFX_VK_API const char* const* pfx_vk_bridge_device_extensions(uint32_t* count);
 PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_desc* desc, pfx_vk_bridge** out, char* error,
                                               size_t error_size);
 /* New settings for a running bridge, such as a preset file edited while frames run: desc's chain,
- * set, preset, transfer and flags, read as pfx_vk_bridge_create reads them (its other members are
+ * set, preset, transfer and flags (PFX_VK_FORCE_HOST_MEMORY aside), read as pfx_vk_bridge_create reads them (its other members are
  * not read: the device, queue and plugins stay). When the chain names the same effects in the same
  * order only values and on/off flags change and no effect is created again; otherwise the effects
  * are made anew (their programs compile now). All or nothing: on failure the chain that ran keeps
@@ -142,6 +149,35 @@ PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, const pfx_vk_i
 /* "shared memory" or "host memory": the path the last run took (before the first run: the path the
  * next one will try). */
 PFX_VK_API const char* pfx_vk_bridge_path(const pfx_vk_bridge* bridge);
+/* The chain that runs, as pfx-inject's log names it: effect ids in order, those switched off marked
+ * ("glare,bloom (off)"), or "none". Valid until the next call on the bridge. */
+PFX_VK_API const char* pfx_vk_bridge_chain(const pfx_vk_bridge* bridge);
+/* Whether the last pfx_vk_bridge_run ran any pass of the chain: 0 when it left the image as it was
+ * (nothing on, every effect a no-op) or failed. */
+PFX_VK_API int pfx_vk_bridge_ran_passes(const pfx_vk_bridge* bridge);
+/* Times a full-frame copy pass between two RGBA16F textures of that size on the bridge's GL context
+ * (the median of 9, each with glFinish around it and a clock): the unit pfx's benchmarks give costs
+ * in, measured where the chain runs. 0 when it cannot be measured. Not during a pfx_vk_bridge_run of
+ * the same bridge. */
+PFX_VK_API double pfx_vk_bridge_copy_pass_ms(pfx_vk_bridge* bridge, uint32_t width, uint32_t height);
+/* One pass's time in pfx_vk_frame_times. */
+typedef struct pfx_vk_pass_time {
+  const char* effect; /* the effect's id in the chain */
+  const char* pass;   /* the pass's name, as the effect declares it */
+  double ms;
+} pfx_vk_pass_time;
+typedef struct pfx_vk_frame_times {
+  uint32_t struct_size;            /* sizeof(pfx_vk_frame_times), set by the caller */
+  uint64_t frame;                  /* the run they were measured in, from 1; 0: none yet */
+  const char* timing;              /* "gpu-timestamps", "finish+clock" or "off" (no PFX_VK_TIME_PASSES) */
+  double total_ms;                 /* the passes together */
+  uint32_t pass_count;
+  const pfx_vk_pass_time* passes;  /* pass_count passes, in the order they ran */
+} pfx_vk_frame_times;
+/* With PFX_VK_TIME_PASSES: the times of the newest run whose passes are all timed (GPU timestamps
+ * arrive a frame or two late, never waited for). The strings and the array stay valid until the
+ * next call on the bridge. */
+PFX_VK_API pfx_vk_status pfx_vk_bridge_frame_times(const pfx_vk_bridge* bridge, pfx_vk_frame_times* times);
 /* What the last failure was, or "" (valid until the next call on the bridge). */
 PFX_VK_API const char* pfx_vk_bridge_last_error(const pfx_vk_bridge* bridge);
 

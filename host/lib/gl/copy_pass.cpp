@@ -1,12 +1,17 @@
 #include "copy_pass.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <glad/gl.h>
 #include <pfx/cpp/gl_program.hpp>
 
-namespace pfx::bench {
+#include "image_texture.hpp"
+
+namespace pfx::gl {
 namespace {
 
 const char* kFragment = R"(#version 450 core
@@ -44,4 +49,23 @@ void CopyPass::run(uint32_t source, uint32_t target, int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-}  // namespace pfx::bench
+double median_copy_pass_ms(int width, int height, int repeats) {
+  CopyPass pass;
+  const uint32_t source = app::create_color_texture(width, height);
+  const uint32_t target = app::create_color_texture(width, height);
+  std::vector<double> times;
+  for (int i = 0; i < repeats + 3; ++i) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    pass.run(source, target, width, height);
+    glFinish();
+    if (i >= 3) times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  app::delete_texture(source);
+  app::delete_texture(target);
+  if (times.empty()) return 0;
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+}  // namespace pfx::gl

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-namespace pfx::bench {
+namespace pfx::gl {
 
 class CopyPass {
  public:
@@ -19,5 +19,10 @@ class CopyPass {
  private:
   uint32_t program_ = 0, vertex_array_ = 0, framebuffer_ = 0;
 };
+
+// The median time in milliseconds of `repeats` copy passes between two new RGBA16F textures of
+// that size, each timed with glFinish around it and a clock (after three not counted): the unit
+// where no timer query is trusted (a software renderer). GL current.
+double median_copy_pass_ms(int width, int height, int repeats);
 
 }  // namespace pfx::bench
