@@ -85,18 +85,36 @@ py::array run(PythonChain& chain, const py::object& rgba, const std::optional<py
   if (depth && !depth->is_none()) depth_array = as_array(*depth, "depth");
   if (std::string problem; !pfx::app::parse_transfer(transfer, &request.transfer, &problem))
     throw py::value_error("transfer: " + problem);
-  request.image = pfx::python::image_from_numpy(as_array(rgba, "rgba"), depth_array, &form, &request.bytes);
+  const py::array picture = as_array(rgba, "rgba");
+  request.image = pfx::python::picture_frame(picture, depth_array, &form);
   request.display = form.bytes;
   request.depth_encoding = depth_encoding(encoding);
   if (camera) request.camera = *camera;
   request.time_seconds = time;
   request.frame_index = frame_index;
+  // A picture no pass would change comes back without a trip through the GL: one pass over it.
+  bool passes = false;
+  {
+    py::gil_scoped_release release;
+    passes = chain.plans_passes(request);
+  }
+  if (!passes) return pfx::python::unchanged_picture(picture, form);
+  pfx::python::FloatPicture floats;
+  if (form.bytes) {
+    pfx::python::read_picture_bytes(picture, form, &request.bytes);
+  } else {
+    floats = pfx::python::float_picture(picture);
+    request.colour = floats.colour.data();
+    request.result = floats.result.mutable_data();
+    request.channels = form.channels;
+  }
   pfx::python::RunResult result;
   {
     py::gil_scoped_release release;
     result = chain.run(request);
   }
-  return pfx::python::numpy_from_image(result.image, result.bytes, form);
+  if (form.bytes) return pfx::python::numpy_from_bytes(result.bytes, request.image.width, request.image.height, form);
+  return pfx::python::float_result(floats, form);
 }
 
 pfx::app::CameraOptions make_camera(double fovy, double near_plane, double far_plane) {
@@ -181,6 +199,13 @@ PYBIND11_MODULE(pfx, m) {
                              "The last run's report as pfx-render --json gives it: passes with their times in ms, "
                              "total_ms, timing, peak_target_bytes...; None before the first run.")
       .def_property_readonly("renderer", &PythonChain::renderer, "GL_RENDERER and GL_VERSION of the chain's context.")
+      .def("copy_pass_ms", [](PythonChain& chain, int width, int height) {
+            py::gil_scoped_release release;
+            return chain.copy_pass_ms(width, height);
+          }, "width"_a, "height"_a,
+          "The median time in ms of a full-frame copy pass between two RGBA16F textures of that size on the "
+          "chain's GL context (glFinish and a clock around each of 9): the unit pfx's benchmarks give costs in, "
+          "to judge a run's time against.")
       .def("close", [](PythonChain& chain) {
             py::gil_scoped_release release;
             chain.close();

@@ -24,14 +24,24 @@ struct PictureForm {
   int channels = 4;
 };
 
-// The picture (and depth: H x W or H x W x 1, of the picture's size) as an Image: its size, the
-// depth values as given, and the colour as float in image.rgba, or for a uint8 picture as
-// tightly packed RGBA bytes in *bytes (image.rgba left empty); alpha is opaque (1.0, 255) where
-// the picture has three channels.
-app::Image image_from_numpy(const pybind11::array& rgba, const std::optional<pybind11::array>& depth,
-                            PictureForm* form, std::vector<uint8_t>* bytes);
-// The chain's result in the caller's form: from image.rgba, or for a uint8 picture from `bytes`
-// (RGBA, the image's size).
-pybind11::array numpy_from_image(const app::Image& image, const std::vector<uint8_t>& bytes, const PictureForm& form);
+// The picture's size and depth (H x W or H x W x 1, of the picture's size, the values as given) as
+// an Image, and its form; the colour is not read yet.
+app::Image picture_frame(const pybind11::array& rgba, const std::optional<pybind11::array>& depth, PictureForm* form);
+// A uint8 picture's colour as tightly packed RGBA bytes, alpha 255 where it has three channels.
+void read_picture_bytes(const pybind11::array& rgba, const PictureForm& form, std::vector<uint8_t>* bytes);
+// A float picture on its way through the chain: its colour as float32 (the caller's array itself
+// when it is float32 already) and a new float32 array of its shape for the result.
+struct FloatPicture {
+  pybind11::array_t<float, pybind11::array::c_style> colour, result;
+};
+FloatPicture float_picture(const pybind11::array& rgba);
+// The result in the caller's dtype.
+pybind11::array float_result(FloatPicture& picture, const PictureForm& form);
+// What a chain that runs no pass gives back, in one pass over the picture and with no GL: a new
+// array of its dtype and shape holding bytes and half floats as they came, and float32 values at
+// the precision of the chain's colour (rounded to half floats, round_to_half). With the GIL held.
+pybind11::array unchanged_picture(const pybind11::array& rgba, const PictureForm& form);
+// A display-referred picture's result (RGBA bytes, width x height) in the caller's channel count.
+pybind11::array numpy_from_bytes(const std::vector<uint8_t>& bytes, int width, int height, const PictureForm& form);
 
 }  // namespace pfx::python

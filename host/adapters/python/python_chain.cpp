@@ -1,14 +1,15 @@
 #include "python_chain.hpp"
 
-#include <Imath/half.h>
 #include <glad/gl.h>
 
 #include <pfx/host/gl_error.hpp>
 
 #include "chain_builder.hpp"
+#include "copy_pass.hpp"
 #include "default_chain.hpp"
 #include "frame_description.hpp"
 #include "frame_report_json.hpp"
+#include "half_rounding.hpp"
 #include "image_texture.hpp"
 #include "plugin_listing.hpp"
 #include "python_errors.hpp"
@@ -197,6 +198,34 @@ nlohmann::ordered_json PythonChain::report() const {
   return report_;
 }
 
+double PythonChain::copy_pass_ms(int width, int height) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  check_open();
+  double ms = 0;
+  run_on_gl_thread([&](std::string* error) {
+    GLint max_size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (width < 1 || height < 1 || width > max_size || height > max_size) {
+      *error = "copy_pass_ms: the size must be 1 to " + std::to_string(max_size) + " pixels a side";
+      return;
+    }
+    ms = gl::median_copy_pass_ms(width, height, 9);
+  });
+  return ms;
+}
+
+bool PythonChain::plans_passes(const RunRequest& request) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  check_open();
+  bool passes = false;
+  run_on_gl_thread([&](std::string* error) {
+    pfx_frame frame{};
+    if (!describe(request, &frame, error) || !chain_->plans_passes(frame, &passes, error)) return;
+    if (!passes) report_skipped();
+  });
+  return passes;
+}
+
 RunResult PythonChain::run(const RunRequest& request) {
   std::lock_guard<std::mutex> lock(mutex_);
   check_open();
@@ -239,15 +268,16 @@ bool PythonChain::inputs_given(const pfx_frame& frame, std::string* error) {
 // it came: decoding and encoding give every code back. A float one comes back at the precision of
 // the chain's colour, half float, rounded to the nearest as a float16 array is.
 void PythonChain::hand_back(const RunRequest& request, RunResult* result) {
-  result->image.width = request.image.width;
-  result->image.height = request.image.height;
   if (request.display) {
     result->bytes = request.bytes;
   } else {
-    result->image.rgba.resize(request.image.rgba.size());
-    for (size_t i = 0; i < request.image.rgba.size(); ++i)
-      result->image.rgba[i] = static_cast<float>(Imath::half(request.image.rgba[i]));
+    const size_t count = request.image.pixel_count() * static_cast<size_t>(request.channels);
+    for (size_t i = 0; i < count; ++i) request.result[i] = app::round_to_half(request.colour[i]);
   }
+  report_skipped();
+}
+
+void PythonChain::report_skipped() {
   host::FrameReport skipped;
   for (size_t i = 0; i < chain_->size(); ++i) skipped.effects_skipped.push_back(chain_->instance_name(i));
   skipped.timing = "off";  // nothing ran to be timed
@@ -255,8 +285,30 @@ void PythonChain::hand_back(const RunRequest& request, RunResult* result) {
   app::add_frame_report(skipped, &report_);
 }
 
+// The frame the chain sees for the request's picture, with the values its kind of picture starts
+// at; false with *error when the chain needs an input the request does not give.
+bool PythonChain::describe(const RunRequest& request, pfx_frame* frame, std::string* error) {
+  const app::Image& image = request.image;
+  follow_picture_defaults(request.display);
+  const uint32_t inputs = PFX_INPUT_COLOR | (image.has_depth() ? uint32_t(PFX_INPUT_DEPTH) : 0u);
+  *frame = app::describe_frame(image.width, image.height, inputs, request.depth_encoding,
+                               app::make_camera(request.camera, image.width, image.height));
+  frame->time_seconds = request.time_seconds;
+  frame->frame_index = request.frame_index;
+  return inputs_given(*frame, error);
+}
+
 void PythonChain::render(const RunRequest& request, RunResult* result, std::string* error) {
   const app::Image& image = request.image;
+  pfx_frame frame{};
+  if (!describe(request, &frame, error)) return;
+  bool passes = false;
+  if (!chain_->plans_passes(frame, &passes, error)) return;
+  if (!passes) {
+    hand_back(request, result);
+    return;
+  }
+  // A picture no pass changes needs no texture: only one that goes through the chain must fit.
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
   if (image.width > max_size || image.height > max_size) {
@@ -264,21 +316,8 @@ void PythonChain::render(const RunRequest& request, RunResult* result, std::stri
              "; this OpenGL takes at most " + std::to_string(max_size) + " pixels a side";
     return;
   }
-  follow_picture_defaults(request.display);
-  const uint32_t inputs = PFX_INPUT_COLOR | (image.has_depth() ? uint32_t(PFX_INPUT_DEPTH) : 0u);
-  pfx_frame frame = app::describe_frame(image.width, image.height, inputs, request.depth_encoding,
-                                        app::make_camera(request.camera, image.width, image.height));
-  frame.time_seconds = request.time_seconds;
-  frame.frame_index = request.frame_index;
-  if (!inputs_given(frame, error)) return;
-  bool passes = false;
-  if (!chain_->plans_passes(frame, &passes, error)) return;
-  if (!passes) {
-    hand_back(request, result);
-    return;
-  }
 
-  float_picture_.upload(image);  // the colour of a float picture, the depth of either
+  float_picture_.upload(image, request.colour, request.channels);  // the colour of a float picture, the depth of either
   host::FrameTextures textures = float_picture_.inputs();
   uint32_t output = float_picture_.output();
   if (request.display) {
@@ -297,10 +336,8 @@ void PythonChain::render(const RunRequest& request, RunResult* result, std::stri
     if (request.display) {
       result->bytes.resize(image.pixel_count() * 4);
       display_picture_->encode_bytes(output, request.transfer, result->bytes.data());
-      result->image.width = image.width;
-      result->image.height = image.height;
     } else {
-      result->image = app::download_color_texture(output, image.width, image.height);
+      float_picture_.download(request.result, request.channels);
     }
     report_ = {{"renderer", renderer_}};
     app::add_frame_report(chain_->report(), &report_);

@@ -48,9 +48,15 @@ struct ChainSettings {
 
 // One picture through the chain.
 struct RunRequest {
-  app::Image image;  // the size, depth when the caller gave it, and the colour unless `display`
+  app::Image image;  // the size and depth when the caller gave it (image.rgba is not read)
   bool display = false;        // the colour is `bytes`: 8-bit display-referred RGBA, row 0 at the top
   std::vector<uint8_t> bytes;  // decoded to linear light with `transfer`, the result encoded back
+  // A float picture's colour, read on the GL thread straight from the caller's array (alive for
+  // the call): `channels` floats a pixel (3 or 4), row 0 at the top. And where its result goes:
+  // the caller's array of the same shape, written before run() returns.
+  const float* colour = nullptr;
+  float* result = nullptr;
+  int channels = 4;
   app::Transfer transfer = app::Transfer::SRGB;
   pfx_depth_encoding depth_encoding = PFX_DEPTH_LINEAR;
   app::CameraOptions camera;
@@ -58,10 +64,9 @@ struct RunRequest {
   uint64_t frame_index = 0;
 };
 
-// The chain's result: linear colour in image.rgba for a float picture, 8-bit RGBA in `bytes` for
-// a display-referred one; the picture's size either way.
+// The chain's result for a display-referred picture: 8-bit RGBA, the picture's size (a float
+// picture's result is written to RunRequest::result).
 struct RunResult {
-  app::Image image;
   std::vector<uint8_t> bytes;
 };
 
@@ -86,6 +91,11 @@ class PythonChain {
   // "bloom", "dof", "bloom#2": the instances in chain order.
   std::vector<std::string> instances() const;
 
+  // Whether run() would run any pass over the request's picture, from its size, depth, camera and
+  // time (its colour is not read): false when no effect is on or every one is a no-op with its
+  // values, and the report then says so, as after a run. Throws what run() would for a missing
+  // input. Without the GIL, like run().
+  bool plans_passes(const RunRequest& request);
   // Runs the chain over the picture; the result is the picture's size. Call it without holding
   // Python's GIL: the work waits for the GL thread.
   RunResult run(const RunRequest& request);
@@ -93,6 +103,9 @@ class PythonChain {
   // memory...); null before the first run.
   nlohmann::ordered_json report() const;
   const std::string& renderer() const { return renderer_; }
+  // The median time of a full-frame copy pass between two RGBA16F textures of that size on the
+  // chain's GL context: the unit pfx's benchmarks give costs in. Without the GIL.
+  double copy_pass_ms(int width, int height);
 
   // Destroys the effects, their GL objects, the context and the plugins now. Later calls raise.
   void close();
@@ -102,6 +115,8 @@ class PythonChain {
   void run_on_gl_thread(const std::function<void(std::string* error)>& job);
   void render(const RunRequest& request, RunResult* result, std::string* error);
   void hand_back(const RunRequest& request, RunResult* result);
+  void report_skipped();
+  bool describe(const RunRequest& request, pfx_frame* frame, std::string* error);
   bool inputs_given(const pfx_frame& frame, std::string* error);
   void follow_picture_defaults(bool display);
   app::ChainRecipe recipe_for(const ChainSettings& settings, std::vector<std::string>* warnings) const;
