@@ -170,8 +170,10 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
              " KiB; heap in use " + std::to_string(inject::heap_bytes_in_use()) + " bytes");
   if (frame == quit_after()) {
     log_line("frame " + std::to_string(frame) + ": quitting, as asked");
-    std::lock_guard<std::mutex> relock(state().mutex);
-    write_bench_stats();
+    {
+      std::lock_guard<std::mutex> relock(state().mutex);
+      write_bench_stats();
+    }  // released: the application's exit handlers may come back through the layer
     std::exit(0);
   }
   return result;
