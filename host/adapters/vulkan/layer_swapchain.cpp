@@ -15,8 +15,11 @@ std::string unusable_because(const VkSwapchainCreateInfoKHR& info) {
     case VK_FORMAT_B8G8R8A8_UNORM:
     case VK_FORMAT_B8G8R8A8_SRGB:
     case VK_FORMAT_R8G8B8A8_UNORM:
-    case VK_FORMAT_R8G8B8A8_SRGB: break;
-    default: return "its format (VkFormat " + std::to_string(int(info.imageFormat)) + ") is not an 8-bit RGBA one";
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+    case VK_FORMAT_A2R10G10B10_UNORM_PACK32: break;
+    default:
+      return "its format (VkFormat " + std::to_string(int(info.imageFormat)) + ") is not an 8-bit RGBA or 10-bit RGB one";
   }
   if (info.imageColorSpace != VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
     return "its colour space (VkColorSpaceKHR " + std::to_string(int(info.imageColorSpace)) + ") is not sRGB";

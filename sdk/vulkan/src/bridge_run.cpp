@@ -5,12 +5,19 @@
 namespace pfx::vk {
 namespace {
 
+// Blue in the bits where the GL's RGBA8 and RGB10_A2 keep red.
 bool is_bgra(VkFormat format) {
-  return format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
+  return format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB ||
+         format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
+}
+
+bool is_ten_bit(VkFormat format) {
+  return format == VK_FORMAT_A2B10G10R10_UNORM_PACK32 || format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
 }
 
 bool takes_format(VkFormat format) {
-  return is_bgra(format) || format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_R8G8B8A8_SRGB;
+  return is_bgra(format) || is_ten_bit(format) || format == VK_FORMAT_R8G8B8A8_UNORM ||
+         format == VK_FORMAT_R8G8B8A8_SRGB;
 }
 
 // Makes the go-between for the image's size; when sharing fails, says so once and moves to host
@@ -20,11 +27,14 @@ bool prepare(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* erro
     int fd = -1;
     uint64_t size = 0;
     std::string why;
-    bool ready = bridge->transport->prepare(Path::SHARED, image.width, image.height, &fd, &size, &why);
+    const bool ten_bit = is_ten_bit(image.format);
+    bool ready = bridge->transport->prepare(Path::SHARED, image.width, image.height, ten_bit, &fd, &size, &why);
     if (ready && fd >= 0) {
       std::string worker_error;
       if (!bridge->worker->run(
-              [&] { ready = bridge->gl->shared().import(fd, size, int(image.width), int(image.height), &why); },
+              [&] {
+                ready = bridge->gl->shared().import(fd, size, int(image.width), int(image.height), ten_bit, &why);
+              },
               &worker_error)) {
         ready = false;
         why = worker_error;
@@ -36,7 +46,8 @@ bool prepare(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* erro
   }
   int unused_fd = -1;
   uint64_t unused_size = 0;
-  return bridge->transport->prepare(Path::HOST, image.width, image.height, &unused_fd, &unused_size, error);
+  return bridge->transport->prepare(Path::HOST, image.width, image.height, is_ten_bit(image.format), &unused_fd,
+                                    &unused_size, error);
 }
 
 double frame_time(pfx_vk_bridge* bridge) {
@@ -74,8 +85,8 @@ bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* er
   std::string worker_error;
   if (!bridge->worker->run(
           [&] {
-            ran = bridge->gl->run(host_bytes, int(image.width), int(image.height), is_bgra(image.format),
-                                  bridge->transfer, time_seconds, bridge->frames,
+            ran = bridge->gl->run(host_bytes, int(image.width), int(image.height),
+                                  GlFrame::Texels{is_bgra(image.format), is_ten_bit(image.format)}, bridge->transfer, time_seconds, bridge->frames,
                                   GlFrame::Readback{image.app_pixels, image.result_pixels}, error);
             const host::FrameReport& report = bridge->gl->report();
             bridge->timing = report.timing;

@@ -33,24 +33,28 @@ GlFrame::~GlFrame() {
   if (staging_) glDeleteTextures(1, &staging_);
 }
 
-GLuint GlFrame::staging(int width, int height) {
-  if (staging_ && staging_width_ == width && staging_height_ == height) return staging_;
+GLuint GlFrame::staging(int width, int height, bool ten_bit) {
+  if (staging_ && staging_width_ == width && staging_height_ == height && staging_ten_bit_ == ten_bit) return staging_;
   if (staging_) glDeleteTextures(1, &staging_);
   glCreateTextures(GL_TEXTURE_2D, 1, &staging_);
-  glTextureStorage2D(staging_, 1, GL_RGBA8, width, height);
+  glTextureStorage2D(staging_, 1, ten_bit ? GL_RGB10_A2 : GL_RGBA8, width, height);
   staging_width_ = width;
   staging_height_ = height;
+  staging_ten_bit_ = ten_bit;
   return staging_;
 }
 
-bool GlFrame::run(void* host_bytes, int width, int height, bool bgra, app::Transfer transfer, double time_seconds,
+bool GlFrame::run(void* host_bytes, int width, int height, Texels texels, app::Transfer transfer, double time_seconds,
                   uint64_t frame_index, const Readback& readback, std::string* error) {
   while (glGetError() != GL_NO_ERROR) {
   }
-  const GLuint io = host_bytes ? staging(width, height) : shared_.texture();
+  const bool bgra = texels.bgra;
+  // The packed texels as they lie in memory: bytes R, G, B, A, or R from the lowest bits up.
+  const GLenum host_type = texels.ten_bit ? GL_UNSIGNED_INT_2_10_10_10_REV : GL_UNSIGNED_BYTE;
+  const GLuint io = host_bytes ? staging(width, height, texels.ten_bit) : shared_.texture();
   if (host_bytes) {
     // Rows of 4-byte texels: any unpack alignment fits; the bridge's context has no unpack buffer.
-    glTextureSubImage2D(io, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, host_bytes);
+    glTextureSubImage2D(io, 0, 0, 0, width, height, GL_RGBA, host_type, host_bytes);
   }
   read_rgba(io, width, height, bgra, readback.app_pixels);
   frame_.resize(width, height);
@@ -65,7 +69,7 @@ bool GlFrame::run(void* host_bytes, int width, int height, bool bgra, app::Trans
   swap_red_blue(result, false);
   read_rgba(io, width, height, bgra, readback.result_pixels);
   if (host_bytes) {
-    glGetTextureImage(io, 0, GL_RGBA, GL_UNSIGNED_BYTE, width * height * 4, host_bytes);
+    glGetTextureImage(io, 0, GL_RGBA, host_type, width * height * 4, host_bytes);
   }
   glFinish();
   return adapters::no_gl_error(error);

@@ -43,25 +43,32 @@ class GlFrame {
                     std::string* error) const {
     return chain_->plans_passes(width, height, time_seconds, frame_index, passes, error);
   }
-  // Runs the chain over the frame: from host_bytes (tightly packed RGBA8 rows, top row first, read
-  // and written back) when not null, else in the shared texture. bgra: the bytes are B, G, R, A.
-  // app_pixels and result_pixels, when not null, receive the frame before and after as RGBA
-  // (pfx_vk_image says how). Returns after the GL finished. False with *error.
+  // What the frame's 32-bit texels hold: 8-bit R, G, B, A in that order of bytes, or 10-bit
+  // R, G, B and 2-bit alpha from the lowest bits up (ten_bit); bgra: blue and red trade places.
+  struct Texels {
+    bool bgra = false;
+    bool ten_bit = false;
+  };
+  // Runs the chain over the frame: from host_bytes (tightly packed rows of texels, top row first,
+  // read and written back) when not null, else in the shared texture. app_pixels and
+  // result_pixels, when not null, receive the frame before and after as 8-bit RGBA (pfx_vk_image
+  // says how). Returns after the GL finished. False with *error.
   struct Readback {
     uint8_t* app_pixels = nullptr;
     uint8_t* result_pixels = nullptr;
   };
-  bool run(void* host_bytes, int width, int height, bool bgra, app::Transfer transfer, double time_seconds,
+  bool run(void* host_bytes, int width, int height, Texels texels, app::Transfer transfer, double time_seconds,
            uint64_t frame_index, const Readback& readback, std::string* error);
 
  private:
-  GLuint staging(int width, int height);
+  GLuint staging(int width, int height, bool ten_bit);
   gl::DisplayFrame frame_;
   std::unique_ptr<adapters::FrameChain> chain_;
   GlMemory shared_;
   host::Timing timing_ = host::Timing::OFF;
   GLuint staging_ = 0;
   int staging_width_ = 0, staging_height_ = 0;
+  bool staging_ten_bit_ = false;
 };
 
 }  // namespace pfx::vk

@@ -74,7 +74,7 @@ void GlMemory::release() {
   texture_ = memory_ = 0;
 }
 
-bool GlMemory::import(int fd, uint64_t memory_size, int width, int height, std::string* error) {
+bool GlMemory::import(int fd, uint64_t memory_size, int width, int height, bool ten_bit, std::string* error) {
   release();
   while (glGetError() != GL_NO_ERROR) {
   }
@@ -89,7 +89,7 @@ bool GlMemory::import(int fd, uint64_t memory_size, int width, int height, std::
   }
   glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
   glTextureParameteri(texture_, kTextureTiling, static_cast<GLint>(kOptimalTiling));
-  texture_storage_mem_2d_(texture_, 1, GL_RGBA8, width, height, memory_, 0);
+  texture_storage_mem_2d_(texture_, 1, ten_bit ? GL_RGB10_A2 : GL_RGBA8, width, height, memory_, 0);
   if (glGetError() != GL_NO_ERROR) {
     *error = "the GL could not make a texture over the Vulkan image's memory";
     release();

@@ -15,9 +15,10 @@ class GlMemory {
   // With the bridge's context current: false with *why when the GL cannot import memory
   // (an extension missing) or its device is not the one whose UUIDs are given.
   bool check(const uint8_t device_uuid[16], const uint8_t driver_uuid[16], std::string* why);
-  // An RGBA8 texture over `fd` (taken: the GL owns it afterwards, closed here on failure) of
-  // `memory_size` bytes holding a width x height optimal-tiling image. Replaces the last one.
-  bool import(int fd, uint64_t memory_size, int width, int height, std::string* error);
+  // A texture over `fd` (taken: the GL owns it afterwards, closed here on failure) of
+  // `memory_size` bytes holding a width x height optimal-tiling image of 32-bit texels: RGBA8, or
+  // RGB10_A2 when ten_bit. Replaces the last one.
+  bool import(int fd, uint64_t memory_size, int width, int height, bool ten_bit, std::string* error);
   GLuint texture() const { return texture_; }
   void release();
   ~GlMemory() { release(); }

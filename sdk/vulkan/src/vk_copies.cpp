@@ -43,8 +43,8 @@ void Transport::record_copy_in(VkCommandBuffer commands, const pfx_vk_image& ima
   between_fresh_ = false;
   const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   if (between_image_) {
-    // A raw copy: B8G8R8A8 and R8G8B8A8, UNORM or SRGB, are all 32-bit texels; the GL side
-    // swizzles and decodes.
+    // A raw copy: B8G8R8A8 and R8G8B8A8, UNORM or SRGB, and A2B10G10R10 and A2R10G10B10 are all
+    // 32-bit texels; the GL side reads them as what they are, swizzles and decodes.
     VkImageCopy region{};
     region.srcSubresource = layers;
     region.dstSubresource = layers;

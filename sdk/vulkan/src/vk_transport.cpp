@@ -65,8 +65,8 @@ void Transport::release_between() {
   width_ = height_ = 0;
 }
 
-bool Transport::prepared(Path path, uint32_t width, uint32_t height) const {
-  return memory_ && path_ == path && width_ == width && height_ == height;
+bool Transport::prepared(Path path, uint32_t width, uint32_t height, bool ten_bit) const {
+  return memory_ && path_ == path && width_ == width && height_ == height && ten_bit_ == ten_bit;
 }
 
 bool Transport::allocate(const VkMemoryRequirements& needs, VkMemoryPropertyFlags want, const void* next,
@@ -154,15 +154,16 @@ bool Transport::make_host_buffer(std::string* error) {
   return result == VK_SUCCESS;
 }
 
-bool Transport::prepare(Path path, uint32_t width, uint32_t height, int* fd, uint64_t* memory_size,
+bool Transport::prepare(Path path, uint32_t width, uint32_t height, bool ten_bit, int* fd, uint64_t* memory_size,
                         std::string* error) {
   *fd = -1;  // the go-between the GL side already has serves
-  if (prepared(path, width, height)) return true;
+  if (prepared(path, width, height, ten_bit)) return true;
   wait_idle();
   release_between();
   path_ = path;
   width_ = width;
   height_ = height;
+  ten_bit_ = ten_bit;
   const bool made = path == Path::SHARED ? make_shared_image(error) : make_host_buffer(error);
   if (!made) {
     release_between();

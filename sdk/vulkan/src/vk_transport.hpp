@@ -28,11 +28,14 @@ class Transport {
   using SetLoaderData = VkResult(VKAPI_PTR*)(VkDevice, void*);
   bool init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error);
 
-  // Makes the go-between for a width x height RGBA8 frame: SHARED, an exportable image whose
-  // memory *fd (a new descriptor the caller owns) and *memory_size describe; HOST, a mapped buffer
-  // (mapped()). Waits for work in flight first. When it is already that, a no-op with *fd = -1.
-  bool prepare(Path path, uint32_t width, uint32_t height, int* fd, uint64_t* memory_size, std::string* error);
-  bool prepared(Path path, uint32_t width, uint32_t height) const;
+  // Makes the go-between for a width x height frame of 32-bit texels (8-bit RGBA, or 10-bit RGB
+  // with 2-bit alpha when ten_bit: the GL side reads the same bytes either way, and a new
+  // go-between goes with a new reading): SHARED, an exportable image whose memory *fd (a new
+  // descriptor the caller owns) and *memory_size describe; HOST, a mapped buffer (mapped()).
+  // Waits for work in flight first. When it is already that, a no-op with *fd = -1.
+  bool prepare(Path path, uint32_t width, uint32_t height, bool ten_bit, int* fd, uint64_t* memory_size,
+               std::string* error);
+  bool prepared(Path path, uint32_t width, uint32_t height, bool ten_bit) const;
   void* mapped() const { return mapped_; }
   uint64_t row_bytes() const { return uint64_t(width_) * 4; }
 
@@ -67,6 +70,7 @@ class Transport {
   bool out_pending_ = false;
   Path path_ = Path::HOST;
   uint32_t width_ = 0, height_ = 0;
+  bool ten_bit_ = false;
   VkImage between_image_ = VK_NULL_HANDLE;
   bool between_fresh_ = false;  // the image was never used: its layout is still UNDEFINED
   VkBuffer between_buffer_ = VK_NULL_HANDLE;

@@ -294,25 +294,57 @@ static int compare(const unsigned char* got, const unsigned char* want, const un
   return worst;
 }
 
+/* 8-bit codes to 10-bit ones and back, each to the nearest. */
+static uint32_t ten_from_eight(unsigned char v) { return ((uint32_t)v * 1023u + 127u) / 255u; }
+static unsigned char eight_from_ten(uint32_t v) { return (unsigned char)((v * 255u + 511u) / 1023u); }
+
+/* A2B10G10R10: red in the lowest 10 bits, then green, blue and a 2-bit alpha; A2R10G10B10 (bgr):
+ * blue in the lowest bits and red above green. */
+static void pack_ten_bit(const unsigned char* rgba, size_t pixels, int bgr, void* out) {
+  size_t i;
+  for (i = 0; i < pixels; ++i) {
+    const uint32_t alpha = ((uint32_t)rgba[i * 4 + 3] * 3u + 127u) / 255u;
+    const uint32_t word = ten_from_eight(rgba[i * 4 + (bgr ? 2 : 0)]) | ten_from_eight(rgba[i * 4 + 1]) << 10 |
+                          ten_from_eight(rgba[i * 4 + (bgr ? 0 : 2)]) << 20 | alpha << 30;
+    memcpy((unsigned char*)out + i * 4, &word, 4);
+  }
+}
+
+static void unpack_ten_bit(const void* in, size_t pixels, int bgr, unsigned char* rgba) {
+  size_t i;
+  for (i = 0; i < pixels; ++i) {
+    uint32_t word;
+    memcpy(&word, (const unsigned char*)in + i * 4, 4);
+    rgba[i * 4 + (bgr ? 2 : 0)] = eight_from_ten(word & 1023u);
+    rgba[i * 4 + 1] = eight_from_ten(word >> 10 & 1023u);
+    rgba[i * 4 + (bgr ? 0 : 2)] = eight_from_ten(word >> 20 & 1023u);
+    rgba[i * 4 + 3] = (unsigned char)((word >> 30) * 85u);
+  }
+}
+
 int main(int argc, char** argv) {
   context c;
   gpu_image g;
-  int width, height, want_width, want_height, channels, bgra, worst;
-  unsigned char *input, *want;
+  int width, height, want_width, want_height, channels, bgra, ten_bit, worst;
+  unsigned char *input, *want, *got;
   size_t i, pixels, changed;
   VkFormat format;
-  if (argc != 7) return fail("usage: bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra shared|host"), 2;
+  if (argc != 7) return fail("usage: bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host"), 2;
   input = stbi_load(argv[1], &width, &height, &channels, 4);
   want = stbi_load(argv[2], &want_width, &want_height, &channels, 4);
   if (!input || !want || want_width != width || want_height != height) return fail("could not read the PNGs"), 2;
   bgra = strcmp(argv[5], "bgra") == 0;
-  format = bgra ? VK_FORMAT_B8G8R8A8_UNORM : VK_FORMAT_R8G8B8A8_UNORM;
+  ten_bit = strcmp(argv[5], "a2b10g10r10") == 0 || strcmp(argv[5], "a2r10g10b10") == 0;
+  if (strcmp(argv[5], "a2r10g10b10") == 0) format = VK_FORMAT_A2R10G10B10_UNORM_PACK32;
+  else if (ten_bit) format = VK_FORMAT_A2B10G10R10_UNORM_PACK32;
+  else format = bgra ? VK_FORMAT_B8G8R8A8_UNORM : VK_FORMAT_R8G8B8A8_UNORM;
   pixels = (size_t)width * (size_t)height;
   memset(&c, 0, sizeof c);
   memset(&g, 0, sizeof g);
   keep_driver_mapped();
   if (!make_context(&c) || !make_image(&c, format, (uint32_t)width, (uint32_t)height, &g)) return 1;
-  for (i = 0; i < pixels; ++i) {
+  if (ten_bit) pack_ten_bit(input, pixels, format == VK_FORMAT_A2R10G10B10_UNORM_PACK32, g.mapped);
+  for (i = 0; i < pixels && !ten_bit; ++i) {
     unsigned char* out = (unsigned char*)g.mapped + i * 4;
     out[0] = input[i * 4 + (bgra ? 2 : 0)];
     out[1] = input[i * 4 + 1];
@@ -323,7 +355,15 @@ int main(int argc, char** argv) {
   if (!run_bridge(&c, &g, format, argv[3], argv[4], strcmp(argv[6], "host") == 0, strcmp(argv[6], "host") == 0 ? "host memory" : "shared memory"))
     return 1;
   if (!transfer(&c, &g, 0)) return 1;
-  worst = compare((const unsigned char*)g.mapped, want, input, pixels, bgra, &changed);
+  /* A 10-bit result is judged at 8 bits, each code to the nearest: the expected picture is 8-bit. */
+  got = (unsigned char*)g.mapped;
+  if (ten_bit) {
+    got = (unsigned char*)malloc(pixels * 4);
+    if (!got) return fail("out of memory"), 1;
+    unpack_ten_bit(g.mapped, pixels, format == VK_FORMAT_A2R10G10B10_UNORM_PACK32, got);
+  }
+  worst = compare(got, want, input, pixels, bgra, &changed);
+  if (ten_bit) free(got);
   printf("largest difference from the expected picture: %d codes; %lu of %lu pixels changed by the chain\n", worst,
          (unsigned long)changed, (unsigned long)pixels);
   vkDestroyBuffer(c.device, g.buffer, NULL);

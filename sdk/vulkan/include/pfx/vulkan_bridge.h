@@ -8,7 +8,7 @@
  * the same pixels, slower. Either way the two APIs are ordered by waiting for a fence on the Vulkan
  * side and for the GL to finish on the other.
  *
- * The image holds an 8-bit display-referred frame (what a swapchain image holds): it is decoded to
+ * The image holds an 8- or 10-bit display-referred frame (what a swapchain image holds): it is decoded to
  * linear light, the effects start at their display-referred defaults, and the result is encoded
  * back. Row 0 of the image is its top row, as Vulkan presents it.
  *
@@ -119,7 +119,8 @@ typedef struct pfx_vk_image {
   uint32_t struct_size; /* sizeof(pfx_vk_image) */
   VkImage image;        /* 2D, one layer, one level, usage TRANSFER_SRC and TRANSFER_DST, not multisampled */
   /* B8G8R8A8 or R8G8B8A8, UNORM or SRGB (the bytes are read as they are: both are display-referred
-   * 8-bit values). */
+   * 8-bit values), or A2B10G10R10_UNORM_PACK32 or A2R10G10B10_UNORM_PACK32 (display-referred 10-bit
+   * values, sRGB-encoded like the 8-bit ones). */
   VkFormat format;
   uint32_t width, height;
   VkImageLayout layout; /* the layout it is in, and will be left in (PRESENT_SRC_KHR for a swapchain image) */
