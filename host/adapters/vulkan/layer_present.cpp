@@ -88,10 +88,15 @@ pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
 // Counted from 1 over every swapchain of the process, as pfx-inject counts over every context.
 std::atomic<uint64_t> presented{0};
 
-// Runs the image through the bridge (with the captures asked for this frame); false when the
-// device must pass through from now on. The image's semaphore is signalled either way.
-bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame) {
-  const std::vector<std::string> prefixes = capture_prefixes_for(frame);
+// Runs the image through the bridge (with the captures asked for this frame, named for the present's
+// swapchain_index-th swapchain); false when the device must pass through from now on. The image's
+// semaphore is signalled either way.
+bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame, uint32_t swapchain_index) {
+  std::vector<std::string> prefixes = capture_prefixes_for(frame);
+  // A present of several swapchains (an application with several windows): PREFIX for the first,
+  // PREFIX-2 for the second...
+  if (swapchain_index > 0)
+    for (auto& prefix : prefixes) prefix += "-" + std::to_string(swapchain_index + 1);
   std::vector<uint8_t> app, result;
   if (!prefixes.empty()) {
     app.resize(size_t(image->width) * image->height * 4);
@@ -149,7 +154,7 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
       image.wait_semaphores = info->pWaitSemaphores;
     }
     image.signal_semaphore = s.done[index];
-    if (!run_image(bridge, &image, frame)) d->failed = true;
+    if (!run_image(bridge, &image, frame, i)) d->failed = true;
     // Whatever happened, the bridge waited on the semaphores and signalled the image's own.
     waits.push_back(s.done[index]);
   }

@@ -298,6 +298,36 @@ TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variabl
   CHECK(difference(pfx::test::read_png_file(folder.file("launched.png")), by_hand.presented).first == 0);
 }
 
+TEST_CASE("two windows presented together each go through the chain, and a device destroyed at once after its "
+          "last presents ends cleanly", "[two_windows]") {
+  // No application here has two windows: two_windows.c presents both swapchains in one call, and
+  // destroys its swapchains and device without waiting for the presents.
+  ScratchFolder folder("vulkan-two-windows");
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("two.log"),
+                                   "PFX_INJECT_CAPTURE=5:" + folder.file("two")};
+  add_sanitizer_runtime(&argv);
+  argv.insert(argv.end(), {PFX_TWO_WINDOWS, "8"});
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
+  INFO(run.output << pfx::test::read_text_file(folder.file("two.log")));
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.output.find("8 frames presented to two windows") != std::string::npos);
+  // The first window's capture is PREFIX, the second's PREFIX-2, each at its window's size.
+  const std::pair<std::string, int> windows[] = {{"two", 160}, {"two-2", 201}};
+  for (const auto& [name, width] : windows) {
+    INFO(name);
+    const auto presented = pfx::test::read_png_file(folder.file(name + ".png"));
+    const auto app = pfx::test::read_png_file(folder.file(name + ".app.png"));
+    REQUIRE(presented.width == width);
+    const pfx::test::RunResult render =
+        pfx::test::run_program({PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file(name + ".app.png"),
+                                "--chain", "bloom", "--out", folder.file(name + "-render.png")});
+    REQUIRE(render.exit_code == 0);
+    CHECK(difference(presented, pfx::test::read_png_file(folder.file(name + "-render.png"))).first <= 1);
+    CHECK(difference(presented, app).first >= 8);  // the bright square glows
+  }
+}
+
 TEST_CASE("a dry run (--dry-run) runs the chain on every present and presents vkcube's own frames", "[vkcube]") {
   ScratchFolder folder("vulkan-dry-run");
   const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none"});
