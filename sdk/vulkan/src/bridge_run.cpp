@@ -55,14 +55,9 @@ double frame_time(pfx_vk_bridge* bridge) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - bridge->first_run).count();
 }
 
-// Whether the chain would change this frame. When it would not (no effect on, or every effect a
-// no-op with its values) and the caller wants no read-back, the image is left as it is: no copy
-// in, no pass, no copy back.
+// Whether the chain would change this frame: it would not with no effect on, or every effect a
+// no-op with its values.
 bool runs_passes(pfx_vk_bridge* bridge, const pfx_vk_image& image, bool* passes, std::string* error) {
-  if (image.app_pixels || image.result_pixels) {
-    *passes = true;
-    return true;
-  }
   const double time_seconds = frame_time(bridge);
   bool planned = false;
   std::string worker_error;
@@ -85,9 +80,10 @@ bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* er
   std::string worker_error;
   if (!bridge->worker->run(
           [&] {
-            ran = bridge->gl->run(host_bytes, int(image.width), int(image.height),
-                                  GlFrame::Texels{is_bgra(image.format), is_ten_bit(image.format)}, bridge->transfer, time_seconds, bridge->frames,
-                                  GlFrame::Readback{image.app_pixels, image.result_pixels}, error);
+            const GlFrame::Texels texels{is_bgra(image.format), is_ten_bit(image.format)};
+            ran = bridge->gl->run(host_bytes, int(image.width), int(image.height), texels, bridge->transfer,
+                                  time_seconds, bridge->frames, GlFrame::Readback{image.app_pixels, image.result_pixels},
+                                  error);
             const host::FrameReport& report = bridge->gl->report();
             bridge->timing = report.timing;
             bridge->times = report.times;
@@ -123,7 +119,9 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
     bridge->transport->copy_out(*image, false, false, &error);
     return PFX_VK_CHAIN_FAILED;
   }
-  if (!passes) {
+  // A frame the chain would not change is left in the image as it is (no copy in, no pass, no copy
+  // back) unless the caller wants it read back.
+  if (!passes && !image->app_pixels && !image->result_pixels) {
     ++bridge->frames;
     return bridge->transport->copy_out(*image, false, false, &bridge->last_error) ? PFX_VK_OK : PFX_VK_VULKAN_FAILED;
   }
@@ -134,7 +132,7 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
   }
   const bool ran = vk::run_chain(bridge, *image, &error);
   if (!ran) bridge->last_error = error;
-  bridge->ran_passes = ran;
+  bridge->ran_passes = ran && passes;
   if (!bridge->transport->copy_out(*image, true, ran && !bridge->dry_run, &error)) {
     bridge->last_error = error;
     return PFX_VK_VULKAN_FAILED;
