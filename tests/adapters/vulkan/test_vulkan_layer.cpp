@@ -429,10 +429,12 @@ TEST_CASE("mpv playing through its Vulkan output shows bloom, the frame pfx-rend
                                    "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("mpv.log"),
                                    "PFX_INJECT_CAPTURE=10:" + folder.file("mpv")};
   add_sanitizer_runtime(&argv);
-  // A clip made by FFmpeg's test source inside mpv (colour bars, a moving gradient, a clock).
+  // A clip made by FFmpeg's test source inside mpv (colour bars, a moving gradient, a clock), every
+  // frame shown and none dropped however loaded the machine is, so that the 10th present exists.
   for (const std::string& arg : {std::string(PFX_MPV), std::string("--no-config"), std::string("--really-quiet"),
                                  std::string("--vo=gpu"), std::string("--gpu-api=vulkan"), "--vulkan-device=" + device,
-                                 std::string("--no-audio"), std::string("--frames=15"),
+                                 std::string("--no-audio"), std::string("--untimed"), std::string("--framedrop=no"),
+                                 std::string("--frames=15"),
                                  std::string("av://lavfi:testsrc2=size=320x240:rate=25:duration=1")})
     argv.push_back(arg);
   const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
