@@ -15,6 +15,8 @@
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
+#include "layout_barrier.h"
+
 typedef struct context {
   VkInstance instance;
   VkPhysicalDevice physical_device;
@@ -159,20 +161,6 @@ static int make_image(const context* c, VkFormat format, uint32_t width, uint32_
     return 0;
   vkBindBufferMemory(c->device, g->buffer, g->buffer_memory, 0);
   return vkMapMemory(c->device, g->buffer_memory, 0, VK_WHOLE_SIZE, 0, &g->mapped) == VK_SUCCESS || fail("no map");
-}
-
-static void layout_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to) {
-  VkImageMemoryBarrier barrier = {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-  barrier.oldLayout = from;
-  barrier.newLayout = to;
-  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  barrier.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-  barrier.subresourceRange.levelCount = barrier.subresourceRange.layerCount = 1;
-  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, NULL,
-                       0, NULL, 1, &barrier);
 }
 
 /* upload: buffer -> image, leaving it GENERAL (a layout an engine might hand over); else image -> buffer. */

@@ -12,6 +12,8 @@
 #include <string.h>
 #include <vulkan/vulkan.h>
 
+#include "layout_barrier.h"
+
 #define WINDOWS 2
 #define MAX_IMAGES 8
 
@@ -113,20 +115,6 @@ static int make_swapchain(VkPhysicalDevice gpu, VkDevice device, window_target* 
   return vkCreateSemaphore(device, &semaphore, NULL, &t->acquired) == VK_SUCCESS || fail("no semaphore");
 }
 
-static void barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to) {
-  VkImageMemoryBarrier b = {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-  b.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-  b.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-  b.oldLayout = from;
-  b.newLayout = to;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image;
-  b.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-  b.subresourceRange.levelCount = b.subresourceRange.layerCount = 1;
-  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, NULL, 0,
-                       NULL, 1, &b);
-}
-
 int main(int argc, char** argv) {
   const char* extensions[] = {VK_KHR_SURFACE_EXTENSION_NAME, VK_KHR_XLIB_SURFACE_EXTENSION_NAME};
   const char* device_extensions[] = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
@@ -225,9 +213,9 @@ int main(int argc, char** argv) {
       region.imageExtent.width = targets[i].width;
       region.imageExtent.height = targets[i].height;
       region.imageExtent.depth = 1;
-      barrier(commands, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+      layout_barrier(commands, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
       vkCmdCopyBufferToImage(commands, targets[i].picture, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-      barrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+      layout_barrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
     }
     vkEndCommandBuffer(commands);
     submit.waitSemaphoreCount = WINDOWS;
