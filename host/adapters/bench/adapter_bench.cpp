@@ -27,13 +27,10 @@
 #include <string>
 #include <vector>
 
-#include <glad/gl.h>
-
 #include "cli_text.hpp"
 #include "copy_pass.hpp"
 #include "exit_codes.hpp"
 #include "headless_context.hpp"
-#include "image_texture.hpp"
 #include "plugin_directory.hpp"
 
 namespace fs = std::filesystem;

@@ -1,9 +1,9 @@
 #include "numpy_image.hpp"
 
-#include "half_rounding.hpp"
-
 #include <cstring>
 #include <string>
+
+#include "half_rounding.hpp"
 
 namespace py = pybind11;
 
