@@ -69,6 +69,8 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
     case MODE_MGF: declare_mgf(settings, plan, inst->declaration); break;
     default: return PFX_INVALID_ARGUMENT;
   }
+  // Every pass samples its inputs and draws its output.
+  inst->declaration.samples_and_draws();
   return inst->declaration.finish(out);
 }
 

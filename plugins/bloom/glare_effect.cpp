@@ -101,6 +101,8 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
       .input(PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST)
       .input("streaks")
       .tag(glare_tag(GLARE_PASS_COMPOSITE, 0, 0));
+  // Every pass samples its inputs and draws its output.
+  d.samples_and_draws();
   return d.finish(out);
 }
 

@@ -191,6 +191,8 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
                   "\"mode\": \"gather\", \"samples\": %d, \"work\": \"%dx%d\", \"tiles\": \"%dx%d\", \"dilation\": %d",
                   s.samples, plan.work_width, plan.work_height, plan.tiles_width, plan.tiles_height, plan.dilation);
   }
+  // Every pass samples its inputs and draws its output.
+  d.samples_and_draws();
   return d.finish(out);
 }
 

@@ -156,6 +156,8 @@ pfx_status declare(void* self, const pfx_frame* frame, const pfx_value* params, 
                    .input(PFX_INPUT_NAME_ALBEDO, PFX_FILTER_NEAREST)
                    .tag(settings.mode == MODE_BRUTE ? (TAG_PREPARE | TAG_SHADE) : TAG_SHADE);
   if (settings.base == BASE_EMISSIVE) shade.input(PFX_INPUT_NAME_EMISSIVE, PFX_FILTER_NEAREST);
+  // The cull touches neither colour nor output; the shading samples one and draws the other.
+  d.samples_and_draws();
   return d.finish(out);
 }
 

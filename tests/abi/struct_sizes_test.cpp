@@ -24,7 +24,7 @@ const std::map<std::string, Sizes>& pinned() {
       {"pfx_param_desc", {140, 176}},   {"pfx_effect_factory", {24, 24}},
       {"pfx_effect_desc", {88, 88}},    {"pfx_frame", {200, 200}},
       {"pfx_light", {32, 32}},          {"pfx_target_desc", {40, 40}},
-      {"pfx_pass_desc", {56, 56}},      {"pfx_declaration", {40, 40}},
+      {"pfx_pass_desc", {56, 56}},      {"pfx_declaration", {40, 48}},
       {"pfx_pass_context", {68, 72}},   {"pfx_reference_factory", {24, 24}},
       {"pfx_reference_request", {64, 88}}, {"pfx_importer_factory", {24, 24}},
       {"pfx_importer_desc", {56, 56}},  {"pfx_import_request", {64, 64}},

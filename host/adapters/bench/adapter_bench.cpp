@@ -240,6 +240,10 @@ int main(int argc, char** argv) {
       {"ffmpeg", "pfx_chain bloom at strength 0 (a no-op)",
        "format=rgba,frei0r=filter_name=pfx_chain:filter_params=bloom|bloom.strength=0", "no filter (decode, to RGBA)"},
       {"ffmpeg", "pfx_bloom", "format=rgba,frei0r=filter_name=pfx_bloom", "no filter (decode, to RGBA)"},
+      {"ffmpeg", "pfx_chain chain=bloom", "format=rgba,frei0r=filter_name=pfx_chain:filter_params=bloom",
+       "no filter (decode, to RGBA)"},
+      {"ffmpeg", "pfx_chain chain=bloom,bloom", "format=rgba,frei0r=filter_name=pfx_chain:filter_params=bloom\\,bloom",
+       "pfx_chain chain=bloom"},
       {"ffmpeg", "frei0r glow", "format=rgba,frei0r=filter_name=glow", "no filter (decode, to RGBA)"},
       {"ffmpeg", "gblur sigma=8", "format=rgba,gblur=sigma=8", "no filter (decode, to RGBA)"},
       {"gst-launch-1.0", "no filter (upload, download)", "", ""},
@@ -247,6 +251,7 @@ int main(int argc, char** argv) {
       {"gst-launch-1.0", "pfxfilter bloom at strength 0 (a no-op)", "pfxfilter chain=bloom set=bloom.strength=0 !",
        "no filter (upload, download)"},
       {"gst-launch-1.0", "pfxfilter chain=bloom", "pfxfilter chain=bloom !", "no filter (upload, download)"},
+      {"gst-launch-1.0", "pfxfilter chain=bloom,bloom", "pfxfilter chain=\"bloom,bloom\" !", "pfxfilter chain=bloom"},
       {"gst-launch-1.0", "gleffects effect=glow", "gleffects effect=glow !", "no filter (upload, download)"},
   };
   auto command = [&](const Row& row, int frames) {
@@ -324,6 +329,21 @@ int main(int argc, char** argv) {
             "\", \"ms_per_frame\": " + std::to_string(row.ms_per_frame) + ", \"added_ms\": " + std::to_string(added) + "}";
   }
   json += "]}\n";
+  // A row measured from another filtered row adds a second copy of the same effect: only its
+  // passes. What the first copy added beyond that is the way in and out of pfx around it.
+  for (const auto& row : rows) {
+    const Row* once = nullptr;
+    for (const auto& other : rows)
+      if (other.host == row.host && other.name == row.baseline && !other.baseline.empty()) once = &other;
+    if (!once || !row.not_run.empty() || !once->not_run.empty()) continue;
+    double base = 0;
+    for (const auto& other : rows)
+      if (other.host == once->host && other.name == once->baseline) base = other.ms_per_frame;
+    const double around = (once->ms_per_frame - base) - (row.ms_per_frame - once->ms_per_frame);
+    std::printf("\n%s, %s: beyond its effects' passes (what it added less what the second copy added): %.2f ms, "
+                "%.2f copy passes\n",
+                row.host.c_str(), once->name.c_str(), around, around / copy);
+  }
   if (!options.json.empty()) std::ofstream(options.json) << json;
   return pfx::exit_code::kOk;
 }

@@ -1,68 +1,153 @@
 #include "display_frame.hpp"
 
+#include <algorithm>
+
 #include "image_texture.hpp"
 
 namespace pfx::gl {
+namespace {
+
+GLint internal_format(GLuint texture) {
+  GLint format = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  return format;
+}
+
+bool is_eight_bit(GLuint texture) {
+  const GLint format = internal_format(texture);
+  return format == GL_RGBA8 || format == GL_SRGB8_ALPHA8;
+}
+
+}  // namespace
 
 using app::create_texture;
 
 bool DisplayFrame::create(std::string* error) {
-  if (!transfer_.create(error)) return false;
-  glCreateFramebuffers(1, &decode_framebuffer_);
-  glCreateFramebuffers(1, &encode_framebuffer_);
+  if (!transfer_programs_.create(error)) return false;
+  glCreateFramebuffers(1, &read_framebuffer_);
+  glCreateFramebuffers(1, &draw_framebuffer_);
   return true;
 }
 
 DisplayFrame::~DisplayFrame() {
   delete_textures();
-  if (decode_framebuffer_) glDeleteFramebuffers(1, &decode_framebuffer_);
-  if (encode_framebuffer_) glDeleteFramebuffers(1, &encode_framebuffer_);
+  if (read_framebuffer_) glDeleteFramebuffers(1, &read_framebuffer_);
+  if (draw_framebuffer_) glDeleteFramebuffers(1, &draw_framebuffer_);
 }
 
 void DisplayFrame::delete_textures() {
-  const GLuint textures[] = {staging_, color_, output_};
-  if (staging_) glDeleteTextures(3, textures);
-  staging_ = color_ = output_ = 0;
+  for (GLuint* texture : {&in_.texture, &in_.srgb_view, &out_.texture, &out_.srgb_view, &wide_color_, &wide_output_}) {
+    if (*texture) glDeleteTextures(1, texture);
+    *texture = 0;
+  }
 }
 
 void DisplayFrame::resize(int width, int height) {
-  if (width == width_ && height == height_ && staging_) return;
+  if (width == width_ && height == height_ && in_.texture) return;
   delete_textures();
   width_ = width;
   height_ = height;
-  staging_ = create_texture(GL_RGBA8, width, height);
-  color_ = create_texture(GL_RGBA16F, width, height);
-  output_ = create_texture(GL_RGBA16F, width, height);
-  glNamedFramebufferTexture(decode_framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
+  for (Bytes* bytes : {&in_, &out_}) {
+    // Immutable RGBA8 storage, so that an sRGB view of it can exist (the same bits, read as sRGB).
+    bytes->texture = create_texture(GL_RGBA8, width, height);
+    glGenTextures(1, &bytes->srgb_view);
+    glTextureView(bytes->srgb_view, GL_TEXTURE_2D, bytes->texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
+  }
+}
+
+GLuint DisplayFrame::color() const { return wide_frame_ ? wide_color_ : as_read(in_); }
+GLuint DisplayFrame::output() const { return wide_frame_ ? wide_output_ : as_read(out_); }
+
+
+GLuint DisplayFrame::eight_bit_behind(GLuint texture) const {
+  for (const Bytes* bytes : {&in_, &out_})
+    if (texture && (texture == bytes->texture || texture == bytes->srgb_view)) return bytes->texture;
+  return 0;
 }
 
 void DisplayFrame::decode_bytes(const uint8_t* rgba, app::Transfer transfer) {
-  // Rows of 4-byte pixels are always 4-byte aligned; the rest of the unpack state is the
-  // context's default in every host that calls this with bytes (a context of its own).
+  transfer_ = transfer;
+  wide_frame_ = false;
+  // Row by row into GL's order: the flip costs nothing beyond the upload itself. Rows of 4-byte
+  // pixels are always 4-byte aligned; the rest of the unpack state is the context's default in
+  // every host that calls this with bytes (a context of its own).
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(staging_, 0, 0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-  decode_texture(staging_, transfer);
+  const size_t row_bytes = size_t(width_) * 4;
+  for (int y = 0; y < height_; ++y)
+    glTextureSubImage2D(in_.texture, 0, 0, height_ - 1 - y, width_, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba + row_bytes * y);
+}
+
+void DisplayFrame::decode_bytes_exact(const uint8_t* rgba, app::Transfer transfer) {
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(in_.texture, 0, 0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  decode_pass(in_.texture, transfer);
 }
 
 void DisplayFrame::decode_texture(GLuint frame_texture, app::Transfer transfer) {
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, decode_framebuffer_);
-  glViewport(0, 0, width_, height_);
-  transfer_.decode(frame_texture, transfer, height_);
+  if (is_eight_bit(frame_texture)) {
+    transfer_ = transfer;
+    wide_frame_ = false;
+    blit_flipped(frame_texture, in_.texture);
+  } else {
+    decode_pass(frame_texture, transfer);
+  }
 }
 
-void DisplayFrame::encode_texture(GLuint linear, GLuint frame_texture, app::Transfer transfer) {
-  glNamedFramebufferTexture(encode_framebuffer_, GL_COLOR_ATTACHMENT0, frame_texture, 0);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, encode_framebuffer_);
+void DisplayFrame::decode_pass(GLuint source, app::Transfer transfer) {
+  transfer_ = transfer;
+  wide_frame_ = true;
+  if (!wide_color_) wide_color_ = create_texture(GL_RGBA16F, width_, height_);
+  if (!wide_output_) wide_output_ = create_texture(GL_RGBA16F, width_, height_);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, wide_color_, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_framebuffer_);
   glViewport(0, 0, width_, height_);
-  transfer_.encode(linear, transfer, height_);
-  // Not kept attached: the texture is somebody else's and may be deleted before the next frame.
-  glNamedFramebufferTexture(encode_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+  transfer_programs_.decode(source, transfer, height_);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
-void DisplayFrame::encode_bytes(GLuint linear, app::Transfer transfer, uint8_t* rgba) {
-  encode_texture(linear, staging_, transfer);
+void DisplayFrame::blit_flipped(GLuint from, GLuint to) {
+  // The bits as they are, whatever either texture's encoding: no sRGB conversion in the blit.
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glNamedFramebufferTexture(read_framebuffer_, GL_COLOR_ATTACHMENT0, from, 0);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, to, 0);
+  glBlitNamedFramebuffer(read_framebuffer_, draw_framebuffer_, 0, 0, width_, height_, 0, height_, width_, 0,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  // Not kept attached: the host's texture may be deleted before the next frame.
+  glNamedFramebufferTexture(read_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+}
+
+void DisplayFrame::encode_pass(GLuint result, GLuint frame_texture, app::Transfer transfer) {
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, frame_texture, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_framebuffer_);
+  glViewport(0, 0, width_, height_);
+  transfer_programs_.encode(result, transfer, height_);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+}
+
+void DisplayFrame::encode_texture(GLuint result, GLuint frame_texture, app::Transfer transfer) {
+  const GLuint bytes = eight_bit_behind(result);
+  if (bytes && is_eight_bit(frame_texture)) blit_flipped(bytes, frame_texture);
+  else encode_pass(result, frame_texture, transfer);
+}
+
+void DisplayFrame::encode_bytes(GLuint result, app::Transfer transfer, uint8_t* rgba) {
+  GLuint bytes = eight_bit_behind(result);
+  if (!bytes) {
+    // A linear result (RGBA16F): encoded by the pass, which also flips.
+    encode_pass(result, out_.texture, transfer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(out_.texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, width_ * height_ * 4, rgba);
+    return;
+  }
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(staging_, 0, GL_RGBA, GL_UNSIGNED_BYTE, width_ * height_ * 4, rgba);
+  glGetTextureImage(bytes, 0, GL_RGBA, GL_UNSIGNED_BYTE, width_ * height_ * 4, rgba);
+  // GL's bottom row first back to the top row first, in place.
+  const size_t row_bytes = size_t(width_) * 4;
+  for (int y = 0; y < height_ / 2; ++y)
+    std::swap_ranges(rgba + row_bytes * y, rgba + row_bytes * (y + 1), rgba + row_bytes * (height_ - 1 - y));
 }
 
 }  // namespace pfx::gl

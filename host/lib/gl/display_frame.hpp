@@ -1,13 +1,22 @@
-// An 8-bit display-referred frame (a video frame, a PNG) on its way through the chain: decoded
-// into the chain's linear RGBA16F `color`, and the chain's result encoded back to the frame's
-// bits, both with transfer_programs, so every host of such frames (pfx-render with an 8-bit
-// --input, the frei0r plugins, the GStreamer element) gives the same bytes for the same frame.
+// An 8-bit display-referred frame (a video frame, a PNG) on its way through the chain, so every
+// host of such frames (pfx-render with an 8-bit --input, the frei0r plugins, the GStreamer element,
+// the OBS filter, Python, the Vulkan bridge) gives the same bytes for the same frame.
+//
+// The frame stays 8-bit: its bytes (or the host's texture, by a blit) land in an RGBA8 texture,
+// and the chain reads it as it is, through an sRGB view for the sRGB transfer (sampling decodes
+// it: libpfxhost's FrameTextures); the chain's result is drawn into another such texture (drawing
+// encodes) and handed back the same way. No pass of pfx's own converts the frame unless an effect
+// at either end of the chain did not promise to only sample and draw it, and then the chain does
+// that one conversion (pfx/effect.h, PFX_DECLARATION_SAMPLES_AND_DRAWS). A host texture of
+// another format (RGB10_A2 from a 10-bit swapchain) is decoded into RGBA16F and encoded back by
+// transfer_programs, which keeps its two extra bits.
 //
 // Frames arrive top row first (video, image files, GStreamer's GL textures); the chain works on
-// GL's bottom-row-first textures, so decode and encode flip the rows. Every call with the
-// context current; the calls bind framebuffers, the viewport, a program, a vertex array and
-// texture unit 0 and leave them bound (a host inside somebody else's context wraps them in a
-// GlStateGuard).
+// GL's bottom-row-first textures, so the way in and the way out flip the rows: bytes row by row
+// as they are uploaded and read back, textures within the blit. Every call with the context
+// current; the calls bind framebuffers, the viewport, a program, a vertex array and texture unit
+// 0, disable GL_FRAMEBUFFER_SRGB and leave all that so (a host inside somebody else's context
+// wraps them in a GlStateGuard).
 #pragma once
 
 #include <cstdint>
@@ -33,24 +42,46 @@ class DisplayFrame {
 
   // Tightly packed RGBA, 8 bits a channel, row 0 at the top, into color().
   void decode_bytes(const uint8_t* rgba, app::Transfer transfer);
-  // A texture of the frame's size holding unsigned normalised RGBA (RGBA8, RGB10_A2), row 0 at
-  // the top, into color().
+  // The same, decoded by transfer_programs with the exact curve into RGBA16F, for a host that wants
+  // the result in linear light at full precision (pfx-render writing an EXR): the GPU's own sRGB
+  // decode is exact on GPUs, but Mesa's llvmpipe approximates it (up to 2.5 % off at the darkest
+  // codes). Then color() and output() are RGBA16F; encode_bytes(output()) encodes exactly too.
+  void decode_bytes_exact(const uint8_t* rgba, app::Transfer transfer);
+  // A texture of the frame's size holding unsigned normalised RGBA (RGBA8, SRGB8_ALPHA8, RGB10_A2),
+  // row 0 at the top, into color().
   void decode_texture(GLuint frame_texture, app::Transfer transfer);
-  // `linear` (RGBA16F, the frame's size) encoded to 8 bits, read back into `rgba` (row 0 at the top).
-  void encode_bytes(GLuint linear, app::Transfer transfer, uint8_t* rgba);
-  // `linear` encoded into `frame_texture` (RGBA8 or RGB10_A2, the frame's size, row 0 at the top).
-  void encode_texture(GLuint linear, GLuint frame_texture, app::Transfer transfer);
+  // The chain's result (output(), color(), or any texture of the frame's size holding linear light
+  // to sample) encoded to 8 bits, read back into `rgba` (row 0 at the top).
+  void encode_bytes(GLuint result, app::Transfer transfer, uint8_t* rgba);
+  // The result encoded into `frame_texture` (RGBA8, SRGB8_ALPHA8 or RGB10_A2, the frame's size, row 0
+  // at the top).
+  void encode_texture(GLuint result, GLuint frame_texture, app::Transfer transfer);
 
-  // The decoded frame and a texture of the same kind for the chain's output.
-  GLuint color() const { return color_; }
-  GLuint output() const { return output_; }
+  // What the chain reads and the texture it writes, both of the frame's size: after an 8-bit frame
+  // 8-bit textures as the transfer reads them (an sRGB view, or plain RGBA8 holding linear
+  // values), after a wider one or decode_bytes_exact RGBA16F.
+  GLuint color() const;
+  GLuint output() const;
 
  private:
+  struct Bytes {  // an RGBA8 texture and its sRGB view
+    GLuint texture = 0, srgb_view = 0;
+  };
   void delete_textures();
-  TransferPrograms transfer_;
-  GLuint staging_ = 0;           // RGBA8: the frame's bytes as they came, and as they go out
-  GLuint color_ = 0, output_ = 0;  // RGBA16F
-  GLuint decode_framebuffer_ = 0, encode_framebuffer_ = 0;
+  GLuint as_read(const Bytes& bytes) const { return transfer_ == app::Transfer::SRGB ? bytes.srgb_view : bytes.texture; }
+  // The RGBA8 texture behind `texture` when it is one of this frame's 8-bit textures, else 0.
+  GLuint eight_bit_behind(GLuint texture) const;
+  void blit_flipped(GLuint from, GLuint to);
+  void encode_pass(GLuint result, GLuint frame_texture, app::Transfer transfer);
+  // Decodes `source` (top row first) by transfer_programs into the RGBA16F colour.
+  void decode_pass(GLuint source, app::Transfer transfer);
+
+  TransferPrograms transfer_programs_;
+  Bytes in_, out_;                             // the frame as it came, and as it goes out
+  GLuint wide_color_ = 0, wide_output_ = 0;    // RGBA16F, made when a frame or host needs them
+  GLuint read_framebuffer_ = 0, draw_framebuffer_ = 0;
+  app::Transfer transfer_ = app::Transfer::SRGB;
+  bool wide_frame_ = false;                    // the last frame is RGBA16F in the chain: wider or exact
   int width_ = 0, height_ = 0;
 };
 

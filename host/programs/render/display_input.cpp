@@ -1,14 +1,17 @@
 #include "display_input.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "png_io.hpp"
 
 namespace pfx::app {
 
-std::unique_ptr<DisplayInput> DisplayInput::create(std::string* error) {
+std::unique_ptr<DisplayInput> DisplayInput::create(bool linear_result, std::string* error) {
   std::unique_ptr<DisplayInput> input(new DisplayInput);
+  input->linear_result_ = linear_result;
   if (!input->frame_.create(error)) return nullptr;
   return input;
 }
@@ -30,7 +33,8 @@ bool DisplayInput::load(const std::string& path, Transfer transfer, long long ma
     pixels = &rgba;
   }
   frame_.resize(image.width, image.height);
-  frame_.decode_bytes(pixels->data(), transfer);
+  if (linear_result_) frame_.decode_bytes_exact(pixels->data(), transfer);
+  else frame_.decode_bytes(pixels->data(), transfer);
   description_ = std::string(image.channels == 4 ? "R, G, B, A" : "R, G, B") + " (8-bit, decoded as " +
                  transfer_name(transfer) + ")";
   return true;
@@ -50,6 +54,28 @@ DisplayImage DisplayInput::encode_output(Transfer transfer) {
     encoded.channels = 3;
   }
   return encoded;
+}
+
+Image decode_display_image(const DisplayImage& encoded, Transfer transfer) {
+  // The exact piecewise sRGB curve, as the GPU's sRGB sampling reads each code.
+  std::array<float, 256> linear{};
+  for (int code = 0; code < 256; ++code) {
+    const double v = code / 255.0;
+    linear[code] = static_cast<float>(transfer == Transfer::LINEAR ? v
+                                      : v <= 0.04045            ? v / 12.92
+                                                                 : std::pow((v + 0.055) / 1.055, 2.4));
+  }
+  Image image;
+  image.width = encoded.width;
+  image.height = encoded.height;
+  const size_t count = static_cast<size_t>(encoded.width) * encoded.height;
+  image.rgba.assign(count * 4, 1.0f);
+  for (size_t i = 0; i < count; ++i) {
+    const uint8_t* pixel = &encoded.pixels[i * encoded.channels];
+    for (int c = 0; c < 3; ++c) image.rgba[i * 4 + c] = linear[pixel[c]];
+    if (encoded.channels == 4) image.rgba[i * 4 + 3] = pixel[3] / 255.0f;
+  }
+  return image;
 }
 
 }  // namespace pfx::app

@@ -15,8 +15,13 @@ namespace pfx::app {
 
 class DisplayInput {
  public:
-  // The programs and framebuffers; the context must be current. Null with *error.
-  static std::unique_ptr<DisplayInput> create(std::string* error);
+  // The programs and framebuffers; the context must be current. Null with *error. With
+  // linear_result the result is wanted in linear light at full precision (an EXR is written): the
+  // frame is then decoded exactly into RGBA16F, rendered into RGBA16F and encoded back from it,
+  // where otherwise it stays 8-bit through the chain as in every host of 8-bit frames
+  // (display_frame.hpp); the two give PNGs within a code of each other.
+  static std::unique_ptr<DisplayInput> create(bool linear_result, std::string* error);
+  bool linear_result() const { return linear_result_; }
 
   // Reads the PNG (RGB, RGBA, grey; 16-bit files are reduced to 8 bits) and decodes it into
   // color(). False with *error "PATH: reason".
@@ -35,7 +40,11 @@ class DisplayInput {
  private:
   gl::DisplayFrame frame_;
   int channels_ = 4;
+  bool linear_result_ = false;
   std::string description_;
 };
+
+// An encoded result back in linear light, as the transfer reads it (RGBA; an RGB image opaque).
+Image decode_display_image(const DisplayImage& encoded, Transfer transfer);
 
 }  // namespace pfx::app

@@ -128,7 +128,7 @@ int run(const RenderOptions& options) {
 
   std::unique_ptr<DisplayInput> display;
   if (has_display_input(options)) {
-    display = DisplayInput::create(&message);
+    display = DisplayInput::create(wants_linear_result(options.outputs), &message);
     if (!display) return error_exit(kInternal, message);
     if (preset.exposure_ev || preset.tone)
       std::fprintf(stderr, "pfx-render: note: %s: the display settings do not apply to an 8-bit input\n",

@@ -1,5 +1,6 @@
 #include "render_output.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "cli_text.hpp"
@@ -20,12 +21,18 @@ bool render_frame(host::Chain& chain, const RenderInput& input, DisplayInput* di
   if (rendered) {
     // The pixels are read back next anyway, so waiting for the frame's times costs nothing.
     chain.wait_for_timings();
-    result->image = download_color_texture(output, width, height);
     if (display) result->encoded = display->encode_output(transfer);
     result->has_encoded = display != nullptr;
+    // An 8-bit result is read as the PNG holds it.
+    result->image = display && !display->linear_result() ? decode_display_image(result->encoded, transfer)
+                                                         : download_color_texture(output, width, height);
   }
   if (!display) delete_texture(output);
   return rendered;
+}
+
+bool wants_linear_result(const std::vector<std::string>& outputs) {
+  return std::any_of(outputs.begin(), outputs.end(), [](const std::string& path) { return !ends_with(path, ".png"); });
 }
 
 bool write_outputs(const std::vector<std::string>& paths, bool float_exr, const ToneMapSettings& tone,

@@ -18,7 +18,7 @@
 namespace pfx::app {
 
 struct RenderResult {
-  Image image;            // linear RGBA, as the chain left it
+  Image image;            // linear RGBA, as the chain left it (an 8-bit result decoded)
   DisplayImage encoded;   // an 8-bit input's result encoded back as the input was decoded
   bool has_encoded = false;
 };
@@ -27,6 +27,9 @@ struct RenderResult {
 // output texture, also encoded back with `transfer`). False with *error when the chain failed.
 bool render_frame(host::Chain& chain, const RenderInput& input, DisplayInput* display, Transfer transfer,
                   RenderResult* result, std::string* error);
+
+// Whether any of the paths is not a PNG: an 8-bit input's result is then wanted in linear light.
+bool wants_linear_result(const std::vector<std::string>& outputs);
 
 // Writes every path: .exr as half (or float with float_exr), .png the encoded result when there
 // is one, else the result tone-mapped with `tone`. Stops at the first failure, with *error.

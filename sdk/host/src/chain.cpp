@@ -308,10 +308,27 @@ bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32
     if (error) *error = message;
     return false;
   }
-  report_.peak_target_bytes = plan_.peak_target_bytes;
-  report_.unpooled_target_bytes = plan_.unpooled_target_bytes;
-  const FrameResources resources{frame, textures, output_texture, plan_, gl_->pool};
-  return execute(resources, active, error);
+  FrameResources resources{frame, textures, output_texture, plan_, gl_->pool};
+  resources.color_bound = textures.color;
+  resources.output_bound = output_texture;
+  resources.output_eight_bit = is_eight_bit_texture(output_texture);
+  if (!active.empty()) {
+    // An 8-bit frame meets the first and the last effect as it is when they promised to only
+    // sample and draw it; otherwise through the chain's RGBA16F copy on that side.
+    const auto promised = [&](int index) {
+      return (instances_[index]->declaration.flags & PFX_DECLARATION_SAMPLES_AND_DRAWS) != 0;
+    };
+    resources.widen_color = !promised(active.front()) && is_eight_bit_texture(textures.color);
+    if (resources.output_eight_bit && !promised(active.back())) {
+      resources.output_bound = gl_->conversion.wide_output(frame.width, frame.height);
+      resources.output_eight_bit = false;
+      resources.narrow_output = true;
+    }
+  }
+  const bool ran = execute(resources, active, error);
+  report_.peak_target_bytes = plan_.peak_target_bytes + gl_->conversion.bytes();
+  report_.unpooled_target_bytes = plan_.unpooled_target_bytes + gl_->conversion.bytes();
+  return ran;
 }
 
 }  // namespace pfx::host

@@ -25,16 +25,23 @@ GLuint frame_input_texture(const FrameTextures& textures, const std::string& nam
   return 0;
 }
 
-// Every effect is off or a no-op: the output is the input, at the cost of one copy.
-bool copy_color_to_output(const pfx_frame& frame, const FrameTextures& textures, GLuint output_texture,
+// Every effect is off or a no-op: the output is the input, at the cost of one copy (a draw where
+// one is 8-bit and the other not, so the values stay linear light).
+bool copy_color_to_output(const FrameResources& resources, const GlLimits& limits, FrameConversion& conversion,
                           std::string* error) {
-  glCopyImageSubData(textures.color, GL_TEXTURE_2D, 0, 0, 0, 0, output_texture, GL_TEXTURE_2D, 0, 0, 0, 0,
-                     static_cast<GLsizei>(frame.width), static_cast<GLsizei>(frame.height), 1);
+  const GLuint color = resources.textures.color, output = resources.output_texture;
+  const auto width = static_cast<GLsizei>(resources.frame.width), height = static_cast<GLsizei>(resources.frame.height);
+  if (is_eight_bit_texture(color) == resources.output_eight_bit) {
+    glCopyImageSubData(color, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+  } else {
+    GlStateScope state_scope(limits, GlStateScope::SAVE);
+    if (!conversion.draw_copy(color, output, resources.frame.width, resources.frame.height, error)) return false;
+  }
   const GLenum gl_error = glGetError();
   if (gl_error == GL_NO_ERROR) return true;
   if (error)
     *error = "copying colour to the output failed (GL error " + gl_error_text(gl_error) +
-             "): both must be RGBA16F textures of the frame size";
+             "): both must be textures of the frame size, RGBA16F or 8-bit";
   return false;
 }
 
@@ -65,6 +72,7 @@ class PassBinding {
   GLuint output_texture_ = 0, output_framebuffer_ = 0;
   uint32_t output_width_ = 0, output_height_ = 0;
   pfx_format output_format_ = PFX_FORMAT_RGBA16F;
+  bool srgb_writes_ = false;
   std::vector<pfx_bound_texture> inputs_;
 };
 
@@ -81,6 +89,7 @@ PassBinding::PassBinding(const FrameResources& resources, const PlannedPass& pla
 
 PassBinding::~PassBinding() {
   for (size_t i = 0; i < inputs_.size(); ++i) glBindSampler(static_cast<GLuint>(i), 0);
+  if (srgb_writes_) glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
 GLuint PassBinding::resolve(const ResourceRef& ref, uint32_t* width, uint32_t* height, pfx_format* format) const {
@@ -94,8 +103,13 @@ GLuint PassBinding::resolve(const ResourceRef& ref, uint32_t* width, uint32_t* h
   }
   *width = resources_.frame.width;
   *height = resources_.frame.height;
-  if (ref.kind == ResourceRef::CHAIN_OUTPUT) return resources_.output_texture;
-  if (ref.kind == ResourceRef::FRAME_INPUT) return frame_input_texture(resources_.textures, ref.frame_input);
+  if (ref.kind == ResourceRef::CHAIN_OUTPUT) {
+    if (resources_.output_eight_bit) *format = PFX_FORMAT_RGBA8;
+    return resources_.output_bound;
+  }
+  if (ref.kind == ResourceRef::FRAME_INPUT)
+    return ref.frame_input == PFX_INPUT_NAME_COLOR ? resources_.color_bound
+                                                  : frame_input_texture(resources_.textures, ref.frame_input);
   return 0;
 }
 
@@ -107,8 +121,13 @@ void PassBinding::bind_output(const PlannedPass& planned, const DeclaredPass& pa
   output_texture_ = resolve(planned.output, &output_width_, &output_height_, &output_format_);
   output_framebuffer_ = planned.output.kind == ResourceRef::POOLED
                             ? resources_.pool.framebuffer(resources_.plan.resources[planned.output.resource].slot)
-                            : resources_.pool.framebuffer_for(resources_.output_texture);
+                            : resources_.pool.framebuffer_for(output_texture_);
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_);
+  // Drawing into an sRGB output encodes (an RGBA8 one ignores it); every other target is linear.
+  if (planned.output.kind == ResourceRef::CHAIN_OUTPUT && resources_.output_eight_bit) {
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    srgb_writes_ = true;
+  }
   glViewport(0, 0, static_cast<GLsizei>(output_width_), static_cast<GLsizei>(output_height_));
   if (pass.load == PFX_LOAD_CLEAR) {
     const GLfloat zero[4] = {0, 0, 0, 0};
@@ -139,14 +158,14 @@ void PassBinding::describe(pfx_pass_context* context) const {
 
 }  // namespace
 
-bool Chain::execute(const FrameResources& resources, const std::vector<int>& active, std::string* error) {
+bool Chain::execute(FrameResources& resources, const std::vector<int>& active, std::string* error) {
   report_.passes.clear();
   report_.effect_reports.clear();
   report_.timing = timing_name(timing_);
   report_.times = times_;
   while (glGetError() != GL_NO_ERROR) {
   }  // errors of the embedding program are not ours to report
-  if (active.empty()) return copy_color_to_output(resources.frame, resources.textures, resources.output_texture, error);
+  if (active.empty()) return copy_color_to_output(resources, gl_->limits, gl_->conversion, error);
   if (transform_feedback_running()) {
     if (error) *error = "transform feedback is active: end or pause it before render()";
     return false;
@@ -155,8 +174,27 @@ bool Chain::execute(const FrameResources& resources, const std::vector<int>& act
   // unless a GlStateGuard of the host saved it already and will put it back.
   GlStateScope state_scope(gl_->limits, guards_ > 0 ? GlStateScope::SET_ONLY : GlStateScope::SAVE);
   FrameTimer timer(timing_, gl_->timer, report_.frame);
+  const uint32_t width = resources.frame.width, height = resources.frame.height;
+  // The chain's own conversions are timed and listed as passes of "chain", so a report shows them.
+  const auto converted = [&](const char* pass, bool done) {
+    timer.end_pass("chain", pass);
+    if (done) report_.passes.push_back({"chain", pass, 0.0});
+    return done;
+  };
+  if (resources.widen_color) {
+    timer.start_pass();
+    if (!converted("8-bit colour to RGBA16F", gl_->conversion.widen_color(resources.textures.color, width, height,
+                                                                         &resources.color_bound, error)))
+      return false;
+  }
   for (const PlannedPass& planned : plan_.passes)
     if (!run_pass(resources, planned, *instances_[active[planned.effect]], timer, error)) return false;
+  if (resources.narrow_output) {
+    timer.start_pass();
+    if (!converted("RGBA16F to 8-bit output", gl_->conversion.draw_copy(resources.output_bound,
+                                                                       resources.output_texture, width, height, error)))
+      return false;
+  }
   if (timing_ != Timing::OFF) last_timed_frame_ = report_.frame;
   if (timer.finish(&report_.passes, &times_)) report_.times = times_;
   collect_effect_reports(active);

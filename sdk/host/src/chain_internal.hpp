@@ -6,6 +6,7 @@
 
 #include <glad/gl.h>
 
+#include "frame_conversion.hpp"
 #include "gl_pool.hpp"
 #include "gl_state_scope.hpp"
 #include "gpu_timer.hpp"
@@ -32,6 +33,7 @@ struct Chain::GlResources {
   GlPool pool;
   GlLimits limits = GlLimits::query();
   GpuTimer timer;
+  FrameConversion conversion;
 };
 
 // The textures one render() runs over: the frame's inputs, the chain's output, the plan's pooled
@@ -39,9 +41,16 @@ struct Chain::GlResources {
 struct FrameResources {
   const pfx_frame& frame;
   const FrameTextures& textures;
-  GLuint output_texture;
+  GLuint output_texture;  // the host's
   const FramePlan& plan;
   GlPool& pool;
+  // What the first effect's "color" and the last effect's "output" are bound to this frame: the
+  // host's textures, or the chain's RGBA16F copies where the host's are 8-bit and the effect at
+  // that end did not promise PFX_DECLARATION_SAMPLES_AND_DRAWS (frame_conversion.hpp).
+  GLuint color_bound = 0, output_bound = 0;
+  bool output_eight_bit = false;  // output_bound is 8-bit: passes into it draw with GL_FRAMEBUFFER_SRGB
+  bool widen_color = false;       // color_bound is to be the chain's RGBA16F copy of the host's colour
+  bool narrow_output = false;     // output_bound is the chain's RGBA16F texture, drawn into the host's after
 };
 
 }  // namespace pfx::host

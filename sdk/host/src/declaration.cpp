@@ -114,6 +114,7 @@ bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t 
                       std::string* error) {
   Declaration result;
   result.inputs = in.inputs;
+  result.flags = in.flags;  // the host handed the plugin a struct with the field, zeroed
   if ((in.target_count && !in.targets) || (in.pass_count && !in.passes))
     return fail(error, "declaration has counts without arrays");
   // The plugin's arrays in this host's layout: a plugin built against another minor version steps
@@ -137,7 +138,7 @@ bool copy_declaration(const pfx_declaration& in, uint32_t frame_width, uint32_t 
 }
 
 bool operator==(const Declaration& a, const Declaration& b) {
-  if (a.inputs != b.inputs || a.targets.size() != b.targets.size() || a.passes.size() != b.passes.size()) return false;
+  if (a.inputs != b.inputs || a.flags != b.flags || a.targets.size() != b.targets.size() || a.passes.size() != b.passes.size()) return false;
   for (size_t i = 0; i < a.targets.size(); ++i) {
     const auto &x = a.targets[i], &y = b.targets[i];
     if (x.name != y.name || x.format != y.format || x.width != y.width || x.height != y.height) return false;

@@ -20,7 +20,7 @@ extern "C" {
 /* ---- Frame inputs, provided by the host by name ------------------------------------------------ */
 
 /* Texture names a pass may read, besides the effect's own targets. */
-#define PFX_INPUT_NAME_COLOR "color"       /* HDR linear scene colour, RGBA16F */
+#define PFX_INPUT_NAME_COLOR "color"       /* HDR linear scene colour, RGBA16F (see SAMPLES_AND_DRAWS) */
 #define PFX_INPUT_NAME_DEPTH "depth"       /* R32F or a depth texture; see pfx_depth_encoding */
 #define PFX_INPUT_NAME_NORMAL "normal"     /* world-space unit normal in RGB */
 #define PFX_INPUT_NAME_ALBEDO "albedo"     /* linear base colour in RGB */
@@ -181,8 +181,21 @@ typedef struct pfx_declaration {
   const pfx_pass_desc* passes;
   uint32_t pass_count;
   uint32_t inputs;  /* PFX_INPUT_* bits these passes need beyond the textures they name (e.g. LIGHTS) */
+  uint32_t flags;   /* PFX_DECLARATION_* promises about these passes; 0: none */ /* since 1.5 */
 } pfx_declaration;
 #define PFX_DECLARATION_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_declaration, inputs)
+
+/* Promises a declaration may make (pfx_declaration.flags, since 1.5).
+ * SAMPLES_AND_DRAWS: every pass reads "color" only through the texture unit the host bound it to
+ * (texture(), texelFetch(): never as an image, never by copying it), and writes "output" only by
+ * drawing into the framebuffer the host bound (blending and clears included: never as an image,
+ * never by copying into output_texture). The host may then hand "color" and "output" as 8-bit
+ * textures of a display frame instead of RGBA16F: an sRGB one decodes to linear values when
+ * sampled and encodes them when drawn into (the host enables GL_FRAMEBUFFER_SRGB for such a pass),
+ * a plain RGBA8 one holds linear values; either way the pass computes in linear light as before,
+ * and values outside [0, 1] written to "output" are clamped. Without the promise the host converts
+ * such a frame to RGBA16F before the effect and back after it. */
+enum { PFX_DECLARATION_SAMPLES_AND_DRAWS = 1u << 0 };
 
 /* One texture a pass reads, as bound by the host. */
 typedef struct pfx_bound_texture {

@@ -67,7 +67,7 @@ class DeclarationBuilder {
   // Forgets the last declaration (every declare starts here).
   void clear() {
     target_count_ = pass_count_ = 0;
-    frame_inputs_ = 0;
+    frame_inputs_ = flags_ = 0;
     overflowed_ = false;
   }
 
@@ -97,6 +97,10 @@ class DeclarationBuilder {
   // PFX_INPUT_* bits the passes need beyond the textures they name (PFX_INPUT_LIGHTS).
   void frame_inputs(uint32_t bits) { frame_inputs_ |= bits; }
 
+  // Promises PFX_DECLARATION_SAMPLES_AND_DRAWS (pfx/effect.h): the passes only sample "color" and
+  // only draw "output", so a display frame's 8-bit texture can be handed in and out as it is.
+  void samples_and_draws() { flags_ |= PFX_DECLARATION_SAMPLES_AND_DRAWS; }
+
   uint32_t pass_count() const { return pass_count_; }
 
   // Points out at what was declared; PFX_ERROR (and out untouched) when it did not fit.
@@ -107,6 +111,8 @@ class DeclarationBuilder {
     out->passes = passes_;
     out->pass_count = pass_count_;
     out->inputs |= frame_inputs_;
+    // A host older than 1.5 hands a declaration without the field: the promise is left unsaid.
+    if (PFX_STRUCT_HAS(out, pfx_declaration, flags)) out->flags |= flags_;
     return PFX_OK;
   }
 
@@ -143,7 +149,7 @@ class DeclarationBuilder {
   pfx_target_desc targets_[MaxTargets > 0 ? MaxTargets : 1] = {};  // (C++ has no empty arrays)
   pfx_pass_desc passes_[MaxPasses + 1] = {};
   pfx_pass_input inputs_[MaxPasses + 1][PFX_MAX_PASS_INPUTS] = {};
-  uint32_t target_count_ = 0, pass_count_ = 0, frame_inputs_ = 0;
+  uint32_t target_count_ = 0, pass_count_ = 0, frame_inputs_ = 0, flags_ = 0;
   bool overflowed_ = false;
 };
 

@@ -26,7 +26,11 @@ class FrameTimer;       // times a frame's passes under the chosen Timing
 struct FrameResources;  // the textures one render() runs over
 
 // GL textures of the frame inputs; 0 where the frame has none (frame.inputs must agree).
-// color and the chain's output are RGBA16F textures of the frame's size.
+// color and the chain's output are textures of the frame's size: RGBA16F holding linear light (what
+// the ABI promises every effect), or, for a host of 8-bit display frames, 8-bit: GL_SRGB8_ALPHA8
+// (a view of the frame's texture) holding sRGB-encoded values, or GL_RGBA8 holding linear ones. An
+// effect that promised PFX_DECLARATION_SAMPLES_AND_DRAWS then reads and writes those as they are,
+// with no pass to convert them; for the others the chain converts on that side (one draw each).
 struct FrameTextures {
   uint32_t color = 0, depth = 0, normal = 0, albedo = 0, emissive = 0;
 };
@@ -155,7 +159,7 @@ class PFX_HOST_API Chain {
   bool declare(const Instance& instance, const pfx_frame& frame, Declaration* out, std::string* error) const;
   bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
   bool update_plan(const pfx_frame& frame, const std::vector<int>& active, std::string* error);
-  bool execute(const FrameResources& resources, const std::vector<int>& active, std::string* error);
+  bool execute(FrameResources& resources, const std::vector<int>& active, std::string* error);
   // One planned pass: bind its output and inputs, run it (timed), check what it left.
   bool run_pass(const FrameResources& resources, const PlannedPass& planned, Instance& instance,
                 FrameTimer& timer, std::string* error);

@@ -39,6 +39,7 @@ struct Declaration {
   std::vector<DeclaredTarget> targets;
   std::vector<DeclaredPass> passes;
   uint32_t inputs = 0;
+  uint32_t flags = 0;  // PFX_DECLARATION_* promises
 };
 
 // Copies and resolves a plugin's declaration; false with *error naming the problem (bad sizes,

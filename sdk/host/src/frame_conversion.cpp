@@ -1,0 +1,135 @@
+#include "frame_conversion.hpp"
+
+namespace pfx::host {
+namespace {
+
+// Texel for texel: the target has the source's size, so gl_FragCoord names the source texel.
+const char* const kVertexShader =
+    "#version 450 core\n"
+    "void main() {\n"
+    "  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n"
+    "  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n"
+    "}\n";
+const char* const kFragmentShader =
+    "#version 450 core\n"
+    "layout(binding = 0) uniform sampler2D source;\n"
+    "layout(location = 0) out vec4 colour;\n"
+    "void main() { colour = texelFetch(source, ivec2(gl_FragCoord.xy), 0); }\n";
+
+GLuint compile(GLenum stage, const char* source, std::string* log) {
+  const GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char text[512] = {};
+    glGetShaderInfoLog(shader, sizeof text, nullptr, text);
+    *log = text;
+    glDeleteShader(shader);
+    return 0;
+  }
+  return shader;
+}
+
+}  // namespace
+
+bool is_eight_bit_texture(GLuint texture) {
+  GLint format = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  return format == GL_RGBA8 || format == GL_SRGB8_ALPHA8;
+}
+
+FrameConversion::~FrameConversion() {
+  release(&color_);
+  release(&output_);
+  if (program_) glDeleteProgram(program_);
+  if (target_framebuffer_) glDeleteFramebuffers(1, &target_framebuffer_);
+  if (vertex_array_) glDeleteVertexArrays(1, &vertex_array_);
+}
+
+void FrameConversion::fit(Texture* t, uint32_t width, uint32_t height) {
+  if (t->texture && t->width == width && t->height == height) return;
+  release(t);
+  glCreateTextures(GL_TEXTURE_2D, 1, &t->texture);
+  glTextureStorage2D(t->texture, 1, GL_RGBA16F, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
+  glCreateFramebuffers(1, &t->framebuffer);
+  glNamedFramebufferTexture(t->framebuffer, GL_COLOR_ATTACHMENT0, t->texture, 0);
+  t->width = width;
+  t->height = height;
+}
+
+void FrameConversion::release(Texture* t) {
+  if (t->texture) glDeleteTextures(1, &t->texture);
+  if (t->framebuffer) glDeleteFramebuffers(1, &t->framebuffer);
+  *t = Texture{};
+}
+
+bool FrameConversion::make_program(std::string* error) {
+  if (program_) return true;
+  std::string log;
+  const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader, &log);
+  const GLuint fragment = vertex ? compile(GL_FRAGMENT_SHADER, kFragmentShader, &log) : 0;
+  if (!vertex || !fragment) {
+    if (vertex) glDeleteShader(vertex);
+    *error = "the chain's copy program for 8-bit frames did not compile: " + log;
+    return false;
+  }
+  program_ = glCreateProgram();
+  glAttachShader(program_, vertex);
+  glAttachShader(program_, fragment);
+  glLinkProgram(program_);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint linked = GL_FALSE;
+  glGetProgramiv(program_, GL_LINK_STATUS, &linked);
+  if (!linked) {
+    glDeleteProgram(program_);
+    program_ = 0;
+    *error = "the chain's copy program for 8-bit frames did not link";
+    return false;
+  }
+  glCreateFramebuffers(1, &target_framebuffer_);
+  glCreateVertexArrays(1, &vertex_array_);
+  return true;
+}
+
+bool FrameConversion::widen_color(GLuint color, uint32_t width, uint32_t height, GLuint* wide, std::string* error) {
+  fit(&color_, width, height);
+  *wide = color_.texture;
+  return draw_copy(color, color_.texture, width, height, error);
+}
+
+GLuint FrameConversion::wide_output(uint32_t width, uint32_t height) {
+  fit(&output_, width, height);
+  return output_.texture;
+}
+
+bool FrameConversion::draw_copy(GLuint from, GLuint to, uint32_t width, uint32_t height, std::string* error) {
+  if (!make_program(error)) return false;
+  glNamedFramebufferTexture(target_framebuffer_, GL_COLOR_ATTACHMENT0, to, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer_);
+  glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
+  glDisable(GL_BLEND);
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  glUseProgram(program_);
+  glBindVertexArray(vertex_array_);
+  glBindTextureUnit(0, from);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Back to the state every pass starts from; the texture is the host's or ours, kept attached
+  // to nothing.
+  glBindTextureUnit(0, 0);
+  glUseProgram(0);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glNamedFramebufferTexture(target_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+  return true;
+}
+
+uint64_t FrameConversion::bytes() const {
+  uint64_t total = 0;
+  for (const Texture* t : {&color_, &output_})
+    if (t->texture) total += uint64_t(t->width) * t->height * 8;
+  return total;
+}
+
+}  // namespace pfx::host
