@@ -242,10 +242,10 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
   };
   for (const auto& prefix : work.captures) {
     std::string error;
-    if (!write_texture_exr(copy_.color(), work.width, work.height, prefix + ".app.exr", &error)) say(prefix + ".app.exr", error);
-    if (!write_texture_exr(result, work.width, work.height, prefix + ".out.exr", &error)) say(prefix + ".out.exr", error);
+    if (!write_image_exr(copy_.linear_image(copy_.color()), prefix + ".app.exr", &error)) say(prefix + ".app.exr", error);
+    if (!write_image_exr(copy_.linear_image(result), prefix + ".out.exr", &error)) say(prefix + ".out.exr", error);
   }
-  if (passes && !settings_.dry_run) copy_.copy_out(result, settings_.transfer);
+  if (passes && !settings_.dry_run) copy_.copy_out(result);
   for (const auto& prefix : work.captures) {
     std::string error;
     if (!write_presented_png(copy_.read_back_buffer(), prefix + ".png", &error)) say(prefix + ".png", error);

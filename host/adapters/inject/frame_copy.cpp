@@ -6,6 +6,8 @@
 
 #include <pfx/cpp/gl_program.hpp>
 
+#include "display_transfer.hpp"
+
 namespace pfx::inject {
 namespace {
 
@@ -35,7 +37,6 @@ void draw_fullscreen(GLuint program, GLuint texture) {
 }  // namespace
 
 bool FrameCopy::create(std::string* error) {
-  if (!transfer_.create(error)) return false;
   std::string message;
   copy_program_ = pfx::gl::build_fullscreen_program(kCopyShader, &message);
   if (!copy_program_) {
@@ -44,23 +45,24 @@ bool FrameCopy::create(std::string* error) {
   }
   glCreateVertexArrays(1, &vertex_array_);
   glCreateFramebuffers(1, &read_framebuffer_);
-  glCreateFramebuffers(1, &decode_framebuffer_);
+  glCreateFramebuffers(1, &out_framebuffer_);
   glCreateFramebuffers(1, &scratch_framebuffer_);
   return true;
 }
 
 FrameCopy::~FrameCopy() {
   delete_targets();
-  const GLuint framebuffers[] = {read_framebuffer_, decode_framebuffer_, scratch_framebuffer_};
+  const GLuint framebuffers[] = {read_framebuffer_, out_framebuffer_, scratch_framebuffer_};
   glDeleteFramebuffers(3, framebuffers);
   glDeleteVertexArrays(1, &vertex_array_);
   glDeleteProgram(copy_program_);
 }
 
 void FrameCopy::delete_targets() {
-  const GLuint textures[] = {back_buffer_copy_, color_, output_, depth_};
-  glDeleteTextures(4, textures);
-  back_buffer_copy_ = color_ = output_ = depth_ = 0;
+  const GLuint textures[] = {colour_in_.texture, colour_in_.srgb_view, colour_out_.texture, colour_out_.srgb_view, depth_};
+  glDeleteTextures(5, textures);
+  colour_in_ = colour_out_ = Bytes{};
+  depth_ = 0;
 }
 
 // A depth blit needs the same format on both sides, so the copy takes the default framebuffer's.
@@ -90,19 +92,21 @@ void FrameCopy::choose_depth_format() {
 }
 
 void FrameCopy::resize(int width, int height) {
-  if (width == width_ && height == height_ && back_buffer_copy_) return;
+  if (width == width_ && height == height_ && colour_in_.texture) return;
   delete_targets();
   width_ = width;
   height_ = height;
-  back_buffer_copy_ = make_texture(GL_RGBA8, width, height);
-  color_ = make_texture(GL_RGBA16F, width, height);
-  output_ = make_texture(GL_RGBA16F, width, height);
+  for (Bytes* bytes : {&colour_in_, &colour_out_}) {
+    // Immutable RGBA8 storage, so that an sRGB view of it can exist (the same bits, read as sRGB).
+    bytes->texture = make_texture(GL_RGBA8, width, height);
+    glGenTextures(1, &bytes->srgb_view);
+    glTextureView(bytes->srgb_view, GL_TEXTURE_2D, bytes->texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
+  }
   choose_depth_format();
   if (depth_format_) depth_ = make_texture(depth_format_, width, height);
-  glNamedFramebufferTexture(read_framebuffer_, GL_COLOR_ATTACHMENT0, back_buffer_copy_, 0);
+  glNamedFramebufferTexture(read_framebuffer_, GL_COLOR_ATTACHMENT0, colour_in_.texture, 0);
   const bool stencil = depth_format_ == GL_DEPTH24_STENCIL8 || depth_format_ == GL_DEPTH32F_STENCIL8;
   glNamedFramebufferTexture(read_framebuffer_, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth_, 0);
-  glNamedFramebufferTexture(decode_framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
 }
 
 void FrameCopy::copy_depth_in() {
@@ -131,6 +135,8 @@ bool FrameCopy::copy_colour_in(Transfer transfer, std::string* error) {
   glGetIntegerv(GL_READ_BUFFER, &read_buffer);
   glReadBuffer(GL_BACK);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, read_framebuffer_);
+  // The bits as they are: an sRGB-capable back buffer is neither decoded nor encoded.
+  glDisable(GL_FRAMEBUFFER_SRGB);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   const GLenum colour_error = glGetError();
   glReadBuffer(static_cast<GLenum>(read_buffer));
@@ -138,20 +144,36 @@ bool FrameCopy::copy_colour_in(Transfer transfer, std::string* error) {
     *error = "copying the back buffer failed (GL error " + std::to_string(colour_error) + ")";
     return false;
   }
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, decode_framebuffer_);
-  glViewport(0, 0, width_, height_);
-  transfer_.decode(back_buffer_copy_, transfer);
+  transfer_ = transfer;
   return true;
 }
 
-void FrameCopy::copy_out(GLuint texture, Transfer transfer) {
+void FrameCopy::copy_out(GLuint texture) {
+  const GLuint bytes = texture == output() ? colour_out_.texture : colour_in_.texture;
+  glNamedFramebufferTexture(out_framebuffer_, GL_COLOR_ATTACHMENT0, bytes, 0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, out_framebuffer_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   GLint draw_buffer = GL_BACK;
   glGetIntegerv(GL_DRAW_BUFFER, &draw_buffer);
   glDrawBuffer(GL_BACK);
-  glViewport(0, 0, width_, height_);
-  transfer_.encode(texture, transfer);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glDrawBuffer(static_cast<GLenum>(draw_buffer));
+}
+
+app::Image FrameCopy::linear_image(GLuint texture) const {
+  const GLuint bytes = texture == output() ? colour_out_.texture : colour_in_.texture;
+  std::vector<std::uint8_t> rows(static_cast<size_t>(width_) * height_ * 4);
+  glGetTextureImage(bytes, 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rows.size()), rows.data());
+  app::DisplayImage image;
+  image.width = width_;
+  image.height = height_;
+  image.channels = 4;
+  image.pixels.resize(rows.size());
+  const size_t row_bytes = static_cast<size_t>(width_) * 4;
+  for (int y = 0; y < height_; ++y)  // GL's rows start at the bottom; an image's at the top
+    std::copy_n(&rows[row_bytes * (height_ - 1 - y)], row_bytes, &image.pixels[row_bytes * y]);
+  return app::decode_display_image(image, transfer_);
 }
 
 app::DisplayImage FrameCopy::read_back_buffer() const {
@@ -178,7 +200,7 @@ app::DisplayImage FrameCopy::read_back_buffer() const {
 }
 
 double FrameCopy::copy_pass_ms(int repeats) {
-  GLuint target = make_texture(GL_RGBA16F, width_, height_);
+  GLuint source = make_texture(GL_RGBA16F, width_, height_), target = make_texture(GL_RGBA16F, width_, height_);
   glNamedFramebufferTexture(scratch_framebuffer_, GL_COLOR_ATTACHMENT0, target, 0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scratch_framebuffer_);
   glViewport(0, 0, width_, height_);
@@ -187,12 +209,13 @@ double FrameCopy::copy_pass_ms(int repeats) {
   for (int i = 0; i < repeats; ++i) {
     glFinish();
     const auto start = std::chrono::steady_clock::now();
-    draw_fullscreen(copy_program_, color_);
+    draw_fullscreen(copy_program_, source);
     glFinish();
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
   glNamedFramebufferTexture(scratch_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
   glDeleteTextures(1, &target);
+  glDeleteTextures(1, &source);
   std::sort(times.begin(), times.end());
   return times.empty() ? 0 : times[times.size() / 2];
 }

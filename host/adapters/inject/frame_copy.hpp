@@ -1,8 +1,11 @@
 // Moving the application's frame into the chain and the chain's result back: the back buffer's
-// colour (and depth, when the default framebuffer has one) copied into textures, the 8-bit values
-// decoded to linear light in RGBA16F for the chain's `color`, and the chain's output encoded back
-// into the back buffer. Runs inside a GlStateGuard; touches only its own objects and the default
-// framebuffer's read and draw buffer, which it puts back.
+// colour (and depth, when the default framebuffer has one) blitted into textures, the colour kept
+// 8-bit and handed to the chain as libpfxhost takes a display frame (an sRGB view that decodes as
+// it is sampled, or the plain bytes for linear codes), and the chain's 8-bit output (drawn with
+// sRGB writes) blitted back into the back buffer. No pass converts the frame unless an effect at
+// an end of the chain did not promise to only sample and draw it (the chain converts then). Runs
+// inside a GlStateGuard; touches only its own objects, GL_FRAMEBUFFER_SRGB (off for the blits)
+// and the default framebuffer's read and draw buffer, which it puts back.
 #pragma once
 
 #include <string>
@@ -11,13 +14,13 @@
 
 #include "image.hpp"
 #include "inject_settings.hpp"
-#include "transfer_programs.hpp"
 
 namespace pfx::inject {
 
 class FrameCopy {
  public:
-  // Compiles the two programs; false with *error (the context lacks what they need).
+  // Compiles the copy program of the bench's unit; false with *error (the context lacks what it
+  // needs).
   bool create(std::string* error);
   ~FrameCopy();  // the context must be current
 
@@ -39,15 +42,20 @@ class FrameCopy {
   // depth (has_depth() turns false). Apart from the colour: depth decides whether the chain runs
   // passes at all, and the colour is copied only when it does.
   void copy_depth_in();
-  // Copies the back buffer into color(), decoded as `transfer` says. False with *error when GL
-  // refused.
+  // Copies the back buffer into color(), which reads it as `transfer` says. False with *error
+  // when GL refused.
   bool copy_colour_in(Transfer transfer, std::string* error);
-  // Encodes `texture` (RGBA16F, the frame's size) into the back buffer.
-  void copy_out(GLuint texture, Transfer transfer);
+  // Copies `texture` (color() or output()) into the back buffer.
+  void copy_out(GLuint texture);
 
-  GLuint color() const { return color_; }
+  // 8-bit textures of the frame's size, as the chain reads and writes them for the transfer given
+  // to copy_colour_in: sRGB views, or the plain RGBA8 textures for linear codes.
+  GLuint color() const { return transfer_ == Transfer::SRGB ? colour_in_.srgb_view : colour_in_.texture; }
+  GLuint output() const { return transfer_ == Transfer::SRGB ? colour_out_.srgb_view : colour_out_.texture; }
   GLuint depth() const { return depth_; }
-  GLuint output() const { return output_; }
+  // color() or output() in linear light, row 0 at the top (decoded with the exact curve), for
+  // captures.
+  app::Image linear_image(GLuint texture) const;
   // The back buffer as it will be presented, row 0 at the top.
   app::DisplayImage read_back_buffer() const;
   // Median time of one full-frame RGBA16F copy pass (glFinish and a clock), the unit the
@@ -55,14 +63,17 @@ class FrameCopy {
   double copy_pass_ms(int repeats);
 
  private:
+  struct Bytes {  // an RGBA8 texture and its sRGB view
+    GLuint texture = 0, srgb_view = 0;
+  };
   void delete_targets();
   void choose_depth_format();
-  gl::TransferPrograms transfer_;
   GLuint copy_program_ = 0, vertex_array_ = 0;
-  GLuint back_buffer_copy_ = 0;   // RGBA8: the back buffer's bytes as they are
-  GLuint color_ = 0, output_ = 0; // RGBA16F
+  Bytes colour_in_;               // the back buffer's bytes as they are
+  Bytes colour_out_;              // the chain's result, as it will be presented
+  Transfer transfer_ = Transfer::SRGB;
   GLuint depth_ = 0;              // the default framebuffer's depth format, or 0
-  GLuint read_framebuffer_ = 0, decode_framebuffer_ = 0, scratch_framebuffer_ = 0;
+  GLuint read_framebuffer_ = 0, out_framebuffer_ = 0, scratch_framebuffer_ = 0;
   GLenum depth_format_ = 0;
   bool depth_lost_ = false;
   std::string depth_description_;

@@ -23,7 +23,6 @@ struct Filter {
   // On the graphics thread:
   std::unique_ptr<adapters::TextureFilter> gl;
   gs_texrender_t* input = nullptr;
-  GLuint codes = 0;  // the input's bytes, RGBA8 (OBS's own 8-bit formats are unsized or sRGB)
   gs_texture_t* output = nullptr;
   uint32_t width = 0, height = 0;
   adapters::ChainSettings frame_settings;  // the graphics thread's copy of settings at frame_revision
@@ -59,7 +58,6 @@ void release_graphics(Filter* filter) {
   obs_enter_graphics();
   filter->gl.reset();
   gs_texrender_destroy(filter->input);
-  glDeleteTextures(1, &filter->codes);
   gs_texture_destroy(filter->output);
   obs_leave_graphics();
 }
@@ -178,21 +176,15 @@ void video_render(void* data, gs_effect_t*) {
   }
   if (!filter->output || filter->width != width || filter->height != height) {
     gs_texture_destroy(filter->output);
-    glDeleteTextures(1, &filter->codes);
     filter->output = gs_texture_create(width, height, GS_RGBA, 1, nullptr, GS_RENDER_TARGET);
-    glCreateTextures(GL_TEXTURE_2D, 1, &filter->codes);
-    glTextureStorage2D(filter->codes, 1, GL_RGBA8, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
     filter->width = width;
     filter->height = height;
   }
   gs_texture_t* input = gs_texrender_get_texture(filter->input);
   // OBS's 8-bit textures have sRGB formats that sources draw into with sRGB writes: the stored
-  // bytes are the frame's codes. Sampling such a texture would decode them, so the bytes are
-  // copied as they are into a plain RGBA8 texture for pfx's own decode. The result is encoded
-  // into an sRGB texture too (pfx writes with sRGB writes off), which OBS draws without decoding.
-  glCopyImageSubData(gl_name(input), GL_TEXTURE_2D, 0, 0, 0, 0, filter->codes, GL_TEXTURE_2D, 0, 0, 0, 0,
-                     static_cast<GLsizei>(width), static_cast<GLsizei>(height), 1);
-  const bool ok = filter->gl->process(settings, revision, filter->codes, gl_name(filter->output),
+  // bytes are the frame's codes. pfx takes them, and gives its result, as bytes (a blit with sRGB
+  // writes off moves bits), into an sRGB texture too, which OBS draws without decoding.
+  const bool ok = filter->gl->process(settings, revision, gl_name(input), gl_name(filter->output),
                                       static_cast<int>(width), static_cast<int>(height), time_seconds, &warning,
                                       &error);
   settled_warning(filter, warning, revision);

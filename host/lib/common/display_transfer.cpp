@@ -1,5 +1,8 @@
 #include "display_transfer.hpp"
 
+#include <array>
+#include <cmath>
+
 namespace pfx::app {
 
 bool parse_transfer(const std::string& text, Transfer* out, std::string* error) {
@@ -13,5 +16,27 @@ bool parse_transfer(const std::string& text, Transfer* out, std::string* error) 
 }
 
 const char* transfer_name(Transfer transfer) { return transfer == Transfer::SRGB ? "srgb" : "linear"; }
+
+Image decode_display_image(const DisplayImage& encoded, Transfer transfer) {
+  // The exact piecewise sRGB curve (IEC 61966-2-1).
+  std::array<float, 256> linear{};
+  for (int code = 0; code < 256; ++code) {
+    const double v = code / 255.0;
+    linear[code] = static_cast<float>(transfer == Transfer::LINEAR ? v
+                                      : v <= 0.04045            ? v / 12.92
+                                                                 : std::pow((v + 0.055) / 1.055, 2.4));
+  }
+  Image image;
+  image.width = encoded.width;
+  image.height = encoded.height;
+  const size_t count = static_cast<size_t>(encoded.width) * encoded.height;
+  image.rgba.assign(count * 4, 1.0f);
+  for (size_t i = 0; i < count; ++i) {
+    const uint8_t* pixel = &encoded.pixels[i * encoded.channels];
+    for (int c = 0; c < 3; ++c) image.rgba[i * 4 + c] = linear[pixel[c]];
+    if (encoded.channels == 4) image.rgba[i * 4 + 3] = pixel[3] / 255.0f;
+  }
+  return image;
+}
 
 }  // namespace pfx::app

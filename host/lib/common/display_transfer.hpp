@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "image.hpp"
+
 namespace pfx::app {
 
 enum class Transfer {
@@ -16,5 +18,10 @@ enum class Transfer {
 // "srgb" or "linear"; false with *error naming what was given.
 bool parse_transfer(const std::string& text, Transfer* out, std::string* error);
 const char* transfer_name(Transfer transfer);
+
+// 8-bit codes back in linear light with the exact curve, as the transfer reads them: RGBA, an RGB
+// image opaque, alpha never curved; rows in the image's order. For reports and captures of frames
+// the GPU kept in 8 bits.
+Image decode_display_image(const DisplayImage& encoded, Transfer transfer);
 
 }  // namespace pfx::app

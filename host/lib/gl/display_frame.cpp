@@ -7,15 +7,13 @@
 namespace pfx::gl {
 namespace {
 
-GLint internal_format(GLuint texture) {
-  GLint format = 0;
-  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-  return format;
-}
-
+// RGBA8, SRGB8_ALPHA8 or an unsized RGBA of bytes: a blit moves its bits as they are.
 bool is_eight_bit(GLuint texture) {
-  const GLint format = internal_format(texture);
-  return format == GL_RGBA8 || format == GL_SRGB8_ALPHA8;
+  GLint red = 0, alpha = 0, type = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_RED_SIZE, &red);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_ALPHA_SIZE, &alpha);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_RED_TYPE, &type);
+  return red == 8 && alpha == 8 && type == GL_UNSIGNED_NORMALIZED;
 }
 
 }  // namespace

@@ -44,7 +44,4 @@ class DisplayInput {
   std::string description_;
 };
 
-// An encoded result back in linear light, as the transfer reads it (RGBA; an RGB image opaque).
-Image decode_display_image(const DisplayImage& encoded, Transfer transfer);
-
 }  // namespace pfx::app

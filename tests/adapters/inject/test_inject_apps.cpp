@@ -9,6 +9,8 @@
 #include <thread>
 
 #include "inject_run.hpp"
+#include "png_io.hpp"
+#include "tonemap.hpp"
 
 using namespace pfx::test;
 
@@ -57,10 +59,9 @@ TEST_CASE("glmark2: with every effect off the presented frame is the application
   check_round_trip(glmark2_scene("shading"), "linear");
 }
 
-TEST_CASE("a captured frame run through pfx-render gives the injector's output, and the chain visibly changed it") {
+TEST_CASE("a captured frame run through pfx-render gives the injector's presented frame, and the chain visibly changed it") {
   ScratchFolder folder("capture");
-  // Every value the two hosts could start differently is set: pfx-inject starts from the
-  // display-referred defaults (the knee among them), pfx-render reading an EXR from scene-referred.
+  // Every value the two hosts could start differently is set.
   const std::vector<std::string> look = {"--chain", "bloom", "--set", "bloom.threshold=0.4", "--set", "bloom.knee=0",
                                          "--set", "bloom.strength=2"};
   std::vector<std::string> args = look;
@@ -68,12 +69,24 @@ TEST_CASE("a captured frame run through pfx-render gives the injector's output, 
   const InjectRun run = run_injected(folder, "chain", args, glmark2_scene("shading"));
   INFO(run.result.output << run.log);
   REQUIRE(run.result.exit_code == 0);
-  std::vector<std::string> render = {PFX_RENDER, "--input", folder.file("shot.app.exr"), "--out", folder.file("render.exr")};
+  // The frame as the chain received it, back in 8-bit codes (the capture holds them decoded with
+  // the exact curve, which half float keeps to within 0.05 of a code): what pfx-render takes as an
+  // 8-bit frame, through the same 8-bit path as pfx-inject's.
+  const pfx::app::Image received = read_exr_file(folder.file("shot.app.exr"));
+  pfx::app::DisplayImage codes;
+  codes.width = received.width;
+  codes.height = received.height;
+  codes.channels = 3;
+  for (size_t i = 0; i < received.rgba.size(); ++i)
+    if (i % 4 != 3) codes.pixels.push_back(pfx::app::encode_srgb8(received.rgba[i]));
+  std::string error;
+  REQUIRE(pfx::app::write_png(folder.file("received.png"), codes, &error));
+  std::vector<std::string> render = {PFX_RENDER, "--input", folder.file("received.png"), "--out", folder.file("render.png")};
   render.insert(render.end(), look.begin(), look.end());
   const RunResult rendered = run_program(render);
   INFO(rendered.output);
   REQUIRE(rendered.exit_code == 0);
-  CHECK(same_pixels(read_exr_file(folder.file("render.exr")), read_exr_file(folder.file("shot.out.exr"))));
+  CHECK(same_pixels(read_png_file(folder.file("render.png")), read_png_file(folder.file("shot.png"))));
 
   const InjectRun dry = run_injected(folder, "dry", {"--dry-run", "--chain", "bloom", "--quit-after", "3", "--capture",
                                                      "3:" + folder.file("app")},
