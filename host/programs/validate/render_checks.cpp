@@ -97,4 +97,64 @@ void check_resize(const std::string& path, const std::string& effect_id, CheckRe
                    ", y=" + std::to_string(worst_at / 4 / 64) + " channel " + std::to_string(worst_at % 4));
 }
 
+namespace {
+
+// A display frame at 61x37 (odd, so a pyramid's edges show): smooth ramps, a dark corner where
+// the sRGB curve is steepest, and a bright block for effects that respond to highlights.
+pfx::app::DisplayImage display_codes() {
+  const int w = 61, h = 37;
+  pfx::app::DisplayImage codes;
+  codes.width = w;
+  codes.height = h;
+  codes.channels = 4;
+  codes.pixels.resize(static_cast<size_t>(w) * h * 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      uint8_t* p = &codes.pixels[(static_cast<size_t>(y) * w + x) * 4];
+      const bool block = x > 38 && x < 48 && y > 8 && y < 20;
+      p[0] = block ? 255 : static_cast<uint8_t>(x * 255 / (w - 1));
+      p[1] = block ? 250 : static_cast<uint8_t>(y * 255 / (h - 1));
+      p[2] = block ? 240 : static_cast<uint8_t>(x < 8 && y < 8 ? x + y : (x * y) % 256);
+      p[3] = 255;
+    }
+  return codes;
+}
+
+}  // namespace
+
+void check_display_frame(const std::string& path, const std::string& effect_id, CheckReporter& report) {
+  RenderRig rig(report, pfx::host::DefaultSet::DISPLAY_REFERRED);
+  if (!open_with_effect(rig, path, effect_id)) return;
+  const pfx::app::DisplayImage codes = display_codes();
+  pfx::app::DisplayImage eight_bit, wide;
+  int own_passes = 0;
+  if (!rig.render_display(codes, "a 61x37 display frame", &eight_bit, &wide, &own_passes)) return;
+  if (rig.chain().report().passes.empty()) {
+    report.fact("skip", "with its display-referred defaults the effect runs no pass over an 8-bit frame");
+    return;
+  }
+  if (own_passes > 0) {
+    report.fact("skip", "the effect does not promise PFX_DECLARATION_SAMPLES_AND_DRAWS: the chain converts an "
+                        "8-bit frame for it");
+    return;
+  }
+  int worst = 0;
+  size_t worst_at = 0;
+  for (size_t i = 0; i < wide.pixels.size(); ++i) {
+    const int diff = std::abs(int(eight_bit.pixels[i]) - int(wide.pixels[i]));
+    if (diff > worst) {
+      worst = diff;
+      worst_at = i;
+    }
+  }
+  report.fact("display_frame_codes", std::to_string(worst));
+  if (worst > kDisplayFrameCodes)
+    report.problem("it promises PFX_DECLARATION_SAMPLES_AND_DRAWS, but over an 8-bit frame handed as 8-bit textures "
+                   "it gives up to " + std::to_string(worst) + " codes away from the same frame in RGBA16F (at x=" +
+                   std::to_string(worst_at / 4 % codes.width) + ", y=" + std::to_string(worst_at / 4 / codes.width) +
+                   " from the top, channel " + std::to_string(worst_at % 4) + "; at most " +
+                   std::to_string(kDisplayFrameCodes) + " allowed): does a pass read colour or write output other "
+                   "than by sampling and drawing?");
+}
+
 }  // namespace pfx::validate

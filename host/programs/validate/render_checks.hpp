@@ -21,4 +21,11 @@ void check_random(const std::string& path, const std::string& effect_id, uint64_
 // the last frame matches the first (nothing left over from the larger sizes).
 void check_resize(const std::string& path, const std::string& effect_id, CheckReporter& report);
 
+// An effect that promises PFX_DECLARATION_SAMPLES_AND_DRAWS, at its display-referred defaults,
+// over an 8-bit frame handed as 8-bit textures, against the same frame in RGBA16F encoded back on
+// the CPU: within kDisplayFrameCodes codes, and with no conversion pass of the chain's. Skipped for
+// an effect that does not promise it or runs no pass over such a frame.
+constexpr int kDisplayFrameCodes = 3;
+void check_display_frame(const std::string& path, const std::string& effect_id, CheckReporter& report);
+
 }  // namespace pfx::validate

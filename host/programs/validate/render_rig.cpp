@@ -1,14 +1,18 @@
 #include "render_rig.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <glad/gl.h>
 #include <pfx/host/gl_error.hpp>
 
 #include "camera_options.hpp"
+#include "display_transfer.hpp"
 #include "frame_description.hpp"
 #include "image_texture.hpp"
 #include "synthetic_inputs.hpp"
+#include "tonemap.hpp"
 
 namespace pfx::validate {
 namespace {
@@ -123,29 +127,47 @@ void RenderRig::remove_effect() {
   check_gl_calls(what, before);
 }
 
-bool RenderRig::render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output) {
-  const int w = input.width, h = input.height;
+pfx_frame RenderRig::describe(int w, int h) const {
   pfx_frame frame = pfx::app::describe_frame(w, h, pfx::app::kEveryInput, PFX_DEPTH_LINEAR,
                                              pfx::app::make_camera(pfx::app::CameraOptions{}, w, h));
   frame.time_seconds = 0.5;
   frame.frame_index = 1;
   frame.lights = kLights;
   frame.light_count = sizeof kLights / sizeof kLights[0];
+  return frame;
+}
 
+pfx::host::FrameTextures RenderRig::auxiliary_textures(const pfx::app::Image& input) const {
+  const int w = input.width, h = input.height;
   pfx::host::FrameTextures textures;
-  textures.color = pfx::app::upload_color_texture(input);
   textures.depth = pfx::app::upload_depth_texture(input);
   textures.normal = pfx::app::upload_color_texture(aux_frame(AuxKind::Normal, w, h));
   textures.albedo = pfx::app::upload_color_texture(aux_frame(AuxKind::Albedo, w, h));
   textures.emissive = pfx::app::upload_color_texture(aux_frame(AuxKind::Emissive, w, h));
-  const uint32_t out = pfx::app::create_color_texture(w, h);
+  return textures;
+}
 
+bool RenderRig::run_chain(const pfx_frame& frame, const pfx::host::FrameTextures& textures, uint32_t out,
+                          const std::string& label) {
   report_.step("rendering " + label);
   plugin_log_.clear();
   std::string error;
   if (before_chain_) before_chain_();
   const bool rendered = chain_->render(frame, textures, out, &error);
   if (after_chain_) after_chain_();
+  if (rendered) return true;
+  std::string log;
+  for (const std::string& line : plugin_log_) log += " | " + line;
+  problem_once(label + ": " + error + log);
+  return false;
+}
+
+bool RenderRig::render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output) {
+  const int w = input.width, h = input.height;
+  pfx::host::FrameTextures textures = auxiliary_textures(input);
+  textures.color = pfx::app::upload_color_texture(input);
+  const uint32_t out = pfx::app::create_color_texture(w, h);
+  const bool rendered = run_chain(describe(w, h), textures, out, label);
   pfx::app::Image result, seen;
   if (rendered) {
     result = pfx::app::download_color_texture(out, w, h);
@@ -154,12 +176,7 @@ bool RenderRig::render(const pfx::app::Image& input, const std::string& label, p
   }
   for (uint32_t texture : {textures.color, textures.depth, textures.normal, textures.albedo, textures.emissive, out})
     pfx::app::delete_texture(texture);
-  if (!rendered) {
-    std::string log;
-    for (const std::string& line : plugin_log_) log += " | " + line;
-    problem_once(label + ": " + error + log);
-    return false;
-  }
+  if (!rendered) return false;
 
   size_t bad = 0, first = 0;
   for (size_t i = 0; i < seen.pixel_count(); ++i)
@@ -172,6 +189,82 @@ bool RenderRig::render(const pfx::app::Image& input, const std::string& label, p
   }
   if (output) *output = std::move(result);
   return true;
+}
+
+namespace {
+
+// An immutable RGBA8 texture holding `codes` (row 0 at the top) in GL's row order, and its sRGB
+// view; or an empty one for the output.
+struct DisplayTexture {
+  GLuint texture = 0, srgb_view = 0;
+  DisplayTexture(int w, int h, const pfx::app::DisplayImage* codes) {
+    texture = pfx::app::create_texture(GL_RGBA8, w, h);
+    for (int y = 0; codes && y < h; ++y)
+      glTextureSubImage2D(texture, 0, 0, h - 1 - y, w, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                          &codes->pixels[static_cast<size_t>(y) * w * 4]);
+    glGenTextures(1, &srgb_view);
+    glTextureView(srgb_view, GL_TEXTURE_2D, texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
+  }
+  ~DisplayTexture() {
+    glDeleteTextures(1, &srgb_view);
+    glDeleteTextures(1, &texture);
+  }
+  pfx::app::DisplayImage read(int w, int h) const {
+    std::vector<uint8_t> rows(static_cast<size_t>(w) * h * 4);
+    glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rows.size()), rows.data());
+    pfx::app::DisplayImage image;
+    image.width = w;
+    image.height = h;
+    image.channels = 4;
+    image.pixels.resize(rows.size());
+    const size_t row = static_cast<size_t>(w) * 4;
+    for (int y = 0; y < h; ++y) std::copy_n(&rows[row * (h - 1 - y)], row, &image.pixels[row * y]);
+    return image;
+  }
+};
+
+}  // namespace
+
+bool RenderRig::render_display(const pfx::app::DisplayImage& codes, const std::string& label,
+                               pfx::app::DisplayImage* eight_bit, pfx::app::DisplayImage* wide, int* own_passes) {
+  const int w = codes.width, h = codes.height;
+  pfx::app::Image decoded = pfx::app::decode_display_image(codes, pfx::app::Transfer::SRGB);
+  decoded.depth = gradient_image(w, h).depth;
+  const pfx_frame frame = describe(w, h);
+  pfx::host::FrameTextures textures = auxiliary_textures(decoded);
+  bool rendered = false;
+  {
+    const DisplayTexture in(w, h, &codes), out(w, h, nullptr);
+    textures.color = in.srgb_view;
+    rendered = run_chain(frame, textures, out.srgb_view, label + " as 8-bit textures");
+    if (rendered) {
+      *eight_bit = out.read(w, h);
+      *own_passes = 0;
+      for (const auto& pass : chain_->report().passes) *own_passes += pass.effect == "chain";
+    }
+  }
+  if (rendered) {
+    textures.color = pfx::app::upload_color_texture(decoded);
+    const uint32_t out = pfx::app::create_color_texture(w, h);
+    rendered = run_chain(frame, textures, out, label + " in RGBA16F");
+    if (rendered) {
+      const pfx::app::Image result = pfx::app::download_color_texture(out, w, h);
+      wide->width = w;
+      wide->height = h;
+      wide->channels = 4;
+      wide->pixels.resize(static_cast<size_t>(w) * h * 4);
+      for (size_t i = 0; i < wide->pixels.size(); ++i) {
+        const float v = result.rgba[i];
+        wide->pixels[i] = i % 4 == 3 ? static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255))
+                                     : pfx::app::encode_srgb8(v);
+      }
+    }
+    pfx::app::delete_texture(textures.color);
+    pfx::app::delete_texture(out);
+  }
+  for (uint32_t texture : {textures.depth, textures.normal, textures.albedo, textures.emissive})
+    pfx::app::delete_texture(texture);
+  return rendered;
 }
 
 }  // namespace pfx::validate

@@ -21,7 +21,9 @@ namespace pfx::validate {
 
 class RenderRig {
  public:
-  explicit RenderRig(CheckReporter& report) : report_(report) {}
+  explicit RenderRig(CheckReporter& report,
+                     pfx::host::DefaultSet defaults = pfx::host::DefaultSet::SCENE_REFERRED)
+      : report_(report), params_(defaults) {}
   ~RenderRig();
   RenderRig(const RenderRig&) = delete;
   RenderRig& operator=(const RenderRig&) = delete;
@@ -44,6 +46,14 @@ class RenderRig {
   // output is returned in *output when given. False when the render failed or a check did.
   bool render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output = nullptr);
 
+  // A display frame (`codes`: 8-bit sRGB RGBA, row 0 at the top) rendered twice with the same
+  // values: handed to the chain as 8-bit textures (an sRGB view in and out, as the hosts of 8-bit
+  // frames hand it), and decoded with the exact curve into RGBA16F, its result encoded back on the
+  // CPU. Both results as codes (row 0 at the top); *own_passes counts the passes the chain ran
+  // of its own in the 8-bit render (its conversions). False after reporting a failed render.
+  bool render_display(const pfx::app::DisplayImage& codes, const std::string& label, pfx::app::DisplayImage* eight_bit,
+                      pfx::app::DisplayImage* wide, int* own_passes);
+
   // Called right before and right after the chain renders (after the inputs are uploaded,
   // before the output is read back): to run the chain under an engine's state.
   void set_around_chain(std::function<void()> before, std::function<void()> after) {
@@ -52,12 +62,18 @@ class RenderRig {
   }
 
   pfx::host::ParamStore& params() { return params_; }
+  const pfx::host::Chain& chain() const { return *chain_; }
   pfx::host::PluginRegistry* registry() { return registry_.get(); }
   const pfx_effect_desc* effect() const { return effect_; }
 
  private:
   // Reports a problem once per check, however many renders hit it.
   void problem_once(const std::string& text);
+  // The frame render() and render_display() describe, and its textures beside the colour.
+  pfx_frame describe(int width, int height) const;
+  pfx::host::FrameTextures auxiliary_textures(const pfx::app::Image& input) const;
+  // Runs the chain between the hooks; false after reporting.
+  bool run_chain(const pfx_frame& frame, const pfx::host::FrameTextures& textures, uint32_t out, const std::string& label);
   void check_gl_calls(const std::string& what, const GlStateSnapshot& before);
 
   CheckReporter& report_;

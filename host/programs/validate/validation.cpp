@@ -92,7 +92,7 @@ const std::vector<std::string>& plugin_check_names() {
 
 const std::vector<std::string>& effect_check_names() {
   static const std::vector<std::string> names = {"descriptors", "create/destroy", "defaults", "random params", "resize",
-                                                    "dirty state", "heap growth"};
+                                                    "8-bit frames", "dirty state", "heap growth"};
   return names;
 }
 
@@ -129,6 +129,8 @@ PluginResult validate_plugin(const std::string& path, const ValidationSettings& 
         "random params", effect, [&](CheckReporter& r) { check_random(path, effect, settings.seed, settings.runs, r); },
         settings));
     plugin.checks.push_back(run_check("resize", effect, [&](CheckReporter& r) { check_resize(path, effect, r); }, settings));
+    plugin.checks.push_back(
+        run_check("8-bit frames", effect, [&](CheckReporter& r) { check_display_frame(path, effect, r); }, settings));
     plugin.checks.push_back(
         run_check("dirty state", effect, [&](CheckReporter& r) { check_dirty_state(path, effect, r); }, settings));
     plugin.checks.push_back(

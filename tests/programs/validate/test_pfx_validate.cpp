@@ -70,6 +70,14 @@ constexpr bool kHeapCounted = true;
 #endif
 const char* const kHeapStatus = kHeapCounted ? "pass" : "skip";
 
+// What a working effect gets from a check: the heap as above, and "8-bit frames" skipped for the
+// test fixtures, which do not promise to only sample and draw.
+std::string working_status(const std::string& check) {
+  if (check == "heap growth") return kHeapStatus;
+  if (check == "8-bit frames") return "skip";
+  return "pass";
+}
+
 }  // namespace
 
 TEST_CASE("help lists every check and the exit codes", "[validate]") {
@@ -93,14 +101,14 @@ TEST_CASE("the minimal example plugin passes every check, as a table and as JSON
   CHECK(text.exit_code == 0);
   CHECK(text.out.find("check           plugin   gain     boxblur") != std::string::npos);
   CHECK(text.out.find("defaults        -        pass     pass") != std::string::npos);
-  CHECK(text.out.find("0 of 20 checks failed (seed 1, 3 random parameter sets per effect)") != std::string::npos);
+  CHECK(text.out.find("0 of 22 checks failed (seed 1, 3 random parameter sets per effect)") != std::string::npos);
 
   const nlohmann::json plugin = validate_json(PFX_TEST_MINIMAL_PLUGIN, "", 0);
   CHECK(plugin["id"] == "org.pfx.test.minimal");
   CHECK(plugin["effects"] == nlohmann::json::array({"gain", "boxblur"}));
   CHECK(plugin["passed"] == true);
-  CHECK(plugin["checks"].size() == 20);
-  for (const auto& c : plugin["checks"]) CHECK(c["status"] == (c["check"] == "heap growth" ? kHeapStatus : "pass"));
+  CHECK(plugin["checks"].size() == 22);
+  for (const auto& c : plugin["checks"]) CHECK(c["status"] == working_status(c["check"]));
 }
 
 TEST_CASE("broken_crash_in_describe: the factories check crashes, named with the call", "[validate][fixtures]") {
@@ -145,6 +153,18 @@ TEST_CASE("broken_assumes_clean_state: the dirty state check names the pixel sto
   // Its create runs in a clean context everywhere else: the other checks pass.
   for (const char* name : {"create/destroy", "defaults", "random params", "resize"})
     CHECK(check(plugin, name, "broken_assumes_clean_state")["status"] == "pass");
+}
+
+TEST_CASE("broken_false_promise: the 8-bit frames check fails an effect whose promise to only sample colour is untrue",
+          "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_false_promise"), "", 1);
+  const auto& frames = check(plugin, "8-bit frames", "broken_false_promise");
+  CHECK(frames["status"] == "FAIL");
+  CHECK(any_problem_contains(frames, "it promises PFX_DECLARATION_SAMPLES_AND_DRAWS, but over an 8-bit frame handed "
+                                     "as 8-bit textures it gives up to "));
+  // In RGBA16F its image load reads what sampling would: every other check passes it.
+  for (const auto& c : plugin["checks"])
+    if (c["check"] != "8-bit frames" && c["check"] != "heap growth") CHECK(c["status"] == "pass");
 }
 
 TEST_CASE("broken_writes_nan: the output is not finite where the input was", "[validate][fixtures]") {
@@ -208,7 +228,7 @@ TEST_CASE("broken_leaks_memory: the heap growth check fails it, naming the bytes
   const nlohmann::json plugin = validate_json(misbehaving("broken_leaks_memory"), "", kHeapCounted ? 1 : 0);
   const auto& heap = check(plugin, "heap growth", "broken_leaks_memory");
   for (const auto& c : plugin["checks"])
-    if (c["check"] != "heap growth") CHECK(c["status"] == "pass");
+    if (c["check"] != "heap growth") CHECK(c["status"] == working_status(c["check"]));
   if (!kHeapCounted) {
     CHECK(heap["status"] == "skip");
     CHECK(any_problem_contains(heap, "not run: AddressSanitizer replaces malloc"));
@@ -296,7 +316,7 @@ TEST_CASE("process state: each fixture that rearranges its host fails the check,
     // The rest of the plugin is a working effect: only this check fails (the thread left running
     // and the changed directory included, which no other check looks for).
     for (const auto& c : plugin["checks"])
-      if (c["check"] != "process state") CHECK(c["status"] == (c["check"] == "heap growth" ? kHeapStatus : "pass"));
+      if (c["check"] != "process state") CHECK(c["status"] == working_status(c["check"]));
   }
 }
 
