@@ -56,7 +56,6 @@ void DisplayFrame::resize(int width, int height) {
 GLuint DisplayFrame::color() const { return wide_frame_ ? wide_color_ : as_read(in_); }
 GLuint DisplayFrame::output() const { return wide_frame_ ? wide_output_ : as_read(out_); }
 
-
 GLuint DisplayFrame::eight_bit_behind(GLuint texture) const {
   for (const Bytes* bytes : {&in_, &out_})
     if (texture && (texture == bytes->texture || texture == bytes->srgb_view)) return bytes->texture;
@@ -132,7 +131,7 @@ void DisplayFrame::encode_texture(GLuint result, GLuint frame_texture, app::Tran
 }
 
 void DisplayFrame::encode_bytes(GLuint result, app::Transfer transfer, uint8_t* rgba) {
-  GLuint bytes = eight_bit_behind(result);
+  const GLuint bytes = eight_bit_behind(result);
   if (!bytes) {
     // A linear result (RGBA16F): encoded by the pass, which also flips.
     encode_pass(result, out_.texture, transfer);
