@@ -59,9 +59,9 @@ FrameCopy::~FrameCopy() {
 }
 
 void FrameCopy::delete_targets() {
-  const GLuint textures[] = {colour_in_.texture, colour_in_.srgb_view, colour_out_.texture, colour_out_.srgb_view, depth_};
-  glDeleteTextures(5, textures);
-  colour_in_ = colour_out_ = Bytes{};
+  colour_in_.release();
+  colour_out_.release();
+  glDeleteTextures(1, &depth_);
   depth_ = 0;
 }
 
@@ -96,12 +96,8 @@ void FrameCopy::resize(int width, int height) {
   delete_targets();
   width_ = width;
   height_ = height;
-  for (Bytes* bytes : {&colour_in_, &colour_out_}) {
-    // Immutable RGBA8 storage, so that an sRGB view of it can exist (the same bits, read as sRGB).
-    bytes->texture = make_texture(GL_RGBA8, width, height);
-    glGenTextures(1, &bytes->srgb_view);
-    glTextureView(bytes->srgb_view, GL_TEXTURE_2D, bytes->texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
-  }
+  colour_in_.create(width, height);
+  colour_out_.create(width, height);
   choose_depth_format();
   if (depth_format_) depth_ = make_texture(depth_format_, width, height);
   glNamedFramebufferTexture(read_framebuffer_, GL_COLOR_ATTACHMENT0, colour_in_.texture, 0);
@@ -149,7 +145,7 @@ bool FrameCopy::copy_colour_in(Transfer transfer, std::string* error) {
 }
 
 void FrameCopy::copy_out(GLuint texture) {
-  const GLuint bytes = texture == output() ? colour_out_.texture : colour_in_.texture;
+  const GLuint bytes = colour_out_.holds(texture) ? colour_out_.texture : colour_in_.texture;
   glNamedFramebufferTexture(out_framebuffer_, GL_COLOR_ATTACHMENT0, bytes, 0);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, out_framebuffer_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -162,17 +158,12 @@ void FrameCopy::copy_out(GLuint texture) {
 }
 
 app::Image FrameCopy::linear_image(GLuint texture) const {
-  const GLuint bytes = texture == output() ? colour_out_.texture : colour_in_.texture;
-  std::vector<std::uint8_t> rows(static_cast<size_t>(width_) * height_ * 4);
-  glGetTextureImage(bytes, 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rows.size()), rows.data());
   app::DisplayImage image;
   image.width = width_;
   image.height = height_;
   image.channels = 4;
-  image.pixels.resize(rows.size());
-  const size_t row_bytes = static_cast<size_t>(width_) * 4;
-  for (int y = 0; y < height_; ++y)  // GL's rows start at the bottom; an image's at the top
-    std::copy_n(&rows[row_bytes * (height_ - 1 - y)], row_bytes, &image.pixels[row_bytes * y]);
+  image.pixels.resize(static_cast<size_t>(width_) * height_ * 4);
+  (colour_out_.holds(texture) ? colour_out_ : colour_in_).read_top_first(image.pixels.data(), width_, height_);
   return app::decode_display_image(image, transfer_);
 }
 

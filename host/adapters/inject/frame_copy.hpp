@@ -12,6 +12,7 @@
 
 #include <glad/gl.h>
 
+#include "eight_bit_texture.hpp"
 #include "image.hpp"
 #include "inject_settings.hpp"
 
@@ -50,8 +51,8 @@ class FrameCopy {
 
   // 8-bit textures of the frame's size, as the chain reads and writes them for the transfer given
   // to copy_colour_in: sRGB views, or the plain RGBA8 textures for linear codes.
-  GLuint color() const { return transfer_ == Transfer::SRGB ? colour_in_.srgb_view : colour_in_.texture; }
-  GLuint output() const { return transfer_ == Transfer::SRGB ? colour_out_.srgb_view : colour_out_.texture; }
+  GLuint color() const { return colour_in_.as(transfer_); }
+  GLuint output() const { return colour_out_.as(transfer_); }
   GLuint depth() const { return depth_; }
   // color() or output() in linear light, row 0 at the top (decoded with the exact curve), for
   // captures.
@@ -63,14 +64,11 @@ class FrameCopy {
   double copy_pass_ms(int repeats);
 
  private:
-  struct Bytes {  // an RGBA8 texture and its sRGB view
-    GLuint texture = 0, srgb_view = 0;
-  };
   void delete_targets();
   void choose_depth_format();
   GLuint copy_program_ = 0, vertex_array_ = 0;
-  Bytes colour_in_;               // the back buffer's bytes as they are
-  Bytes colour_out_;              // the chain's result, as it will be presented
+  gl::EightBitTexture colour_in_;   // the back buffer's bytes as they are
+  gl::EightBitTexture colour_out_;  // the chain's result, as it will be presented
   Transfer transfer_ = Transfer::SRGB;
   GLuint depth_ = 0;              // the default framebuffer's depth format, or 0
   GLuint read_framebuffer_ = 0, out_framebuffer_ = 0, scratch_framebuffer_ = 0;

@@ -1,7 +1,5 @@
 #include "display_frame.hpp"
 
-#include <algorithm>
-
 #include "image_texture.hpp"
 
 namespace pfx::gl {
@@ -34,7 +32,9 @@ DisplayFrame::~DisplayFrame() {
 }
 
 void DisplayFrame::delete_textures() {
-  for (GLuint* texture : {&in_.texture, &in_.srgb_view, &out_.texture, &out_.srgb_view, &wide_color_, &wide_output_}) {
+  in_.release();
+  out_.release();
+  for (GLuint* texture : {&wide_color_, &wide_output_}) {
     if (*texture) glDeleteTextures(1, texture);
     *texture = 0;
   }
@@ -45,33 +45,25 @@ void DisplayFrame::resize(int width, int height) {
   delete_textures();
   width_ = width;
   height_ = height;
-  for (Bytes* bytes : {&in_, &out_}) {
-    // Immutable RGBA8 storage, so that an sRGB view of it can exist (the same bits, read as sRGB).
-    bytes->texture = create_texture(GL_RGBA8, width, height);
-    glGenTextures(1, &bytes->srgb_view);
-    glTextureView(bytes->srgb_view, GL_TEXTURE_2D, bytes->texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
-  }
+  in_.create(width, height);
+  out_.create(width, height);
 }
 
-GLuint DisplayFrame::color() const { return wide_frame_ ? wide_color_ : as_read(in_); }
-GLuint DisplayFrame::output() const { return wide_frame_ ? wide_output_ : as_read(out_); }
+GLuint DisplayFrame::color() const { return wide_frame_ ? wide_color_ : in_.as(transfer_); }
+GLuint DisplayFrame::output() const { return wide_frame_ ? wide_output_ : out_.as(transfer_); }
 
 GLuint DisplayFrame::eight_bit_behind(GLuint texture) const {
-  for (const Bytes* bytes : {&in_, &out_})
-    if (texture && (texture == bytes->texture || texture == bytes->srgb_view)) return bytes->texture;
+  for (const EightBitTexture* bytes : {&in_, &out_})
+    if (bytes->holds(texture)) return bytes->texture;
   return 0;
 }
 
 void DisplayFrame::decode_bytes(const uint8_t* rgba, app::Transfer transfer) {
   transfer_ = transfer;
   wide_frame_ = false;
-  // Row by row into GL's order: the flip costs nothing beyond the upload itself. Rows of 4-byte
-  // pixels are always 4-byte aligned; the rest of the unpack state is the context's default in
-  // every host that calls this with bytes (a context of its own).
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  const size_t row_bytes = size_t(width_) * 4;
-  for (int y = 0; y < height_; ++y)
-    glTextureSubImage2D(in_.texture, 0, 0, height_ - 1 - y, width_, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba + row_bytes * y);
+  // The rest of the unpack state is the context's default in every host that calls this with
+  // bytes (a context of its own).
+  in_.upload_top_first(rgba, width_, height_);
 }
 
 void DisplayFrame::decode_bytes_exact(const uint8_t* rgba, app::Transfer transfer) {
@@ -139,12 +131,7 @@ void DisplayFrame::encode_bytes(GLuint result, app::Transfer transfer, uint8_t* 
     glGetTextureImage(out_.texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, width_ * height_ * 4, rgba);
     return;
   }
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(bytes, 0, GL_RGBA, GL_UNSIGNED_BYTE, width_ * height_ * 4, rgba);
-  // GL's bottom row first back to the top row first, in place.
-  const size_t row_bytes = size_t(width_) * 4;
-  for (int y = 0; y < height_ / 2; ++y)
-    std::swap_ranges(rgba + row_bytes * y, rgba + row_bytes * (y + 1), rgba + row_bytes * (height_ - 1 - y));
+  (in_.texture == bytes ? in_ : out_).read_top_first(rgba, width_, height_);
 }
 
 }  // namespace pfx::gl

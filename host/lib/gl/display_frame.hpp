@@ -25,6 +25,7 @@
 #include <glad/gl.h>
 
 #include "display_transfer.hpp"
+#include "eight_bit_texture.hpp"
 #include "transfer_programs.hpp"
 
 namespace pfx::gl {
@@ -64,11 +65,7 @@ class DisplayFrame {
   GLuint output() const;
 
  private:
-  struct Bytes {  // an RGBA8 texture and its sRGB view
-    GLuint texture = 0, srgb_view = 0;
-  };
   void delete_textures();
-  GLuint as_read(const Bytes& bytes) const { return transfer_ == app::Transfer::SRGB ? bytes.srgb_view : bytes.texture; }
   // The RGBA8 texture behind `texture` when it is one of this frame's 8-bit textures, else 0.
   GLuint eight_bit_behind(GLuint texture) const;
   void blit_flipped(GLuint from, GLuint to);
@@ -77,7 +74,7 @@ class DisplayFrame {
   void decode_pass(GLuint source, app::Transfer transfer);
 
   TransferPrograms transfer_programs_;
-  Bytes in_, out_;                             // the frame as it came, and as it goes out
+  EightBitTexture in_, out_;                   // the frame as it came, and as it goes out
   GLuint wide_color_ = 0, wide_output_ = 0;    // RGBA16F, made when a frame or host needs them
   GLuint read_framebuffer_ = 0, draw_framebuffer_ = 0;
   app::Transfer transfer_ = app::Transfer::SRGB;

@@ -9,6 +9,7 @@
 
 #include "camera_options.hpp"
 #include "display_transfer.hpp"
+#include "eight_bit_texture.hpp"
 #include "frame_description.hpp"
 #include "image_texture.hpp"
 #include "synthetic_inputs.hpp"
@@ -191,40 +192,6 @@ bool RenderRig::render(const pfx::app::Image& input, const std::string& label, p
   return true;
 }
 
-namespace {
-
-// An immutable RGBA8 texture holding `codes` (row 0 at the top) in GL's row order, and its sRGB
-// view; or an empty one for the output.
-struct DisplayTexture {
-  GLuint texture = 0, srgb_view = 0;
-  DisplayTexture(int w, int h, const pfx::app::DisplayImage* codes) {
-    texture = pfx::app::create_texture(GL_RGBA8, w, h);
-    for (int y = 0; codes && y < h; ++y)
-      glTextureSubImage2D(texture, 0, 0, h - 1 - y, w, 1, GL_RGBA, GL_UNSIGNED_BYTE,
-                          &codes->pixels[static_cast<size_t>(y) * w * 4]);
-    glGenTextures(1, &srgb_view);
-    glTextureView(srgb_view, GL_TEXTURE_2D, texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
-  }
-  ~DisplayTexture() {
-    glDeleteTextures(1, &srgb_view);
-    glDeleteTextures(1, &texture);
-  }
-  pfx::app::DisplayImage read(int w, int h) const {
-    std::vector<uint8_t> rows(static_cast<size_t>(w) * h * 4);
-    glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rows.size()), rows.data());
-    pfx::app::DisplayImage image;
-    image.width = w;
-    image.height = h;
-    image.channels = 4;
-    image.pixels.resize(rows.size());
-    const size_t row = static_cast<size_t>(w) * 4;
-    for (int y = 0; y < h; ++y) std::copy_n(&rows[row * (h - 1 - y)], row, &image.pixels[row * y]);
-    return image;
-  }
-};
-
-}  // namespace
-
 bool RenderRig::render_display(const pfx::app::DisplayImage& codes, const std::string& label,
                                pfx::app::DisplayImage* eight_bit, pfx::app::DisplayImage* wide, int* own_passes) {
   const int w = codes.width, h = codes.height;
@@ -234,14 +201,20 @@ bool RenderRig::render_display(const pfx::app::DisplayImage& codes, const std::s
   pfx::host::FrameTextures textures = auxiliary_textures(decoded);
   bool rendered = false;
   {
-    const DisplayTexture in(w, h, &codes), out(w, h, nullptr);
+    pfx::gl::EightBitTexture in, out;
+    in.create(w, h);
+    out.create(w, h);
+    in.upload_top_first(codes.pixels.data(), w, h);
     textures.color = in.srgb_view;
     rendered = run_chain(frame, textures, out.srgb_view, label + " as 8-bit textures");
     if (rendered) {
-      *eight_bit = out.read(w, h);
+      *eight_bit = codes;
+      out.read_top_first(eight_bit->pixels.data(), w, h);
       *own_passes = 0;
       for (const auto& pass : chain_->report().passes) *own_passes += pass.effect == "chain";
     }
+    in.release();
+    out.release();
   }
   if (rendered) {
     textures.color = pfx::app::upload_color_texture(decoded);
