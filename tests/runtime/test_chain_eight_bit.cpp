@@ -13,6 +13,7 @@
 
 #include <glad/gl.h>
 
+#include "eight_bit_texture.hpp"
 #include "gl_test_support.hpp"
 
 namespace {
@@ -25,27 +26,6 @@ double linear_to_srgb_code(double linear) {
   const double l = std::clamp(linear, 0.0, 1.0);
   return 255.0 * (l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055);
 }
-
-// An RGBA8 texture (immutable, so that it can have views) and its sRGB view.
-struct EightBitTexture {
-  GLuint texture = 0, srgb_view = 0;
-  EightBitTexture(int width, int height, const std::vector<uint8_t>* bytes = nullptr) {
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-    glTextureStorage2D(texture, 1, GL_RGBA8, width, height);
-    if (bytes) glTextureSubImage2D(texture, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes->data());
-    glGenTextures(1, &srgb_view);
-    glTextureView(srgb_view, GL_TEXTURE_2D, texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
-  }
-  ~EightBitTexture() {
-    glDeleteTextures(1, &srgb_view);
-    glDeleteTextures(1, &texture);
-  }
-  std::vector<uint8_t> read(int width, int height) const {
-    std::vector<uint8_t> bytes(size_t(width) * height * 4);
-    glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bytes.size()), bytes.data());
-    return bytes;
-  }
-};
 
 // Every code in each colour channel, across a 64x12 frame (an odd mix per pixel), alpha varied.
 constexpr int kWidth = 64, kHeight = 12;
@@ -80,15 +60,22 @@ struct Rig {
   }
   // The frame through the chain, 8-bit in and out (sRGB views, or plain RGBA8 holding linear values).
   std::vector<uint8_t> render(const std::vector<uint8_t>& bytes, bool srgb) {
-    EightBitTexture in(kWidth, kHeight, &bytes), out(kWidth, kHeight);
+    const auto transfer = srgb ? pfx::app::Transfer::SRGB : pfx::app::Transfer::LINEAR;
+    pfx::gl::EightBitTexture in, out;
+    in.create(kWidth, kHeight);
+    out.create(kWidth, kHeight);
+    in.upload_top_first(bytes.data(), kWidth, kHeight);
     pfx::host::FrameTextures textures;
-    textures.color = srgb ? in.srgb_view : in.texture;
+    textures.color = in.as(transfer);
     std::string error;
-    const bool rendered =
-        chain->render(pfx::test::make_frame(kWidth, kHeight), textures, srgb ? out.srgb_view : out.texture, &error);
+    const bool rendered = chain->render(pfx::test::make_frame(kWidth, kHeight), textures, out.as(transfer), &error);
+    std::vector<uint8_t> result(bytes.size());
+    out.read_top_first(result.data(), kWidth, kHeight);
+    in.release();
+    out.release();
     INFO(error);
     REQUIRE(rendered);
-    return out.read(kWidth, kHeight);
+    return result;
   }
   std::vector<std::string> passes() const {
     std::vector<std::string> names;
