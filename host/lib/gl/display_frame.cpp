@@ -14,6 +14,12 @@ bool is_eight_bit(GLuint texture) {
   return red == 8 && alpha == 8 && type == GL_UNSIGNED_NORMALIZED;
 }
 
+// Red read as blue and blue as red (texture(), texelFetch(); not blits, which move bits).
+void swap_red_blue(GLuint texture, bool swap) {
+  glTextureParameteri(texture, GL_TEXTURE_SWIZZLE_R, swap ? GL_BLUE : GL_RED);
+  glTextureParameteri(texture, GL_TEXTURE_SWIZZLE_B, swap ? GL_RED : GL_BLUE);
+}
+
 }  // namespace
 
 using app::create_texture;
@@ -72,13 +78,16 @@ void DisplayFrame::decode_bytes_exact(const uint8_t* rgba, app::Transfer transfe
   decode_pass(in_.texture, transfer);
 }
 
-void DisplayFrame::decode_texture(GLuint frame_texture, app::Transfer transfer) {
+void DisplayFrame::decode_texture(GLuint frame_texture, app::Transfer transfer, bool bgra) {
   if (is_eight_bit(frame_texture)) {
     transfer_ = transfer;
     wide_frame_ = false;
-    blit_flipped(frame_texture, in_.texture);
+    if (bgra) swap_copy_flipped(frame_texture, in_.texture);
+    else blit_flipped(frame_texture, in_.texture);
   } else {
+    swap_red_blue(frame_texture, bgra);
     decode_pass(frame_texture, transfer);
+    swap_red_blue(frame_texture, false);
   }
 }
 
@@ -107,6 +116,18 @@ void DisplayFrame::blit_flipped(GLuint from, GLuint to) {
   glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
+void DisplayFrame::swap_copy_flipped(GLuint from, GLuint to) {
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, to, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_framebuffer_);
+  glViewport(0, 0, width_, height_);
+  swap_red_blue(from, true);
+  // The linear "decode" is the identity: each code lands on itself.
+  transfer_programs_.decode(from, app::Transfer::LINEAR, height_);
+  swap_red_blue(from, false);
+  glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+}
+
 void DisplayFrame::encode_pass(GLuint result, GLuint frame_texture, app::Transfer transfer) {
   glDisable(GL_FRAMEBUFFER_SRGB);
   glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, frame_texture, 0);
@@ -116,10 +137,18 @@ void DisplayFrame::encode_pass(GLuint result, GLuint frame_texture, app::Transfe
   glNamedFramebufferTexture(draw_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
-void DisplayFrame::encode_texture(GLuint result, GLuint frame_texture, app::Transfer transfer) {
+void DisplayFrame::encode_texture(GLuint result, GLuint frame_texture, app::Transfer transfer, bool bgra) {
   const GLuint bytes = eight_bit_behind(result);
-  if (bytes && is_eight_bit(frame_texture)) blit_flipped(bytes, frame_texture);
-  else encode_pass(result, frame_texture, transfer);
+  if (bytes && is_eight_bit(frame_texture)) {
+    if (bgra) swap_copy_flipped(bytes, frame_texture);
+    else blit_flipped(bytes, frame_texture);
+    return;
+  }
+  // The encode writes R, G, B, A through a framebuffer, where no swizzle applies: the result's
+  // channels are swapped as it is read instead.
+  swap_red_blue(result, bgra);
+  encode_pass(result, frame_texture, transfer);
+  swap_red_blue(result, false);
 }
 
 void DisplayFrame::encode_bytes(GLuint result, app::Transfer transfer, uint8_t* rgba) {

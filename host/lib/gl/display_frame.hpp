@@ -13,7 +13,8 @@
 //
 // Frames arrive top row first (video, image files, GStreamer's GL textures); the chain works on
 // GL's bottom-row-first textures, so the way in and the way out flip the rows: bytes row by row
-// as they are uploaded and read back, textures within the blit. Every call with the context
+// as they are uploaded and read back, textures within the blit (or the draw, for a texture whose
+// red and blue trade places). Every call with the context
 // current; the calls bind framebuffers, the viewport, a program, a vertex array and texture unit
 // 0, disable GL_FRAMEBUFFER_SRGB and leave all that so (a host inside somebody else's context
 // wraps them in a GlStateGuard).
@@ -49,14 +50,16 @@ class DisplayFrame {
   // codes). Then color() and output() are RGBA16F; encode_bytes(output()) encodes exactly too.
   void decode_bytes_exact(const uint8_t* rgba, app::Transfer transfer);
   // A texture of the frame's size holding unsigned normalised RGBA (RGBA8, SRGB8_ALPHA8, RGB10_A2),
-  // row 0 at the top, into color().
-  void decode_texture(GLuint frame_texture, app::Transfer transfer);
+  // row 0 at the top, into color(). `bgra`: its texels hold blue where red belongs and red where
+  // blue does (a Vulkan B8G8R8A8 or A2R10G10B10 image in memory GL reads as RGBA): the way in and
+  // out swaps them, so the chain sees and writes red as red.
+  void decode_texture(GLuint frame_texture, app::Transfer transfer, bool bgra = false);
   // The chain's result (output(), color(), or any texture of the frame's size holding linear light
   // to sample) encoded to 8 bits, read back into `rgba` (row 0 at the top).
   void encode_bytes(GLuint result, app::Transfer transfer, uint8_t* rgba);
   // The result encoded into `frame_texture` (RGBA8, SRGB8_ALPHA8 or RGB10_A2, the frame's size, row 0
-  // at the top).
-  void encode_texture(GLuint result, GLuint frame_texture, app::Transfer transfer);
+  // at the top; `bgra` as for decode_texture).
+  void encode_texture(GLuint result, GLuint frame_texture, app::Transfer transfer, bool bgra = false);
 
   // What the chain reads and the texture it writes, both of the frame's size: after an 8-bit frame
   // 8-bit textures as the transfer reads them (an sRGB view, or plain RGBA8 holding linear
@@ -69,6 +72,9 @@ class DisplayFrame {
   // The RGBA8 texture behind `texture` when it is one of this frame's 8-bit textures, else 0.
   GLuint eight_bit_behind(GLuint texture) const;
   void blit_flipped(GLuint from, GLuint to);
+  // The bits of one 8-bit texture into another, rows flipped, red and blue trading places: a blit
+  // cannot swap channels, so a draw (unsigned normalised to unsigned normalised: exact).
+  void swap_copy_flipped(GLuint from, GLuint to);
   void encode_pass(GLuint result, GLuint frame_texture, app::Transfer transfer);
   // Decodes `source` (top row first) by transfer_programs into the RGBA16F colour.
   void decode_pass(GLuint source, app::Transfer transfer);

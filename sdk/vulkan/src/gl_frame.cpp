@@ -3,13 +3,6 @@
 namespace pfx::vk {
 namespace {
 
-// B, G, R, A bytes in an RGBA8 texture read as R, G, B, A when red and blue trade places; the
-// swizzle also holds for texelFetch, so the shared transfer programs need no BGRA variant.
-void swap_red_blue(GLuint texture, bool swap) {
-  glTextureParameteri(texture, GL_TEXTURE_SWIZZLE_R, swap ? GL_BLUE : GL_RED);
-  glTextureParameteri(texture, GL_TEXTURE_SWIZZLE_B, swap ? GL_RED : GL_BLUE);
-}
-
 // The frame's bytes as R, G, B, A: a read-back ignores the swizzle, and GL_BGRA reads a texture
 // holding B, G, R, A bytes in that order.
 void read_rgba(GLuint texture, int width, int height, bool bgra, uint8_t* out) {
@@ -58,15 +51,10 @@ bool GlFrame::run(void* host_bytes, int width, int height, Texels texels, app::T
   }
   read_rgba(io, width, height, bgra, readback.app_pixels);
   frame_.resize(width, height);
-  swap_red_blue(io, bgra);
-  frame_.decode_texture(io, transfer);
+  frame_.decode_texture(io, transfer, bgra);
   GLuint result = 0;
   if (!chain_->render(frame_, time_seconds, frame_index, &result, error)) return false;
-  // The encode writes R, G, B, A through a framebuffer, where no swizzle applies: the result's
-  // channels are swapped on the way in instead.
-  swap_red_blue(result, bgra);
-  frame_.encode_texture(result, io, transfer);
-  swap_red_blue(result, false);
+  frame_.encode_texture(result, io, transfer, bgra);
   read_rgba(io, width, height, bgra, readback.result_pixels);
   if (host_bytes) {
     glGetTextureImage(io, 0, GL_RGBA, host_type, width * height * 4, host_bytes);

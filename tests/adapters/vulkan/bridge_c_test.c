@@ -3,8 +3,9 @@
  * through the bridge, reads the image back and compares it with a PNG pfx-render made from the same
  * input (within one code value).
  *
- *   bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra shared|host
+ *   bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host [SET]
  *
+ * SET: "effect.param=value" for the bridge's `set`, as pfx-render's --set took it.
  * "shared" lets the bridge share memory (and fails if it did not); "host" forces host memory.
  * Exit status 0 when every pixel's R, G and B are within one code of EXPECTED. */
 #include <stdio.h>
@@ -225,7 +226,7 @@ static int report_run(pfx_vk_bridge* bridge, const char* chain, uint32_t width, 
 }
 
 static int run_bridge(const context* c, const gpu_image* g, VkFormat format, const char* plugins, const char* chain,
-                      int host_memory, const char* want_path) {
+                      const char* set, int host_memory, const char* want_path) {
   pfx_vk_bridge_desc desc;
   pfx_vk_image image;
   pfx_vk_bridge* bridge = NULL;
@@ -242,6 +243,7 @@ static int run_bridge(const context* c, const gpu_image* g, VkFormat format, con
   desc.queue_family_index = c->family;
   desc.device_has_bridge_extensions = c->has_bridge_extensions;
   desc.chain = chain;
+  desc.set = set;
   desc.plugin_path = plugins;
   desc.flags = (host_memory ? PFX_VK_FORCE_HOST_MEMORY : 0) | PFX_VK_TIME_PASSES;
   desc.log = log_line;
@@ -317,7 +319,8 @@ int main(int argc, char** argv) {
   unsigned char *input, *want, *got;
   size_t i, pixels, changed;
   VkFormat format;
-  if (argc != 7) return fail("usage: bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host"), 2;
+  if (argc != 7 && argc != 8)
+    return fail("usage: bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host [SET]"), 2;
   input = stbi_load(argv[1], &width, &height, &channels, 4);
   want = stbi_load(argv[2], &want_width, &want_height, &channels, 4);
   if (!input || !want || want_width != width || want_height != height) return fail("could not read the PNGs"), 2;
@@ -340,7 +343,7 @@ int main(int argc, char** argv) {
     out[3] = input[i * 4 + 3];
   }
   if (!transfer(&c, &g, 1)) return 1;
-  if (!run_bridge(&c, &g, format, argv[3], argv[4], strcmp(argv[6], "host") == 0, strcmp(argv[6], "host") == 0 ? "host memory" : "shared memory"))
+  if (!run_bridge(&c, &g, format, argv[3], argv[4], argc == 8 ? argv[7] : NULL, strcmp(argv[6], "host") == 0, strcmp(argv[6], "host") == 0 ? "host memory" : "shared memory"))
     return 1;
   if (!transfer(&c, &g, 0)) return 1;
   /* A 10-bit result is judged at 8 bits, each code to the nearest: the expected picture is 8-bit. */
