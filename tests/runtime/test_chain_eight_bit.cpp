@@ -2,7 +2,9 @@
 // promised PFX_DECLARATION_SAMPLES_AND_DRAWS (the C++ example's tint) samples and draws them as
 // they are, with no pass of the chain's; one that did not (the C example's gain) gets RGBA16F
 // through the chain's own conversion on its side. Either way the bytes are what the sRGB curve,
-// the effect's arithmetic and the curve back give, computed here in double precision.
+// the effect's arithmetic and the curve back give, computed here in double precision. A host's
+// framebuffer as the output (a renderbuffer here, standing in for a window's back buffer, which
+// cannot be sampled either) gets what an 8-bit texture gets.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -50,13 +52,14 @@ struct Rig {
     std::string error;
     REQUIRE(registry->load(PFX_TEST_MINIMAL_PLUGIN, &error));
     REQUIRE(registry->load(PFX_TEST_FIRST_EFFECT_PLUGIN, &error));
+    REQUIRE(registry->load(PFX_TEST_PROBE_PLUGIN, &error));
     chain = std::make_unique<pfx::host::Chain>(*registry, params);
   }
   void add(const std::string& effect, const std::string& assignment) {
     std::string error;
     INFO(error);
     REQUIRE(chain->add(effect, &error));
-    REQUIRE(params.set_assignment(assignment, &error));
+    if (!assignment.empty()) REQUIRE(params.set_assignment(assignment, &error));
   }
   // The frame through the chain, 8-bit in and out (sRGB views, or plain RGBA8 holding linear values).
   std::vector<uint8_t> render(const std::vector<uint8_t>& bytes, bool srgb) {
@@ -73,6 +76,47 @@ struct Rig {
     out.read_top_first(result.data(), kWidth, kHeight);
     in.release();
     out.release();
+    INFO(error);
+    REQUIRE(rendered);
+    return result;
+  }
+  // The same, drawn into a framebuffer whose colour is a renderbuffer of `format`, told that it
+  // holds sRGB codes or not; false with *error when the chain refuses.
+  bool render_into_framebuffer(const std::vector<uint8_t>& bytes, bool srgb, GLenum format,
+                               std::vector<uint8_t>* result, std::string* error) {
+    const auto transfer = srgb ? pfx::app::Transfer::SRGB : pfx::app::Transfer::LINEAR;
+    pfx::gl::EightBitTexture in;
+    in.create(kWidth, kHeight);
+    in.upload_top_first(bytes.data(), kWidth, kHeight);
+    GLuint renderbuffer = 0, framebuffer = 0;
+    glCreateRenderbuffers(1, &renderbuffer);
+    glNamedRenderbufferStorage(renderbuffer, format, kWidth, kHeight);
+    glCreateFramebuffers(1, &framebuffer);
+    glNamedFramebufferRenderbuffer(framebuffer, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer);
+    pfx::host::FrameTextures textures;
+    textures.color = in.as(transfer);
+    pfx::host::FramebufferOutput output;
+    output.framebuffer = framebuffer;
+    output.srgb = srgb;
+    const bool rendered = chain->render(pfx::test::make_frame(kWidth, kHeight), textures, output, error);
+    // Read as the bits are (no conversion with GL_FRAMEBUFFER_SRGB off), bottom row first.
+    std::vector<uint8_t> bottom_first(bytes.size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, bottom_first.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    result->resize(bytes.size());
+    const size_t row = size_t(kWidth) * 4;
+    for (int y = 0; y < kHeight; ++y)
+      std::copy_n(bottom_first.begin() + long(y * row), row, result->begin() + long((kHeight - 1 - y) * row));
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteRenderbuffers(1, &renderbuffer);
+    in.release();
+    return rendered;
+  }
+  std::vector<uint8_t> render_into_framebuffer(const std::vector<uint8_t>& bytes, bool srgb) {
+    std::vector<uint8_t> result;
+    std::string error;
+    const bool rendered = render_into_framebuffer(bytes, srgb, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, &result, &error);
     INFO(error);
     REQUIRE(rendered);
     return result;
@@ -167,4 +211,62 @@ TEST_CASE("with no effect to run, an 8-bit frame is copied to an 8-bit output bi
     CHECK(rig.render(in, srgb) == in);
     CHECK(rig.passes().empty());
   }
+}
+
+TEST_CASE("a framebuffer as the output gets the bytes an 8-bit texture gets, drawn by the effect itself",
+          "[chain][eight_bit]") {
+  Rig rig;
+  rig.add("tint", "tint.tint=0.5,0.25,2");
+  const std::vector<uint8_t> in = every_code();
+  for (const bool srgb : {true, false}) {
+    INFO((srgb ? "sRGB" : "linear"));
+    const std::vector<uint8_t> into_texture = rig.render(in, srgb);
+    const std::vector<uint8_t> into_framebuffer = rig.render_into_framebuffer(in, srgb);
+    CHECK(rig.passes() == std::vector<std::string>{"tint:tint"});
+    CHECK(into_framebuffer == into_texture);
+    CHECK(into_framebuffer != in);
+  }
+  CHECK(rig.chain->report().peak_target_bytes == 0);
+}
+
+TEST_CASE("into a framebuffer, an effect that did not promise, or reads its output back, is drawn there by the chain",
+          "[chain][eight_bit]") {
+  const std::vector<uint8_t> in = every_code();
+  {
+    Rig rig;
+    rig.add("gain", "gain.gain=0.5");
+    const std::vector<uint8_t> out = rig.render_into_framebuffer(in, true);
+    CHECK(rig.passes() ==
+          std::vector<std::string>{"chain:8-bit colour to RGBA16F", "gain:gain", "chain:RGBA16F to 8-bit output"});
+    CHECK(out == rig.render(in, true));
+    CHECK(worst_codes(in, out, 0.5, true) < 1.5);
+  }
+  {
+    Rig rig;  // promised, but a framebuffer cannot be sampled: its output goes through RGBA16F
+    rig.add("readback", "");
+    const std::vector<uint8_t> out = rig.render_into_framebuffer(in, true);
+    CHECK(rig.passes() ==
+          std::vector<std::string>{"readback:first", "readback:keep", "readback:last", "chain:RGBA16F to 8-bit output"});
+    CHECK(worst_codes(in, out, 0.512, true) < 1.5);
+    for (size_t i = 3; i < in.size(); i += 4) REQUIRE(out[i] == in[i]);
+  }
+}
+
+TEST_CASE("into a framebuffer with no effect to run, the frame is copied bit for bit", "[chain][eight_bit]") {
+  Rig rig;
+  rig.add("tint", "tint.tint=1,1,1");
+  const std::vector<uint8_t> in = every_code();
+  for (const bool srgb : {true, false}) {
+    CHECK(rig.render_into_framebuffer(in, srgb) == in);
+    CHECK(rig.passes().empty());
+  }
+}
+
+TEST_CASE("a framebuffer said to hold sRGB codes that cannot encode them is refused", "[chain][eight_bit]") {
+  Rig rig;
+  rig.add("tint", "tint.tint=0.5,0.25,2");
+  std::vector<uint8_t> out;
+  std::string error;
+  CHECK_FALSE(rig.render_into_framebuffer(every_code(), true, GL_RGBA8, &out, &error));
+  CHECK(error == "the output framebuffer holds sRGB codes but its draw buffer is not sRGB-capable");
 }

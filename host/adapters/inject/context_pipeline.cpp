@@ -221,8 +221,23 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
   textures.color = copy_.color();
   if (inputs & PFX_INPUT_DEPTH) textures.depth = copy_.depth();
 
+  // The chain draws its result straight into the back buffer where it can; a dry run leaves the
+  // back buffer alone, so its result stays in a texture.
+  const bool into_back_buffer = passes && !settings_.dry_run && copy_.back_buffer_takes_output();
+  if (passes && !output_said_) {
+    messages->push_back(into_back_buffer ? "output: the chain draws into the back buffer"
+                        : settings_.dry_run ? "output: a texture (dry run)"
+                                            : "output: an 8-bit texture blitted into the back buffer, which cannot "
+                                              "encode sRGB as it is drawn into");
+    output_said_ = true;
+  }
   GLuint result = copy_.color();
-  if (passes) {
+  if (into_back_buffer) {
+    host::FramebufferOutput output;
+    output.srgb = settings_.transfer == Transfer::SRGB;
+    if (!copy_.into_back_buffer([&] { return chain_->render(frame, textures, output, reason); })) return false;
+    ran_passes_ = true;
+  } else if (passes) {
     if (!chain_->render(frame, textures, copy_.output(), reason)) return false;
     result = copy_.output();
     ran_passes_ = true;
@@ -243,9 +258,10 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
   for (const auto& prefix : work.captures) {
     std::string error;
     if (!write_image_exr(copy_.linear_image(copy_.color()), prefix + ".app.exr", &error)) say(prefix + ".app.exr", error);
-    if (!write_image_exr(copy_.linear_image(result), prefix + ".out.exr", &error)) say(prefix + ".out.exr", error);
+    const app::Image out = into_back_buffer ? copy_.linear_back_buffer() : copy_.linear_image(result);
+    if (!write_image_exr(out, prefix + ".out.exr", &error)) say(prefix + ".out.exr", error);
   }
-  if (passes && !settings_.dry_run) copy_.copy_out(result);
+  if (passes && !settings_.dry_run && !into_back_buffer) copy_.copy_out(result);
   for (const auto& prefix : work.captures) {
     std::string error;
     if (!write_presented_png(copy_.read_back_buffer(), prefix + ".png", &error)) say(prefix + ".png", error);

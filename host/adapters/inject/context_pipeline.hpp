@@ -78,6 +78,7 @@ class ContextPipeline {
   FrameCopy copy_;
   DepthCheck depth_check_;
   bool depth_said_ = false;
+  bool output_said_ = false;  // where the chain's result goes was logged
   std::string renderer_;  // GL_RENDERER, to choose how passes are timed
   double copy_pass_ms_ = 0;
   bool ran_passes_ = false;

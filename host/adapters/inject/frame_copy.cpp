@@ -99,6 +99,9 @@ void FrameCopy::resize(int width, int height) {
   colour_in_.create(width, height);
   colour_out_.create(width, height);
   choose_depth_format();
+  GLint encoding = GL_LINEAR;
+  glGetNamedFramebufferAttachmentParameteriv(0, GL_BACK_LEFT, GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+  back_buffer_srgb_ = encoding == GL_SRGB;
   if (depth_format_) depth_ = make_texture(depth_format_, width, height);
   glNamedFramebufferTexture(read_framebuffer_, GL_COLOR_ATTACHMENT0, colour_in_.texture, 0);
   const bool stencil = depth_format_ == GL_DEPTH24_STENCIL8 || depth_format_ == GL_DEPTH32F_STENCIL8;
@@ -157,6 +160,8 @@ void FrameCopy::copy_out(GLuint texture) {
   glDrawBuffer(static_cast<GLenum>(draw_buffer));
 }
 
+bool FrameCopy::back_buffer_takes_output() const { return transfer_ == Transfer::LINEAR || back_buffer_srgb_; }
+
 app::Image FrameCopy::linear_image(GLuint texture) const {
   app::DisplayImage image;
   image.width = width_;
@@ -167,26 +172,40 @@ app::Image FrameCopy::linear_image(GLuint texture) const {
   return app::decode_display_image(image, transfer_);
 }
 
+std::vector<std::uint8_t> FrameCopy::back_buffer_top_first() const {
+  const size_t row = static_cast<size_t>(width_) * 4;
+  std::vector<std::uint8_t> bottom_first(row * height_), top_first(row * height_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  GLint read_buffer = GL_BACK;
+  glGetIntegerv(GL_READ_BUFFER, &read_buffer);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_first.data());
+  glReadBuffer(static_cast<GLenum>(read_buffer));
+  // GL's rows start at the bottom; an image's at the top.
+  for (int y = 0; y < height_; ++y)
+    std::copy_n(bottom_first.data() + (height_ - 1 - y) * row, row, top_first.data() + y * row);
+  return top_first;
+}
+
+app::Image FrameCopy::linear_back_buffer() const {
+  app::DisplayImage image;
+  image.width = width_;
+  image.height = height_;
+  image.channels = 4;
+  image.pixels = back_buffer_top_first();
+  return app::decode_display_image(image, transfer_);
+}
+
 app::DisplayImage FrameCopy::read_back_buffer() const {
   app::DisplayImage image;
   image.width = width_;
   image.height = height_;
   image.channels = 3;
-  std::vector<std::uint8_t> rgba(static_cast<size_t>(width_) * height_ * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  GLint read_buffer = GL_BACK;
-  glGetIntegerv(GL_READ_BUFFER, &read_buffer);
-  glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  glReadBuffer(static_cast<GLenum>(read_buffer));
-  // GL's rows start at the bottom; an image's at the top. A window's alpha is not part of what
-  // is seen, so the picture keeps RGB.
+  const std::vector<std::uint8_t> rgba = back_buffer_top_first();
+  // A window's alpha is not part of what is seen, so the picture keeps RGB.
   image.pixels.resize(static_cast<size_t>(width_) * height_ * 3);
-  for (int y = 0; y < height_; ++y)
-    for (int x = 0; x < width_; ++x)
-      for (int c = 0; c < 3; ++c)
-        image.pixels[(static_cast<size_t>(height_ - 1 - y) * width_ + x) * 3 + c] =
-            rgba[(static_cast<size_t>(y) * width_ + x) * 4 + c];
+  for (size_t i = 0; i < static_cast<size_t>(width_) * height_; ++i)
+    for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = rgba[i * 4 + c];
   return image;
 }
 

@@ -1,14 +1,18 @@
 // Moving the application's frame into the chain and the chain's result back: the back buffer's
 // colour (and depth, when the default framebuffer has one) blitted into textures, the colour kept
 // 8-bit and handed to the chain as libpfxhost takes a display frame (an sRGB view that decodes as
-// it is sampled, or the plain bytes for linear codes), and the chain's 8-bit output (drawn with
-// sRGB writes) blitted back into the back buffer. No pass converts the frame unless an effect at
-// an end of the chain did not promise to only sample and draw it (the chain converts then). Runs
-// inside a GlStateGuard; touches only its own objects, GL_FRAMEBUFFER_SRGB (off for the blits)
-// and the default framebuffer's read and draw buffer, which it puts back.
+// it is sampled, or the plain bytes for linear codes). The chain draws its result straight into
+// the back buffer where the back buffer can take it (sRGB codes need an sRGB-capable one, which
+// encodes as it is drawn into); elsewhere into an 8-bit texture blitted back. No pass converts the
+// frame unless an effect at an end of the chain did not promise to only sample and draw it (the
+// chain converts then). Runs inside a GlStateGuard; touches only its own objects,
+// GL_FRAMEBUFFER_SRGB (off for the blits) and the default framebuffer's read and draw buffer,
+// which it puts back.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glad/gl.h>
 
@@ -48,6 +52,22 @@ class FrameCopy {
   bool copy_colour_in(Transfer transfer, std::string* error);
   // Copies `texture` (color() or output()) into the back buffer.
   void copy_out(GLuint texture);
+  // Whether the chain can draw its result straight into the back buffer, for the transfer given to
+  // copy_colour_in: the codes are linear, or the back buffer is sRGB-capable.
+  bool back_buffer_takes_output() const;
+  // Runs `draw` with the back buffer as the default framebuffer's draw buffer, then puts back the
+  // application's; what `draw` returns.
+  template <typename Draw>
+  bool into_back_buffer(Draw draw) {
+    GLint draw_buffer = GL_BACK;
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glGetIntegerv(GL_DRAW_BUFFER, &draw_buffer);
+    glDrawBuffer(GL_BACK);
+    const bool drawn = draw();
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glDrawBuffer(static_cast<GLenum>(draw_buffer));
+    return drawn;
+  }
 
   // 8-bit textures of the frame's size, as the chain reads and writes them for the transfer given
   // to copy_colour_in: sRGB views, or the plain RGBA8 textures for linear codes.
@@ -57,6 +77,9 @@ class FrameCopy {
   // color() or output() in linear light, row 0 at the top (decoded with the exact curve), for
   // captures.
   app::Image linear_image(GLuint texture) const;
+  // The back buffer in linear light, as linear_image() gives a texture: for captures of a result
+  // the chain drew there.
+  app::Image linear_back_buffer() const;
   // The back buffer as it will be presented, row 0 at the top.
   app::DisplayImage read_back_buffer() const;
   // Median time of one full-frame RGBA16F copy pass (glFinish and a clock), the unit the
@@ -66,6 +89,8 @@ class FrameCopy {
  private:
   void delete_targets();
   void choose_depth_format();
+  // The back buffer's RGBA8 codes, row 0 at the top.
+  std::vector<std::uint8_t> back_buffer_top_first() const;
   GLuint copy_program_ = 0, vertex_array_ = 0;
   gl::EightBitTexture colour_in_;   // the back buffer's bytes as they are
   gl::EightBitTexture colour_out_;  // the chain's result, as it will be presented
@@ -73,6 +98,7 @@ class FrameCopy {
   GLuint depth_ = 0;              // the default framebuffer's depth format, or 0
   GLuint read_framebuffer_ = 0, out_framebuffer_ = 0, scratch_framebuffer_ = 0;
   GLenum depth_format_ = 0;
+  bool back_buffer_srgb_ = false;  // the back buffer encodes sRGB as GL_FRAMEBUFFER_SRGB draws into it
   bool depth_lost_ = false;
   std::string depth_description_;
   int width_ = 0, height_ = 0;

@@ -15,6 +15,14 @@ GLADapiproc load_through_registry(void* user, const char* name) {
   return reinterpret_cast<GLADapiproc>(registry->gl_loader()(name));
 }
 
+// Whether a pass of the plan samples the chain's output (the last effect reading back what it drew).
+bool plan_reads_chain_output(const FramePlan& plan) {
+  for (const PlannedPass& pass : plan.passes)
+    for (const ResourceRef& input : pass.inputs)
+      if (input.kind == ResourceRef::CHAIN_OUTPUT) return true;
+  return false;
+}
+
 }  // namespace
 
 Chain::Chain(const PluginRegistry& registry, ParamStore& params) : registry_(registry), params_(params) {
@@ -273,14 +281,20 @@ bool Chain::declare_all(const pfx_frame& frame, std::vector<int>* active, std::s
   return true;
 }
 
-bool Chain::check_frame(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
+bool Chain::check_frame(const pfx_frame& frame, const FrameTextures& textures, const HostOutput& output,
                         std::string* error) const {
   const char* problem = nullptr;
   if (!gl_loaded_) problem = kNoContext;
   else if (frame.struct_size < PFX_FRAME_MIN_SIZE) problem = "pfx_frame struct too small";
   else if (frame.width < 1 || frame.height < 1) problem = "frame size must be at least 1x1";
   else if (!textures.color || !(frame.inputs & PFX_INPUT_COLOR)) problem = "the frame has no colour input";
-  else if (!output_texture || output_texture == textures.color) problem = "the output must be its own texture";
+  else if (!output.to_framebuffer && (!output.texture || output.texture == textures.color))
+    problem = "the output must be its own texture";
+  else if (output.to_framebuffer && glCheckNamedFramebufferStatus(output.framebuffer, GL_DRAW_FRAMEBUFFER) !=
+                                        GL_FRAMEBUFFER_COMPLETE)
+    problem = "the output framebuffer is not complete";
+  else if (output.to_framebuffer && output.srgb && !framebuffer_draws_srgb(output.framebuffer))
+    problem = "the output framebuffer holds sRGB codes but its draw buffer is not sRGB-capable";
   if (problem) *error = problem;
   return !problem;
 }
@@ -300,28 +314,52 @@ bool Chain::update_plan(const pfx_frame& frame, const std::vector<int>& active, 
 
 bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
                    std::string* error) {
+  HostOutput output;
+  output.texture = output_texture;
+  return render_into(frame, textures, output, error);
+}
+
+bool Chain::render(const pfx_frame& frame, const FrameTextures& textures, const FramebufferOutput& framebuffer,
+                   std::string* error) {
+  HostOutput output;
+  output.to_framebuffer = true;
+  output.framebuffer = framebuffer.framebuffer;
+  output.srgb = framebuffer.srgb;
+  return render_into(frame, textures, output, error);
+}
+
+bool Chain::render_into(const pfx_frame& frame, const FrameTextures& textures, const HostOutput& output,
+                        std::string* error) {
   report_.frame = ++frames_;
   std::string message;
   std::vector<int> active;
-  if (!check_frame(frame, textures, output_texture, &message) || !declare_all(frame, &active, &message) ||
+  if (!check_frame(frame, textures, output, &message) || !declare_all(frame, &active, &message) ||
       !update_plan(frame, active, &message)) {
     if (error) *error = message;
     return false;
   }
-  FrameResources resources{frame, textures, output_texture, plan_, gl_->pool};
+  FrameResources resources{frame, textures, output, plan_, gl_->pool};
   resources.color_bound = textures.color;
-  resources.output_bound = output_texture;
-  resources.output_eight_bit = is_eight_bit_texture(output_texture);
+  resources.output_bound = output.texture;
+  resources.output_to_framebuffer = output.to_framebuffer;
+  resources.output_eight_bit = output.to_framebuffer || is_eight_bit_texture(output.texture);
+  // Drawing into an sRGB texture encodes (a plain RGBA8 one ignores the switch); a framebuffer
+  // says which it holds.
+  resources.output_srgb_writes = output.to_framebuffer ? output.srgb : resources.output_eight_bit;
   if (!active.empty()) {
     // An 8-bit frame meets the first and the last effect as it is when they promised to only
-    // sample and draw it; otherwise through the chain's RGBA16F copy on that side.
+    // sample and draw it; otherwise through the chain's RGBA16F copy on that side. A framebuffer
+    // cannot be sampled: a last effect that reads its "output" back writes the copy too.
     const auto promised = [&](int index) {
       return (instances_[index]->declaration.flags & PFX_DECLARATION_SAMPLES_AND_DRAWS) != 0;
     };
     resources.widen_color = !promised(active.front()) && is_eight_bit_texture(textures.color);
-    if (resources.output_eight_bit && !promised(active.back())) {
+    if (resources.output_eight_bit &&
+        (!promised(active.back()) || (output.to_framebuffer && plan_reads_chain_output(plan_)))) {
       resources.output_bound = gl_->conversion.wide_output(frame.width, frame.height);
+      resources.output_to_framebuffer = false;
       resources.output_eight_bit = false;
+      resources.output_srgb_writes = false;
       resources.narrow_output = true;
     }
   }

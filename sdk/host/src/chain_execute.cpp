@@ -27,21 +27,36 @@ GLuint frame_input_texture(const FrameTextures& textures, const std::string& nam
 
 // Every effect is off or a no-op: the output is the input, at the cost of one copy (a draw where
 // one is 8-bit and the other not, so the values stay linear light).
-bool copy_color_to_output(const FrameResources& resources, const GlLimits& limits, FrameConversion& conversion,
-                          std::string* error) {
-  const GLuint color = resources.textures.color, output = resources.output_texture;
+bool copy_color_to_output(const FrameResources& resources, const GlLimits& limits, GlPool& pool,
+                          FrameConversion& conversion, std::string* error) {
+  const GLuint color = resources.textures.color;
   const auto width = static_cast<GLsizei>(resources.frame.width), height = static_cast<GLsizei>(resources.frame.height);
-  if (is_eight_bit_texture(color) == resources.output_eight_bit) {
-    glCopyImageSubData(color, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
-  } else {
-    GlStateScope state_scope(limits, GlStateScope::SAVE);
-    if (!conversion.draw_copy(color, output, resources.frame.width, resources.frame.height, error)) return false;
+  const HostOutput& output = resources.output;
+  GlStateScope state_scope(limits, GlStateScope::SAVE);
+  if (output.to_framebuffer) {
+    // Codes that mean what the framebuffer's do move as bits (a blit converts nothing with
+    // GL_FRAMEBUFFER_SRGB off); other colour is drawn, encoded as the framebuffer wants.
+    GLint format = 0;
+    glGetTextureLevelParameteriv(color, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    if (format == (output.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8)) {
+      glBindFramebuffer(GL_READ_FRAMEBUFFER, pool.framebuffer_for(color));
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, output.framebuffer);
+      glDisable(GL_FRAMEBUFFER_SRGB);
+      glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    } else if (!conversion.draw_into(color, output.framebuffer, output.srgb, resources.frame.width,
+                                     resources.frame.height, error)) {
+      return false;
+    }
+  } else if (is_eight_bit_texture(color) == resources.output_eight_bit) {
+    glCopyImageSubData(color, GL_TEXTURE_2D, 0, 0, 0, 0, output.texture, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+  } else if (!conversion.draw_copy(color, output.texture, resources.frame.width, resources.frame.height, error)) {
+    return false;
   }
   const GLenum gl_error = glGetError();
   if (gl_error == GL_NO_ERROR) return true;
   if (error)
     *error = "copying colour to the output failed (GL error " + gl_error_text(gl_error) +
-             "): both must be textures of the frame size, RGBA16F or 8-bit";
+             "): both must be of the frame size, RGBA16F or 8-bit";
   return false;
 }
 
@@ -105,7 +120,7 @@ GLuint PassBinding::resolve(const ResourceRef& ref, uint32_t* width, uint32_t* h
   *height = resources_.frame.height;
   if (ref.kind == ResourceRef::CHAIN_OUTPUT) {
     if (resources_.output_eight_bit) *format = PFX_FORMAT_RGBA8;
-    return resources_.output_bound;
+    return resources_.output_to_framebuffer ? 0 : resources_.output_bound;
   }
   if (ref.kind == ResourceRef::FRAME_INPUT)
     return ref.frame_input == PFX_INPUT_NAME_COLOR ? resources_.color_bound
@@ -119,12 +134,13 @@ void PassBinding::bind_output(const PlannedPass& planned, const DeclaredPass& pa
     return;
   }
   output_texture_ = resolve(planned.output, &output_width_, &output_height_, &output_format_);
-  output_framebuffer_ = planned.output.kind == ResourceRef::POOLED
-                            ? resources_.pool.framebuffer(resources_.plan.resources[planned.output.resource].slot)
-                            : resources_.pool.framebuffer_for(output_texture_);
+  const bool chain_output = planned.output.kind == ResourceRef::CHAIN_OUTPUT;
+  if (chain_output && resources_.output_to_framebuffer) output_framebuffer_ = resources_.output.framebuffer;
+  else if (chain_output) output_framebuffer_ = resources_.pool.framebuffer_for(output_texture_);
+  else output_framebuffer_ = resources_.pool.framebuffer(resources_.plan.resources[planned.output.resource].slot);
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_);
-  // Drawing into an sRGB output encodes (an RGBA8 one ignores it); every other target is linear.
-  if (planned.output.kind == ResourceRef::CHAIN_OUTPUT && resources_.output_eight_bit) {
+  // Drawing into an sRGB output encodes; every other target is linear.
+  if (chain_output && resources_.output_srgb_writes) {
     glEnable(GL_FRAMEBUFFER_SRGB);
     srgb_writes_ = true;
   }
@@ -165,7 +181,7 @@ bool Chain::execute(FrameResources& resources, const std::vector<int>& active, s
   report_.times = times_;
   while (glGetError() != GL_NO_ERROR) {
   }  // errors of the embedding program are not ours to report
-  if (active.empty()) return copy_color_to_output(resources, gl_->limits, gl_->conversion, error);
+  if (active.empty()) return copy_color_to_output(resources, gl_->limits, gl_->pool, gl_->conversion, error);
   if (transform_feedback_running()) {
     if (error) *error = "transform feedback is active: end or pause it before render()";
     return false;
@@ -191,9 +207,12 @@ bool Chain::execute(FrameResources& resources, const std::vector<int>& active, s
     if (!run_pass(resources, planned, *instances_[active[planned.effect]], timer, error)) return false;
   if (resources.narrow_output) {
     timer.start_pass();
-    if (!converted("RGBA16F to 8-bit output", gl_->conversion.draw_copy(resources.output_bound,
-                                                                       resources.output_texture, width, height, error)))
-      return false;
+    const HostOutput& output = resources.output;
+    const bool drawn = output.to_framebuffer ? gl_->conversion.draw_into(resources.output_bound, output.framebuffer,
+                                                                         output.srgb, width, height, error)
+                                             : gl_->conversion.draw_copy(resources.output_bound, output.texture,
+                                                                         width, height, error);
+    if (!converted("RGBA16F to 8-bit output", drawn)) return false;
   }
   if (timing_ != Timing::OFF) last_timed_frame_ = report_.frame;
   if (timer.finish(&report_.passes, &times_)) report_.times = times_;

@@ -36,19 +36,29 @@ struct Chain::GlResources {
   FrameConversion conversion;
 };
 
+// Where render() was told to put the result: a texture, or a framebuffer (FramebufferOutput).
+struct HostOutput {
+  GLuint texture = 0;
+  bool to_framebuffer = false;
+  GLuint framebuffer = 0;
+  bool srgb = false;  // the framebuffer holds sRGB codes
+};
+
 // The textures one render() runs over: the frame's inputs, the chain's output, the plan's pooled
 // targets.
 struct FrameResources {
   const pfx_frame& frame;
   const FrameTextures& textures;
-  GLuint output_texture;  // the host's
+  const HostOutput& output;  // the host's
   const FramePlan& plan;
   GlPool& pool;
   // What the first effect's "color" and the last effect's "output" are bound to this frame: the
-  // host's textures, or the chain's RGBA16F copies where the host's are 8-bit and the effect at
-  // that end did not promise PFX_DECLARATION_SAMPLES_AND_DRAWS (frame_conversion.hpp).
+  // host's texture or framebuffer, or the chain's RGBA16F copies where the host's are 8-bit and
+  // the effect at that end did not promise PFX_DECLARATION_SAMPLES_AND_DRAWS (frame_conversion.hpp).
   GLuint color_bound = 0, output_bound = 0;
-  bool output_eight_bit = false;  // output_bound is 8-bit: passes into it draw with GL_FRAMEBUFFER_SRGB
+  bool output_to_framebuffer = false;  // the last effect draws into output.framebuffer, not output_bound
+  bool output_eight_bit = false;  // the output the last effect writes is 8-bit (PFX_FORMAT_RGBA8)
+  bool output_srgb_writes = false;  // passes into it draw with GL_FRAMEBUFFER_SRGB
   bool widen_color = false;       // color_bound is to be the chain's RGBA16F copy of the host's colour
   bool narrow_output = false;     // output_bound is the chain's RGBA16F texture, drawn into the host's after
 };

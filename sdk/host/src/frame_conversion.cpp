@@ -40,6 +40,22 @@ bool is_eight_bit_texture(GLuint texture) {
   return format == GL_RGBA8 || format == GL_SRGB8_ALPHA8;
 }
 
+bool framebuffer_draws_srgb(GLuint framebuffer) {
+  GLint bound = 0, buffer = GL_NONE;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(bound));
+  // The default framebuffer names its buffers by side; an attachment query wants the left one.
+  if (buffer == GL_BACK) buffer = GL_BACK_LEFT;
+  else if (buffer == GL_FRONT || buffer == GL_FRONT_AND_BACK) buffer = GL_FRONT_LEFT;
+  if (buffer == GL_NONE) return false;
+  GLint encoding = GL_LINEAR;
+  glGetNamedFramebufferAttachmentParameteriv(framebuffer, static_cast<GLenum>(buffer),
+                                             GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+  return encoding == GL_SRGB;
+}
+
 FrameConversion::~FrameConversion() {
   release(&color_);
   release(&output_);
@@ -108,20 +124,27 @@ GLuint FrameConversion::wide_output(uint32_t width, uint32_t height) {
 bool FrameConversion::draw_copy(GLuint from, GLuint to, uint32_t width, uint32_t height, std::string* error) {
   if (!make_program(error)) return false;
   glNamedFramebufferTexture(target_framebuffer_, GL_COLOR_ATTACHMENT0, to, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, target_framebuffer_);
+  const bool drawn = draw_into(from, target_framebuffer_, true, width, height, error);
+  // The texture is the host's or ours, kept attached to nothing.
+  glNamedFramebufferTexture(target_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
+  return drawn;
+}
+
+bool FrameConversion::draw_into(GLuint from, GLuint framebuffer, bool srgb, uint32_t width, uint32_t height,
+                                std::string* error) {
+  if (!make_program(error)) return false;
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
   glDisable(GL_BLEND);
-  glEnable(GL_FRAMEBUFFER_SRGB);
+  if (srgb) glEnable(GL_FRAMEBUFFER_SRGB);
   glUseProgram(program_);
   glBindVertexArray(vertex_array_);
   glBindTextureUnit(0, from);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  // Back to the state every pass starts from; the texture is the host's or ours, kept attached
-  // to nothing.
+  // Back to the state every pass starts from.
   glBindTextureUnit(0, 0);
   glUseProgram(0);
   glDisable(GL_FRAMEBUFFER_SRGB);
-  glNamedFramebufferTexture(target_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
   return true;
 }
 

@@ -16,6 +16,9 @@ namespace pfx::host {
 // Whether a texture the host handed in is one of the 8-bit kinds above (asked of GL each frame:
 // cheap, and a host may swap textures between frames).
 bool is_eight_bit_texture(GLuint texture);
+// Whether drawing into `framebuffer` (0: the default one) with GL_FRAMEBUFFER_SRGB on encodes: its
+// first draw buffer is sRGB-capable.
+bool framebuffer_draws_srgb(GLuint framebuffer);
 
 class FrameConversion {
  public:
@@ -33,6 +36,8 @@ class FrameConversion {
   // so that an sRGB `to` is encoded; leaves the pass state of docs/sdk.md §1.5 as it found it,
   // but for the draw framebuffer, which the next pass binds anyway.
   bool draw_copy(GLuint from, GLuint to, uint32_t width, uint32_t height, std::string* error);
+  // The same into a framebuffer of the host's (its selected draw buffer), encoding when `srgb`.
+  bool draw_into(GLuint from, GLuint framebuffer, bool srgb, uint32_t width, uint32_t height, std::string* error);
   // Bytes of the copies alive now, for the frame's peak target memory.
   uint64_t bytes() const;
 

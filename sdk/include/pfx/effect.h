@@ -193,8 +193,10 @@ typedef struct pfx_declaration {
  * textures of a display frame instead of RGBA16F: an sRGB one decodes to linear values when
  * sampled and encodes them when drawn into (the host enables GL_FRAMEBUFFER_SRGB for such a pass),
  * a plain RGBA8 one holds linear values; either way the pass computes in linear light as before,
- * and values outside [0, 1] written to "output" are clamped. Without the promise the host converts
- * such a frame to RGBA16F before the effect and back after it. */
+ * and values outside [0, 1] written to "output" are clamped. The host may also bind a framebuffer
+ * of its own as "output" (a window's back buffer): output_texture is then 0 and output_framebuffer
+ * may be 0, the default framebuffer, which the pass draws into as bound. Without the promise the
+ * host converts such a frame to RGBA16F before the effect and back after it. */
 enum { PFX_DECLARATION_SAMPLES_AND_DRAWS = 1u << 0 };
 
 /* One texture a pass reads, as bound by the host. */

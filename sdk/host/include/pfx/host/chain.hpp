@@ -24,6 +24,7 @@ namespace pfx::host {
 struct GlLimits;        // what GlStateGuard saves per indexed binding
 class FrameTimer;       // times a frame's passes under the chosen Timing
 struct FrameResources;  // the textures one render() runs over
+struct HostOutput;      // the texture or framebuffer one render() writes
 
 // GL textures of the frame inputs; 0 where the frame has none (frame.inputs must agree).
 // color and the chain's output are textures of the frame's size: RGBA16F holding linear light (what
@@ -33,6 +34,19 @@ struct FrameResources;  // the textures one render() runs over
 // with no pass to convert them; for the others the chain converts on that side (one draw each).
 struct FrameTextures {
   uint32_t color = 0, depth = 0, normal = 0, albedo = 0, emissive = 0;
+};
+
+// The chain's result drawn into a framebuffer of the host's instead of a texture, for a host whose
+// destination is not one: pfx-inject draws into the application's back buffer (framebuffer 0).
+// Its draw buffer is 8-bit, of the frame's size, and selected by the host; it holds sRGB codes
+// (`srgb`: the chain draws with GL_FRAMEBUFFER_SRGB, so the buffer must be sRGB-capable,
+// GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING GL_SRGB) or linear ones. The last effect's passes draw
+// straight into it when that effect promised PFX_DECLARATION_SAMPLES_AND_DRAWS and never reads its
+// own "output" back (a framebuffer cannot be sampled); otherwise it writes the chain's RGBA16F
+// texture, drawn into the framebuffer after (one pass of "chain").
+struct FramebufferOutput {
+  uint32_t framebuffer = 0;
+  bool srgb = true;
 };
 
 struct FrameReport {
@@ -137,6 +151,10 @@ class PFX_HOST_API Chain {
   // output_texture. Effects that declare no passes are skipped at no cost; with none left the
   // colour is copied. False with *error naming the effect, pass or input on failure.
   bool render(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture, std::string* error);
+  // The same, drawing the result into the host's framebuffer (FramebufferOutput says when the
+  // effects draw there themselves). With no pass to run the colour is blitted or drawn into it.
+  bool render(const pfx_frame& frame, const FrameTextures& textures, const FramebufferOutput& output,
+              std::string* error);
 
   const FrameReport& report() const { return report_; }
   const FramePlan& plan() const { return plan_; }
@@ -154,7 +172,9 @@ class PFX_HOST_API Chain {
 
   // A frame, step by step: check the call, declare (every frame: declare is cheap by contract),
   // plan (only when a declaration or the active set changed), execute the plan's passes.
-  bool check_frame(const pfx_frame& frame, const FrameTextures& textures, uint32_t output_texture,
+  bool render_into(const pfx_frame& frame, const FrameTextures& textures, const HostOutput& output,
+                   std::string* error);
+  bool check_frame(const pfx_frame& frame, const FrameTextures& textures, const HostOutput& output,
                    std::string* error) const;
   bool declare(const Instance& instance, const pfx_frame& frame, Declaration* out, std::string* error) const;
   bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
