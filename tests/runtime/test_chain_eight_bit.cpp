@@ -62,12 +62,17 @@ struct Rig {
     if (!assignment.empty()) REQUIRE(params.set_assignment(assignment, &error));
   }
   // The frame through the chain, 8-bit in and out (sRGB views, or plain RGBA8 holding linear values).
-  std::vector<uint8_t> render(const std::vector<uint8_t>& bytes, bool srgb) {
+  // swap_red_blue: the colour texture is sampled through a swizzle that trades red and blue.
+  std::vector<uint8_t> render(const std::vector<uint8_t>& bytes, bool srgb, bool swap_red_blue = false) {
     const auto transfer = srgb ? pfx::app::Transfer::SRGB : pfx::app::Transfer::LINEAR;
     pfx::gl::EightBitTexture in, out;
     in.create(kWidth, kHeight);
     out.create(kWidth, kHeight);
     in.upload_top_first(bytes.data(), kWidth, kHeight);
+    if (swap_red_blue) {
+      const GLint swizzle[4] = {GL_BLUE, GL_GREEN, GL_RED, GL_ALPHA};
+      glTextureParameteriv(in.as(transfer), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    }
     pfx::host::FrameTextures textures;
     textures.color = in.as(transfer);
     std::string error;
@@ -211,6 +216,20 @@ TEST_CASE("with no effect to run, an 8-bit frame is copied to an 8-bit output bi
     CHECK(rig.render(in, srgb) == in);
     CHECK(rig.passes().empty());
   }
+}
+
+TEST_CASE("with no effect to run, a colour the host swizzled is copied as it samples, not as it is stored",
+          "[chain][eight_bit]") {
+  Rig rig;
+  rig.add("tint", "tint.tint=1,1,1");
+  const std::vector<uint8_t> in = every_code();
+  std::vector<uint8_t> swapped = in;
+  for (size_t i = 0; i < in.size(); i += 4) std::swap(swapped[i], swapped[i + 2]);
+  // Linear codes move exactly; sRGB ones are decoded and encoded again, within a code on llvmpipe.
+  CHECK(rig.render(in, false, true) == swapped);
+  const std::vector<uint8_t> out = rig.render(in, true, true);
+  CHECK(rig.passes().empty());
+  CHECK(worst_codes(swapped, out, 1.0, true) < 1.5);
 }
 
 TEST_CASE("a framebuffer as the output gets the bytes an 8-bit texture gets, drawn by the effect itself",

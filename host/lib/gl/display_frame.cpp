@@ -82,8 +82,10 @@ void DisplayFrame::decode_texture(GLuint frame_texture, app::Transfer transfer, 
   if (is_eight_bit(frame_texture)) {
     transfer_ = transfer;
     wide_frame_ = false;
-    if (bgra) swap_copy_flipped(frame_texture, in_.texture);
-    else blit_flipped(frame_texture, in_.texture);
+    // The bits as they are; the chain reads them through a texture that swaps red and blue back
+    // (the swizzle applies to sampling, so the swap costs nothing).
+    blit_flipped(frame_texture, in_.texture);
+    swap_red_blue(in_.as(transfer), bgra);
   } else {
     swap_red_blue(frame_texture, bgra);
     decode_pass(frame_texture, transfer);
@@ -140,7 +142,9 @@ void DisplayFrame::encode_pass(GLuint result, GLuint frame_texture, app::Transfe
 void DisplayFrame::encode_texture(GLuint result, GLuint frame_texture, app::Transfer transfer, bool bgra) {
   const GLuint bytes = eight_bit_behind(result);
   if (bytes && is_eight_bit(frame_texture)) {
-    if (bgra) swap_copy_flipped(bytes, frame_texture);
+    // The frame's own bits go back as they came; what the chain drew holds red first, and a blit
+    // cannot swap it.
+    if (bgra && bytes == out_.texture) swap_copy_flipped(bytes, frame_texture);
     else blit_flipped(bytes, frame_texture);
     return;
   }

@@ -73,7 +73,8 @@ class DisplayFrame {
   GLuint eight_bit_behind(GLuint texture) const;
   void blit_flipped(GLuint from, GLuint to);
   // The bits of one 8-bit texture into another, rows flipped, red and blue trading places: a blit
-  // cannot swap channels, so a draw (unsigned normalised to unsigned normalised: exact).
+  // cannot swap channels, so a draw (unsigned normalised to unsigned normalised: exact). Only the
+  // way out needs it: the way in blits, and the chain samples through a swizzle.
   void swap_copy_flipped(GLuint from, GLuint to);
   void encode_pass(GLuint result, GLuint frame_texture, app::Transfer transfer);
   // Decodes `source` (top row first) by transfer_programs into the RGBA16F colour.

@@ -26,7 +26,8 @@ GLuint frame_input_texture(const FrameTextures& textures, const std::string& nam
 }
 
 // Every effect is off or a no-op: the output is the input, at the cost of one copy (a draw where
-// one is 8-bit and the other not, so the values stay linear light).
+// one is 8-bit and the other not, so the values stay linear light, or where the host set a
+// swizzle on its colour, which only sampling applies).
 bool copy_color_to_output(const FrameResources& resources, const GlLimits& limits, GlPool& pool,
                           FrameConversion& conversion, std::string* error) {
   const GLuint color = resources.textures.color;
@@ -38,7 +39,7 @@ bool copy_color_to_output(const FrameResources& resources, const GlLimits& limit
     // GL_FRAMEBUFFER_SRGB off); other colour is drawn, encoded as the framebuffer wants.
     GLint format = 0;
     glGetTextureLevelParameteriv(color, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-    if (format == (output.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8)) {
+    if (format == (output.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8) && samples_as_stored(color)) {
       glBindFramebuffer(GL_READ_FRAMEBUFFER, pool.framebuffer_for(color));
       glBindFramebuffer(GL_DRAW_FRAMEBUFFER, output.framebuffer);
       glDisable(GL_FRAMEBUFFER_SRGB);
@@ -47,7 +48,7 @@ bool copy_color_to_output(const FrameResources& resources, const GlLimits& limit
                                      resources.frame.height, error)) {
       return false;
     }
-  } else if (is_eight_bit_texture(color) == resources.output_eight_bit) {
+  } else if (is_eight_bit_texture(color) == resources.output_eight_bit && samples_as_stored(color)) {
     glCopyImageSubData(color, GL_TEXTURE_2D, 0, 0, 0, 0, output.texture, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
   } else if (!conversion.draw_copy(color, output.texture, resources.frame.width, resources.frame.height, error)) {
     return false;

@@ -40,6 +40,12 @@ bool is_eight_bit_texture(GLuint texture) {
   return format == GL_RGBA8 || format == GL_SRGB8_ALPHA8;
 }
 
+bool samples_as_stored(GLuint texture) {
+  GLint swizzle[4] = {};
+  glGetTextureParameteriv(texture, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+  return swizzle[0] == GL_RED && swizzle[1] == GL_GREEN && swizzle[2] == GL_BLUE && swizzle[3] == GL_ALPHA;
+}
+
 bool framebuffer_draws_srgb(GLuint framebuffer) {
   GLint bound = 0, buffer = GL_NONE;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);

@@ -16,6 +16,9 @@ namespace pfx::host {
 // Whether a texture the host handed in is one of the 8-bit kinds above (asked of GL each frame:
 // cheap, and a host may swap textures between frames).
 bool is_eight_bit_texture(GLuint texture);
+// Whether sampling `texture` gives its channels as they are stored (no swizzle set): only then may
+// its bits be copied instead of drawn.
+bool samples_as_stored(GLuint texture);
 // Whether drawing into `framebuffer` (0: the default one) with GL_FRAMEBUFFER_SRGB on encodes: its
 // first draw buffer is sRGB-capable.
 bool framebuffer_draws_srgb(GLuint framebuffer);
