@@ -328,6 +328,37 @@ TEST_CASE("two windows presented together each go through the chain, and a devic
   }
 }
 
+TEST_CASE("a window hidden from the screen and shown again, as a minimised one is, keeps both windows going "
+          "through the chain", "[two_windows]") {
+  // two_windows unmaps its second window at frame 10 of 30 and maps it again at frame 20 (without
+  // a window manager, what iconifying does), presenting both all along, as X11 applications do.
+  ScratchFolder folder("vulkan-minimised");
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("hidden.log"),
+                                   "PFX_INJECT_CAPTURE=15:" + folder.file("hidden") + "\n25:" + folder.file("shown")};
+  add_sanitizer_runtime(&argv);
+  argv.insert(argv.end(), {PFX_TWO_WINDOWS, "30", "minimise"});
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
+  const std::string log = pfx::test::read_text_file(folder.file("hidden.log"));
+  INFO(run.output << log);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.output.find("frame 10: second window hidden") != std::string::npos);
+  CHECK(run.output.find("frame 20: second window shown again") != std::string::npos);
+  CHECK(run.output.find("30 frames presented to two windows") != std::string::npos);
+  CHECK(log.find("pass through") == std::string::npos);
+  // While hidden and after: each window's frame is pfx-render's bloom of what the application drew.
+  for (const char* name : {"hidden", "hidden-2", "shown", "shown-2"}) {
+    INFO(name);
+    const auto presented = pfx::test::read_png_file(folder.file(std::string(name) + ".png"));
+    const pfx::test::RunResult render = pfx::test::run_program(
+        {PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file(std::string(name) + ".app.png"),
+         "--chain", "bloom", "--out", folder.file(std::string(name) + "-render.png")});
+    REQUIRE(render.exit_code == 0);
+    CHECK(difference(presented, pfx::test::read_png_file(folder.file(std::string(name) + "-render.png"))).first <= 1);
+    CHECK(difference(presented, pfx::test::read_png_file(folder.file(std::string(name) + ".app.png"))).first >= 8);
+  }
+}
+
 TEST_CASE("a dry run (--dry-run) runs the chain on every present and presents vkcube's own frames", "[vkcube]") {
   ScratchFolder folder("vulkan-dry-run");
   const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none"});

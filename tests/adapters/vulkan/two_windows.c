@@ -3,7 +3,9 @@
  * it copies a picture into each window's image (a dark frame with a bright square: something bloom
  * changes), presents both, and after the last frame destroys its swapchains and its device at once,
  * without waiting for the presents to end, as some applications do on exit.
- *   two_windows FRAMES
+ *   two_windows FRAMES [minimise]
+ * minimise: the second window is hidden from the screen (unmapped) at frame FRAMES/3 and shown again
+ * at 2*FRAMES/3, both presented all along, as an X11 application does while minimised.
  * Plain C99, Xlib and Vulkan's WSI; exits 0 when every call succeeded. */
 #define VK_USE_PLATFORM_XLIB_KHR
 #include <X11/Xlib.h>
@@ -137,9 +139,11 @@ int main(int argc, char** argv) {
   VkCommandBuffer commands;
   VkFence done;
   VkSemaphore rendered;
+  VkResult result;
   uint32_t count = 1, i;
-  int frame, frames;
-  if (argc != 2 || (frames = atoi(argv[1])) < 1) return fail("usage: two_windows FRAMES"), 2;
+  int frame, frames, minimise;
+  if ((argc != 2 && argc != 3) || (frames = atoi(argv[1])) < 1) return fail("usage: two_windows FRAMES [minimise]"), 2;
+  minimise = argc == 3 && strcmp(argv[2], "minimise") == 0;
   memset(targets, 0, sizeof targets);
   display = XOpenDisplay(NULL);
   if (!display) return fail("no X display"), 1;
@@ -191,6 +195,14 @@ int main(int argc, char** argv) {
     VkSwapchainKHR swapchains[WINDOWS];
     uint32_t indices[WINDOWS];
     VkResult results[WINDOWS];
+    if (minimise && (frame == frames / 3 || frame == 2 * frames / 3)) {
+      /* Hidden from the screen and back, as a minimised window is (without a window manager to
+       * iconify it, unmapped: what iconifying does to the window). */
+      if (frame == frames / 3) XUnmapWindow(display, targets[1].window);
+      else XMapWindow(display, targets[1].window);
+      XSync(display, False);
+      printf("two_windows: frame %d: second window %s\n", frame, frame == frames / 3 ? "hidden" : "shown again");
+    }
     /* The last frame's submission is done, and with it the waits on the semaphores used again. */
     vkWaitForFences(device, 1, &done, VK_TRUE, UINT64_MAX);
     vkResetFences(device, 1, &done);
@@ -232,7 +244,10 @@ int main(int argc, char** argv) {
     present.pSwapchains = swapchains;
     present.pImageIndices = indices;
     present.pResults = results;
-    if (vkQueuePresentKHR(queue, &present) < 0) return fail("present failed"), 1;
+    result = vkQueuePresentKHR(queue, &present);
+    for (i = 0; i < WINDOWS; ++i)
+      if (results[i] != VK_SUCCESS) printf("two_windows: frame %d: window %u presented with VkResult %d\n", frame, i + 1, results[i]);
+    if (result < 0) return fail("present failed"), 1;
     for (i = 0; i < WINDOWS; ++i)
       if (results[i] < 0) return fail("a swapchain's present failed"), 1;
   }
