@@ -81,6 +81,17 @@ bool FrameChain::render(gl::DisplayFrame& frame, double time_seconds, uint64_t f
   return true;
 }
 
+bool FrameChain::render(GLuint color, GLuint output, int width, int height, double time_seconds,
+                        uint64_t frame_index, std::string* error) {
+  if (!runs_effects()) {
+    glCopyImageSubData(color, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+    return true;
+  }
+  host::FrameTextures textures;
+  textures.color = color;
+  return chain_->render(describe(width, height, time_seconds, frame_index), textures, output, error);
+}
+
 bool no_gl_error(std::string* error) {
   const GLenum gl_error = glGetError();
   if (gl_error == GL_NO_ERROR) return true;

@@ -52,6 +52,11 @@ class FrameChain {
   // Runs the chain over frame.color() into frame.output(); *result is the texture to encode
   // (frame.color() when no effect is on). False with *error naming the effect or pass.
   bool render(gl::DisplayFrame& frame, double time_seconds, uint64_t frame_index, GLuint* result, std::string* error);
+  // The same over a frame already in two 8-bit textures of the host's (width x height, bottom row
+  // first, each as the transfer reads it: host::FrameTextures): the chain reads `color` and writes
+  // `output`, or with no effect on the frame's bits are copied across.
+  bool render(GLuint color, GLuint output, int width, int height, double time_seconds, uint64_t frame_index,
+              std::string* error);
 
  private:
   FrameChain() = default;

@@ -27,27 +27,32 @@ bool prepare(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* erro
     int fd = -1;
     uint64_t size = 0;
     std::string why;
-    const bool ten_bit = is_ten_bit(image.format);
-    bool ready = bridge->transport->prepare(Path::SHARED, image.width, image.height, ten_bit, &fd, &size, &why);
+    const Between between = bridge->transport->between_for(Path::SHARED, image.format);
+    bool ready = bridge->transport->prepare(Path::SHARED, image.width, image.height, between, &fd, &size, &why);
     if (ready && fd >= 0) {
       std::string worker_error;
       if (!bridge->worker->run(
               [&] {
-                ready = bridge->gl->shared().import(fd, size, int(image.width), int(image.height), ten_bit, &why);
+                ready = bridge->gl->shared().import(fd, size, int(image.width), int(image.height), between, &why);
               },
               &worker_error)) {
         ready = false;
         why = worker_error;
       }
     }
+    if (ready && fd >= 0)
+      bridge->say(0, std::to_string(image.width) + "x" + std::to_string(image.height) +
+                         (between.blits ? " frames: Vulkan blits them into the chain's textures and back"
+                                        : " frames: copied as they are; the GL turns their rows over"));
     if (ready) return true;
     bridge->say(1, "sharing memory with the GL failed (" + why + "): frames go through host memory from now on");
     bridge->path = Path::HOST;
   }
   int unused_fd = -1;
   uint64_t unused_size = 0;
-  return bridge->transport->prepare(Path::HOST, image.width, image.height, is_ten_bit(image.format), &unused_fd,
-                                    &unused_size, error);
+  return bridge->transport->prepare(Path::HOST, image.width, image.height,
+                                    bridge->transport->between_for(Path::HOST, image.format), &unused_fd, &unused_size,
+                                    error);
 }
 
 double frame_time(pfx_vk_bridge* bridge) {
@@ -80,10 +85,15 @@ bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* er
   std::string worker_error;
   if (!bridge->worker->run(
           [&] {
-            const GlFrame::Texels texels{is_bgra(image.format), is_ten_bit(image.format)};
-            ran = bridge->gl->run(host_bytes, int(image.width), int(image.height), texels, bridge->transfer,
-                                  time_seconds, bridge->frames, GlFrame::Readback{image.app_pixels, image.result_pixels},
-                                  error);
+            const GlFrame::Readback readback{image.app_pixels, image.result_pixels};
+            if (bridge->transport->between().blits) {
+              ran = bridge->gl->run_on_layers(int(image.width), int(image.height), bridge->transfer, time_seconds,
+                                              bridge->frames, readback, error);
+            } else {
+              const GlFrame::Texels texels{is_bgra(image.format), is_ten_bit(image.format)};
+              ran = bridge->gl->run(host_bytes, int(image.width), int(image.height), texels, bridge->transfer,
+                                    time_seconds, bridge->frames, readback, error);
+            }
             const host::FrameReport& report = bridge->gl->report();
             bridge->timing = report.timing;
             bridge->times = report.times;

@@ -63,4 +63,17 @@ bool GlFrame::run(void* host_bytes, int width, int height, Texels texels, app::T
   return adapters::no_gl_error(error);
 }
 
+bool GlFrame::run_on_layers(int width, int height, app::Transfer transfer, double time_seconds,
+                            uint64_t frame_index, const Readback& readback, std::string* error) {
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  const gl::EightBitTexture& in = shared_.layer(0);
+  const gl::EightBitTexture& out = shared_.layer(1);
+  if (readback.app_pixels) in.read_top_first(readback.app_pixels, width, height);
+  if (!chain_->render(in.as(transfer), out.as(transfer), width, height, time_seconds, frame_index, error)) return false;
+  if (readback.result_pixels) out.read_top_first(readback.result_pixels, width, height);
+  glFinish();
+  return adapters::no_gl_error(error);
+}
+
 }  // namespace pfx::vk

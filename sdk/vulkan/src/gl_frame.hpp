@@ -1,7 +1,8 @@
 // The GL half of a frame's trip through the bridge, on the bridge's GL thread: the frame (in
-// memory shared with Vulkan, or uploaded from host memory) decoded into the chain's linear
-// RGBA16F, the chain, the result encoded back into the same place. Images arrive top row first,
-// as Vulkan stores them, and DisplayFrame flips them into GL's bottom-row-first order and back.
+// memory shared with Vulkan, or uploaded from host memory) brought into the chain's textures by
+// DisplayFrame, the chain, the result handed back into the same place. Images arrive top row first,
+// as Vulkan stores them, and DisplayFrame flips them into GL's bottom-row-first order and back;
+// a go-between that Vulkan's blits filled (vk_transport.hpp) is the chain's textures already.
 #pragma once
 
 #include <memory>
@@ -59,6 +60,10 @@ class GlFrame {
   };
   bool run(void* host_bytes, int width, int height, Texels texels, app::Transfer transfer, double time_seconds,
            uint64_t frame_index, const Readback& readback, std::string* error);
+  // The same over a go-between of two layers (GlMemory::layer): the chain samples layer 0 and draws
+  // layer 1, which the blits have already turned over and put in R, G, B, A order.
+  bool run_on_layers(int width, int height, app::Transfer transfer, double time_seconds, uint64_t frame_index,
+                     const Readback& readback, std::string* error);
 
  private:
   GLuint staging(int width, int height, bool ten_bit);

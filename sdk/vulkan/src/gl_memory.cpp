@@ -43,9 +43,11 @@ bool GlMemory::check(const uint8_t device_uuid[16], const uint8_t driver_uuid[16
   delete_memory_objects_ = lookup<DeleteMemoryObjects>("glDeleteMemoryObjectsEXT");
   import_memory_fd_ = lookup<ImportMemoryFd>("glImportMemoryFdEXT");
   texture_storage_mem_2d_ = lookup<TextureStorageMem2D>("glTextureStorageMem2DEXT");
+  texture_storage_mem_3d_ = lookup<TextureStorageMem3D>("glTextureStorageMem3DEXT");
   get_unsigned_bytev_ = lookup<GetUnsignedBytev>("glGetUnsignedBytevEXT");
   get_unsigned_bytei_v_ = lookup<GetUnsignedBytei_v>("glGetUnsignedBytei_vEXT");
   if (!create_memory_objects_ || !delete_memory_objects_ || !import_memory_fd_ || !texture_storage_mem_2d_ ||
+      !texture_storage_mem_3d_ ||
       !get_unsigned_bytev_ || !get_unsigned_bytei_v_) {
     *why = "the GL names GL_EXT_memory_object_fd but does not give its functions";
     return false;
@@ -69,12 +71,13 @@ bool GlMemory::check(const uint8_t device_uuid[16], const uint8_t driver_uuid[16
 }
 
 void GlMemory::release() {
+  for (gl::EightBitTexture& layer : layers_) layer.release();
   if (texture_) glDeleteTextures(1, &texture_);
   if (memory_ && delete_memory_objects_) delete_memory_objects_(1, &memory_);
   texture_ = memory_ = 0;
 }
 
-bool GlMemory::import(int fd, uint64_t memory_size, int width, int height, bool ten_bit, std::string* error) {
+bool GlMemory::import(int fd, uint64_t memory_size, int width, int height, Between between, std::string* error) {
   release();
   while (glGetError() != GL_NO_ERROR) {
   }
@@ -87,9 +90,21 @@ bool GlMemory::import(int fd, uint64_t memory_size, int width, int height, bool 
     release();
     return false;
   }
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
+  glCreateTextures(between.blits ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &texture_);
   glTextureParameteri(texture_, kTextureTiling, static_cast<GLint>(kOptimalTiling));
-  texture_storage_mem_2d_(texture_, 1, ten_bit ? GL_RGB10_A2 : GL_RGBA8, width, height, memory_, 0);
+  if (between.blits) {
+    // The Vulkan image's own format, then a 2D view of each layer in both readings.
+    texture_storage_mem_3d_(texture_, 1, between.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, width, height, 2, memory_, 0);
+    for (GLuint index = 0; index < 2; ++index) {
+      gl::EightBitTexture& layer = layers_[index];
+      glGenTextures(1, &layer.texture);
+      glTextureView(layer.texture, GL_TEXTURE_2D, texture_, GL_RGBA8, 0, 1, index, 1);
+      glGenTextures(1, &layer.srgb_view);
+      glTextureView(layer.srgb_view, GL_TEXTURE_2D, texture_, GL_SRGB8_ALPHA8, 0, 1, index, 1);
+    }
+  } else {
+    texture_storage_mem_2d_(texture_, 1, between.ten_bit ? GL_RGB10_A2 : GL_RGBA8, width, height, memory_, 0);
+  }
   if (glGetError() != GL_NO_ERROR) {
     *error = "the GL could not make a texture over the Vulkan image's memory";
     release();

@@ -1,6 +1,8 @@
 // The two submissions of a frame (vk_transport.hpp): in, and back out.
 #include "vk_transport.hpp"
 
+#include <algorithm>
+
 namespace pfx::vk {
 namespace {
 
@@ -15,7 +17,8 @@ VkImageMemoryBarrier barrier_for(VkImage image, VkImageLayout from, VkImageLayou
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  // Every layer: the caller's image has one, the go-between one or two.
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
   return barrier;
 }
 
@@ -30,6 +33,31 @@ constexpr VkAccessFlags kAnyAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMOR
 
 }  // namespace
 
+void Transport::record_blit(VkCommandBuffer commands, const pfx_vk_image& image, bool into_between) {
+  // Layer 0 is what the chain samples, layer 1 what it draws. The image's top row meets the
+  // layer's last, which GL takes for the top of the picture.
+  const int32_t width = int32_t(width_), height = int32_t(height_);
+  const VkOffset3D top_first[2] = {{0, 0, 0}, {width, height, 1}};
+  const VkOffset3D bottom_first[2] = {{0, height, 0}, {width, 0, 1}};
+  const VkImageSubresourceLayers image_layer{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  VkImageBlit region{};
+  if (into_between) {
+    region.srcSubresource = image_layer;
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    std::copy(top_first, top_first + 2, region.srcOffsets);
+    std::copy(bottom_first, bottom_first + 2, region.dstOffsets);
+    f_.CmdBlitImage(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, between_image_,
+                    VK_IMAGE_LAYOUT_GENERAL, 1, &region, VK_FILTER_NEAREST);
+  } else {
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 1};
+    region.dstSubresource = image_layer;
+    std::copy(bottom_first, bottom_first + 2, region.srcOffsets);
+    std::copy(top_first, top_first + 2, region.dstOffsets);
+    f_.CmdBlitImage(commands, between_image_, VK_IMAGE_LAYOUT_GENERAL, image.image,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
+  }
+}
+
 void Transport::record_copy_in(VkCommandBuffer commands, const pfx_vk_image& image) {
   // The go-between stays in GENERAL: the GL side reads and writes it between submissions, and
   // without shared semaphores there is no way to hand a layout over.
@@ -42,7 +70,9 @@ void Transport::record_copy_in(VkCommandBuffer commands, const pfx_vk_image& ima
                         0, nullptr, between_image_ ? 2 : 1, before);
   between_fresh_ = false;
   const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  if (between_image_) {
+  if (between_.blits) {
+    record_blit(commands, image, true);
+  } else if (between_image_) {
     // A raw copy: B8G8R8A8 and R8G8B8A8, UNORM or SRGB, and A2B10G10R10 and A2R10G10B10 are all
     // 32-bit texels; the GL side reads them as what they are, swizzles and decodes.
     VkImageCopy region{};
@@ -99,7 +129,9 @@ void Transport::record_copy_back(VkCommandBuffer commands, const pfx_vk_image& i
   f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &between, 0, nullptr, 1, &to_dst);
   const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  if (between_image_) {
+  if (between_.blits) {
+    record_blit(commands, image, false);
+  } else if (between_image_) {
     VkImageCopy region{};
     region.srcSubresource = layers;
     region.dstSubresource = layers;

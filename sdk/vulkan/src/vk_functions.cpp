@@ -26,8 +26,10 @@ bool load_functions(VkInstance instance, VkDevice device, PFN_vkGetInstanceProcA
   if (!f.GetPhysicalDeviceProperties2)
     f.GetPhysicalDeviceProperties2 = reinterpret_cast<PFN_vkGetPhysicalDeviceProperties2>(
         get_instance_proc_addr(instance, "vkGetPhysicalDeviceProperties2"));
-  if (!f.GetPhysicalDeviceMemoryProperties) {
-    *error = "the Vulkan instance does not give vkGetPhysicalDeviceMemoryProperties";
+  f.GetPhysicalDeviceFormatProperties = reinterpret_cast<PFN_vkGetPhysicalDeviceFormatProperties>(
+      get_instance_proc_addr(instance, "vkGetPhysicalDeviceFormatProperties"));
+  if (!f.GetPhysicalDeviceMemoryProperties || !f.GetPhysicalDeviceFormatProperties) {
+    *error = "the Vulkan instance does not give vkGetPhysicalDeviceMemoryProperties or vkGetPhysicalDeviceFormatProperties";
     return false;
   }
   const PFN_vkGetDeviceProcAddr g = get_device_proc_addr;
@@ -39,6 +41,7 @@ bool load_functions(VkInstance instance, VkDevice device, PFN_vkGetInstanceProcA
                   device_function(g, device, "vkResetCommandBuffer", &f.ResetCommandBuffer, error) &&
                   device_function(g, device, "vkCmdPipelineBarrier", &f.CmdPipelineBarrier, error) &&
                   device_function(g, device, "vkCmdCopyImage", &f.CmdCopyImage, error) &&
+                  device_function(g, device, "vkCmdBlitImage", &f.CmdBlitImage, error) &&
                   device_function(g, device, "vkCmdCopyImageToBuffer", &f.CmdCopyImageToBuffer, error) &&
                   device_function(g, device, "vkCmdCopyBufferToImage", &f.CmdCopyBufferToImage, error) &&
                   device_function(g, device, "vkQueueSubmit", &f.QueueSubmit, error) &&

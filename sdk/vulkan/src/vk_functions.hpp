@@ -13,6 +13,7 @@ struct Functions {
   // Instance level.
   PFN_vkGetPhysicalDeviceMemoryProperties GetPhysicalDeviceMemoryProperties = nullptr;
   PFN_vkGetPhysicalDeviceProperties2 GetPhysicalDeviceProperties2 = nullptr;  // or the KHR one
+  PFN_vkGetPhysicalDeviceFormatProperties GetPhysicalDeviceFormatProperties = nullptr;
   // Device level.
   PFN_vkCreateCommandPool CreateCommandPool = nullptr;
   PFN_vkDestroyCommandPool DestroyCommandPool = nullptr;
@@ -22,6 +23,7 @@ struct Functions {
   PFN_vkResetCommandBuffer ResetCommandBuffer = nullptr;
   PFN_vkCmdPipelineBarrier CmdPipelineBarrier = nullptr;
   PFN_vkCmdCopyImage CmdCopyImage = nullptr;
+  PFN_vkCmdBlitImage CmdBlitImage = nullptr;
   PFN_vkCmdCopyImageToBuffer CmdCopyImageToBuffer = nullptr;
   PFN_vkCmdCopyBufferToImage CmdCopyBufferToImage = nullptr;
   PFN_vkQueueSubmit QueueSubmit = nullptr;

@@ -5,9 +5,35 @@
 namespace pfx::vk {
 namespace {
 
-constexpr VkFormat kBetweenFormat = VK_FORMAT_R8G8B8A8_UNORM;
+bool is_srgb(VkFormat format) { return format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB; }
+
+bool is_eight_bit(VkFormat format) {
+  return is_srgb(format) || format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_B8G8R8A8_UNORM;
+}
+
+VkFormat between_format(Between between) {
+  // Raw texels of either width are 32 bits each; the format only has to let a copy take them.
+  return between.blits && between.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+}
 
 }  // namespace
+
+bool Transport::can_blit(VkFormat format) const {
+  VkFormatProperties properties{};
+  f_.GetPhysicalDeviceFormatProperties(physical_device_, format, &properties);
+  const VkFormatFeatureFlags both = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT;
+  return (properties.optimalTilingFeatures & both) == both;
+}
+
+Between Transport::between_for(Path path, VkFormat format) const {
+  Between between;
+  between.ten_bit = format == VK_FORMAT_A2B10G10R10_UNORM_PACK32 || format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
+  if (path != Path::SHARED || !is_eight_bit(format)) return between;
+  between.srgb = is_srgb(format);
+  between.blits = can_blit(format) && can_blit(between.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM);
+  if (!between.blits) between.srgb = false;
+  return between;
+}
 
 Transport::~Transport() {
   wait_idle();
@@ -65,8 +91,8 @@ void Transport::release_between() {
   width_ = height_ = 0;
 }
 
-bool Transport::prepared(Path path, uint32_t width, uint32_t height, bool ten_bit) const {
-  return memory_ && path_ == path && width_ == width && height_ == height && ten_bit_ == ten_bit;
+bool Transport::prepared(Path path, uint32_t width, uint32_t height, Between between) const {
+  return memory_ && path_ == path && width_ == width && height_ == height && between_ == between;
 }
 
 bool Transport::allocate(const VkMemoryRequirements& needs, VkMemoryPropertyFlags want, const void* next,
@@ -96,11 +122,13 @@ bool Transport::make_shared_image(std::string* error) {
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
   info.pNext = &external;
+  // The GL views the bits as RGBA8 and as SRGB8_ALPHA8 both.
+  info.flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
   info.imageType = VK_IMAGE_TYPE_2D;
-  info.format = kBetweenFormat;
+  info.format = between_format(between_);
   info.extent = {width_, height_, 1};
   info.mipLevels = 1;
-  info.arrayLayers = 1;
+  info.arrayLayers = between_.blits ? 2 : 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   // What the GL does with it too: samples it and renders into it.
@@ -154,16 +182,16 @@ bool Transport::make_host_buffer(std::string* error) {
   return result == VK_SUCCESS;
 }
 
-bool Transport::prepare(Path path, uint32_t width, uint32_t height, bool ten_bit, int* fd, uint64_t* memory_size,
-                        std::string* error) {
+bool Transport::prepare(Path path, uint32_t width, uint32_t height, Between between, int* fd,
+                        uint64_t* memory_size, std::string* error) {
   *fd = -1;  // the go-between the GL side already has serves
-  if (prepared(path, width, height, ten_bit)) return true;
+  if (prepared(path, width, height, between)) return true;
   wait_idle();
   release_between();
   path_ = path;
   width_ = width;
   height_ = height;
-  ten_bit_ = ten_bit;
+  between_ = between;
   const bool made = path == Path::SHARED ? make_shared_image(error) : make_host_buffer(error);
   if (!made) {
     release_between();
