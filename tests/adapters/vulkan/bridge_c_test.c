@@ -6,7 +6,8 @@
  *   bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host [SET]
  *
  * SET: "effect.param=value" for the bridge's `set`, as pfx-render's --set took it.
- * "shared" lets the bridge share memory (and fails if it did not); "host" forces host memory.
+ * "shared" lets the bridge share memory (and fails if it did not, or if it did not go by blits for
+ * an 8-bit image and by copies for a 10-bit one); "host" forces host memory.
  * Exit status 0 when every pixel's R, G and B are within one code of EXPECTED. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -198,9 +199,16 @@ static int transfer(const context* c, const gpu_image* g, int upload) {
   return 1;
 }
 
+/* How the bridge said it moves frames of the image's size through shared memory: 'b' blits, 'c'
+ * copies, 0 not said (docs/sdk.md: an 8-bit image goes by blits where the device can blit it,
+ * which lavapipe can). */
+static char said_way = 0;
+
 static void log_line(void* user, int level, const char* message) {
   (void)user;
   fprintf(stderr, "bridge (%d): %s\n", level, message);
+  if (strstr(message, " frames: Vulkan blits them")) said_way = 'b';
+  if (strstr(message, " frames: copied as they are")) said_way = 'c';
 }
 
 /* What the bridge says of the run: the chain, whether a pass ran, the passes' times (glFinish and a
@@ -260,6 +268,11 @@ static int run_bridge(const context* c, const gpu_image* g, VkFormat format, con
   printf("path: %s\n", pfx_vk_bridge_path(bridge));
   if (strcmp(pfx_vk_bridge_path(bridge), want_path) != 0) status = PFX_VK_BAD_ARGUMENT;
   if (status == PFX_VK_OK && !report_run(bridge, chain, image.width, image.height)) status = PFX_VK_BAD_ARGUMENT;
+  if (status == PFX_VK_OK && !host_memory && strcmp(chain, "none") != 0) {
+    const int eight_bit = format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_B8G8R8A8_UNORM;
+    printf("shared memory by %s\n", said_way == 'b' ? "blits" : said_way == 'c' ? "copies" : "(not said)");
+    if (said_way != (eight_bit ? 'b' : 'c')) status = PFX_VK_BAD_ARGUMENT;
+  }
   vkQueueWaitIdle(c->queue);
   pfx_vk_bridge_destroy(bridge);
   return status == PFX_VK_OK || fail("the bridge did not run as asked");
