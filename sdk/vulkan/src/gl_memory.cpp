@@ -47,8 +47,7 @@ bool GlMemory::check(const uint8_t device_uuid[16], const uint8_t driver_uuid[16
   get_unsigned_bytev_ = lookup<GetUnsignedBytev>("glGetUnsignedBytevEXT");
   get_unsigned_bytei_v_ = lookup<GetUnsignedBytei_v>("glGetUnsignedBytei_vEXT");
   if (!create_memory_objects_ || !delete_memory_objects_ || !import_memory_fd_ || !texture_storage_mem_2d_ ||
-      !texture_storage_mem_3d_ ||
-      !get_unsigned_bytev_ || !get_unsigned_bytei_v_) {
+      !texture_storage_mem_3d_ || !get_unsigned_bytev_ || !get_unsigned_bytei_v_) {
     *why = "the GL names GL_EXT_memory_object_fd but does not give its functions";
     return false;
   }

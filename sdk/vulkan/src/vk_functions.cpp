@@ -29,7 +29,8 @@ bool load_functions(VkInstance instance, VkDevice device, PFN_vkGetInstanceProcA
   f.GetPhysicalDeviceFormatProperties = reinterpret_cast<PFN_vkGetPhysicalDeviceFormatProperties>(
       get_instance_proc_addr(instance, "vkGetPhysicalDeviceFormatProperties"));
   if (!f.GetPhysicalDeviceMemoryProperties || !f.GetPhysicalDeviceFormatProperties) {
-    *error = "the Vulkan instance does not give vkGetPhysicalDeviceMemoryProperties or vkGetPhysicalDeviceFormatProperties";
+    *error = "the Vulkan instance does not give vkGetPhysicalDeviceMemoryProperties or "
+             "vkGetPhysicalDeviceFormatProperties";
     return false;
   }
   const PFN_vkGetDeviceProcAddr g = get_device_proc_addr;

@@ -29,10 +29,10 @@ Between Transport::between_for(Path path, VkFormat format) const {
   Between between;
   between.ten_bit = format == VK_FORMAT_A2B10G10R10_UNORM_PACK32 || format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
   if (path != Path::SHARED || !is_eight_bit(format)) return between;
-  between.srgb = is_srgb(format);
-  between.blits = can_blit(format) && can_blit(between.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM);
-  if (!between.blits) between.srgb = false;
-  return between;
+  Between blitted;
+  blitted.blits = true;
+  blitted.srgb = is_srgb(format);
+  return can_blit(format) && can_blit(between_format(blitted)) ? blitted : between;
 }
 
 Transport::~Transport() {
