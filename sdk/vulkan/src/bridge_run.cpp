@@ -11,14 +11,7 @@ bool is_bgra(VkFormat format) {
          format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
 }
 
-bool is_ten_bit(VkFormat format) {
-  return format == VK_FORMAT_A2B10G10R10_UNORM_PACK32 || format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
-}
-
-bool takes_format(VkFormat format) {
-  return is_bgra(format) || is_ten_bit(format) || format == VK_FORMAT_R8G8B8A8_UNORM ||
-         format == VK_FORMAT_R8G8B8A8_SRGB;
-}
+bool takes_format(VkFormat format) { return is_eight_bit(format) || is_ten_bit(format); }
 
 // Makes the go-between for the image's size; when sharing fails, says so once and moves to host
 // memory for good.

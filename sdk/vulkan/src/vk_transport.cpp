@@ -1,14 +1,22 @@
 #include "vk_transport.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <vector>
 
 namespace pfx::vk {
 namespace {
 
+constexpr VkFormat kEightBitFormats[] = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_UNORM,
+                                          VK_FORMAT_B8G8R8A8_SRGB};
+
 bool is_srgb(VkFormat format) { return format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB; }
 
-bool is_eight_bit(VkFormat format) {
-  return is_srgb(format) || format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_B8G8R8A8_UNORM;
+Between blitted(VkFormat format) {
+  Between between;
+  between.blits = true;
+  between.srgb = is_srgb(format);
+  return between;
 }
 
 VkFormat between_format(Between between) {
@@ -18,6 +26,14 @@ VkFormat between_format(Between between) {
 
 }  // namespace
 
+bool is_eight_bit(VkFormat format) {
+  return std::find(std::begin(kEightBitFormats), std::end(kEightBitFormats), format) != std::end(kEightBitFormats);
+}
+
+bool is_ten_bit(VkFormat format) {
+  return format == VK_FORMAT_A2B10G10R10_UNORM_PACK32 || format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
+}
+
 bool Transport::can_blit(VkFormat format) const {
   VkFormatProperties properties{};
   f_.GetPhysicalDeviceFormatProperties(physical_device_, format, &properties);
@@ -26,13 +42,12 @@ bool Transport::can_blit(VkFormat format) const {
 }
 
 Between Transport::between_for(Path path, VkFormat format) const {
+  const bool blits =
+      path == Path::SHARED && std::find(blit_formats_.begin(), blit_formats_.end(), format) != blit_formats_.end();
+  if (blits) return blitted(format);
   Between between;
-  between.ten_bit = format == VK_FORMAT_A2B10G10R10_UNORM_PACK32 || format == VK_FORMAT_A2R10G10B10_UNORM_PACK32;
-  if (path != Path::SHARED || !is_eight_bit(format)) return between;
-  Between blitted;
-  blitted.blits = true;
-  blitted.srgb = is_srgb(format);
-  return can_blit(format) && can_blit(between_format(blitted)) ? blitted : between;
+  between.ten_bit = is_ten_bit(format);
+  return between;
 }
 
 Transport::~Transport() {
@@ -69,6 +84,9 @@ bool Transport::init(uint32_t queue_family_index, SetLoaderData set_loader_data,
   if (result == VK_SUCCESS) result = f_.CreateFence(device_, &fence_info, nullptr, &in_done_);
   if (result == VK_SUCCESS) result = f_.CreateFence(device_, &fence_info, nullptr, &out_done_);
   if (result != VK_SUCCESS) *error = "could not make the bridge's command buffers: " + result_name(result);
+  // Once: which 8-bit formats the device can blit to and from their go-between's.
+  for (VkFormat format : kEightBitFormats)
+    if (can_blit(format) && can_blit(between_format(blitted(format)))) blit_formats_.push_back(format);
   return result == VK_SUCCESS;
 }
 

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <pfx/vulkan_bridge.h>
 
@@ -21,6 +22,11 @@
 namespace pfx::vk {
 
 enum class Path { SHARED, HOST };
+
+// The formats the bridge takes: 8-bit R8G8B8A8 and B8G8R8A8, UNORM or SRGB; 10-bit A2B10G10R10 and
+// A2R10G10B10.
+bool is_eight_bit(VkFormat format);
+bool is_ten_bit(VkFormat format);
 
 // What the go-between holds.
 struct Between {
@@ -47,7 +53,8 @@ class Transport {
   bool init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error);
 
   // The go-between for an image of the format (one the bridge takes) on the path: blits only where
-  // the path is SHARED, the image is 8-bit, and the device can blit both formats both ways.
+  // the path is SHARED, the image is 8-bit, and the device can blit both formats both ways (asked
+  // once, by init).
   Between between_for(Path path, VkFormat format) const;
   // Makes the go-between for a width x height frame: SHARED, an exportable image whose memory
   // *fd (a new descriptor the caller owns) and *memory_size describe; HOST, a mapped buffer
@@ -94,6 +101,7 @@ class Transport {
   bool out_pending_ = false;
   Path path_ = Path::HOST;
   uint32_t width_ = 0, height_ = 0;
+  std::vector<VkFormat> blit_formats_;  // the 8-bit formats that go by blits (init)
   Between between_;
   VkImage between_image_ = VK_NULL_HANDLE;
   bool between_fresh_ = false;  // the image was never used: its layout is still UNDEFINED
