@@ -152,6 +152,9 @@ bool validate_param_value(const pfx_param_desc& desc, pfx_value* value, std::str
       v = v < desc.hard_min ? desc.hard_min : desc.hard_max;
       clamped = true;
     }
+    // -0 means 0 to every parameter, but not to every reader of a saved value: JSON's "-0" reads
+    // back as the integer 0. Adding +0 turns -0 into 0 and leaves every other value as it is.
+    v += 0.0;
   }
   for (int i = count; i < 4; ++i) value->v[i] = 0;
   if (clamped && note) *note = "clamped to " + format_param_text(desc, *value);
