@@ -1,11 +1,14 @@
 // libFuzzer target for the FX compiler (plugins/fx/compiler): any bytes as an effect file, with one
-// header it may include. Whatever the input, the compiler returns (no crash, no hang: every
+// header it may include. An input may carry more files of its own, so that include chains are
+// explored too: a line "//@file NAME" starts the file NAME (also found as inc/NAME), and
+// what comes before the first such line is main.fx. Whatever the input, the compiler returns (no crash, no hang: every
 // recursion is bounded by plugins/fx/compiler/limits.hpp), every error has a location in a known
 // file, an accepted effect's whole tree can be walked, and its model and the GLSL of every pass
 // are generated.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <map>
 #include <string>
 
 #include "ast/ast_printer.hpp"
@@ -19,12 +22,35 @@ const char kHeader[] =
     "void VS(uint id : SV_VertexID, out float4 p : SV_Position, out float2 uv : TEXCOORD)\n"
     "{ uv = float2(id == 2 ? 2 : 0, id == 1 ? 2 : 0); p = float4(uv * float2(2, -2) + float2(-1, 1), 0, 1); }\n";
 
+const char kFileMarker[] = "//@file ";
+
+// main.fx and the files the input carries, by name.
+std::map<std::string, std::string> split_files(const std::string& input) {
+  std::map<std::string, std::string> files;
+  std::string name = "main.fx";
+  size_t start = 0;
+  for (;;) {
+    size_t marker = input.find(kFileMarker, start);
+    while (marker != std::string::npos && marker > 0 && input[marker - 1] != '\n')
+      marker = input.find(kFileMarker, marker + 1);
+    files[name] = input.substr(start, marker == std::string::npos ? std::string::npos : marker - start);
+    if (marker == std::string::npos) return files;
+    const size_t name_start = marker + sizeof kFileMarker - 1;
+    const size_t end = input.find('\n', name_start);
+    name = input.substr(name_start, end == std::string::npos ? std::string::npos : end - name_start);
+    if (end == std::string::npos) return files;
+    start = end + 1;
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  std::string source(reinterpret_cast<const char*>(data), size);
-  auto reader = [&source](const std::string& path, std::string& contents) {
-    if (path == "main.fx") return contents = source, true;
+  const std::map<std::string, std::string> files = split_files(std::string(reinterpret_cast<const char*>(data), size));
+  auto reader = [&files](const std::string& path, std::string& contents) {
+    auto found = files.find(path);
+    if (found == files.end() && path.rfind("inc/", 0) == 0) found = files.find(path.substr(4));
+    if (found != files.end()) return contents = found->second, true;
     if (path == "common.fxh" || path == "inc/common.fxh") return contents = kHeader, true;
     return false;
   };

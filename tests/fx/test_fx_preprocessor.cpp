@@ -46,6 +46,26 @@ TEST_CASE("a macro never expands inside its own expansion", "[fx][preprocessor]"
   CHECK(expand("#define f(a) a*g\n#define g(a) f(a)\nf(2)(9)") == "2*9*g");
 }
 
+// FX files are untrusted input. A directive inside a macro's argument list is undefined in C; GCC
+// runs it and finishes the expansion with the definition it started with, and so does pfx. The
+// first case, an effect that #undefs its macro while the macro collects its arguments, once made
+// the expander read the freed definition (found by fuzz_fx_compiler; also in its regressions).
+TEST_CASE("a directive inside a macro's arguments: the expansion keeps the definition it started with",
+          "[fx][preprocessor][hard]") {
+  CHECK(expand("#define F(x) x\nF(\n#undef F\n1) F(2)") == "1 F(2)");
+  CHECK(expand("#define F(x) [x]\n#define G F(\nG\n#undef F\n1) F(2)") == "[1] F(2)");
+  auto redefined = preprocess_text("#define F(x) [x]\nF(\n#define F(x) <x>\n1) F(2)");
+  CHECK(redefined->text == "[1] <2>");
+  CHECK(redefined->errors.empty());
+  const std::string effect =
+      "#define F(x) x\n"
+      "float4 PS(float4 p : SV_Position) : SV_Target { return F(\n"
+      "#undef F\n"
+      "1); }\n"
+      "technique T { pass { VertexShader = 0; PixelShader = PS; } }\n";
+  CHECK(preprocess_text(effect)->text.find("return 1; }") != std::string::npos);
+}
+
 TEST_CASE("#if evaluates integer constant expressions", "[fx][preprocessor]") {
   const std::pair<const char*, bool> cases[] = {
       {"1 + 2 * 3 == 7", true},   {"(1 + 2) * 3 == 9", true}, {"-1 < 0", true},       {"0x10 == 16", true},

@@ -227,4 +227,18 @@ std::vector<std::string> capture_prefixes(const std::vector<Capture>& captures, 
   return prefixes;
 }
 
+std::vector<SkippedCapture> skipped_captures(const std::vector<Capture>& captures, uint64_t frame,
+                                             const std::string& why, const std::string& suffix) {
+  const std::string at = "frame " + std::to_string(frame) + ": ";
+  std::vector<SkippedCapture> out;
+  for (const auto& capture : captures) {
+    if (capture.every_frame)
+      out.push_back({"capture " + capture.prefix + suffix + why,
+                     at + "captures all:" + capture.prefix + suffix + " are not written while " + why});
+    else if (capture.frame == frame)
+      out.push_back({"", at + "capture " + capture.prefix + suffix + " not written: " + why});
+  }
+  return out;
+}
+
 }  // namespace pfx::inject

@@ -70,6 +70,16 @@ constexpr const char* kAll[] = {kChain,     kPreset,    kSet,    kPlugins, kDept
 
 // The prefixes to write for the `frame`-th presented frame (all:PREFIX gets its %d filled in).
 std::vector<std::string> capture_prefixes(const std::vector<Capture>& captures, uint64_t frame);
+// What the log says of the captures of the `frame`-th frame that are not written because `why`
+// (prefixes with `suffix` added, as a present of a second window names its captures): a line for
+// each capture of that frame; for all:PREFIX one line while the reason lasts, which once_key names
+// for the log's once-only table (empty for the others).
+struct SkippedCapture {
+  std::string once_key;
+  std::string line;
+};
+std::vector<SkippedCapture> skipped_captures(const std::vector<Capture>& captures, uint64_t frame,
+                                             const std::string& why, const std::string& suffix = "");
 // "12:shot" or "all:shot.%d"; false with *error saying what is wrong.
 bool parse_capture(const std::string& text, Capture* out, std::string* error);
 // "500,5000": presented frame numbers from 1; false with *error naming the item that is not one.

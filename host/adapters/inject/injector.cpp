@@ -138,6 +138,7 @@ void Injector::present(const PresentCall& call) {
   if (ok && entry.pipeline->ran_passes() && !settings_.stats_file.empty()) stats_.ran_chain();
   if (!ok) {
     log_.line("frame " + std::to_string(presented_) + ": " + reason + "; this context's frames pass through untouched from now on");
+    say_captures_skipped("the chain failed");
     entry.pipeline.reset();
     entry.aside = reason;
     return;
@@ -150,12 +151,9 @@ void Injector::present(const PresentCall& call) {
 }
 
 void Injector::say_captures_skipped(const std::string& why) {
-  for (const auto& capture : settings_.captures) {
-    if (capture.every_frame)
-      log_.once("capture " + capture.prefix + why, "frame " + std::to_string(presented_) + ": captures all:" +
-                                                       capture.prefix + " are not written while " + why);
-    else if (capture.frame == presented_)
-      log_.line("frame " + std::to_string(presented_) + ": capture " + capture.prefix + " not written: " + why);
+  for (const auto& skipped : skipped_captures(settings_.captures, presented_, why)) {
+    if (skipped.once_key.empty()) log_.line(skipped.line);
+    else log_.once(skipped.once_key, skipped.line);
   }
 }
 

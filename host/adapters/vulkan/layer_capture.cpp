@@ -25,6 +25,18 @@ std::vector<std::string> capture_prefixes_for(uint64_t frame) {
   return inject::capture_prefixes(layer_inject_settings().captures, frame);
 }
 
+std::string swapchain_suffix(uint32_t swapchain_index) {
+  return swapchain_index > 0 ? "-" + std::to_string(swapchain_index + 1) : "";
+}
+
+void say_captures_skipped(uint64_t frame, uint32_t swapchain_index, const std::string& why) {
+  for (const auto& skipped : inject::skipped_captures(layer_inject_settings().captures, frame, why,
+                                                      swapchain_suffix(swapchain_index))) {
+    if (skipped.once_key.empty()) log_line(skipped.line);
+    else log_once(skipped.once_key, skipped.line);
+  }
+}
+
 void write_capture(const std::string& prefix, uint32_t width, uint32_t height, const std::vector<uint8_t>& app,
                    const std::vector<uint8_t>& result) {
   std::string error;

@@ -11,6 +11,11 @@ namespace pfx::vulkan_layer {
 
 // The capture prefixes asked for this frame.
 std::vector<std::string> capture_prefixes_for(uint64_t frame);
+// Names in the log the captures of this frame that are not written, with the reason: each once
+// (all:PREFIX once while the reason lasts). swapchain_index as for write_capture's prefixes.
+void say_captures_skipped(uint64_t frame, uint32_t swapchain_index, const std::string& why);
+// PREFIX for the first swapchain of a present, PREFIX-2 for the second...
+std::string swapchain_suffix(uint32_t swapchain_index);
 // Writes PREFIX.app.png and PREFIX.png from RGBA rows, top row first; a file that cannot be
 // written is named in the log.
 void write_capture(const std::string& prefix, uint32_t width, uint32_t height, const std::vector<uint8_t>& app,

@@ -89,14 +89,11 @@ pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
 std::atomic<uint64_t> presented{0};
 
 // Runs the image through the bridge (with the captures asked for this frame, named for the present's
-// swapchain_index-th swapchain); false when the device must pass through from now on. The image's
-// semaphore is signalled either way.
+// swapchain_index-th swapchain); false when the device must pass through from now on.
+// pfx_vk_bridge_submitted then says whether the image's semaphore will be signalled.
 bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame, uint32_t swapchain_index) {
   std::vector<std::string> prefixes = capture_prefixes_for(frame);
-  // A present of several swapchains (an application with several windows): PREFIX for the first,
-  // PREFIX-2 for the second...
-  if (swapchain_index > 0)
-    for (auto& prefix : prefixes) prefix += "-" + std::to_string(swapchain_index + 1);
+  for (auto& prefix : prefixes) prefix += swapchain_suffix(swapchain_index);
   std::vector<uint8_t> app, result;
   if (!prefixes.empty()) {
     app.resize(size_t(image->width) * image->height * 4);
@@ -104,10 +101,13 @@ bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame, uint3
     image->app_pixels = app.data();
     image->result_pixels = result.data();
   }
+  // A frame the chain would not change adds nothing to the application's queue.
+  image->flags = PFX_VK_IMAGE_MAY_SKIP;
   const pfx_vk_status status = pfx_vk_bridge_run(bridge, image);
   if (status != PFX_VK_OK) {
     log_line("frame " + std::to_string(frame) + ": frames pass through from now on: " +
              pfx_vk_bridge_last_error(bridge));
+    say_captures_skipped(frame, swapchain_index, "the chain failed");
     return false;
   }
   // A dry run presents the application's frame: that is what PREFIX.png shows.
@@ -115,6 +115,13 @@ bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame, uint3
   for (const auto& prefix : prefixes) write_capture(prefix, image->width, image->height, app, dry_run ? app : result);
   report_run(bridge, *image, frame);
   return true;
+}
+
+// The application's work in flight finished, so that its exit handlers (and those of the layers
+// around pfx) destroy nothing a queue still uses.
+void idle_every_device() {
+  std::lock_guard<std::mutex> lock(state().mutex);
+  for (const auto& [key, device] : state().devices) device->DeviceWaitIdle(device->handle);
 }
 
 }  // namespace
@@ -128,20 +135,27 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
   // pass through untouched, as in OpenGL applications.
   const bool before_start = frame < layer_inject_settings().from_frame;
   const bool untouched = before_start || layer_inject_settings().bypass;
-  if (before_start)
-    for (const auto& prefix : capture_prefixes_for(frame))
-      log_line("frame " + std::to_string(frame) + ": capture " + prefix +
-               " not written: frames before --from-frame pass through");
+  if (before_start) say_captures_skipped(frame, 0, "frames before --from-frame pass through");
+  else if (d->failed && !untouched) say_captures_skipped(frame, 0, "the chain failed and frames pass through");
   if (!d->failed && !untouched) reread_preset_if_changed(d);
+  // What the present waits on: for each image the bridge submitted work for, the image's own
+  // semaphore (that work waited on the application's); the application's semaphores where no
+  // submission took them, as in a frame the chain leaves alone.
   std::vector<VkSemaphore> waits;
+  bool application_waits_taken = info->waitSemaphoreCount == 0;
   for (uint32_t i = 0; i < info->swapchainCount && !d->failed && !untouched; ++i) {
     auto found = d->swapchains.find(info->pSwapchains[i]);
-    if (found == d->swapchains.end() || !found->second->usable) continue;
-    const Swapchain& s = *found->second;
     const uint32_t index = info->pImageIndices[i];
-    if (index >= s.images.size()) continue;
+    if (found == d->swapchains.end() || !found->second->usable || index >= found->second->images.size()) {
+      say_captures_skipped(frame, i, "this swapchain's frames pass through");
+      continue;
+    }
+    const Swapchain& s = *found->second;
     pfx_vk_bridge* bridge = bridge_for(d, queue);
-    if (!bridge) break;
+    if (!bridge) {
+      say_captures_skipped(frame, i, "the chain could not be made");
+      break;
+    }
     pfx_vk_image image{};
     image.struct_size = sizeof image;
     image.image = s.images[index];
@@ -149,24 +163,23 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
     image.width = s.extent.width;
     image.height = s.extent.height;
     image.layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    if (waits.empty()) {  // the application's semaphores, waited on once, by the first image's copy
+    if (!application_waits_taken) {  // waited on once, by the first submission
       image.wait_semaphore_count = info->waitSemaphoreCount;
       image.wait_semaphores = info->pWaitSemaphores;
     }
     image.signal_semaphore = s.done[index];
     if (!run_image(bridge, &image, frame, i)) d->failed = true;
-    // Whatever happened, the bridge waited on the semaphores and signalled the image's own.
-    waits.push_back(s.done[index]);
+    if (pfx_vk_bridge_submitted(bridge)) {
+      application_waits_taken = true;
+      waits.push_back(s.done[index]);
+    }
   }
-  VkResult result = VK_SUCCESS;
-  if (waits.empty()) {
-    result = d->QueuePresentKHR(queue, info);
-  } else {
-    VkPresentInfoKHR ours = *info;
-    ours.waitSemaphoreCount = static_cast<uint32_t>(waits.size());
-    ours.pWaitSemaphores = waits.data();
-    result = d->QueuePresentKHR(queue, &ours);
-  }
+  if (!application_waits_taken)
+    waits.insert(waits.begin(), info->pWaitSemaphores, info->pWaitSemaphores + info->waitSemaphoreCount);
+  VkPresentInfoKHR ours = *info;
+  ours.waitSemaphoreCount = static_cast<uint32_t>(waits.size());
+  ours.pWaitSemaphores = waits.data();
+  const VkResult result = d->QueuePresentKHR(queue, &ours);
   report_present();
   lock.unlock();  // the application's exit handlers may destroy its device through the layer
   const auto& report_at = layer_inject_settings().resources_at;
@@ -175,6 +188,7 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
              " KiB; heap in use " + std::to_string(inject::heap_bytes_in_use()) + " bytes");
   if (frame == quit_after()) {
     log_line("frame " + std::to_string(frame) + ": quitting, as asked");
+    idle_every_device();
     {
       std::lock_guard<std::mutex> relock(state().mutex);
       write_bench_stats();

@@ -116,6 +116,26 @@ std::vector<std::string> environment_changes(const std::vector<std::string>& bef
   return out;
 }
 
+// The umask as the kernel reports it (Linux 4.7 and later), never by umask(2): that call reads it
+// only by setting it, and two snapshots taken at once on different threads would each read the
+// other's temporary value and restore it, leaving the process with a umask of 0. -1 when the
+// kernel does not say.
+int read_umask() {
+  std::FILE* status = std::fopen("/proc/self/status", "re");
+  if (!status) return -1;
+  int value = -1;
+  char line[256];
+  while (std::fgets(line, sizeof line, status)) {
+    unsigned mask = 0;
+    if (std::sscanf(line, "Umask: %o", &mask) == 1) {
+      value = static_cast<int>(mask);
+      break;
+    }
+  }
+  std::fclose(status);
+  return value;
+}
+
 }  // namespace
 
 ProcessState snapshot_process_state() {
@@ -161,9 +181,7 @@ ProcessState snapshot_process_state() {
   s.working_directory = getcwd(cwd, sizeof cwd) ? cwd : "(unreadable: " + std::string(std::strerror(errno)) + ")";
   for (char** entry = environ; entry && *entry; ++entry) s.environment.emplace_back(*entry);
   std::sort(s.environment.begin(), s.environment.end());
-  // umask can only be read by setting it: set it straight back.
-  s.umask = ::umask(0);
-  ::umask(s.umask);
+  s.umask = read_umask();
   s.threads = count_threads();
   return s;
 }
@@ -217,8 +235,9 @@ std::vector<std::string> process_state_changes(const ProcessState& before, const
   if (before.working_directory != after.working_directory)
     out.push_back("the working directory changed from " + before.working_directory + " to " + after.working_directory);
   for (std::string& change : environment_changes(before.environment, after.environment)) out.push_back(std::move(change));
-  if (before.umask != after.umask)
-    out.push_back("the umask changed from " + octal(before.umask) + " to " + octal(after.umask));
+  if (before.umask != after.umask && before.umask >= 0 && after.umask >= 0)
+    out.push_back("the umask changed from " + octal(static_cast<mode_t>(before.umask)) + " to " +
+                  octal(static_cast<mode_t>(after.umask)));
   if (after.threads > before.threads)
     out.push_back(std::to_string(after.threads - before.threads) + " thread(s) left running (" +
                   std::to_string(before.threads) + " before the call, " + std::to_string(after.threads) + " after)");

@@ -37,7 +37,7 @@ struct ProcessState {
   std::string cpp_locale;     // std::locale().name()
   std::string working_directory;
   std::vector<std::string> environment;  // sorted
-  mode_t umask = 0;
+  int umask = -1;             // /proc/self/status; -1 where the kernel does not give it
   int threads = 0;            // entries of /proc/self/task
 };
 

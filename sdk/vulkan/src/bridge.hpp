@@ -26,6 +26,7 @@ struct pfx_vk_bridge {
   pfx::vk::Path path = pfx::vk::Path::HOST;
   bool dry_run = false;     // PFX_VK_DRY_RUN
   bool ran_passes = false;  // in the last run
+  bool submitted = false;   // the last run submitted (pfx_vk_bridge_submitted)
   std::string chain_text;   // GlFrame::chain_text, kept on the caller's side
   // PFX_VK_TIME_PASSES: the newest complete times, copied from the GL thread after each run, and
   // what pfx_vk_bridge_frame_times hands out (pointing into them).

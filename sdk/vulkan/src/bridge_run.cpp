@@ -1,4 +1,6 @@
 // pfx_vk_bridge_run: one frame's trip (vulkan_bridge.h), and the bridge's state for the caller.
+#include <cstddef>
+
 #include "bridge.hpp"
 #include "copy_pass.hpp"
 
@@ -12,6 +14,20 @@ bool is_bgra(VkFormat format) {
 }
 
 bool takes_format(VkFormat format) { return is_eight_bit(format) || is_ten_bit(format); }
+
+// The first pfx_vk_image ended at result_pixels; a caller built against it passes that size.
+constexpr size_t kFirstImageSize = offsetof(pfx_vk_image, result_pixels) + sizeof(uint8_t*);
+
+uint32_t image_flags(const pfx_vk_image& image) {
+  return image.struct_size >= offsetof(pfx_vk_image, flags) + sizeof image.flags ? image.flags : 0u;
+}
+
+// A frame that runs no chain: the caller's semaphores still pass, so its frame goes on as if the
+// bridge were not there.
+void pass_semaphores(pfx_vk_bridge* bridge, const pfx_vk_image& image) {
+  std::string unused;
+  bridge->submitted = bridge->transport->copy_out(image, false, false, &unused);
+}
 
 // Makes the go-between for the image's size; when sharing fails, says so once and moves to host
 // memory for good.
@@ -108,39 +124,46 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
   if (!bridge) return PFX_VK_BAD_ARGUMENT;
   bridge->last_error.clear();
   bridge->ran_passes = false;
+  bridge->submitted = false;
   std::string error;
-  if (!image || image->struct_size < sizeof(pfx_vk_image) || !image->image || !image->width || !image->height ||
+  if (!image || image->struct_size < vk::kFirstImageSize || !image->image || !image->width || !image->height ||
       !vk::takes_format(image->format)) {
     bridge->last_error = "pfx_vk_bridge_run: a null image, a struct_size too small, or a format the bridge does not take";
-    // The caller's semaphores still pass, so its frame goes on as if the bridge were not there.
-    if (image && image->struct_size >= sizeof(pfx_vk_image)) bridge->transport->copy_out(*image, false, false, &error);
+    if (image && image->struct_size >= vk::kFirstImageSize) vk::pass_semaphores(bridge, *image);
     return PFX_VK_BAD_ARGUMENT;
   }
   bool passes = true;
   if (!vk::runs_passes(bridge, *image, &passes, &error)) {
     bridge->last_error = error;
-    bridge->transport->copy_out(*image, false, false, &error);
+    vk::pass_semaphores(bridge, *image);
     return PFX_VK_CHAIN_FAILED;
   }
   // A frame the chain would not change is left in the image as it is (no copy in, no pass, no copy
-  // back) unless the caller wants it read back.
+  // back) unless the caller wants it read back; with PFX_VK_IMAGE_MAY_SKIP nothing is submitted.
   if (!passes && !image->app_pixels && !image->result_pixels) {
     ++bridge->frames;
-    return bridge->transport->copy_out(*image, false, false, &bridge->last_error) ? PFX_VK_OK : PFX_VK_VULKAN_FAILED;
+    if (vk::image_flags(*image) & PFX_VK_IMAGE_MAY_SKIP) return PFX_VK_OK;
+    bridge->submitted = bridge->transport->copy_out(*image, false, false, &bridge->last_error);
+    return bridge->submitted ? PFX_VK_OK : PFX_VK_VULKAN_FAILED;
   }
   if (!vk::prepare(bridge, *image, &error) || !bridge->transport->copy_in(*image, &error)) {
     bridge->last_error = error;
-    bridge->transport->copy_out(*image, false, false, &error);
+    vk::pass_semaphores(bridge, *image);
     return PFX_VK_VULKAN_FAILED;
   }
   const bool ran = vk::run_chain(bridge, *image, &error);
   if (!ran) bridge->last_error = error;
   bridge->ran_passes = ran && passes;
-  if (!bridge->transport->copy_out(*image, true, ran && !bridge->dry_run, &error)) {
+  bridge->submitted = bridge->transport->copy_out(*image, true, ran && !bridge->dry_run, &error);
+  if (!bridge->submitted) {
     bridge->last_error = error;
     return PFX_VK_VULKAN_FAILED;
   }
   return ran ? PFX_VK_OK : PFX_VK_CHAIN_FAILED;
+}
+
+extern "C" PFX_VK_API int pfx_vk_bridge_submitted(const pfx_vk_bridge* bridge) {
+  return bridge && bridge->submitted ? 1 : 0;
 }
 
 extern "C" PFX_VK_API const char* pfx_vk_bridge_path(const pfx_vk_bridge* bridge) {

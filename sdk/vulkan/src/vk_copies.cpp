@@ -47,25 +47,27 @@ void Transport::record_blit(VkCommandBuffer commands, const pfx_vk_image& image,
     std::copy(top_first, top_first + 2, region.srcOffsets);
     std::copy(bottom_first, bottom_first + 2, region.dstOffsets);
     f_.CmdBlitImage(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, between_image_,
-                    VK_IMAGE_LAYOUT_GENERAL, 1, &region, VK_FILTER_NEAREST);
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
   } else {
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 1};
     region.dstSubresource = image_layer;
     std::copy(bottom_first, bottom_first + 2, region.srcOffsets);
     std::copy(top_first, top_first + 2, region.dstOffsets);
-    f_.CmdBlitImage(commands, between_image_, VK_IMAGE_LAYOUT_GENERAL, image.image,
+    f_.CmdBlitImage(commands, between_image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.image,
                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
   }
 }
 
 void Transport::record_copy_in(VkCommandBuffer commands, const pfx_vk_image& image) {
-  // The go-between stays in GENERAL: the GL side reads and writes it between submissions, and
-  // without shared semaphores there is no way to hand a layout over.
+  // Between submissions the go-between is in GENERAL: the GL side reads and writes it then, and
+  // without shared semaphores there is no way to hand a layout over. Each copy takes it to the
+  // transfer layout the copy wants and back.
   const VkImageLayout between_from = between_fresh_ ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_GENERAL;
   VkImageMemoryBarrier before[2] = {
       barrier_for(image.image, image.layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_MEMORY_WRITE_BIT,
                   VK_ACCESS_TRANSFER_READ_BIT),
-      barrier_for(between_image_, between_from, VK_IMAGE_LAYOUT_GENERAL, kAnyAccess, VK_ACCESS_TRANSFER_WRITE_BIT)};
+      barrier_for(between_image_, between_from, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kAnyAccess,
+                  VK_ACCESS_TRANSFER_WRITE_BIT)};
   f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
                         0, nullptr, between_image_ ? 2 : 1, before);
   between_fresh_ = false;
@@ -80,7 +82,7 @@ void Transport::record_copy_in(VkCommandBuffer commands, const pfx_vk_image& ima
     region.dstSubresource = layers;
     region.extent = {width_, height_, 1};
     f_.CmdCopyImage(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, between_image_,
-                    VK_IMAGE_LAYOUT_GENERAL, 1, &region);
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   } else {
     VkBufferImageCopy region{};  // rows tightly packed, row 0 the image's top row
     region.imageSubresource = layers;
@@ -88,14 +90,18 @@ void Transport::record_copy_in(VkCommandBuffer commands, const pfx_vk_image& ima
     f_.CmdCopyImageToBuffer(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, between_buffer_, 1,
                             &region);
   }
-  // The copy's writes made available to the host, and to the GL reading the same memory.
+  // The copy's writes made available to the host, and to the GL reading the same memory; the
+  // go-between back in GENERAL for it.
   VkMemoryBarrier after{};
   after.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   after.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   after.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_MEMORY_READ_BIT;
+  const VkImageMemoryBarrier to_general =
+      barrier_for(between_image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_MEMORY_READ_BIT);
   f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                        VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 1, &after, 0, nullptr, 0,
-                        nullptr);
+                        VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 1, &after, 0, nullptr,
+                        between_image_ ? 1 : 0, &to_general);
 }
 
 bool Transport::copy_in(const pfx_vk_image& image, std::string* error) {
@@ -119,15 +125,18 @@ bool Transport::copy_in(const pfx_vk_image& image, std::string* error) {
 }
 
 void Transport::record_copy_back(VkCommandBuffer commands, const pfx_vk_image& image) {
-  VkImageMemoryBarrier to_dst = barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
   // The GL's (or the host's) writes to the go-between finished before this submission.
   VkMemoryBarrier between{};
   between.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   between.srcAccessMask = VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
   between.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-  f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                        VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &between, 0, nullptr, 1, &to_dst);
+  const VkImageMemoryBarrier before[2] = {
+      barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                  VK_ACCESS_TRANSFER_WRITE_BIT),
+      barrier_for(between_image_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT)};
+  f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &between, 0, nullptr, between_image_ ? 2 : 1, before);
   const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   if (between_.blits) {
     record_blit(commands, image, false);
@@ -136,7 +145,7 @@ void Transport::record_copy_back(VkCommandBuffer commands, const pfx_vk_image& i
     region.srcSubresource = layers;
     region.dstSubresource = layers;
     region.extent = {width_, height_, 1};
-    f_.CmdCopyImage(commands, between_image_, VK_IMAGE_LAYOUT_GENERAL, image.image,
+    f_.CmdCopyImage(commands, between_image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.image,
                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   } else {
     VkBufferImageCopy region{};
@@ -145,15 +154,19 @@ void Transport::record_copy_back(VkCommandBuffer commands, const pfx_vk_image& i
     f_.CmdCopyBufferToImage(commands, between_buffer_, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                             &region);
   }
-  VkImageMemoryBarrier back = barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, image.layout,
-                                          VK_ACCESS_TRANSFER_WRITE_BIT, kAnyAccess);
+  // The image back to its layout; the go-between to GENERAL, where the GL finds it next.
+  const VkImageMemoryBarrier after[2] = {
+      barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, image.layout, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  kAnyAccess),
+      barrier_for(between_image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, 0, kAnyAccess)};
   f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr,
-                        0, nullptr, 1, &back);
+                        0, nullptr, between_image_ ? 2 : 1, after);
 }
 
 bool Transport::copy_out(const pfx_vk_image& image, bool copied_in, bool copy_back, std::string* error) {
   VkCommandBuffer commands = VK_NULL_HANDLE;
   if (copied_in) {
+    wait_idle();  // the command buffer and fence are free again (copy_in waited already)
     f_.ResetCommandBuffer(out_, 0);
     const VkCommandBufferBeginInfo begin = one_time();
     VkResult result = f_.BeginCommandBuffer(out_, &begin);
@@ -174,8 +187,11 @@ bool Transport::copy_out(const pfx_vk_image& image, bool copied_in, bool copy_ba
     }
     commands = out_;
   }
-  if (!submit(commands, out_done_, image, !copied_in, true, error)) return false;
-  out_pending_ = true;
+  // Only a copy back touches the go-between and has to be waited for before it is used again; a
+  // batch that only passes the caller's semaphores on needs no fence (and reusing the one fence
+  // for it, unwaited, would submit a fence still in use).
+  if (!submit(commands, copied_in ? out_done_ : VK_NULL_HANDLE, image, !copied_in, true, error)) return false;
+  out_pending_ = out_pending_ || copied_in;
   return true;
 }
 

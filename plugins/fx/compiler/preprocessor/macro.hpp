@@ -1,6 +1,7 @@
 #pragma once
 // A macro definition and the table of those in force.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,21 +28,30 @@ struct Macro {
   }
 };
 
+// A definition is shared, not owned by the table: an expansion holds the macro it expands, so an
+// #undef or #define met while it collects the arguments (a directive inside a macro's argument
+// list, which C leaves undefined) changes the table but not the definition in use, as GCC does.
 class MacroTable {
  public:
   // Replaces any earlier definition; returns the stored macro.
   const Macro& define(Macro macro) {
     macro.id = next_id_++;
-    return macros_[macro.name] = std::move(macro);
+    auto stored = std::make_shared<const Macro>(std::move(macro));
+    const Macro& result = *stored;
+    macros_[result.name] = std::move(stored);
+    return result;
   }
   bool undefine(const std::string& name) { return macros_.erase(name) > 0; }
-  const Macro* find(const std::string& name) const {
+  // Valid until the name is next defined or undefined.
+  const Macro* find(const std::string& name) const { return hold(name).get(); }
+  // The definition, kept alive for as long as the caller holds it.
+  std::shared_ptr<const Macro> hold(const std::string& name) const {
     auto it = macros_.find(name);
-    return it == macros_.end() ? nullptr : &it->second;
+    return it == macros_.end() ? nullptr : it->second;
   }
 
  private:
-  std::map<std::string, Macro> macros_;
+  std::map<std::string, std::shared_ptr<const Macro>> macros_;
   std::uint32_t next_id_ = 1;
 };
 

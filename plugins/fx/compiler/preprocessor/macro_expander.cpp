@@ -53,7 +53,7 @@ bool MacroExpander::next(const Pull& pull, Token& out) {
   for (;;) {
     if (!take(pending_, pull, out)) return false;
     if (out.kind != TokenKind::kIdentifier) return true;
-    const Macro* macro = macros_.find(out.text);
+    const std::shared_ptr<const Macro> macro = macros_.hold(out.text);  // held while its use expands
     if (!macro || hides(out.hide_set, macro->id)) return true;
     if (!expand_use(*macro, out, pending_, pull)) return true;
   }
@@ -70,7 +70,8 @@ TokenList MacroExpander::expand_list(const TokenList& tokens) {
   Token token;
   for (;;) {
     if (!take(pending, nullptr, token)) break;
-    const Macro* macro = token.kind == TokenKind::kIdentifier ? macros_.find(token.text) : nullptr;
+    const std::shared_ptr<const Macro> macro =
+        token.kind == TokenKind::kIdentifier ? macros_.hold(token.text) : nullptr;
     if (macro && !hides(token.hide_set, macro->id) && expand_use(*macro, token, pending, nullptr)) continue;
     out.push_back(std::move(token));
   }

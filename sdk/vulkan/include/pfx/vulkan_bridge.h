@@ -137,15 +137,29 @@ typedef struct pfx_vk_image {
    * and tests; each costs a read-back. */
   uint8_t* app_pixels;
   uint8_t* result_pixels;
+  /* Added after result_pixels (read only when struct_size covers it): PFX_VK_IMAGE_MAY_SKIP. */
+  uint32_t flags;
 } pfx_vk_image;
+
+/* Flags of pfx_vk_image. A frame the chain would not change (below) submits nothing at all: the
+ * bridge neither waits on wait_semaphores nor signals signal_semaphore, pfx_vk_bridge_submitted
+ * returns 0, and the caller presents (or goes on) on its own semaphores. Without it such a frame
+ * still submits an empty batch that waits and signals. For a layer, whose idle chain then adds
+ * nothing to the application's queue. */
+#define PFX_VK_IMAGE_MAY_SKIP 0x1u
 
 /* Runs the chain over the image (the N-th call is frame N - 1 for effects that animate) and submits
  * the copy of the result back. A frame the chain would not change (no effect on, or every effect a
  * no-op with its values) is left in the image as it is, with nothing copied either way, unless
  * app_pixels or result_pixels ask for a read-back. On failure the image holds what it held (the copy back is not made),
  * wait_semaphores are still waited on and signal_semaphore still signalled, so the caller can go on
- * as if the bridge were not there. */
+ * as if the bridge were not there (pfx_vk_bridge_submitted says when even that submission failed). */
 PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, const pfx_vk_image* image);
+/* Whether the last pfx_vk_bridge_run submitted the work that signals the image's signal_semaphore
+ * (having waited on its wait_semaphores): 1 as a rule, and the caller waits on signal_semaphore;
+ * 0 for a frame left alone under PFX_VK_IMAGE_MAY_SKIP, whose semaphores are untouched (the caller
+ * waits on its own wait_semaphores), or when a submission itself failed (a lost device). */
+PFX_VK_API int pfx_vk_bridge_submitted(const pfx_vk_bridge* bridge);
 
 /* "shared memory" or "host memory": the path the last run took (before the first run: the path the
  * next one will try). */
