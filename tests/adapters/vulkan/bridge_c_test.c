@@ -9,6 +9,7 @@
  * "shared" lets the bridge share memory (and fails if it did not, or if it did not go by blits for
  * an 8-bit image and by copies for a 10-bit one); "host" forces host memory.
  * Exit status 0 when every pixel's R, G and B are within one code of EXPECTED. */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -233,6 +234,24 @@ static int report_run(pfx_vk_bridge* bridge, const char* chain, uint32_t width, 
   return copy_ms > 0 || fail("no copy pass time");
 }
 
+/* Whether the bridge submits, for a chain that runs (always) or none: an empty batch that passes the
+ * semaphores on, unless the image says PFX_VK_IMAGE_MAY_SKIP, and then nothing. A caller built
+ * against the first pfx_vk_image, which ended at result_pixels, still runs, its flags unread. */
+static int check_submissions(pfx_vk_bridge* bridge, pfx_vk_image* image, const char* chain) {
+  const int runs_effects = strcmp(chain, "none") != 0;
+  printf("submitted: %d\n", pfx_vk_bridge_submitted(bridge));
+  if (!pfx_vk_bridge_submitted(bridge)) return fail("a run without PFX_VK_IMAGE_MAY_SKIP submitted nothing");
+  if (runs_effects) return 1; /* another run would change the picture again */
+  image->flags = PFX_VK_IMAGE_MAY_SKIP;
+  if (pfx_vk_bridge_run(bridge, image) != PFX_VK_OK) return fail(pfx_vk_bridge_last_error(bridge));
+  printf("submitted with PFX_VK_IMAGE_MAY_SKIP: %d\n", pfx_vk_bridge_submitted(bridge));
+  if (pfx_vk_bridge_submitted(bridge)) return fail("a frame left alone under PFX_VK_IMAGE_MAY_SKIP was submitted");
+  image->struct_size = (uint32_t)(offsetof(pfx_vk_image, result_pixels) + sizeof image->result_pixels);
+  if (pfx_vk_bridge_run(bridge, image) != PFX_VK_OK) return fail(pfx_vk_bridge_last_error(bridge));
+  if (!pfx_vk_bridge_submitted(bridge)) return fail("a first-version image's flags were read");
+  return 1;
+}
+
 static int run_bridge(const context* c, const gpu_image* g, VkFormat format, const char* plugins, const char* chain,
                       const char* set, int host_memory, const char* want_path) {
   pfx_vk_bridge_desc desc;
@@ -268,6 +287,7 @@ static int run_bridge(const context* c, const gpu_image* g, VkFormat format, con
   printf("path: %s\n", pfx_vk_bridge_path(bridge));
   if (strcmp(pfx_vk_bridge_path(bridge), want_path) != 0) status = PFX_VK_BAD_ARGUMENT;
   if (status == PFX_VK_OK && !report_run(bridge, chain, image.width, image.height)) status = PFX_VK_BAD_ARGUMENT;
+  if (status == PFX_VK_OK && !check_submissions(bridge, &image, chain)) status = PFX_VK_BAD_ARGUMENT;
   if (status == PFX_VK_OK && !host_memory && strcmp(chain, "none") != 0) {
     const int eight_bit = format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_B8G8R8A8_UNORM;
     printf("shared memory by %s\n", said_way == 'b' ? "blits" : said_way == 'c' ? "copies" : "(not said)");

@@ -13,44 +13,12 @@
 #include <string>
 #include <vector>
 
-#include <X11/Xlib.h>
-#include <unistd.h>
-#include <vulkan/vulkan.h>
-
 #include "inject_run.hpp"
+#include "layer_test_support.hpp"
 #include "view_process.hpp"
-
-#if defined(__SANITIZE_ADDRESS__)
-#include <dlfcn.h>
-#include <link.h>
-
-#include <cstring>
-#endif
+#include "x11_windows.hpp"
 
 namespace {
-
-// The sanitizer pass (./run test) builds the layer with AddressSanitizer and the loader opens it in
-// vkcube, which is not: the runtime must then come first in the process, and vkcube's and the
-// drivers' own allocations are not ours to judge (pfx-inject's tests do the same with glxgears).
-void add_sanitizer_runtime(std::vector<std::string>* argv) {
-#if defined(__SANITIZE_ADDRESS__)
-  std::string runtime;
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* out) {
-        if (info->dlpi_name && std::strstr(info->dlpi_name, "libasan.so")) {
-          *static_cast<std::string*>(out) = info->dlpi_name;
-          return 1;
-        }
-        return 0;
-      },
-      &runtime);
-  argv->push_back("LD_PRELOAD=" + runtime);
-  const char* asan_options = std::getenv("ASAN_OPTIONS");
-  argv->push_back(std::string("ASAN_OPTIONS=") + (asan_options ? asan_options : "") + ":detect_leaks=0");
-#else
-  (void)argv;
-#endif
-}
 
 using pfx::test::ScratchFolder;
 
@@ -62,16 +30,6 @@ struct Frame {
 
 // vkcube for 8 frames at 320x240 with the layer on and pfx-inject's variables `settings`
 // (NAME=VALUE), frame 5 captured.
-// pfx's layer through a manifest of the explicit kind in `folder`, so that VK_INSTANCE_LAYERS can
-// place it among other layers (the loader puts every implicit layer above the explicit ones).
-void write_explicit_manifest(const ScratchFolder& folder) {
-  std::ofstream(folder.file("pfx_explicit.json"))
-      << "{\"file_format_version\": \"1.0.0\", \"layer\": {\"name\": \"VK_LAYER_PFX_post_effects\", \"type\": "
-         "\"GLOBAL\", \"library_path\": \"" PFX_LAYER_LIBRARY "\", \"api_version\": \"1.3.0\", "
-         "\"implementation_version\": \"1\", \"description\": \"pfx\", \"functions\": {\"vkGetInstanceProcAddr\": "
-         "\"pfx_layer_GetInstanceProcAddr\", \"vkGetDeviceProcAddr\": \"pfx_layer_GetDeviceProcAddr\"}}}\n";
-}
-
 Frame vkcube_frame(const ScratchFolder& folder, const std::string& name, const std::vector<std::string>& settings,
                    bool validation = false) {
   std::vector<std::string> argv = {"/usr/bin/env",
@@ -81,7 +39,7 @@ Frame vkcube_frame(const ScratchFolder& folder, const std::string& name, const s
                                    "PFX_INJECT_CAPTURE=5:" + folder.file(name)};
   argv.insert(argv.end(), settings.begin(), settings.end());
   if (validation) argv.push_back("VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation");
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   for (const char* arg : {PFX_VKCUBE, "--c", "8", "--width", "320", "--height", "240"}) argv.push_back(arg);
   Frame frame;
   frame.run = pfx::test::run_program(argv, 120);
@@ -234,7 +192,7 @@ TEST_CASE("an edited preset applies while vkcube runs, and one that does not app
                                    "PFX_INJECT_PRESET=" + preset,
                                    "PFX_INJECT_CAPTURE=2000:" + folder.file("last"),
                                    "PFX_INJECT_QUIT_AFTER=2001"};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
   pfx::test::ViewerProcess app(argv);
   REQUIRE_FALSE(app.wait_for_line("frames go through", 60).empty());
@@ -284,7 +242,7 @@ TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variabl
   ScratchFolder folder("vulkan-launcher");
   const Frame by_hand = vkcube_frame(folder, "by-hand", {"PFX_INJECT_CHAIN=bloom"});
   std::vector<std::string> argv = {"/usr/bin/env"};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   for (const std::string& arg : {std::string(PFX_INJECT), std::string("--chain"), std::string("bloom"),
                                 std::string("--capture"), "5:" + folder.file("launched"), std::string("--quit-after"),
                                 std::string("8"), std::string("--log"), folder.file("launched.log"), std::string("--"),
@@ -306,7 +264,7 @@ TEST_CASE("two windows presented together each go through the chain, and a devic
   std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
                                    "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("two.log"),
                                    "PFX_INJECT_CAPTURE=5:" + folder.file("two")};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   argv.insert(argv.end(), {PFX_TWO_WINDOWS, "8"});
   const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
   INFO(run.output << pfx::test::read_text_file(folder.file("two.log")));
@@ -336,7 +294,7 @@ TEST_CASE("a window hidden from the screen and shown again, as a minimised one i
   std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
                                    "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("hidden.log"),
                                    "PFX_INJECT_CAPTURE=15:" + folder.file("hidden") + "\n25:" + folder.file("shown")};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   argv.insert(argv.end(), {PFX_TWO_WINDOWS, "30", "minimise"});
   const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
   const std::string log = pfx::test::read_text_file(folder.file("hidden.log"));
@@ -401,7 +359,7 @@ TEST_CASE("the pass times the panel shows come from a Vulkan application's chain
 TEST_CASE("pfx-inject --bench -- vkcube reports the application alone, an empty chain and the chain", "[vkcube]") {
   ScratchFolder folder("vulkan-bench");
   std::vector<std::string> argv = {"/usr/bin/env"};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   for (const std::string& arg :
        {std::string(PFX_INJECT), std::string("--chain"), std::string("bloom"), std::string("--bench"), std::string("20"),
         std::string("--bench-runs"), std::string("1"), std::string("--bench-json"), folder.file("bench.json"),
@@ -421,45 +379,15 @@ TEST_CASE("pfx-inject --bench -- vkcube reports the application alone, an empty 
   CHECK(std::stod(json.substr(unit + std::strlen("\"copy_pass_ms\": "))) > 0);
 }
 
-namespace {
-
-// The name of lavapipe's device, which mpv must be told: libplacebo passes over software devices
-// unless one is named.
-std::string lavapipe_device_name() {
-#if defined(__SANITIZE_ADDRESS__)
-  // The loader unloads lavapipe at vkDestroyInstance, and a block lavapipe keeps in its globals for
-  // the process's life then points nowhere and is reported as a leak at exit (128 bytes, "<unknown
-  // module>"): kept mapped, LeakSanitizer sees it held (bridge_c_test.c does the same).
-  (void)dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
-#endif
-  VkInstanceCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
-  VkInstance instance = VK_NULL_HANDLE;
-  REQUIRE(vkCreateInstance(&info, nullptr, &instance) == VK_SUCCESS);
-  uint32_t count = 0;
-  vkEnumeratePhysicalDevices(instance, &count, nullptr);
-  std::vector<VkPhysicalDevice> devices(count);
-  vkEnumeratePhysicalDevices(instance, &count, devices.data());
-  std::string name;
-  for (VkPhysicalDevice device : devices) {
-    VkPhysicalDeviceProperties properties{};
-    vkGetPhysicalDeviceProperties(device, &properties);
-    if (properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) name = properties.deviceName;
-  }
-  vkDestroyInstance(instance, nullptr);
-  return name;
-}
-
-}  // namespace
 
 TEST_CASE("mpv playing through its Vulkan output shows bloom, the frame pfx-render gives, and ends normally", "[mpv]") {
   ScratchFolder folder("vulkan-mpv");
-  const std::string device = lavapipe_device_name();
+  const std::string device = pfx::test::lavapipe_device_name();
   REQUIRE(!device.empty());
   std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
                                    "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("mpv.log"),
                                    "PFX_INJECT_CAPTURE=10:" + folder.file("mpv")};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   // A clip made by FFmpeg's test source inside mpv (colour bars, a moving gradient, a clock), every
   // frame shown and none dropped however loaded the machine is, so that the 10th present exists.
   for (const std::string& arg : {std::string(PFX_MPV), std::string("--no-config"), std::string("--really-quiet"),
@@ -508,7 +436,7 @@ TEST_CASE("8,500 presents of vkcube through the default chain do not grow the he
   std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
                                    "PFX_INJECT_LOG=" + folder.file("long.log"),
                                    "PFX_INJECT_RESOURCES_AT=4500,6500,8500"};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   for (const char* arg : {PFX_VKCUBE, "--c", "8500", "--width", "64", "--height", "64"}) argv.push_back(arg);
   const pfx::test::RunResult run = pfx::test::run_program(argv, 300);
   const std::string log = pfx::test::read_text_file(folder.file("long.log"));
@@ -545,7 +473,7 @@ TEST_CASE("vkBasalt's CAS and pfx's bloom in one stack, in either order", "[vkcu
     CHECK(difference(both.presented, render_bloom(folder.file("none.png"), folder.file("above-render.png"))).first <= 1);
   }
   SECTION("pfx below vkBasalt (pfx's layer enabled as an explicit one)") {
-    write_explicit_manifest(folder);
+    pfx::test::write_explicit_manifest(folder);
     const Frame both = vkcube_frame(folder, "below",
                                     {"XDG_DATA_HOME=" + folder.path(), "VK_LAYER_PATH=" + folder.path(),
                                      "VK_INSTANCE_LAYERS=VK_LAYER_PFX_post_effects", "PFX_INJECT_CHAIN=bloom",
@@ -562,33 +490,6 @@ TEST_CASE("vkBasalt's CAS and pfx's bloom in one stack, in either order", "[vkcu
   }
 }
 
-namespace {
-
-// Resizes the top-level window of size from_width x from_height on the test's X display (vkcube
-// names none; the test's Xvfb runs nothing else); false when there is none.
-bool resize_window(unsigned from_width, unsigned from_height, unsigned width, unsigned height) {
-  Display* display = XOpenDisplay(nullptr);
-  if (!display) return false;
-  Window root = DefaultRootWindow(display), parent = 0, *children = nullptr;
-  unsigned count = 0;
-  bool found = false;
-  if (XQueryTree(display, root, &root, &parent, &children, &count)) {
-    for (unsigned i = 0; i < count && !found; ++i) {
-      XWindowAttributes attributes{};
-      if (XGetWindowAttributes(display, children[i], &attributes) && unsigned(attributes.width) == from_width &&
-          unsigned(attributes.height) == from_height) {
-        XResizeWindow(display, children[i], width, height);
-        found = true;
-      }
-    }
-    if (children) XFree(children);
-  }
-  XSync(display, False);
-  XCloseDisplay(display);
-  return found;
-}
-
-}  // namespace
 
 TEST_CASE("vkcube resized mid-run: the re-created swapchain's frames go through the chain at their new size",
           "[vkcube][resize]") {
@@ -596,16 +497,11 @@ TEST_CASE("vkcube resized mid-run: the re-created swapchain's frames go through 
   std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
                                    "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_QUIT_AFTER=400",
                                    "PFX_INJECT_CAPTURE=400:" + folder.file("frame400")};
-  add_sanitizer_runtime(&argv);
+  pfx::test::add_sanitizer_runtime(&argv);
   for (const char* arg : {PFX_VKCUBE, "--width", "320", "--height", "240"}) argv.push_back(arg);
   pfx::test::ViewerProcess vkcube(argv);
   REQUIRE(!vkcube.wait_for_line("frames go through", 60).empty());
-  bool resized = false;
-  for (int attempt = 0; attempt < 50 && !resized; ++attempt) {
-    resized = resize_window(320, 240, 200, 150);
-    if (!resized) usleep(100000);
-  }
-  REQUIRE(resized);
+  REQUIRE(pfx::test::keep_trying([] { return pfx::test::resize_window(320, 240, 200, 150); }));
   REQUIRE(vkcube.wait_exit(120) == 0);
   INFO(vkcube.output());
   // The last frame is of the new size, and bloom ran over it as pfx-render runs it.
