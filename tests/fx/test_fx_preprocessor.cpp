@@ -56,7 +56,7 @@ TEST_CASE("a directive inside a macro's arguments: the expansion keeps the defin
   CHECK(expand("#define F(x) [x]\n#define G F(\nG\n#undef F\n1) F(2)") == "[1] F(2)");
   auto redefined = preprocess_text("#define F(x) [x]\nF(\n#define F(x) <x>\n1) F(2)");
   CHECK(redefined->text == "[1] <2>");
-  CHECK(redefined->errors.empty());
+  CHECK(redefined->errors == "main.fx:3:9: warning: 'F' redefined\n");  // as GCC warns
   const std::string effect =
       "#define F(x) x\n"
       "float4 PS(float4 p : SV_Position) : SV_Target { return F(\n"

@@ -37,15 +37,21 @@ using pfx::test::ScratchFolder;
 using Messages = std::map<std::string, int>;
 
 // The messages of the validation layer's log: each starts a line with its id and its kind,
-// "VUID-...(ERROR / SPEC): msgNum: ...".
+// "VUID-...(ERROR / SPEC): msgNum: ...". A message about an object the application named (the
+// layer writes the name after the handle: "VkSemaphore 0x19[swapchain out]") is the
+// application's, whatever else happens: pfx names none of its objects. (mpv destroys a semaphore
+// it named "swapchain out" while its last present still waits on it, in one run of about 15,
+// with pfx's layer or without.)
 Messages read_messages(const std::string& path) {
   static const std::regex first_line(R"(^([A-Za-z0-9_.-]+)\(([A-Z]+ / [A-Z]+)\): msgNum:)");
+  static const std::regex named_object(R"(0x[0-9a-fA-F]+\[[^\]]+\])");
   Messages messages;
   std::ifstream file(path);
   std::string line;
   std::smatch match;
   while (std::getline(file, line))
-    if (std::regex_search(line, match, first_line)) ++messages[match[1].str() + " (" + match[2].str() + ")"];
+    if (std::regex_search(line, match, first_line) && !std::regex_search(line, named_object))
+      ++messages[match[1].str() + " (" + match[2].str() + ")"];
   return messages;
 }
 
@@ -58,7 +64,8 @@ std::string messages_not_in(const Messages& with, const Messages& alone) {
   return text;
 }
 
-TEST_CASE("validation messages are read by kind and counted, and those the application gives alone are set aside",
+TEST_CASE("validation messages are read by kind and counted, and those the application gives alone or about objects "
+          "it named are set aside",
           "[validation]") {
   ScratchFolder folder("vulkan-validation-messages");
   // As the validation layer of Debian 12 writes them.
@@ -69,7 +76,11 @@ TEST_CASE("validation messages are read by kind and counted, and those the appli
          "VUID-vkQueueSubmit-fence-00064(ERROR / SPEC): msgNum: 1 - Validation Error: [ VUID-vkQueueSubmit-fence-00064 ]\n"
          "UNASSIGNED-CoreValidation-DrawState-InvalidImageLayout(WARN / PERF): msgNum: 2 - Validation Performance "
          "Warning: ...\n"
-         "VUID-vkQueueSubmit-fence-00064(ERROR / SPEC): msgNum: 1 - Validation Error: again\n";
+         "VUID-vkQueueSubmit-fence-00064(ERROR / SPEC): msgNum: 1 - Validation Error: again\n"
+         "VUID-vkDestroySemaphore-semaphore-01137(ERROR / SPEC): msgNum: -1588160456 - Validation Error: [ "
+         "VUID-vkDestroySemaphore-semaphore-01137 ] Object 0: handle = 0x7ff6083dd940, type = VK_OBJECT_TYPE_DEVICE; | "
+         "MessageID = 0xa1569838 | Cannot call vkDestroySemaphore on VkSemaphore 0x190000000019[swapchain out] that is "
+         "currently in use by a command buffer.\n";
   const Messages messages = read_messages(folder.file("log.txt"));
   CHECK(messages == Messages{{"UNASSIGNED-GeneralParameterError-ExtensionNotEnabled (ERROR / SPEC)", 1},
                              {"VUID-vkQueueSubmit-fence-00064 (ERROR / SPEC)", 2},
@@ -107,7 +118,9 @@ App mpv(const std::string& output) {
                                            "--framedrop=no"};
   App app{"mpv-" + output, player, player};
   app.counted.insert(app.counted.end(), {"--frames=15", "av://lavfi:testsrc2=size=320x240:rate=25:duration=1"});
-  app.endless.insert(app.endless.end(), {"--loop-file=inf", "av://lavfi:testsrc2=size=320x240:rate=25:duration=1"});
+  // Ten minutes of video, more than any session lasts (mpv stops presenting when it loops a clip
+  // of the test source).
+  app.endless.push_back("av://lavfi:testsrc2=size=320x240:rate=25:duration=600");
   return app;
 }
 
@@ -202,16 +215,17 @@ void check_every_chain(const App& app) {
       {"none", {"PFX_INJECT_CHAIN=none"}},
       {"bloom", {"PFX_INJECT_CHAIN=bloom"}},
       {"bloom-strength-0", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_SET=bloom.strength=0"}},
-      {"fx", {"PFX_FX_PATH=" PFX_FX_TEST_FILES "/Blur.fx", "PFX_INJECT_CHAIN=fx_blur"}}};
+      // Five passes, four render targets drawn at once, targets cleared.
+      {"fx", {"PFX_FX_PATH=" PFX_FX_TESTS "/conformance/render_targets.fx", "PFX_INJECT_CHAIN=fx_render_targets"}}};
   for (const auto& [chain, settings] : chains) {
     for (const char* host_memory : {"0", "1"}) {
       const std::string name = chain + "-host-memory-" + host_memory;
       std::vector<std::string> with = settings;
       with.push_back(std::string("PFX_VK_HOST_MEMORY=") + host_memory);
       const Validated run = run_counted(folder, name, app, true, with);
-      INFO(app.name << ", " << name);
+      INFO(app.name << ", " << name << ":\n" << run.output);
       check_clean(run, alone);
-      if (chain == "fx") CHECK(run.output.find("ignored") == std::string::npos);  // the FX effect was found
+      CHECK(run.output.find("ignored") == std::string::npos);  // the chain is the one asked for
     }
   }
 }
@@ -290,7 +304,10 @@ void check_resized_and_minimised(const App& app) {
   ScratchFolder folder("vulkan-validation-window-" + app.name);
   const unsigned width = app.width * 2 / 3, height = app.height * 2 / 3;
   const Script resize_hide_show = [&](pfx::test::ViewerProcess& process, bool with_pfx) {
+    // Presenting, as when a user resizes it (vkd3d-gears resized before its first frames asserts
+    // now and then, without pfx too: it made no swapchain).
     if (with_pfx) REQUIRE_FALSE(process.wait_for_line("frames go through", 60).empty());
+    std::this_thread::sleep_for(std::chrono::seconds(1));
     CHECK(pfx::test::resize_window(app.width, app.height, width, height));
     std::this_thread::sleep_for(std::chrono::milliseconds(700));
     CHECK(pfx::test::hide_window(width, height));
