@@ -85,6 +85,9 @@ pfx_vk_bridge* bridge_for(Device* d, VkQueue queue) {
   return bridge;
 }
 
+// Why a capture of a device whose chain failed is not written, on the frame it failed and after.
+constexpr const char* kChainFailed = "the chain failed and frames pass through";
+
 // Counted from 1 over every swapchain of the process, as pfx-inject counts over every context.
 std::atomic<uint64_t> presented{0};
 
@@ -107,7 +110,7 @@ bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame, uint3
   if (status != PFX_VK_OK) {
     log_line("frame " + std::to_string(frame) + ": frames pass through from now on: " +
              pfx_vk_bridge_last_error(bridge));
-    say_captures_skipped(frame, swapchain_index, "the chain failed");
+    say_captures_skipped(frame, swapchain_index, kChainFailed);
     return false;
   }
   // A dry run presents the application's frame: that is what PREFIX.png shows.
@@ -136,7 +139,7 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
   const bool before_start = frame < layer_inject_settings().from_frame;
   const bool untouched = before_start || layer_inject_settings().bypass;
   if (before_start) say_captures_skipped(frame, 0, "frames before --from-frame pass through");
-  else if (d->failed && !untouched) say_captures_skipped(frame, 0, "the chain failed and frames pass through");
+  else if (d->failed && !untouched) say_captures_skipped(frame, 0, kChainFailed);
   if (!d->failed && !untouched) reread_preset_if_changed(d);
   // What the present waits on: for each image the bridge submitted work for, the image's own
   // semaphore (that work waited on the application's); the application's semaphores where no

@@ -11,6 +11,13 @@ void read_rgba(GLuint texture, int width, int height, bool bgra, uint8_t* out) {
   glGetTextureImage(texture, 0, bgra ? GL_BGRA : GL_RGBA, GL_UNSIGNED_BYTE, width * height * 4, out);
 }
 
+// A chain that failed may have left draws queued that read the go-between: the GL finishes them
+// before Vulkan uses that memory again (or frees it), as after a frame that ran.
+bool finish_failed() {
+  glFinish();
+  return false;
+}
+
 }  // namespace
 
 bool GlFrame::create(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* error) {
@@ -53,7 +60,7 @@ bool GlFrame::run(void* host_bytes, int width, int height, Texels texels, app::T
   frame_.resize(width, height);
   frame_.decode_texture(io, transfer, bgra);
   GLuint result = 0;
-  if (!chain_->render(frame_, time_seconds, frame_index, &result, error)) return false;
+  if (!chain_->render(frame_, time_seconds, frame_index, &result, error)) return finish_failed();
   frame_.encode_texture(result, io, transfer, bgra);
   read_rgba(io, width, height, bgra, readback.result_pixels);
   if (host_bytes) {
@@ -70,7 +77,8 @@ bool GlFrame::run_on_layers(int width, int height, app::Transfer transfer, doubl
   const gl::EightBitTexture& in = shared_.layer(0);
   const gl::EightBitTexture& out = shared_.layer(1);
   if (readback.app_pixels) in.read_top_first(readback.app_pixels, width, height);
-  if (!chain_->render(in.as(transfer), out.as(transfer), width, height, time_seconds, frame_index, error)) return false;
+  if (!chain_->render(in.as(transfer), out.as(transfer), width, height, time_seconds, frame_index, error))
+    return finish_failed();
   if (readback.result_pixels) out.read_top_first(readback.result_pixels, width, height);
   glFinish();
   return adapters::no_gl_error(error);

@@ -251,6 +251,27 @@ TEST_CASE("validated: vkd3d-gears (Direct3D 12 through vkd3d) through every kind
   check_every_chain(vkd3d_gears());
 }
 
+TEST_CASE("validated: an FX effect that fails at its first frame in vkcube, on both paths: the frames pass through "
+          "and vkcube ends normally",
+          "[validation][vkcube]") {
+  // The test grade's LUT texture is not there: its pass fails once the chain has the frame, with
+  // the go-between filled and the GL's draws queued.
+  ScratchFolder folder("vulkan-validation-failing");
+  const Validated alone = run_counted(folder, "alone", vkcube(), false);
+  REQUIRE(alone.exit_code == 0);
+  for (const char* host_memory : {"0", "1"}) {
+    const std::string name = std::string("failing-host-memory-") + host_memory;
+    const Validated run =
+        run_counted(folder, name, vkcube(), true,
+                    {"PFX_FX_PATH=" PFX_FX_TESTS "/files/Grade.fx", "PFX_INJECT_CHAIN=fx_grade",
+                     std::string("PFX_VK_HOST_MEMORY=") + host_memory});
+    INFO(name << ":\n" << run.output);
+    CHECK(run.exit_code == 0);
+    CHECK(run.output.find("frame 1: frames pass through from now on: effect 'fx_grade'") != std::string::npos);
+    CHECK(messages_not_in(run.messages, alone.messages) == "");
+  }
+}
+
 namespace {
 
 // Replaces the file the way editors and pfx-view write one: a new file renamed over the old.

@@ -526,3 +526,31 @@ TEST_CASE("an effect of a chosen chain that needs depth is switched off, said on
   CHECK(with_dof.log.find("dof off: needs depth") != std::string::npos);
   CHECK(difference(with_dof.presented, bloom.presented).first == 0);
 }
+
+TEST_CASE("captures asked for when the chain has failed are each named in the log with the reason, once",
+          "[vkcube]") {
+  // The test grade's LUT texture is not there: the effect fails at its first frame, and from then
+  // on frames pass through.
+  ScratchFolder folder("vulkan-capture-after-failure");
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_FX_PATH=" PFX_FX_TESTS "/files/Grade.fx", "PFX_INJECT_CHAIN=fx_grade",
+                                   "PFX_INJECT_LOG=" + folder.file("failed.log"),
+                                   "PFX_INJECT_CAPTURE=1:" + folder.file("first") + "\n5:" + folder.file("fifth") +
+                                       "\nall:" + folder.file("every-%d")};
+  pfx::test::add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "8", "--width", "160", "--height", "120"}) argv.push_back(arg);
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
+  const std::string log = pfx::test::read_text_file(folder.file("failed.log"));
+  INFO(run.output << log);
+  REQUIRE(run.exit_code == 0);
+  REQUIRE(log.find("frame 1: frames pass through from now on: effect 'fx_grade'") != std::string::npos);
+  const std::string why = " not written: the chain failed and frames pass through";
+  CHECK(log.find("frame 1: capture " + folder.file("first") + why) != std::string::npos);
+  CHECK(log.find("frame 5: capture " + folder.file("fifth") + why) != std::string::npos);
+  const std::string every = "captures all:" + folder.file("every-%d") + " are not written while the chain failed";
+  const size_t said = log.find(every);
+  CHECK(said != std::string::npos);
+  CHECK(log.find(every, said + 1) == std::string::npos);
+  for (const char* name : {"first.png", "fifth.png", "every-1.png", "every-8.png"})
+    CHECK_FALSE(std::filesystem::exists(folder.file(name)));
+}
