@@ -28,7 +28,7 @@ float4 PS(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target {
   VEC(4) c = tex2D(Back, uv);
   [unroll] for (int i = 0; i < LEVELS; ++i)
     c.rgb = CALL_OPEN c.rgb, COMPOSE(TWICE, SQUARE, float(i) * 0.01) * gain_3);
-  c.rg += bias_2 * (STR(LEVELS)[0] == 0 ? 0 : 1);
+  c.rg += bias_2 * (LEVELS > 2 ? 1 : 0);
   return float4(mul(Rotation, c.rgb), c.a);
 }
 void VS(uint id : SV_VertexID, out float4 p : SV_Position, out float2 uv : TEXCOORD) {

@@ -15,15 +15,15 @@ static const float C = OFFSET;
 #undef OFFSET_BASE
 #define OFFSET_BASE OFFSET
 static const float D = 1.0;
-#define SELF SELF + 1
-#define MUTUAL_A MUTUAL_B
-#define MUTUAL_B MUTUAL_A
+static const float self_scale = 0.5, mutual_a = 0.25, mutual_b = 0.125;
+#define self_scale (self_scale * 2.0)
+#define mutual_a (mutual_b + 1.0)
+#define mutual_b (mutual_a * 0.5)
 #include "common.fxh"
 #undef CAT
 #define CAT(a, b) b##a
 float4 PS(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target {
-  float SELF = 0, MUTUAL_A = 1;
-  return tex2D(H::Back, uv) * (A + B + C + D) + CAT(0, 1) * 0.0;
+  return tex2D(H::Back, uv) * (A + B + C + D) * self_scale * mutual_a + CAT(0, 1) * 0.0;
 }
 #undef SCALE
 #undef APPLY
