@@ -22,8 +22,8 @@ uint32_t image_flags(const pfx_vk_image& image) {
   return image.struct_size >= offsetof(pfx_vk_image, flags) + sizeof image.flags ? image.flags : 0u;
 }
 
-// A frame that runs no chain: the caller's semaphores still pass, so its frame goes on as if the
-// bridge were not there.
+// A run that gives up before its copies (a bad argument, a chain or a copy in that failed): the
+// caller's semaphores still pass, so its frame goes on as if the bridge were not there.
 void pass_semaphores(pfx_vk_bridge* bridge, const pfx_vk_image& image) {
   std::string unused;
   bridge->submitted = bridge->transport->copy_out(image, false, false, &unused);
