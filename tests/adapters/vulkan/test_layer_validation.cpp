@@ -179,7 +179,12 @@ Validated run_session(const ScratchFolder& folder, const std::string& name, cons
   std::vector<std::string> argv = validated_environment(folder, name, with_pfx, settings, true);
   argv.insert(argv.end(), app.endless.begin(), app.endless.end());
   pfx::test::ViewerProcess process(argv);
-  CHECK(pfx::test::keep_trying([&] { return pfx::test::window_exists(app.width, app.height); }, 30));
+  if (!pfx::test::keep_trying([&] { return pfx::test::window_exists(app.width, app.height); }, 30)) {
+    const int exit_code = process.wait_exit(1);
+    FAIL(name << ": no " << app.width << "x" << app.height << " window after 30 s (windows: "
+              << pfx::test::describe_windows() << "; exit code " << exit_code << ")\n"
+              << process.output());
+  }
   script(process, with_pfx);
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   if (!closed_size.width) closed_size = {app.width, app.height};
@@ -189,6 +194,13 @@ Validated run_session(const ScratchFolder& folder, const std::string& name, cons
   result.output = process.output();
   result.messages = read_messages(folder.file(name + ".validation.txt"));
   return result;
+}
+
+// Waits for pfx's layer to say it runs (at the first present); fails with what the application said.
+void wait_for_the_layer(pfx::test::ViewerProcess& process) {
+  if (process.wait_for_line("frames go through", 60).empty())
+    FAIL("pfx's layer did not start within 60 s (windows: " << pfx::test::describe_windows() << ")\n"
+                                                            << process.output());
 }
 
 // What every run with pfx must show: the application ended normally, pfx's layer ran and never
@@ -290,7 +302,7 @@ void check_preset_switched_live(const App& app) {
   std::ofstream(preset) << on;
   const Script switch_off_and_on = [&](pfx::test::ViewerProcess& process, bool with_pfx) {
     if (!with_pfx) return std::this_thread::sleep_for(std::chrono::seconds(2));
-    REQUIRE_FALSE(process.wait_for_line("frames go through", 60).empty());
+    wait_for_the_layer(process);
     replace_file(preset, off);
     CHECK_FALSE(process.wait_for_line("settings applied: chain bloom (off)", 20).empty());
     std::this_thread::sleep_for(std::chrono::seconds(1));  // frames with the chain idle
@@ -327,7 +339,7 @@ void check_resized_and_minimised(const App& app) {
   const Script resize_hide_show = [&](pfx::test::ViewerProcess& process, bool with_pfx) {
     // Presenting, as when a user resizes it (vkd3d-gears resized before its first frames asserts
     // now and then, without pfx too: it made no swapchain).
-    if (with_pfx) REQUIRE_FALSE(process.wait_for_line("frames go through", 60).empty());
+    if (with_pfx) wait_for_the_layer(process);
     std::this_thread::sleep_for(std::chrono::seconds(1));
     CHECK(pfx::test::resize_window(app.width, app.height, width, height));
     std::this_thread::sleep_for(std::chrono::milliseconds(700));

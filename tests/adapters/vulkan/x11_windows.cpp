@@ -32,6 +32,25 @@ bool with_window(unsigned width, unsigned height, const std::function<void(Displ
 
 }  // namespace
 
+std::string describe_windows() {
+  Display* display = XOpenDisplay(nullptr);
+  if (!display) return "the X display cannot be opened";
+  Window root = DefaultRootWindow(display), parent = 0, *children = nullptr;
+  unsigned count = 0;
+  std::string text;
+  if (XQueryTree(display, root, &root, &parent, &children, &count)) {
+    for (unsigned i = 0; i < count; ++i) {
+      XWindowAttributes attributes{};
+      if (!XGetWindowAttributes(display, children[i], &attributes)) continue;
+      text += (text.empty() ? "" : ", ") + std::to_string(attributes.width) + "x" + std::to_string(attributes.height) +
+              (attributes.map_state == IsViewable ? " mapped" : " unmapped");
+    }
+    if (children) XFree(children);
+  }
+  XCloseDisplay(display);
+  return text.empty() ? "no top-level window" : text;
+}
+
 bool window_exists(unsigned width, unsigned height) {
   return with_window(width, height, [](Display*, Window) {});
 }

@@ -3,8 +3,13 @@
 // root's children, found by their size, since the applications here name none.
 #pragma once
 
+#include <string>
+
 namespace pfx::test {
 
+// The top-level windows, for a failure message: "300x300 mapped, 64x64 unmapped", or why there
+// are none to tell.
+std::string describe_windows();
 // Each acts on the first top-level window of width x height; false when there is none.
 bool window_exists(unsigned width, unsigned height);
 bool resize_window(unsigned width, unsigned height, unsigned new_width, unsigned new_height);
