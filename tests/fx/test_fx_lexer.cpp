@@ -84,8 +84,9 @@ TEST_CASE("strings: escapes and adjacent literals joined", "[fx][lexer]") {
   CHECK(unescape_string("\"a\\0b\\n\\t\\\\\\\"\"", error) == std::string("a\0b\n\t\\\"", 7));
   CHECK(unescape_string("\"\\x41\\101\"", error) == "AA");
   CHECK(error.empty());
-  unescape_string("\"\\q\"", error);
-  CHECK(error == "unknown escape sequence '\\q'");
+  // An escape ReShade does not know keeps its character, as combo lists write "Color\0\HSV".
+  CHECK(unescape_string("\"Color\\0\\HSV: Hue\\0\"", error) == std::string("Color\0HSV: Hue\0", 15));
+  CHECK(error.empty());
   // The parser joins adjacent strings, as in ui_items lists split over lines.
   CHECK(pfx::fx::test::parse_to_text("uniform int C < ui_items = \"One\\0\"\n \"Two\\0\"; > = 0;") ==
         "(var uniform int C (@ ui_items \"One\\0Two\\0\") 0)\n");

@@ -39,6 +39,17 @@ TEST_CASE("stringizing and token pasting", "[fx][preprocessor]") {
   CHECK(expand("#define V(fmt, ...) f(fmt, __VA_ARGS__)\nV(1, 2, 3)") == "f(1, 2, 3)");
 }
 
+// ReShade's preprocessor, like MSVC's, leaves a paste that gives several valid tokens as those
+// tokens: public effects write Tint##id##.rgb, which pastes "Tint1" and ".".
+TEST_CASE("a paste that gives several valid tokens keeps them, with a warning", "[fx][preprocessor]") {
+  auto tint = preprocess_text("#define GET_TINT(id) Tint##id##.rgb\nGET_TINT(1)");
+  CHECK(tint->text == "Tint1.rgb");
+  CHECK(tint->errors == "main.fx:2:1: warning: pasting \"Tint1\" and \".\" does not give a valid token: kept as they are\n");
+  auto plus = preprocess_text("#define CAT(a, b) a ## b\nCAT(+, /)");
+  CHECK(plus->text == "+ /");
+  CHECK(plus->errors.find("warning: pasting \"+\" and \"/\"") != std::string::npos);
+}
+
 TEST_CASE("a macro never expands inside its own expansion", "[fx][preprocessor]") {
   CHECK(expand("#define foo foo + 1\nfoo") == "foo + 1");
   CHECK(expand("#define a b\n#define b a\na b") == "a b");
@@ -184,8 +195,9 @@ TEST_CASE("preprocessor errors name the file, line and column", "[fx][preprocess
   CHECK(preprocess_text("#frobnicate")->errors == "main.fx:1:1: error: unknown preprocessor directive '#frobnicate'\n");
   CHECK(preprocess_text("#define S(x) #y")->errors == "main.fx:1:14: error: '#' is not followed by a macro parameter\n");
   CHECK(preprocess_text("#define P(x) ## x")->errors == "main.fx:1:2: error: '##' cannot be at either end of a macro\n");
-  CHECK(preprocess_text("#define CAT(a, b) a ## b\nCAT(+, /)")->errors ==
-        "main.fx:2:1: error: pasting \"+\" and \"/\" does not give a valid token\n");
+  // Pasted text that does not lex at all: "/*" opens a comment that never ends.
+  CHECK(preprocess_text("#define CAT(a, b) a ## b\nCAT(/, *)")->errors ==
+        "main.fx:2:1: error: pasting \"/\" and \"*\" does not give a valid token\n");
 }
 
 TEST_CASE("runaway input hits a limit with its own message", "[fx][preprocessor][limits]") {

@@ -226,6 +226,19 @@ TEST_CASE("texture, sampler, storage and pass states are checked by name and val
   CHECK(errors_of(topology) == "main.fx:1:" + std::to_string(topology.find("TRIANGLEFAN") + 1) +
                                    ": error: 'TRIANGLEFAN' is not a value of PrimitiveTopology (POINTLIST, LINELIST, "
                                    "LINESTRIP, TRIANGLELIST, TRIANGLESTRIP)\n");
+  // TRUE and FALSE, in any case, as ReShade takes them; a variable of that name is the variable.
+  CHECK(errors_of("texture2D t; sampler2D s { Texture = t; SRGBTexture = FALSE; }; "
+                  "technique T { pass { BlendEnable = True; ClearRenderTargets = false; } }")
+            .empty());
+  CHECK(errors_of("texture2D t; sampler2D s { Texture = t; SRGBTexture = MAYBE; };") ==
+        "main.fx:1:55: error: unknown name 'MAYBE'\n");
+  // Sizes folded through swizzles of constant vectors (a scalar initialiser splat), float
+  // arithmetic truncated, comparisons and bit operations.
+  CHECK(errors_of("static const int2 Small = 256; static const float2 Cursor = float2(32.9, 48.0);\n"
+                  "texture2D a { Width = Small.y; Height = Cursor.x; MipLevels = ((Small.x >> 4) != 0) + "
+                  "((Small.x & 0xF0F0) != 0); };\n"
+                  "texture2D b { Width = BUFFER_WIDTH / 3.0; Height = Small.y / Small.x; };")
+            .empty());
   std::string threads = "void CS() {} technique T { pass { ComputeShader = CS<2000, 1>; } }";
   CHECK(errors_of(threads) == "main.fx:1:" + std::to_string(threads.find("2000") + 1) +
                                   ": error: thread group size must be a constant from 1 to 1024\n");

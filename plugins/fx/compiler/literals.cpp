@@ -138,7 +138,8 @@ std::string unescape_string(const std::string& quoted, std::string& error) {
             value = value * 8 + static_cast<unsigned>(quoted[++i] - '0');
           out += static_cast<char>(value & 0xff);
         } else {
-          error = std::string("unknown escape sequence '\\") + e + "'";
+          // ReShade keeps the character after a backslash it does not know ("Color\0\HSV"), as
+          // public effects' combo lists rely on.
           out += e;
         }
     }

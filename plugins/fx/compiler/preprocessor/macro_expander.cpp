@@ -242,8 +242,12 @@ bool MacroExpander::paste(Token& left, const Token& right, const Token& use) {
   Diagnostics scratch(scratch_names);
   TokenList joined = lex_all(left.text + right.text, left.location.file, scratch);
   if (joined.size() != 1 || scratch.has_errors()) {
-    diagnostics_.error(use.location, "pasting \"" + left.text + "\" and \"" + right.text +
-                                         "\" does not give a valid token");
+    // Text that is not one token but several valid ones (Tint##id##.rgb pastes "Tint1" and ".")
+    // stays as those tokens, as ReShade's and MSVC's preprocessors leave it; what does not lex at
+    // all is an error.
+    const std::string what = "pasting \"" + left.text + "\" and \"" + right.text + "\" does not give a valid token";
+    if (scratch.has_errors()) diagnostics_.error(use.location, what);
+    else diagnostics_.warning(use.location, what + ": kept as they are");
     return false;
   }
   left.kind = joined[0].kind;

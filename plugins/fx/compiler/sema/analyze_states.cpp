@@ -80,6 +80,13 @@ void Analyzer::check_state_value(StateAssignment& state, const StateRule& rule) 
                                              (value.kind == ExprKind::kName ? ", not '" + value.text + "'" : std::string()));
     return;
   }
+  // TRUE and FALSE (any case), which ReShade takes as state values beside true and false
+  // (SRGBTexture = FALSE), unless the effect declares a variable of that name.
+  if (value.kind == ExprKind::kName && (same_ignoring_case(value.text, "true") || same_ignoring_case(value.text, "false")) &&
+      !find_variable(value.text)) {
+    value.kind = ExprKind::kBool;
+    value.boolean = same_ignoring_case(value.text, "true");
+  }
   check(value);
   if (is_error(value.resolved)) return;
   if (!value.resolved.is_scalar()) {

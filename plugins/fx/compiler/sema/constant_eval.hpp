@@ -1,6 +1,7 @@
 #pragma once
-// Integer constant expressions after analysis: array sizes, thread group sizes. Literals, static
-// const variables with constant initialisers, casts and arithmetic; nullopt for anything else.
+// Integer constant expressions after analysis: array sizes, thread group sizes, texture sizes,
+// switch labels. Folded by evaluate_constant (constant_value.hpp) down to one number, a float
+// truncated toward zero; nullopt for anything else.
 #include <optional>
 
 #include "../ast/ast.hpp"

@@ -136,10 +136,13 @@ Value evaluate(const Expr& e, int depth) {
       if (!v) return std::nullopt;
       return e.resolved.is_numeric() ? convert(*v, e.resolved) : v;
     }
-    case ExprKind::kName:
-      if (e.variable && (e.variable->qualifiers & kQualConst) && e.variable->initializer)
-        return evaluate(*e.variable->initializer, depth + 1);
-      return std::nullopt;
+    case ExprKind::kName: {
+      if (!e.variable || !(e.variable->qualifiers & kQualConst) || !e.variable->initializer) return std::nullopt;
+      // As the variable holds it: `static const int2 Size = 256;` is (256, 256).
+      Value v = evaluate(*e.variable->initializer, depth + 1);
+      if (v && e.variable->resolved.is_numeric()) return convert(*v, e.variable->resolved);
+      return v;
+    }
     case ExprKind::kMember: {
       Value v = evaluate(*e.operands[0], depth + 1);
       if (!v || e.swizzle.empty() || v->is_string) return std::nullopt;
