@@ -2,9 +2,12 @@
 // x - floor(x), sign returns int, round rounds half to even, mul's operands swap (the matrix
 // storage of glsl_generator.hpp), and every texture access flips v between FX's top-left origin
 // and GL's bottom-left one.
+#include <algorithm>
 #include <map>
 
 #include "glsl_writer.hpp"
+
+#include "../sema/constant_value.hpp"
 
 namespace pfx::fx {
 namespace {
@@ -136,11 +139,25 @@ std::string GlslWriter::texture_call(const Expr& e, const std::string& name) {
   helpers.insert("flip");
   // Coordinates in [0, 1] with v from the top -> GL's; texel offsets likewise.
   auto uv = [&](const std::string& c) { return d == 1 ? c : "pfx_flip(" + vec + "(" + c + "))"; };
-  // Offsets must stay constant expressions for GLSL: flipped inline, not through a function.
-  auto offset = [&](const std::string& o) {
-    if (d == 1) return "int(" + o + ")";
-    std::string v = ivec + "(" + o + ")";
-    return ivec + "(" + v + ".x, -(" + v + ".y)" + (d == 3 ? ", " + v + ".z" : std::string()) + ")";
+  // A texel offset, which GLSL takes only as a constant expression: folded here when the FX code
+  // makes it one (from literals, static consts, swizzles...), flipped as the rows are; "" when it
+  // is not constant, and HLSL's offset then moves the coordinate instead (shifted, below).
+  auto offset = [&](std::size_t operand) -> std::string {
+    const std::optional<ConstantValue> folded = evaluate_constant(*e.operands[operand]);
+    if (!folded || folded->is_string || folded->components.empty()) return "";
+    std::vector<long long> o;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(d); ++i)  // a scalar is splat
+      o.push_back(static_cast<long long>(folded->components[std::min(i, folded->components.size() - 1)]));
+    if (d == 1) return std::to_string(o[0]);
+    return ivec + "(" + std::to_string(o[0]) + ", " + std::to_string(-o[1]) + (d == 3 ? ", " + std::to_string(o[2]) : std::string()) + ")";
+  };
+  // A GL coordinate moved by a texel offset that is not constant, in texels of `level`.
+  auto shifted = [&](const std::string& coordinate, std::size_t operand, const std::string& level) {
+    const std::string size = "textureSize(" + s + ", " + level + ")";
+    if (d == 1) return "(" + coordinate + " + float(" + a[operand] + ") / float(" + size + "))";
+    const std::string v = vec + "(" + a[operand] + ")";
+    return "(" + coordinate + " + " + vec + "(" + v + ".x, -(" + v + ".y)" + (d == 3 ? ", " + v + ".z" : std::string()) +
+           ") / " + vec + "(" + size + "))";
   };
   auto texel = [&](const std::string& c, const std::string& height) {
     return d == 1 ? "int(" + c + ")" : "pfx_flip_texel(" + ivec + "(" + c + "), " + height + ")";
@@ -170,18 +187,24 @@ std::string GlslWriter::texture_call(const Expr& e, const std::string& name) {
     return error(e.location, name + "() does not take a storage"), "0";
   }
   if (suffix == "size") return "textureSize(" + s + ", " + (a.size() > 1 ? "int(" + a[1] + ")" : "0") + ")";
-  if (suffix == "") {
-    if (a.size() > 2) return sampled("textureOffset(" + s + ", " + uv(a[1]) + ", " + offset(a[2]) + ")", e);
-    return sampled("texture(" + s + ", " + uv(a[1]) + ")", e);
+  if (suffix == "" || suffix == "offset") {
+    if (a.size() < 3) return sampled("texture(" + s + ", " + uv(a[1]) + ")", e);
+    const std::string o = offset(2);
+    if (o.empty()) return sampled("texture(" + s + ", " + shifted(uv(a[1]), 2, "0") + ")", e);
+    return sampled("textureOffset(" + s + ", " + uv(a[1]) + ", " + o + ")", e);
   }
-  if (suffix == "offset") return sampled("textureOffset(" + s + ", " + uv(a[1]) + ", " + offset(a[2]) + ")", e);
   if (suffix == "lod" || suffix == "lodoffset" || suffix == "bias" || suffix == "proj") {
     // The coordinate is a float4: xy(z) the position, w the level, bias or divisor.
     std::string c = "(" + a[1] + ")";
     std::string position = c + (d == 1 ? ".x" : d == 2 ? ".xy" : ".xyz");
     if (suffix == "proj") return sampled("texture(" + s + ", " + uv(position + " / " + c + ".w") + ")", e);
     if (suffix == "bias") return sampled("texture(" + s + ", " + uv(position) + ", " + c + ".w)", e);
-    if (a.size() > 2) return sampled("textureLodOffset(" + s + ", " + uv(position) + ", " + c + ".w, " + offset(a[2]) + ")", e);
+    if (a.size() > 2) {
+      const std::string o = offset(2);
+      if (o.empty())
+        return sampled("textureLod(" + s + ", " + shifted(uv(position), 2, "int(" + c + ".w)") + ", " + c + ".w)", e);
+      return sampled("textureLodOffset(" + s + ", " + uv(position) + ", " + c + ".w, " + o + ")", e);
+    }
     return sampled("textureLod(" + s + ", " + uv(position) + ", " + c + ".w)", e);
   }
   if (suffix == "fetch") {
@@ -195,16 +218,20 @@ std::string GlslWriter::texture_call(const Expr& e, const std::string& name) {
   }
   if (suffix == "grad") {
     auto gradient = [&](const std::string& g) { return d == 1 ? g : "pfx_flip_offset(" + vec + "(" + g + "))"; };
-    std::string text = (a.size() > 4 ? "textureGradOffset(" : "textureGrad(") + s + ", " + uv(a[1]) + ", " + gradient(a[2]) + ", " + gradient(a[3]);
-    if (a.size() > 4) text += ", " + offset(a[4]);
+    const std::string o = a.size() > 4 ? offset(4) : "";
+    const std::string at = a.size() > 4 && o.empty() ? shifted(uv(a[1]), 4, "0") : uv(a[1]);
+    std::string text = (o.empty() ? "textureGrad(" : "textureGradOffset(") + s + ", " + at + ", " + gradient(a[2]) + ", " + gradient(a[3]);
+    if (!o.empty()) text += ", " + o;
     return sampled(text + ")", e);
   }
   if (suffix.compare(0, 6, "gather") == 0) {
     if (d != 2) return error(e.location, name + "() needs a 2D sampler"), "0";
     char channel = suffix.size() > 6 ? suffix[6] : 'R';
     int comp = channel == 'G' ? 1 : channel == 'B' ? 2 : channel == 'A' ? 3 : 0;
-    std::string text = a.size() > 2 ? "textureGatherOffset(" + s + ", " + uv(a[1]) + ", " + offset(a[2]) + ", " + std::to_string(comp) + ")"
-                                     : "textureGather(" + s + ", " + uv(a[1]) + ", " + std::to_string(comp) + ")";
+    const std::string o = a.size() > 2 ? offset(2) : "";
+    const std::string at = a.size() > 2 && o.empty() ? shifted(uv(a[1]), 2, "0") : uv(a[1]);
+    std::string text = !o.empty() ? "textureGatherOffset(" + s + ", " + at + ", " + o + ", " + std::to_string(comp) + ")"
+                                  : "textureGather(" + s + ", " + at + ", " + std::to_string(comp) + ")";
     // GL gathers (i0,j1) (i1,j1) (i1,j0) (i0,j0) with j1 the upper row in GL, the lower in FX.
     return component(text, 4) + ".wzyx";
   }

@@ -1,10 +1,26 @@
 // Statements and function definitions.
 #include "glsl_writer.hpp"
 
+#include <cstdint>
+#include <optional>
+
+#include "../sema/constant_eval.hpp"
+
 namespace pfx::fx {
 namespace {
 
 std::string pad(int indent) { return std::string(static_cast<std::size_t>(indent) * 2, ' '); }
+
+// A case label as a literal of the selector's type: HLSL's labels are constant expressions, names
+// of static consts among them (case Mode_Radial:), which GLSL takes only as constants of its own,
+// and it wants int labels for an int selector and uint ones for a uint selector. The analyser has
+// folded every label already.
+std::string case_label(const Expr& label, const Type& selector) {
+  const std::optional<long long> value = evaluate_integer_constant(label);
+  if (!value) return "0";
+  if (selector.base == BaseType::kUint) return std::to_string(static_cast<std::uint32_t>(*value)) + "u";
+  return std::to_string(static_cast<std::int32_t>(*value));
+}
 
 }  // namespace
 
@@ -69,7 +85,7 @@ void GlslWriter::statement(const Stmt& s, int indent, std::string& out) {
       if (t.base != BaseType::kInt && t.base != BaseType::kUint) selector = "int(" + selector + ")";
       out += p + "switch (" + selector + ") {\n";
       for (const SwitchCase& c : s.cases) {
-        for (const ExprPtr& label : c.labels) out += p + "  case " + expr(*label) + ":\n";
+        for (const ExprPtr& label : c.labels) out += p + "  case " + case_label(*label, t) + ":\n";
         if (c.has_default) out += p + "  default:\n";
         for (const StmtPtr& child : c.body) statement(*child, indent + 2, out);
         if (c.body.empty() && &c == &s.cases.back()) out += p + "    break;\n";  // GLSL wants a statement after the last label
