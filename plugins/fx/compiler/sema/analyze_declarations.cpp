@@ -130,8 +130,7 @@ void Analyzer::declare_variables(std::vector<VariableDecl>& variables, bool glob
     if (v.has_state_block || type.is_object()) check_object(v);
     if (global) {
       std::string qualified = namespace_prefix_ + v.name;
-      if (globals_.count(qualified) || functions_.count(qualified))
-        diagnostics_.error(v.location, "redefinition of '" + v.name + "'");
+      if (globals_.count(qualified)) diagnostics_.error(v.location, "redefinition of '" + v.name + "'");
       globals_[qualified] = &v;
       global_variables_.insert(&v);
       if (type.base == BaseType::kTexture) textures_.insert(qualified);

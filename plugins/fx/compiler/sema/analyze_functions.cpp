@@ -21,8 +21,9 @@ void Analyzer::declare_function(FunctionDecl& function) {
     if (!is_error(type) && !resolve_array_sizes(p, type)) type = error_type();
     p.resolved = type;
   }
+  // A variable of the same name may stand beside it, as ReShade allows (`static const float3x3
+  // RGBtoYIQ` and `float3 RGBtoYIQ(float3 c)`): a call looks for functions, a value for variables.
   std::string qualified = namespace_prefix_ + function.name;
-  if (globals_.count(qualified)) diagnostics_.error(function.location, "redefinition of '" + function.name + "'");
   std::vector<FunctionDecl*>& overloads = functions_[qualified];
   bool replaced = false;
   for (FunctionDecl*& existing : overloads) {
