@@ -2,6 +2,10 @@
 
 #include <unistd.h>
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <link.h>
+#endif
+
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -24,6 +28,22 @@ ScratchFolder::ScratchFolder(const std::string& name) {
 ScratchFolder::~ScratchFolder() {
   std::error_code ec;
   std::filesystem::remove_all(path_, ec);
+}
+
+std::string sanitizer_runtime() {
+  std::string runtime;
+#if defined(__SANITIZE_ADDRESS__)
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* out) {
+        if (info->dlpi_name && std::strstr(info->dlpi_name, "libasan.so")) {
+          *static_cast<std::string*>(out) = info->dlpi_name;
+          return 1;
+        }
+        return 0;
+      },
+      &runtime);
+#endif
+  return runtime;
 }
 
 InjectRun run_injected(const ScratchFolder& folder, const std::string& name, const std::vector<std::string>& inject_args,

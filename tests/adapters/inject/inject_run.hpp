@@ -27,6 +27,11 @@ class ScratchFolder {
   std::string path_;
 };
 
+// The path of AddressSanitizer's runtime in this process, or "" outside the sanitizer build: an
+// application that is not sanitized gets it first in LD_PRELOAD when a sanitized pfx library goes
+// into it.
+std::string sanitizer_runtime();
+
 // pfx-inject INJECT_ARGS --log FOLDER/NAME.log -- APP_ARGS, with the clock stopped at
 // 2020-01-01 00:00:00 when frozen_clock, and `environment` (NAME=VALUE) added.
 InjectRun run_injected(const ScratchFolder& folder, const std::string& name, const std::vector<std::string>& inject_args,

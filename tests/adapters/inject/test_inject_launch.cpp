@@ -7,9 +7,6 @@
 #include <filesystem>
 #include <fstream>
 
-#if defined(__SANITIZE_ADDRESS__)
-#include <link.h>
-#endif
 
 #include "inject_run.hpp"
 
@@ -108,17 +105,7 @@ RunResult run_by_hand(const std::vector<std::string>& variables, bool frozen_clo
 #if defined(__SANITIZE_ADDRESS__)
   // The sanitized library in an application that is not: AddressSanitizer's runtime goes first,
   // and the application's own allocations are not ours to judge (pfx-inject does the same).
-  std::string runtime;
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* out) {
-        if (info->dlpi_name && std::strstr(info->dlpi_name, "libasan.so")) {
-          *static_cast<std::string*>(out) = info->dlpi_name;
-          return 1;
-        }
-        return 0;
-      },
-      &runtime);
-  preload = "LD_PRELOAD=" + runtime + ":" + PFX_INJECT_LIBRARY;
+  preload = "LD_PRELOAD=" + pfx::test::sanitizer_runtime() + ":" + PFX_INJECT_LIBRARY;
   const char* asan_options = std::getenv("ASAN_OPTIONS");
   argv.push_back(std::string("ASAN_OPTIONS=") + (asan_options ? asan_options : "") + ":detect_leaks=0");
 #endif

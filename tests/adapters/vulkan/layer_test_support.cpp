@@ -9,26 +9,13 @@
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <dlfcn.h>
-#include <link.h>
-
-#include <cstring>
 #endif
 
 namespace pfx::test {
 
 void add_sanitizer_runtime(std::vector<std::string>* argv) {
 #if defined(__SANITIZE_ADDRESS__)
-  std::string runtime;
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* out) {
-        if (info->dlpi_name && std::strstr(info->dlpi_name, "libasan.so")) {
-          *static_cast<std::string*>(out) = info->dlpi_name;
-          return 1;
-        }
-        return 0;
-      },
-      &runtime);
-  argv->push_back("LD_PRELOAD=" + runtime);
+  argv->push_back("LD_PRELOAD=" + sanitizer_runtime());
   const char* asan_options = std::getenv("ASAN_OPTIONS");
   argv->push_back(std::string("ASAN_OPTIONS=") + (asan_options ? asan_options : "") + ":detect_leaks=0");
 #else
