@@ -79,6 +79,8 @@ nlohmann::ordered_json parameter_json(const pfx_effect_desc& effect, const pfx_p
   q["logarithmic"] = (d.flags & PFX_PARAM_LOGARITHMIC) != 0;
   q["default"] = value_json(d, d.default_value);
   if (has_display_default(d)) q["display_default"] = value_json(d, d.display_default);
+  // Default and display range above are a 1920x1080 frame's; an instance runs with its frame's.
+  if (d.flags & PFX_PARAM_FOLLOWS_FRAME_SIZE) q["follows_frame_size"] = true;
   if (d.type == PFX_PARAM_ENUM) {
     q["items"] = nlohmann::ordered_json::array();
     for (uint32_t k = 0; k < d.item_count; ++k)
@@ -111,6 +113,11 @@ std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const
         out += line;
         if (has_display_default(p))
           out += "      default on display-referred (8-bit) frames: " + value_text(p, p.display_default) + "\n";
+        if (p.flags & PFX_PARAM_FOLLOWS_FRAME_SIZE) {
+          std::snprintf(line, sizeof line, "      default and slider range [%g, %g] depend on the frame size (shown for 1920x1080)\n",
+                        p.display_min, p.display_max);
+          out += line;
+        }
         if (p.type == PFX_PARAM_ENUM) {
           out += "      one of:";
           for (uint32_t k = 0; k < p.item_count; ++k) out += std::string(" ") + p.items[k].id;

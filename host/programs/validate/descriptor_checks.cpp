@@ -100,7 +100,8 @@ std::vector<std::string> param_descriptor_problems(const pfx_param_desc& p) {
   if (!(p.step >= 0) || !std::isfinite(p.step)) problem("step " + number(p.step) + " is not a finite number >= 0");
   if ((p.flags & PFX_PARAM_LOGARITHMIC) && !(p.display_min > 0))
     problem("logarithmic, but the display range does not start above 0");
-  if (p.flags & ~uint32_t(PFX_PARAM_REJECT_OUT_OF_RANGE | PFX_PARAM_LOGARITHMIC | PFX_PARAM_HAS_DISPLAY_DEFAULT))
+  if (p.flags & ~uint32_t(PFX_PARAM_REJECT_OUT_OF_RANGE | PFX_PARAM_LOGARITHMIC | PFX_PARAM_HAS_DISPLAY_DEFAULT |
+                           PFX_PARAM_FOLLOWS_FRAME_SIZE))
     problem("unknown flag bits " + std::to_string(p.flags));
 
   const int n = component_count(p.type);

@@ -10,6 +10,7 @@
 
 #include "effect_compiler.hpp"
 #include "fx_effect.hpp"
+#include "fx_frame_params.hpp"
 
 namespace pfx_fx {
 namespace {
@@ -17,7 +18,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // Frame size the catalog compiles at: only for listing; instances compile at their frame's size.
+// A second compile at another size and shape finds the parameters whose defaults or ranges follow
+// the size (fx_frame_params.hpp).
 constexpr int kNominalWidth = 1920, kNominalHeight = 1080;
+constexpr int kOtherWidth = 800, kOtherHeight = 600;
 
 }  // namespace
 
@@ -70,6 +74,11 @@ void add_file(FxCatalog& c, const std::string& file, std::set<std::string>& ids)
     return;
   }
   const pfx::fx::EffectModel& model = compiled->model;
+  // Parameters of the file at another size; none when it does not compile there.
+  ParamTable other;
+  auto at_other = pfx::fx::compile_effect(file, compile_options(kOtherWidth, kOtherHeight), false);
+  std::vector<std::string> unused;
+  if (at_other->ok()) build_params(at_other->model, other, unused);
   for (std::size_t t = 0; t < model.techniques.size(); ++t) {
     const pfx::fx::TechniqueInfo& technique = model.techniques[t];
     auto entry = std::make_unique<FxEffectEntry>();
@@ -85,6 +94,7 @@ void add_file(FxCatalog& c, const std::string& file, std::set<std::string>& ids)
                                                     "ReShade FX technique " + technique.name + " from " + fs::path(file).filename().string());
     std::vector<std::string> warnings;
     build_params(model, entry->params, warnings);
+    if (at_other->ok()) mark_frame_size_dependence(entry->params, other);
     c.effects.push_back(std::move(entry));
   }
 }
@@ -145,6 +155,22 @@ const FxCatalog& catalog() {
     for (std::size_t i = 0; i < c.effects.size(); ++i) fill_effect_desc(*c.effects[i], i);
   });
   return c;
+}
+
+const ParamTable* params_at(const FxEffectEntry& entry, int width, int height) {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384) return nullptr;
+  bool follows = false;
+  for (const pfx_param_desc& d : entry.params.descs) follows = follows || (d.flags & PFX_PARAM_FOLLOWS_FRAME_SIZE);
+  if (!follows) return nullptr;
+  std::lock_guard<std::mutex> lock(entry.sized_mutex);
+  auto found = entry.sized.find({width, height});
+  if (found != entry.sized.end()) return found->second.get();
+  auto compiled = pfx::fx::compile_effect(entry.file, compile_options(width, height), false);
+  if (!compiled->ok()) return nullptr;
+  auto table = std::make_unique<ParamTable>();
+  build_params_at_size(compiled->model, entry.params, *table);
+  if (table->descs.size() != entry.params.descs.size()) return nullptr;
+  return entry.sized.emplace(std::make_pair(width, height), std::move(table)).first->second.get();
 }
 
 }  // namespace pfx_fx

@@ -4,7 +4,9 @@
 // searched with their sub-folders) and the folder installed beside the plugin, compiled up to its
 // model at a nominal frame size. Each technique becomes an effect "fx_<technique>" with its
 // uniforms as parameters; a file that fails is kept with its error and stops nothing else.
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -20,8 +22,11 @@ struct FxEffectEntry {
   std::string file;       // the .fx file
   std::string technique;  // the technique's name in it
   int technique_index = 0;
-  ParamTable params;
+  ParamTable params;  // as at 1920x1080
   pfx_effect_desc desc{};
+  // params_at's tables, per frame size asked for (kept until the plugin goes: hosts hold them).
+  mutable std::mutex sized_mutex;
+  mutable std::map<std::pair<int, int>, std::unique_ptr<ParamTable>> sized;
 };
 
 struct FxLoadError {
@@ -36,6 +41,11 @@ struct FxCatalog {
 
 // The catalog, built on the first call (thread-safe).
 const FxCatalog& catalog();
+
+// The entry's parameters as they are at a frame of width x height (compiled once per size), or
+// null for a size outside 1..16384, a file that does not compile there, or parameters that do not
+// follow the frame size (fx_frame_params.hpp).
+const ParamTable* params_at(const FxEffectEntry& entry, int width, int height);
 
 // The preprocessor options every compile uses at this frame size: the shader folders (a
 // collection's own ReShade.fxh) and then pfx's own headers as include folders.

@@ -249,6 +249,7 @@ void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
     passes_.push_back(p);
   }
   uniforms_.reset(compiled_->model, entry_.params);
+  frame_params_.reset(compiled_->model, entry_.params, compiled_width_, compiled_height_);
 }
 
 bool FxInstance::compile_source(int width, int height) {
@@ -480,7 +481,10 @@ pfx_status FxInstance::run_pass(const pfx_pass_context* context) {
 
 void FxInstance::run_encode(const pfx_pass_context& context) {
   bool depth = context.input_count > 1;
-  uniforms_.update(compiled_->model, entry_.params, context.params, *context.frame, depth);
+  std::vector<std::string> notes;
+  const pfx_value* values = frame_params_.resolve(entry_.params, context.params, notes);
+  for (const std::string& note : notes) log(PFX_LOG_WARNING, note);
+  uniforms_.update(compiled_->model, entry_.params, values, *context.frame, depth);
   SavedTargets saved;
   if (depth) convert_depth(context);
   current_ = 0;

@@ -19,6 +19,7 @@
 #include "effect_compiler.hpp"
 #include "fx_catalog.hpp"
 #include "fx_definitions.hpp"
+#include "fx_frame_params.hpp"
 #include "fx_gl_objects.hpp"
 #include "fx_stencil.hpp"
 #include "fx_uniform_values.hpp"
@@ -84,6 +85,7 @@ class FxInstance {
   std::vector<std::string> pass_names_;
   pfx_pass_input color_input_[2]{};
   UniformValues uniforms_;
+  FrameParams frame_params_;  // the values of parameters that follow the frame size
 
   // GL side.
   bool gl_current_ = false;  // built for compiled_

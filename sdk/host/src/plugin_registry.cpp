@@ -244,6 +244,7 @@ void take_sources(const pfx_entry& entry, Plugin* plugin) {
     for (uint32_t i = 0, n = sources->error_count(); i < n; ++i)
       if (const char* message = sources->error(i)) plugin->source_errors.push_back(message);
   if (PFX_STRUCT_HAS(sources, pfx_source_factory, set_definitions)) plugin->set_definitions = sources->set_definitions;
+  if (PFX_STRUCT_HAS(sources, pfx_source_factory, params_at)) plugin->params_at = sources->params_at;
 }
 
 }  // namespace
@@ -438,6 +439,24 @@ const ImporterInfo* PluginRegistry::find_importer_for_path(const std::string& pa
     for (uint32_t i = 0; i < info.desc->extension_count; ++i)
       if (extension == info.desc->extensions[i]) return &info;
   return nullptr;
+}
+
+std::vector<pfx_param_desc> params_at_frame_size(const EffectInfo& effect, uint32_t width, uint32_t height) {
+  if (!effect.desc || !effect.plugin || !effect.plugin->params_at || effect.desc->param_count == 0) return {};
+  const pfx_param_desc* table = effect.plugin->params_at(effect.desc->id, width, height);
+  if (!table) return {};
+  std::string problem;
+  std::vector<pfx_param_desc> params =
+      read_sized_array(table, effect.desc->param_count, PFX_PARAM_DESC_MIN_SIZE, "parameter", &problem);
+  // The same parameters as the effect's own, or none: a host matches them by position.
+  for (uint32_t i = 0; i < params.size(); ++i) {
+    const pfx_param_desc& listed = effect.desc->params[i];
+    if (!params[i].id || std::strcmp(params[i].id, listed.id) != 0 || params[i].type != listed.type ||
+        !check_param_descriptor(params[i]).empty())
+      return {};
+    params[i].struct_size = sizeof(pfx_param_desc);
+  }
+  return problem.empty() ? params : std::vector<pfx_param_desc>{};
 }
 
 }  // namespace pfx::host

@@ -27,7 +27,12 @@ enum {
   /* A UI should use a logarithmic slider over the display range (which must then be > 0). */
   PFX_PARAM_LOGARITHMIC = 1u << 1,
   /* Since 1.4: display_default holds this parameter's default for display-referred frames. */
-  PFX_PARAM_HAS_DISPLAY_DEFAULT = 1u << 2
+  PFX_PARAM_HAS_DISPLAY_DEFAULT = 1u << 2,
+  /* Since 1.5: the default or the display range depends on the frame's size (an FX uniform whose
+   * default is BUFFER_WIDTH). The descriptor gives them for a 1920x1080 frame; the plugin's
+   * sources factory says what they are at another size (pfx/sources.h, params_at), and an instance
+   * takes a value equal to default_value as "not set": it runs with the default of its frame. */
+  PFX_PARAM_FOLLOWS_FRAME_SIZE = 1u << 3
 };
 
 /* Every value, whatever its type, travels as four doubles: exact for any int up to 2^53. */

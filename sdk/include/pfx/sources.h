@@ -7,6 +7,7 @@
 #define PFX_SOURCES_H
 
 #include "pfx/core.h"
+#include "pfx/params.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -37,6 +38,14 @@ typedef struct pfx_source_factory {
    * whose name is not an identifier) or an instance it did not make, which then keeps the
    * definitions it had. */
   pfx_status (*set_definitions)(void* instance, const char* definitions); /* since 1.5 */
+  /* Appended after set_definitions, the same way (check PFX_STRUCT_HAS; may be NULL). The
+   * parameters of effect `effect_id` as they are for a frame of width x height: the effect's own
+   * param_count descriptors, same ids, types and order, with the defaults and display ranges of
+   * the parameters flagged PFX_PARAM_FOLLOWS_FRAME_SIZE computed for that size (BUFFER_WIDTH and
+   * its kin). NULL for an unknown effect, a size outside 1..16384 or an effect without such
+   * parameters. Any thread, no GL; compiles the effect's file on the first call for a size, so a
+   * host asks when the size changes, not every frame. The array lives until deinit. */
+  const pfx_param_desc* (*params_at)(const char* effect_id, uint32_t width, uint32_t height); /* since 1.5 */
 } pfx_source_factory;
 #define PFX_SOURCE_FACTORY_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_source_factory, error)
 

@@ -58,6 +58,9 @@ struct Plugin {
   // The sources factory's set_definitions (pfx/sources.h), for instances of the effects in
   // effect_sources; null when the plugin has none (Chain::set_source_definitions calls it).
   pfx_status (*set_definitions)(void* instance, const char* definitions) = nullptr;
+  // The sources factory's params_at (pfx/sources.h); null when the plugin has none. Hosts call
+  // params_at_frame_size, which copies its answer into this host's layout.
+  const pfx_param_desc* (*params_at)(const char* effect_id, uint32_t width, uint32_t height) = nullptr;
   // The services this plugin was given (host_data points back at the registry's record).
   const pfx_host* host = nullptr;
   // What effects, importers and references point into: this host's layout of the plugin's own
@@ -142,5 +145,12 @@ class PFX_HOST_API PluginRegistry {
   std::vector<EffectInfo> effect_index_;
   std::vector<ImporterInfo> importer_index_;
 };
+
+// The parameters of `effect` as they are for a frame of width x height: its param_count
+// descriptors in order, with the defaults and slider ranges of those flagged
+// PFX_PARAM_FOLLOWS_FRAME_SIZE computed for that size (pfx/sources.h, params_at). Empty when the
+// effect has none, its plugin cannot say, or the answer does not match the effect's parameters.
+// Compiles on the plugin's side the first time a size is asked: call it when the size changes.
+PFX_HOST_API std::vector<pfx_param_desc> params_at_frame_size(const EffectInfo& effect, uint32_t width, uint32_t height);
 
 }  // namespace pfx::host
