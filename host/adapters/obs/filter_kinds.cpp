@@ -31,7 +31,9 @@ std::string label_of(const pfx_param_desc& param, int component) {
   return label;
 }
 
-void add_parameter(obs_properties_t* props, const pfx_param_desc& param) {
+// `param` as listed; `shown` the same at the source's frame size (its slider range).
+void add_parameter(obs_properties_t* props, const pfx_param_desc& param, const pfx_param_desc& shown,
+                   const std::string& size) {
   for (int c = 0; c < components(param.type); ++c) {
     const std::string key = component_key(param, c);
     const std::string label = label_of(param, c);
@@ -39,8 +41,8 @@ void add_parameter(obs_properties_t* props, const pfx_param_desc& param) {
     switch (param.type) {
       case PFX_PARAM_BOOL: property = obs_properties_add_bool(props, key.c_str(), label.c_str()); break;
       case PFX_PARAM_INT:
-        property = obs_properties_add_int_slider(props, key.c_str(), label.c_str(), static_cast<int>(param.display_min),
-                                                 static_cast<int>(param.display_max),
+        property = obs_properties_add_int_slider(props, key.c_str(), label.c_str(), static_cast<int>(shown.display_min),
+                                                 static_cast<int>(shown.display_max),
                                                  param.step >= 1 ? static_cast<int>(param.step) : 1);
         break;
       case PFX_PARAM_ENUM:
@@ -50,20 +52,30 @@ void add_parameter(obs_properties_t* props, const pfx_param_desc& param) {
           obs_property_list_add_string(property, param.items[i].label, param.items[i].id);
         break;
       default:
-        property = obs_properties_add_float_slider(props, key.c_str(), label.c_str(), param.display_min,
-                                                   param.display_max, param.step > 0 ? param.step : 0.001);
+        property = obs_properties_add_float_slider(props, key.c_str(), label.c_str(), shown.display_min,
+                                                   shown.display_max, param.step > 0 ? param.step : 0.001);
         break;
     }
-    if (param.tooltip && *param.tooltip) obs_property_set_long_description(property, param.tooltip);
+    std::string explanation = param.tooltip ? param.tooltip : "";
+    if (param.flags & PFX_PARAM_FOLLOWS_FRAME_SIZE)
+      explanation += std::string(explanation.empty() ? "" : " ") + "Its default and range follow the frame size (" +
+                     (size.empty() ? "" : app::value_text(shown, shown.default_value) + " at " + size + "; ") +
+                     "the listed default " + app::value_text(param, param.default_value) + " means the frame's own).";
+    if (!explanation.empty()) obs_property_set_long_description(property, explanation.c_str());
   }
 }
 
 }  // namespace
 
-obs_properties_t* kind_properties(const FilterKind& kind) {
+obs_properties_t* kind_properties(const FilterKind& kind, uint32_t width, uint32_t height) {
   obs_properties_t* props = obs_properties_create();
   if (kind.effect) {
-    for (uint32_t i = 0; i < kind.effect->param_count; ++i) add_parameter(props, kind.effect->params[i]);
+    std::vector<pfx_param_desc> at_size;
+    if (width > 0 && height > 0 && kind.plugin)
+      at_size = host::params_at_frame_size(host::EffectInfo{kind.effect, kind.plugin}, width, height);
+    const std::string size = at_size.empty() ? "" : std::to_string(width) + "x" + std::to_string(height);
+    for (uint32_t i = 0; i < kind.effect->param_count; ++i)
+      add_parameter(props, kind.effect->params[i], at_size.empty() ? kind.effect->params[i] : at_size[i], size);
     return props;
   }
   obs_property_t* chain = obs_properties_add_text(props, "chain", "Chain", OBS_TEXT_DEFAULT);

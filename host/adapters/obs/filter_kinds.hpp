@@ -8,6 +8,7 @@
 
 #include <obs-module.h>
 #include <pfx/effect.h>
+#include <pfx/host/plugin_registry.hpp>
 
 #include "chain_settings.hpp"
 
@@ -17,11 +18,14 @@ struct FilterKind {
   std::string type_id;  // OBS's id: "pfx_bloom_filter", "pfx_chain_filter"
   std::string name;     // shown in OBS's filter menu
   const pfx_effect_desc* effect = nullptr;  // null: the chain filter
+  const pfx::host::Plugin* plugin = nullptr;  // the effect's
 };
 
 // The properties OBS shows, from the parameters' descriptions (names, explanations, units,
-// slider ranges, enum items).
-obs_properties_t* kind_properties(const FilterKind& kind);
+// slider ranges, enum items). With the size of the filter's source (0 when OBS asks without a
+// filter), parameters that follow the frame size (PFX_PARAM_FOLLOWS_FRAME_SIZE) get their slider
+// range at that size, and their explanation says so.
+obs_properties_t* kind_properties(const FilterKind& kind, uint32_t width = 0, uint32_t height = 0);
 // The defaults: each parameter's display-referred default (an 8-bit SDR frame holds nothing
 // above 1.0); the chain filter's: bloom, srgb.
 void kind_defaults(const FilterKind& kind, obs_data_t* settings);

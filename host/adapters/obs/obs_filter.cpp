@@ -85,8 +85,14 @@ void destroy(void* data) {
   delete filter;
 }
 
-obs_properties_t* get_properties(void*, void* type_data) {
-  return kind_properties(*static_cast<const FilterKind*>(type_data));
+obs_properties_t* get_properties(void* data, void* type_data) {
+  // The filter's source, when OBS asks for a filter's properties: its size sets the ranges of
+  // parameters that follow the frame size.
+  auto* filter = static_cast<Filter*>(data);
+  obs_source_t* target = filter ? obs_filter_get_target(filter->source) : nullptr;
+  const uint32_t width = target ? obs_source_get_base_width(target) : 0;
+  const uint32_t height = target ? obs_source_get_base_height(target) : 0;
+  return kind_properties(*static_cast<const FilterKind*>(type_data), width, height);
 }
 
 void get_defaults(void* type_data, obs_data_t* settings) {

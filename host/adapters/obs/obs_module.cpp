@@ -73,7 +73,7 @@ bool obs_module_load(void) {
     for (const auto& effect : g_registry->effects())
       if (id == effect.desc->id)
         g_kinds.push_back(std::make_unique<pfx::obs::FilterKind>(
-            pfx::obs::FilterKind{"pfx_" + id + "_filter", std::string("pfx ") + effect.desc->label, effect.desc}));
+            pfx::obs::FilterKind{"pfx_" + id + "_filter", std::string("pfx ") + effect.desc->label, effect.desc, effect.plugin}));
   pfx::obs::set_filter_registry(g_registry);
   for (const auto& kind : g_kinds) {
     obs_source_info info = pfx::obs::filter_info(*kind);

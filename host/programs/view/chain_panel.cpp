@@ -79,7 +79,13 @@ void draw_parameters_panel(ViewerSession& session, UiState& ui) {
     if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
       if (info->desc->description && *info->desc->description && ImGui::IsItemHovered())
         ImGui::SetTooltip("%s\nplugin %s %s", info->desc->description, info->plugin->id.c_str(), info->plugin->version.c_str());
-      draw_effect_parameters(*info->desc, name, session.params(), &ui.param_problem);
+      FrameSizeParams at_frame;
+      const int width = session.output_width(), height = session.output_height();
+      if (width > 0 && height > 0) {
+        at_frame.params = pfx::host::params_at_frame_size(*info, uint32_t(width), uint32_t(height));
+        at_frame.size = std::to_string(width) + "x" + std::to_string(height);
+      }
+      draw_effect_parameters(*info->desc, name, session.params(), &ui.param_problem, at_frame);
     }
     ImGui::PopID();
   }

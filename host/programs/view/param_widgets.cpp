@@ -120,7 +120,7 @@ std::string number_format(const pfx_param_desc& param, bool integer) {
 }
 
 bool draw_effect_parameters(const pfx_effect_desc& effect, const std::string& instance, pfx::host::ParamStore& params,
-                            std::string* problem) {
+                            std::string* problem, const FrameSizeParams& at_frame) {
   const pfx_value* values = params.values(instance);
   if (!values) return false;
   if (effect.param_count == 0) ImGui::TextDisabled("(no parameters)");
@@ -140,22 +140,30 @@ bool draw_effect_parameters(const pfx_effect_desc& effect, const std::string& in
       if (group != (d.group ? d.group : "")) continue;
       const std::string key = instance + "." + d.id;
       ImGui::PushID(key.c_str());
-      pfx_value value = values[i];
-      if (edit_value(d, &value)) {
+      // A parameter that follows the frame size shows its range at the frame being rendered, and,
+      // while it is at its listed default (not set), the default the effect runs with there.
+      const bool follows = (d.flags & PFX_PARAM_FOLLOWS_FRAME_SIZE) && at_frame.params.size() == effect.param_count;
+      const pfx_param_desc& shown = follows ? at_frame.params[i] : d;
+      const bool unset = same_value(values[i], d.default_value, d.type);
+      pfx_value value = follows && unset ? shown.default_value : values[i];
+      if (edit_value(shown, &value)) {
         std::string error;
         if (params.set_value(instance, d.id, value, &error)) problem->clear(), changed = true;
         else *problem = error;
         values = params.values(instance);
       }
-      show_tooltip(key, d);
-      if (!same_value(values[i], d.default_value, d.type)) {
+      show_tooltip(key, shown);
+      if (follows && ImGui::IsItemHovered())
+        ImGui::SetTooltip("default and range follow the frame size: %s at %s", default_value_text(shown).c_str(),
+                          at_frame.size.c_str());
+      if (!unset) {
         ImGui::SameLine();
         if (ImGui::SmallButton("reset")) {
           params.reset(instance, d.id);
           values = params.values(instance);
           changed = true;
         }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the default, %s", default_value_text(d).c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the default, %s", default_value_text(shown).c_str());
       }
       ImGui::PopID();
     }

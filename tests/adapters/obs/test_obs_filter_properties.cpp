@@ -3,6 +3,7 @@
 // parameters (the display-referred default where the effect has one).
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -85,4 +86,45 @@ TEST_CASE("the bloom and glare filters have a property per parameter with its ra
     obs_data_release(defaults);
     obs_properties_destroy(props);
   }
+}
+
+// tests/fx/frame_size/Scanlines.fx: iHeight's default and slider maximum are BUFFER_HEIGHT, one
+// dark line per 4 rows of it. A filter on a 320x240 source offers iHeight up to 240 and draws 60
+// lines (240 / 4, the file's arithmetic) without anyone setting it; OBS asking for the filter
+// type's properties alone gets the listed 1920x1080 range and the explanation.
+TEST_CASE("an FX filter's parameter that follows the frame size has the source's range and runs at its default", "[obs][fx]") {
+  ::setenv("PFX_FX_PATH", PFX_SOURCE_DIR "/tests/fx/frame_size", 1);  // before the module lists its effects
+  ObsSession& obs = ObsSession::get();
+  const char* type = "pfx_fx_scanlines_filter";
+  obs_properties_t* listed = obs_get_source_properties(type);
+  REQUIRE(listed);
+  obs_property_t* height = obs_properties_get(listed, "iheight");
+  REQUIRE(height);
+  CHECK(obs_property_int_max(height) == 1080);
+  CHECK(std::string(obs_property_long_description(height)).find("follow the frame size") != std::string::npos);
+  obs_properties_destroy(listed);
+
+  obs_source_t* source = obs.color_source(320, 240, 0xff808080);
+  obs_source_t* filter = obs.add_filter(source, type);
+  REQUIRE(filter);
+  obs_properties_t* props = obs_source_properties(filter);
+  REQUIRE(props);
+  height = obs_properties_get(props, "iheight");
+  REQUIRE(height);
+  CHECK(obs_property_int_min(height) == 1);
+  CHECK(obs_property_int_max(height) == 240);
+  CHECK(std::string(obs_property_long_description(height)).find("240 at 320x240") != std::string::npos);
+  obs_properties_destroy(props);
+
+  obs.wait_for_ticks();
+  const ObsFrame frame = obs.render(source);
+  REQUIRE(frame.height == 240);
+  int lines = 0;
+  bool was_dark = false;
+  for (uint32_t y = 0; y < frame.height; ++y) {
+    const bool dark = frame.rgba[(y * frame.width + 5) * 4] < 128;
+    lines += dark && !was_dark;
+    was_dark = dark;
+  }
+  CHECK(lines == 240 / 4);
 }
