@@ -29,7 +29,7 @@ const std::map<std::string, Sizes>& pinned() {
       {"pfx_reference_request", {64, 88}}, {"pfx_importer_factory", {24, 24}},
       {"pfx_importer_desc", {56, 56}},  {"pfx_import_request", {64, 64}},
       {"pfx_import_result", {184, 184}}, {"pfx_import_material", {80, 104}},
-      {"pfx_thread_pool", {32, 32}},    {"pfx_source_factory", {40, 48}}};
+      {"pfx_thread_pool", {32, 32}},    {"pfx_source_factory", {40, 56}}};
   return sizes;
 }
 
