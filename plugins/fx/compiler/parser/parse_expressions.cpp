@@ -63,7 +63,8 @@ ExprPtr Parser::parse_assignment() {
   const Token& op = advance();
   ExprPtr assignment = make(ExprKind::kAssign, op.location);
   assignment->op = op.punct;
-  ExprPtr value = parse_assignment();
+  // ReShade takes a braced list as the value of a plain assignment too: a = { 1, 0, 1 };
+  ExprPtr value = op.is(Punct::kAssign) && at(Punct::kLeftBrace) ? parse_initializer() : parse_assignment();
   if (!value) return nullptr;
   assignment->operands.push_back(std::move(target));
   assignment->operands.push_back(std::move(value));

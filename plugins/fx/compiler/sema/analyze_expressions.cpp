@@ -49,7 +49,7 @@ void Analyzer::check(Expr& e) {
     case ExprKind::kCast: check_cast(e); return;
     case ExprKind::kMember: check_member(e); return;
     case ExprKind::kIndex: check_index(e); return;
-    case ExprKind::kInitList: diagnostics_.error(e.location, "an initialiser list is allowed only in a declaration"); return;
+    case ExprKind::kInitList: diagnostics_.error(e.location, "an initialiser list is allowed only in a declaration or as the value of '='"); return;
   }
 }
 
@@ -131,6 +131,15 @@ void Analyzer::check_binary(Expr& e) {
 
 void Analyzer::check_assignment(Expr& e) {
   check(*e.operands[0]);
+  if (e.operands[1]->kind == ExprKind::kInitList) {  // a = { ... }: the list takes the target's type
+    const Type& target = e.operands[0]->resolved;
+    if (is_error(target)) return;
+    require_lvalue(*e.operands[0], "assign to");
+    if (target.is_array() && target.array[0] == 0) return diagnostics_.error(e.location, "cannot assign to an array of unknown size");
+    check_init_list(*e.operands[1], target);
+    e.resolved = target;
+    return;
+  }
   check(*e.operands[1]);
   const Type& target = e.operands[0]->resolved;
   if (is_error(target) || is_error(e.operands[1]->resolved)) return;
