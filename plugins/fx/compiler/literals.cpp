@@ -60,7 +60,7 @@ std::optional<NumberLiteral> parse_float(const std::string& s, std::string& erro
 
 }  // namespace
 
-std::optional<NumberLiteral> parse_number(const std::string& s, std::string& error) {
+std::optional<NumberLiteral> parse_number(const std::string& s, std::string& error, int integer_bits) {
   if (s.empty()) {
     error = "empty number";
     return std::nullopt;
@@ -96,8 +96,8 @@ std::optional<NumberLiteral> parse_number(const std::string& s, std::string& err
     if (value > (UINT64_MAX - static_cast<std::uint64_t>(digit)) / static_cast<std::uint64_t>(base)) overflow = true;
     value = value * static_cast<std::uint64_t>(base) + static_cast<std::uint64_t>(digit);
   }
-  if (overflow || value > 0xffffffffull) {
-    error = "integer literal '" + s + "' does not fit in 32 bits";
+  if (overflow || (integer_bits < 64 && value > 0xffffffffull)) {
+    error = "integer literal '" + s + "' does not fit in " + std::to_string(integer_bits < 64 ? 32 : 64) + " bits";
     return std::nullopt;
   }
   literal.integer = value;

@@ -13,8 +13,9 @@ struct NumberLiteral {
   double real = 0.0;          // kFloat/kHalf/kDouble
 };
 
-// nullopt with `error` set when the spelling is not a valid literal.
-std::optional<NumberLiteral> parse_number(const std::string& spelling, std::string& error);
+// nullopt with `error` set when the spelling is not a valid literal. An integer must fit in 32
+// bits, as the language's types are; #if arithmetic (64-bit) takes `integer_bits` 64.
+std::optional<NumberLiteral> parse_number(const std::string& spelling, std::string& error, int integer_bits = 32);
 
 // The bytes a quoted string literal stands for (escapes resolved). `error` set on a bad escape.
 std::string unescape_string(const std::string& quoted, std::string& error);

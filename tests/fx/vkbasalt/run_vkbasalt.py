@@ -32,7 +32,8 @@ VKBASALT_MANIFEST = "/usr/share/vulkan/implicit_layer.d/vkBasalt.json"
 
 # The conformance files that vkBasalt 0.3.2.8 compiles and runs on lavapipe. Each is one ctest test.
 SUBSET = ["alpha.fx", "conversions.fx", "identity.fx", "invert.fx", "nonfinite.fx", "operators.fx", "samplers.fx",
-          "size_1x1.fx", "reshade_language.fx", "size_constants.fx", "offsets_and_labels.fx"]
+          "size_1x1.fx", "reshade_language.fx", "size_constants.fx", "offsets_and_labels.fx",
+          "exists_and_widening.fx"]
 
 # The others, each with what vkBasalt 0.3.2.8 says or does on it (its own log, tried one by one).
 LEFT_OUT = {

@@ -114,8 +114,39 @@ bool Preprocessor::evaluate_condition(const Token& name, const TokenList& expres
     resolved.push_back(value);
     i = at + (parenthesised ? 1 : 0);
   }
-  auto value = evaluate_if_expression(expander_.expand_list(resolved), name.location, diagnostics_);
+  TokenList expanded = expander_.expand_list(resolved);
+  if (!answer_exists(expanded)) return false;
+  auto value = evaluate_if_expression(expanded, name.location, diagnostics_);
   return value && *value != 0;
+}
+
+bool Preprocessor::answer_exists(TokenList& expression) {
+  // ReShade's `exists "file"` (after expansion, so `exists MACRO` names the macro's file): 1 when
+  // a quoted #include of the file would find it, else 0.
+  TokenList answered;
+  for (std::size_t i = 0; i < expression.size(); ++i) {
+    if (!expression[i].is_identifier("exists")) {
+      answered.push_back(expression[i]);
+      continue;
+    }
+    const bool parenthesised = i + 1 < expression.size() && expression[i + 1].is(Punct::kLeftParen);
+    const std::size_t at = i + (parenthesised ? 2 : 1);
+    if (at >= expression.size() || expression[at].kind != TokenKind::kString ||
+        (parenthesised && (at + 1 >= expression.size() || !expression[at + 1].is(Punct::kRightParen)))) {
+      diagnostics_.error(expression[i].location, "'exists' needs a file name in quotes");
+      return false;
+    }
+    std::string file = expression[at].text.substr(1, expression[at].text.size() - 2);
+    std::replace(file.begin(), file.end(), '\\', '/');
+    std::string contents;
+    Token value = expression[i];
+    value.kind = TokenKind::kNumber;
+    value.text = !file.empty() && !resolve_include(file, true, contents).empty() ? "1" : "0";
+    answered.push_back(value);
+    i = at + (parenthesised ? 1 : 0);
+  }
+  expression = std::move(answered);
+  return true;
 }
 
 void Preprocessor::directive_define(const Token& name, const TokenList& line) {

@@ -101,7 +101,7 @@ class IfEvaluator {
     if (token.kind == TokenKind::kIdentifier) return token.text == "true" ? 1 : 0;
     if (token.kind == TokenKind::kNumber) {
       std::string error;
-      auto literal = parse_number(token.text, error);
+      auto literal = parse_number(token.text, error, 64);  // wider than the language: a 64-bit hash
       if (!literal) return fail(token.location, error), 0;
       if (literal->kind != NumberLiteral::Kind::kInt && literal->kind != NumberLiteral::Kind::kUint)
         return fail(token.location, "floating-point literal in #if expression"), 0;

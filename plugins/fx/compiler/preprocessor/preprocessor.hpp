@@ -67,6 +67,8 @@ class Preprocessor {
   void directive_pragma(const Token& name, const TokenList& line);
   void directive_message(const Token& name, const TokenList& line);
   bool evaluate_condition(const Token& name, const TokenList& expression);
+  // Replaces each `exists "file"` of an expanded #if expression by 1 or 0; false after an error.
+  bool answer_exists(TokenList& expression);
   // The path of the first candidate the reader can read (its text in `contents`), or "".
   std::string resolve_include(const std::string& name, bool quoted, std::string& contents);
 

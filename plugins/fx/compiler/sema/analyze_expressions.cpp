@@ -151,8 +151,29 @@ void Analyzer::check_assignment(Expr& e) {
     if (is_bitwise(e.op) && (!target.is_integral() || !e.operands[1]->resolved.is_integral()))
       return diagnostics_.error(e.location, "operator '" + op + "' needs integers");
   }
+  widen_for_assignment(e.operands[1], target);
   convert(e.operands[1], target, "assignment");
   e.resolved = target;
+}
+
+void Analyzer::widen_for_assignment(ExprPtr& value, const Type& target) {
+  // ReShade checks an assignment's types the other way round (whether the target would convert to
+  // the value's type), so public effects assign a float3 to a float4. It fills the components the
+  // value lacks with its last one, as its casts between vector sizes do: float4 = c.rgb is c.rgbb.
+  const Type from = value->resolved;
+  if (!from.is_vector() || !target.is_vector() || from.rows >= target.rows) return;
+  diagnostics_.warning(value->location, "'" + type_name(from) + "' assigned to '" + type_name(target) +
+                                            "': its last component fills the rest, as ReShade does");
+  auto widened = std::make_unique<Expr>();
+  widened->kind = ExprKind::kMember;
+  widened->location = value->location;
+  for (int i = 0; i < target.rows; ++i) {
+    widened->swizzle.push_back(std::min(i, from.rows - 1));
+    widened->text += "xyzw"[widened->swizzle.back()];
+  }
+  widened->resolved = Type::vector(from.base, target.rows);
+  widened->operands.push_back(std::move(value));
+  value = std::move(widened);
 }
 
 void Analyzer::check_conditional(Expr& e) {

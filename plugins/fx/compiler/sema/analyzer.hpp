@@ -60,6 +60,9 @@ class Analyzer {
   bool check_user_call(Expr& expression, const std::vector<FunctionDecl*>& overloads, const std::string& qualified);
   void check_intrinsic_call(Expr& expression);
   void check_init_list(Expr& list, const Type& target);
+  // A vector narrower than the vector it is assigned to, widened as ReShade does (its last
+  // component repeated), with a warning.
+  void widen_for_assignment(ExprPtr& value, const Type& target);
   // Converts `expression` to `to` implicitly (wrapping it in an implicit cast), or reports why not.
   void convert(ExprPtr& expression, const Type& to, const std::string& context);
   void require_lvalue(const Expr& expression, const char* what);
