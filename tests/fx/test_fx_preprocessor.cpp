@@ -87,12 +87,26 @@ TEST_CASE("#if evaluates integer constant expressions", "[fx][preprocessor]") {
       {"UNDEFINED_NAME == 0", true}, {"defined(N)", true},    {"defined N && N == 4", true},
       {"!defined(MISSING)", true}, {"N > 3 && N < 5", true},  {"true", true},        {"false", false},
       {"2 >= 2 && 2 <= 2 && 1 != 2", true},
+      // Wider than the language's 32 bits, as an application hash in Depth3D's headers is.
+      {"0xC19572DDF == 51964751327", true}, {"0xFFFFFFFFF > 0xFFFFFFFF", true},
   };
   for (const auto& [expression, expected] : cases) {
     INFO(expression);
     CHECK(expand(std::string("#define N 4\n#if ") + expression + "\nyes\n#else\nno\n#endif") ==
           (expected ? "yes" : "no"));
   }
+}
+
+TEST_CASE("#if exists \"file\": whether a quoted #include would find it", "[fx][preprocessor]") {
+  MemoryFiles files;
+  files.files["main.fx"] =
+      "#define HEADER \"there.fxh\"\n"
+      "#if exists \"there.fxh\" && exists(\"there.fxh\") && exists HEADER && !exists \"absent.fxh\"\nyes\n#else\nno\n#endif\n";
+  files.files["there.fxh"] = "";
+  auto out = preprocess_files(files, "main.fx");
+  CHECK(out->errors.empty());
+  CHECK(out->text == "yes");
+  CHECK(preprocess_text("#if exists absent\n#endif")->errors == "main.fx:1:5: error: 'exists' needs a file name in quotes\n");
 }
 
 TEST_CASE("#ifdef, #ifndef, #elif chains and skipped groups", "[fx][preprocessor]") {
@@ -173,6 +187,11 @@ TEST_CASE("#include errors: cycles, missing files, depth", "[fx][preprocessor]")
   CHECK(preprocess_files(files, "a.fx")->errors == "b.fxh:1:2: error: #include cycle: a.fx -> b.fxh -> a.fx\n");
   CHECK(preprocess_text("#include \"missing.fxh\"")->errors ==
         "main.fx:1:2: error: cannot open include file 'missing.fxh'\n");
+  // A header another collection ships: the error says which (reshade-shaders' DrawText.fxh,
+  // included by FXShaders' Pong.fx).
+  CHECK(preprocess_text("#include \"Shaders/drawtext.FXH\"")->errors ==
+        "main.fx:1:2: error: cannot open include file 'Shaders/drawtext.FXH': it comes with crosire/reshade-shaders (its "
+        "Shaders folder, with Textures/FontAtlas.png); add the folder that holds it to the shader folders\n");
   MemoryFiles chain;
   for (int i = 0; i < 100; ++i)
     chain.files["f" + std::to_string(i) + ".fxh"] = "#include \"f" + std::to_string(i + 1) + ".fxh\"\n";

@@ -6,6 +6,7 @@
 #include "../limits.hpp"
 #include "../literals.hpp"
 #include "if_expression.hpp"
+#include "known_headers.hpp"
 #include "preprocessor.hpp"
 #include "preprocessor_frame.hpp"
 
@@ -263,7 +264,12 @@ void Preprocessor::directive_include(const Token& name, TokenList line) {
   if (file.empty()) return diagnostics_.error(name.location, "#include needs \"file\" or <file>");
   std::string contents;
   std::string path = resolve_include(file, quoted, contents);
-  if (path.empty()) return diagnostics_.error(name.location, "cannot open include file '" + file + "'");
+  if (path.empty()) {
+    const std::string collection = collection_of_header(file);
+    return diagnostics_.error(name.location, "cannot open include file '" + file + "'" +
+                                                 (collection.empty() ? "" : ": it comes with " + collection +
+                                                                                "; add the folder that holds it to the shader folders"));
+  }
   if (once_files_.count(path)) return;
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     if (frames_[i]->path != path) continue;
