@@ -7,28 +7,20 @@ usage (under an X server: ctest runs it in xvfb-run):
                   --include FOLDER --fx FILE.fx --out OUT_DIR
   run_vkbasalt.py --check-lists CONFORMANCE_FOLDER
 
-vkcube turns its cube by a fixed step per frame, so its frame 5 is the same picture on every run
-(tests/adapters/vulkan rely on it too). Two runs of vkcube on lavapipe, with pfx's Vulkan layer
-capturing frame 5 and running no effect:
-  1. without vkBasalt: the pristine frame 5;
-  2. with vkBasalt running FILE.fx. vkBasalt is an implicit layer and pfx's layer is enabled here as
-     an explicit one, which the loader puts below every implicit layer: nearer the driver, so pfx's
-     layer receives vkBasalt's output (its capture's .app.png).
-Then pfx-render runs the same file's technique on the pristine frame, and every pixel of the two
-pictures must be within one code value. vkBasalt runs only a file's first technique, at vkcube's
-size (320x240): the self-checking files then compute their checks at that size on both sides,
-which is still an exact comparison of the two compilers.
+How the two pictures are made: host/programs/fx_check/vkbasalt_oracle.py (which pfx-fx-check
+--compare-vkbasalt uses too). Every pixel of the two must be within one code value. vkBasalt runs
+only a file's first technique, at vkcube's size (320x240): the self-checking files then compute
+their checks at that size on both sides, which is still an exact comparison of the two compilers.
 """
 import argparse
 import os
-import re
-import subprocess
 import sys
 
 import numpy as np
-import OpenImageIO as oiio
 
-VKBASALT_MANIFEST = "/usr/share/vulkan/implicit_layer.d/vkBasalt.json"
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "host", "programs", "fx_check"))
+import vkbasalt_oracle as oracle  # noqa: E402
+
 
 # The conformance files that vkBasalt 0.3.2.8 compiles and runs on lavapipe. Each is one ctest test.
 SUBSET = ["alpha.fx", "conversions.fx", "identity.fx", "invert.fx", "nonfinite.fx", "operators.fx", "samplers.fx",
@@ -98,119 +90,44 @@ def check_lists(folder):
     return 0
 
 
-def first_technique(path):
-    """The technique vkBasalt runs: the file's first (the conformance files name it on one line)."""
-    with open(path) as f:
-        for line in f:
-            m = re.match(r"\s*technique\s+(\w+)", line)
-            if m:
-                return m.group(1)
-    return None
-
-
-def read(path):
-    return oiio.ImageBuf(path).get_pixels(oiio.UINT8).astype(int)[..., :3]
-
-
-def write_explicit_manifest(folder, layer):
-    """pfx's layer through a manifest of the explicit kind, so that VK_INSTANCE_LAYERS enables it and the
-    loader puts it below every implicit layer: below vkBasalt, nearer the driver."""
-    with open(os.path.join(folder, "pfx_explicit.json"), "w") as f:
-        f.write('{"file_format_version": "1.0.0", "layer": {"name": "VK_LAYER_PFX_post_effects", '
-                '"type": "GLOBAL", "library_path": "%s", "api_version": "1.3.0", "implementation_version": "1", '
-                '"description": "pfx", "functions": {"vkGetInstanceProcAddr": "pfx_layer_GetInstanceProcAddr", '
-                '"vkGetDeviceProcAddr": "pfx_layer_GetDeviceProcAddr"}}}\n' % layer)
-
-
-def vkcube_frame(args, name, settings):
-    """vkcube for 8 frames at 320x240 with pfx's layer capturing frame 5 as OUT/name.png (what it
-    presents) and OUT/name.app.png (what reached it). Returns (exit code, vkcube's output, pfx's log)."""
-    out = args.out
-    env = dict(os.environ)
-    for key in ("ENABLE_VKBASALT", "DISABLE_VKBASALT", "VKBASALT_CONFIG_FILE", "VK_INSTANCE_LAYERS", "VK_LOADER_LAYERS_ENABLE"):
-        env.pop(key, None)
-    env.update({
-        "VK_ICD_FILENAMES": args.icd, "VK_DRIVER_FILES": args.icd,
-        # Only the explicit manifest finds pfx's layer: no implicit one of the build's or a user's.
-        "XDG_DATA_HOME": out, "VK_LAYER_PATH": out, "VK_INSTANCE_LAYERS": "VK_LAYER_PFX_post_effects",
-        "ENABLE_PFX_VULKAN": "1", "PFX_INJECT_CHAIN": "none",
-        # The layer passes frames through untouched, capturing nothing, when no plugin gives it an
-        # effect: the FX plugin with identity.fx gives one whichever other plugins are built. The
-        # chain is none, so it never runs.
-        "PFX_FX_PATH": os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "conformance", "identity.fx"),
-        "PFX_INJECT_LOG": os.path.join(out, name + ".log"), "PFX_INJECT_CAPTURE": "5:" + os.path.join(out, name),
-    })
-    env.update(settings)
-    for stale in (name + ".png", name + ".app.png", name + ".log"):
-        if os.path.exists(os.path.join(out, stale)):
-            os.remove(os.path.join(out, stale))
-    result = subprocess.run([args.vkcube, "--c", "8", "--width", "320", "--height", "240"], env=env,
-                            capture_output=True, text=True, timeout=120)
-    log_path = os.path.join(out, name + ".log")
-    log = open(log_path).read() if os.path.exists(log_path) else ""
-    return result.returncode, result.stdout + result.stderr, log
-
-
 def compare(args):
     fx = os.path.abspath(args.fx)
     name = os.path.basename(fx)
     if name not in SUBSET:
         return fail("%s is not in the vkBasalt subset (see SUBSET and LEFT_OUT in %s)" % (name, __file__))
     # No hidden skip: without vkBasalt or an X server the test fails and says what to install.
-    if not os.path.exists(VKBASALT_MANIFEST):
+    if not os.path.exists(oracle.VKBASALT_MANIFEST):
         return fail("vkBasalt is not installed (%s not found): install the Debian package vkbasalt (./run does)"
-                    % VKBASALT_MANIFEST)
+                    % oracle.VKBASALT_MANIFEST)
     if not os.environ.get("DISPLAY"):
         return fail("no X server (DISPLAY unset): run under xvfb-run (package xvfb; ./run installs it)")
-    technique = first_technique(fx)
-    if not technique:
+    found = oracle.techniques(fx)
+    if not found:
         return fail("no technique in " + fx)
-    os.makedirs(args.out, exist_ok=True)
-    write_explicit_manifest(args.out, os.path.abspath(args.layer))
-
-    code, output, log = vkcube_frame(args, "pristine", {"DISABLE_VKBASALT": "1"})
-    if code != 0 or not os.path.exists(os.path.join(args.out, "pristine.app.png")):
-        return fail("vkcube without vkBasalt exited with %d and captured %s\n%s%s"
-                    % (code, "frame 5" if code == 0 else "nothing", output, log))
-
-    # vkBasalt's config: the one FX effect; its single include folder is pfx's own ReShade.fxh (the
-    # conformance files find their include/ folder relative to themselves, as in ReShade).
-    config = os.path.join(args.out, "vkBasalt.conf")
-    with open(config, "w") as f:
-        f.write("effects = under_test\nunder_test = %s\nreshadeIncludePath = %s\nreshadeTexturePath = %s\n"
-                % (fx, os.path.abspath(args.include), os.path.dirname(fx)))
-    code, output, log = vkcube_frame(args, "vkbasalt", {"ENABLE_VKBASALT": "1", "VKBASALT_CONFIG_FILE": config,
-                                                        "VKBASALT_LOG_LEVEL": "debug"})
-    with open(os.path.join(args.out, "vkbasalt-output.txt"), "w") as f:
-        f.write(output)
-    # vkBasalt prints its compiler's warnings (implicit truncation...) at its error level too: only
-    # the compiler's errors and vkBasalt's own other messages there count.
-    errors = [line for line in output.splitlines()
-              if line.startswith("vkBasalt err") and not re.search(r": warning X?\d*:", line)]
-    if code != 0 or errors:
-        return fail("vkcube with vkBasalt on %s exited with %d; vkBasalt's errors:\n%s"
-                    % (name, code, "\n".join(errors) or output[-3000:]))
-    # vkBasalt built the effect from the file and recorded it (its debug log says so); a frame that
-    # merely passed through would say neither.
-    if "finished creating Reshade effect" not in output or "applying ReshadeEffect" not in output:
-        return fail("vkBasalt did not run %s (its log, in %s, says nothing of a ReShade effect)"
-                    % (name, os.path.join(args.out, "vkbasalt-output.txt")))
-    if not os.path.exists(os.path.join(args.out, "vkbasalt.app.png")):
-        return fail("pfx's layer captured nothing below vkBasalt\n" + log)
-    theirs = read(os.path.join(args.out, "vkbasalt.app.png"))
-    # pfx's layer ran no effect: what it presented is what it received.
-    if np.abs(read(os.path.join(args.out, "vkbasalt.png")) - theirs).max() != 0:
+    technique = found[0]
+    # The layer's FX plugin offers identity.fx, so that the layer captures; its chain is none.
+    identity = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "conformance", "identity.fx")
+    vkcube = oracle.Oracle(args.out, args.layer, args.vkcube, args.icd, identity)
+    pristine, problem = vkcube.pristine()
+    if not pristine:
+        return fail(problem)
+    # vkBasalt's single include folder is pfx's own ReShade.fxh (the conformance files find their
+    # include/ folder relative to themselves, as in ReShade).
+    theirs = vkcube.vkbasalt("vkbasalt", fx, args.include, os.path.dirname(fx))
+    if not theirs["ran"]:
+        return fail("vkBasalt did not run %s: %s (its output: %s)\n%s" % (
+            name, theirs["says"] or "its log says nothing of a ReShade effect",
+            os.path.join(args.out, "vkbasalt-vkbasalt-output.txt"), theirs["log"][-2000:]))
+    if not theirs["passed_through"]:
         return fail("pfx's layer changed the frame though its chain was none")
 
     ours_path = os.path.join(args.out, "pfx-render.png")
-    effect = "fx_" + re.sub(r"[^a-z0-9]+", "_", technique.lower()).strip("_")
-    command = [args.render, "--input", os.path.join(args.out, "pristine.app.png"), "--chain", effect, "--out", ours_path]
-    result = subprocess.run(command, env=dict(os.environ, PFX_FX_PATH=fx), capture_output=True, text=True, timeout=300)
-    if result.returncode != 0:
-        return fail("%s exited with %d\n%s" % (" ".join(command), result.returncode, result.stdout + result.stderr))
-    ours = read(ours_path)
-    if ours.shape != theirs.shape:
-        return fail("pfx-render gave %s, vkBasalt %s" % (ours.shape, theirs.shape))
+    ran, says = oracle.pfx_render(args.render, fx, technique, pristine, ours_path, timeout=300)
+    if not ran:
+        return fail("pfx-render on %s: %s" % (name, says))
+    ours, theirs_picture = oracle.read(ours_path), oracle.read(theirs["picture"])
+    if ours.shape != theirs_picture.shape:
+        return fail("pfx-render gave %s, vkBasalt %s" % (ours.shape, theirs_picture.shape))
 
     judged = np.ones(ours.shape[:2], dtype=bool)
     for check, why in sorted(VKBASALT_WRONG.get(name, {}).items()):
@@ -218,19 +135,19 @@ def compare(args):
         cell = ours[:, columns]
         if not ((cell[..., 1] > 200) & (cell[..., 0] < 50)).all():
             return fail("check %d of %s fails in pfx (HLSL: it holds): %s" % (check, name, why))
-        theirs_green = ((theirs[:, columns, 1] > 200) & (theirs[:, columns, 0] < 50)).all()
+        theirs_green = ((theirs_picture[:, columns, 1] > 200) & (theirs_picture[:, columns, 0] < 50)).all()
         print("check %d not compared: vkBasalt 0.3.2.8 is wrong there (%s); it says %s, pfx says it holds"
               % (check, why, "it holds now" if theirs_green else "it fails"))
         judged[:, columns] = False
 
-    diff = np.abs(ours - theirs).max(axis=2)
+    diff = np.abs(ours - theirs_picture).max(axis=2)
     diff[~judged] = 0
     worst = int(diff.max())
     if worst > 1:
         ys, xs = np.nonzero(diff > 1)
         return fail("%s: %d pixels differ by more than one code, up to %d; first at (%d, %d): pfx %s, vkBasalt %s "
-                    "(pictures in %s)" % (name, len(xs), worst, xs[0], ys[0], ours[ys[0], xs[0]], theirs[ys[0], xs[0]],
-                                          args.out))
+                    "(pictures in %s)" % (name, len(xs), worst, xs[0], ys[0], ours[ys[0], xs[0]],
+                                          theirs_picture[ys[0], xs[0]], args.out))
     print("ok: %s (technique %s): pfx-render and vkBasalt agree within %d code on all %d judged pixels at 320x240"
           % (name, technique, worst, int(judged.sum())))
     return 0
