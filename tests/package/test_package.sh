@@ -108,6 +108,14 @@ import json; layer = json.load(open('/usr/share/vulkan/implicit_layer.d/pfx_laye
 import os; assert os.path.isfile(layer['library_path']), layer\" &&
    { ENABLE_PFX_VULKAN=1 vulkaninfo --summary > /tmp/vulkaninfo.txt 2>&1 || true; } &&
    grep -q VK_LAYER_PFX_post_effects /tmp/vulkaninfo.txt"
+check "pfx-fx-check --compare-vkbasalt finds its oracle in /usr/share/pfx, the installed layer and headers" \
+  "mkdir -p /tmp/fx && printf '%s\\n' '#include \"ReShade.fxh\"' \
+     'float4 Invert(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target { return float4(1.0 - tex2D(ReShade::BackBuffer, uv).rgb, 1.0); }' \
+     'technique Invert { pass { VertexShader = PostProcessVS; PixelShader = Invert; } }' > /tmp/fx/Invert.fx &&
+   xvfb-run -a -s '-screen 0 640x480x24 -nolisten tcp' pfx-fx-check --compare-vkbasalt --json /tmp/fx > /tmp/compare.json &&
+   python3 -c \"
+import json; row = json.load(open('/tmp/compare.json'))['files'][0]
+assert row['vkbasalt_ran'] and row['pfx_ran'] and row['max_diff'] <= 1, row\""
 check "pkg-config and the licence: the SDK's pfx.pc, /usr/share/doc/pfx/copyright" \
   "test \"\$(pkg-config --variable=plugindir pfx)\" = /usr/lib/pfx/plugins && pkg-config --libs pfx | grep -q -- -lpfxhost &&
    test -s /usr/share/doc/pfx/copyright && test -s /usr/share/doc/pfx/LICENSE"
