@@ -83,9 +83,9 @@ class Oracle:
             if os.path.exists(os.path.join(out, stale)):
                 os.remove(os.path.join(out, stale))
         result = subprocess.run([self.vkcube, "--c", "8", "--width", str(WIDTH), "--height", str(HEIGHT)], env=env,
-                                capture_output=True, text=True, timeout=300)
+                                capture_output=True, text=True, errors="replace", timeout=300)
         log_path = os.path.join(out, name + ".log")
-        log = open(log_path).read() if os.path.exists(log_path) else ""
+        log = open(log_path, errors="replace").read() if os.path.exists(log_path) else ""
         return result.returncode, result.stdout + result.stderr, log
 
     def pristine(self):
@@ -134,7 +134,8 @@ def pfx_render(render, fx_path, technique, pristine, out_path, timeout=600):
     if os.path.exists(out_path):
         os.remove(out_path)
     result = subprocess.run([render, "--input", pristine, "--chain", effect_id(technique), "--out", out_path],
-                            env=dict(os.environ, PFX_FX_PATH=fx_path), capture_output=True, text=True, timeout=timeout)
+                            env=dict(os.environ, PFX_FX_PATH=fx_path), capture_output=True, text=True, errors="replace",
+                            timeout=timeout)
     if result.returncode == 0:
         return True, ""
     lines = (result.stdout + result.stderr).strip().splitlines()

@@ -1,7 +1,9 @@
 #include "fx_frame_params.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <string>
 
 namespace pfx_fx {
 namespace {

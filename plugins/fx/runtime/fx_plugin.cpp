@@ -75,11 +75,11 @@ pfx_status set_definitions(void* instance, const char* definitions) {
   return pfx::plugin::without_exceptions([&] { return fx->set_definitions(definitions); });
 }
 
-const pfx_param_desc* params_at(const char* effect_id, uint32_t width, uint32_t height) {
+const pfx_param_desc* params_at_size(const char* effect_id, uint32_t width, uint32_t height) {
   try {
     const FxEffectEntry* entry = find_entry(effect_id);
     const ParamTable* table = entry && width <= 16384 && height <= 16384
-                                  ? pfx_fx::params_at(*entry, static_cast<int>(width), static_cast<int>(height))
+                                  ? params_at(*entry, static_cast<int>(width), static_cast<int>(height))
                                   : nullptr;
     return table ? table->descs.data() : nullptr;
   } catch (...) {
@@ -89,7 +89,7 @@ const pfx_param_desc* params_at(const char* effect_id, uint32_t width, uint32_t 
 
 constexpr pfx_effect_factory kFactory = {sizeof(pfx_effect_factory), effect_count, get_effect};
 constexpr pfx_source_factory kSources = {
-    sizeof(pfx_source_factory), effect_file, effect_source_name, error_count, error, set_definitions, params_at};
+    sizeof(pfx_source_factory), effect_file, effect_source_name, error_count, error, set_definitions, params_at_size};
 
 constexpr auto kPlugin =
     pfx::plugin::Plugin("org.pfx.fx").name("pfx ReShade FX").version("0.1.0").effect_factory(&kFactory).sources(&kSources);

@@ -1,7 +1,9 @@
 // Texture sizes and mip counts from constant expressions of any shape, as public effects write
 // them: a swizzle of a static const vector (a scalar initialiser is splat over it), a float
 // vector's component, float arithmetic on the frame's size (truncated toward zero), and a log2
-// written with shifts and comparisons. The frame here is 64x2.
+// written with shifts and comparisons; sizes and mip counts that come to 0 on a small frame
+// (BUFFER_HEIGHT / 256, a bloom's last level) are 1, as ReShade makes them. The frame here is 64x2
+// (320x240 under vkBasalt, where they come to 0 as well).
 // size: 64x2
 #include "include/check.fxh"
 
@@ -19,6 +21,8 @@ texture2D FrameTex { Width = BUFFER_WIDTH / 3.0; Height = BUFFER_HEIGHT * 1.5; }
 sampler2D Frame { Texture = FrameTex; };
 texture2D MippedTex { Width = 16; Height = 16; MipLevels = Levels; };
 sampler2D Mipped { Texture = MippedTex; };
+texture2D VanishedTex { Width = BUFFER_WIDTH / 1024; Height = BUFFER_HEIGHT / 256; MipLevels = BUFFER_WIDTH / 4096; };
+sampler2D Vanished { Texture = VanishedTex; };
 
 bool Check(int i)
 {
@@ -29,6 +33,7 @@ bool Check(int i)
     case 2: return all(tex2Dsize(Frame, 0) == int2(21, 3));  // 64 / 3.0 = 21.33, 2 * 1.5 = 3
     case 3: return all(tex2Dsize(Mipped, 0) == int2(16, 16)) && Levels == 5;
     case 4: return all(tex2Dsize(Mipped, 4) == int2(1, 1));  // the fifth level is there
+    case 5: return all(tex2Dsize(Vanished, 0) == int2(1, 1));
     default: return true;
   }
 }

@@ -96,6 +96,19 @@ void Analyzer::check_state_value(StateAssignment& state, const StateRule& rule) 
   if (rule.kind != Kind::kSize && rule.kind != Kind::kMask && rule.kind != Kind::kEnum) return;
   auto n = evaluate_integer_constant(value);
   bool texture_size = state.name == "Width" || state.name == "Height" || state.name == "Depth";
+  if (n && *n < 1 && (texture_size || state.name == "MipLevels")) {
+    // BUFFER_HEIGHT / 256 on a small frame: ReShade makes such a texture 1 texel (or level) and
+    // runs the effect, so pfx does too.
+    diagnostics_.warning(value.location, "'" + state.name + "' is " + std::to_string(*n) + " at this frame size; 1 is used, as ReShade does");
+    value = Expr{};
+    value.kind = ExprKind::kInt;
+    value.location = state.location;
+    value.text = "1";
+    value.number.kind = NumberLiteral::Kind::kInt;
+    value.number.integer = 1;
+    value.resolved = Type::scalar(BaseType::kInt);
+    n = 1;
+  }
   long long high = texture_size ? limits::kMaxTextureSize : rule.kind == Kind::kMask ? 255 : 1 << 24;
   long long low = rule.kind == Kind::kSize ? 1 : 0;
   if (!n || *n < low || *n > high)
