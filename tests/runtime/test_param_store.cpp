@@ -67,6 +67,52 @@ TEST_CASE("out-of-range values are clamped or refused as the descriptor says", "
   CHECK(f.store.values("bloom")[1].v[0] == 6);
 }
 
+TEST_CASE("numbers beyond a double keep their sign: too large is infinite, too small is zero", "[params][hard]") {
+  // The values a double holds are worked out by hand: DBL_MAX is about 1.8e308 and the smallest
+  // denormal 4.9e-324, so 1e999 and 1.8e308 are too large, 1e-999 and 2e-400 too small.
+  ParamFixture f;
+  std::string error, note;
+  const pfx_value* v = f.store.values("bloom");
+  CHECK(f.store.set("bloom.threshold", "-1e999", &error, &note));  // [0, 100]: its minimum, not its maximum
+  CHECK(v[0].v[0] == 0);
+  CHECK(note == "clamped to 0");
+  CHECK(f.store.set("bloom.threshold", "1.8e308", &error, &note));
+  CHECK(v[0].v[0] == 100);
+  CHECK(f.store.set("bloom.threshold", "1e-999", &error, &note));  // zero, not infinity
+  CHECK(v[0].v[0] == 0);
+  CHECK(f.store.set("bloom.threshold", "-0.0002e-398", &error, &note));
+  CHECK(v[0].v[0] == 0);
+  CHECK_FALSE(std::signbit(v[0].v[0]));
+  CHECK(f.store.set("bloom.threshold", "4.9e-324", &error, &note));  // a denormal is a value
+  CHECK(v[0].v[0] == std::numeric_limits<double>::denorm_min());
+  CHECK(f.store.set("bloom.focus", "+1e999", &error));  // [0.01, inf]
+  CHECK(std::isinf(v[5].v[0]));
+  CHECK(f.store.set("bloom.focus", "12345678901234567890e99999999999999", &error));
+  CHECK(std::isinf(v[5].v[0]));
+  CHECK(f.store.set("bloom.focus", "0.000000001e-99999999999999", &error, &note));
+  CHECK(v[5].v[0] == 0.01);
+  CHECK(f.store.set("bloom.tint", "-1e999,1e-999,1e999", &error));  // each component its own
+  CHECK((v[3].v[0] == 0 && v[3].v[1] == 0 && v[3].v[2] > 0));
+  // The same through a text preset (--set's form) and a JSON preset.
+  REQUIRE(f.store.from_text("bloom.threshold=-1e999\nbloom.focus=1e-999\n", &error));
+  v = f.store.values("bloom");
+  CHECK(v[0].v[0] == 0);
+  CHECK(v[5].v[0] == 0.01);
+  REQUIRE(f.store.set_assignment("bloom.threshold=1e999", &error));
+  CHECK(v[0].v[0] == 100);
+  // JSON: too small is zero; too large is refused by the JSON reader, naming the number, and
+  // changes nothing (JSON has no infinity; write "inf" or "-inf" as a string).
+  ParamFixture g;
+  REQUIRE(g.store.from_json(R"({"bloom": {"threshold": -1e-999, "focus": 1e-999}})", &error));
+  CHECK(g.store.values("bloom")[0].v[0] == 0);
+  CHECK(g.store.values("bloom")[5].v[0] == 0.01);
+  CHECK_FALSE(g.store.from_json(R"({"bloom": {"threshold": -1e999}})", &error));
+  CHECK(error.find("number overflow parsing '-1e999'") != std::string::npos);
+  REQUIRE(g.store.from_json(R"({"bloom": {"threshold": "-1e999", "focus": "inf"}})", &error));
+  CHECK(g.store.values("bloom")[0].v[0] == 0);
+  CHECK(std::isinf(g.store.values("bloom")[5].v[0]));
+}
+
 TEST_CASE("unknown keys name what exists", "[params]") {
   ParamFixture f;
   std::string error;

@@ -1,5 +1,6 @@
 #include "param_text.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -22,6 +23,28 @@ std::string lower(std::string text) {
   return text;
 }
 
+// For a decimal number from_chars found out of range: whether its magnitude is above the
+// largest double (overflow) rather than below the smallest denormal (underflow). The magnitude is
+// the power of ten of its first non-zero digit plus its exponent, which can only be far from 0 here.
+bool overflows(const std::string& text) {
+  size_t mark = text.find_first_of("eE");
+  const std::string mantissa = text.substr(0, mark);
+  long long exponent = 0;
+  if (mark != std::string::npos) {
+    size_t i = mark + 1;
+    const bool negative = i < text.size() && text[i] == '-';
+    if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+    for (; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i)
+      exponent = std::min(exponent * 10 + (text[i] - '0'), 1000000000LL);  // saturates: 1e99999999999
+    if (negative) exponent = -exponent;
+  }
+  const size_t point = std::min(mantissa.find('.'), mantissa.size());
+  const size_t first = mantissa.find_first_of("123456789");
+  if (first == std::string::npos) return false;  // all zeros: never out of range, but not large
+  const long long power = first < point ? static_cast<long long>(point - first) - 1 : -static_cast<long long>(first - point);
+  return power + exponent > 0;
+}
+
 bool parse_number(const std::string& raw, double* out, std::string* error) {
   std::string text = trim(raw);
   std::string l = lower(text);
@@ -39,7 +62,10 @@ bool parse_number(const std::string& raw, double* out, std::string* error) {
     *error = "'" + text + "' is not a number";
     return false;
   }
-  if (result.ec == std::errc::result_out_of_range) value = std::signbit(value) ? -HUGE_VAL : HUGE_VAL;
+  // Out of range, from_chars leaves the value alone: the sign is the text's, and a number too
+  // large becomes infinity while one too small becomes zero, as strtod gives them.
+  if (result.ec == std::errc::result_out_of_range)
+    value = std::copysign(overflows(text) ? HUGE_VAL : 0.0, text[0] == '-' ? -1.0 : 1.0);
   if (std::isnan(value)) {
     *error = "NaN is not a valid value";
     return false;
