@@ -116,6 +116,11 @@ check "pfx-fx-check --compare-vkbasalt finds its oracle in /usr/share/pfx, the i
    python3 -c \"
 import json; row = json.load(open('/tmp/compare.json'))['files'][0]
 assert row['vkbasalt_ran'] and row['pfx_ran'] and row['max_diff'] <= 1, row\""
+check "man finds a manual page for every program in /usr/bin" \
+  "for program in \$(dpkg-query -L pfx | grep '^/usr/bin/'); do
+     page=\$(man -w \"\$(basename \"\$program\")\") && test \"\$page\" = /usr/share/man/man1/\$(basename \"\$program\").1.gz ||
+       { echo \"no manual page for \$program (\$page)\"; exit 1; }
+   done"
 check "pkg-config and the licence: the SDK's pfx.pc, /usr/share/doc/pfx/copyright" \
   "test \"\$(pkg-config --variable=plugindir pfx)\" = /usr/lib/pfx/plugins && pkg-config --libs pfx | grep -q -- -lpfxhost &&
    test -s /usr/share/doc/pfx/copyright && test -s /usr/share/doc/pfx/LICENSE"
