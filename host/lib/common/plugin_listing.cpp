@@ -29,6 +29,22 @@ nlohmann::ordered_json number(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
 }
 
+// The slider's range, and what a value may be beyond it: "[0, 4] (accepts [0, 65504])" where the
+// hard range is wider and bounded, "[0, 1] (accepts any value)" where it is the type's own (an FX
+// uniform's: ReShade lets a value go past a slider's ends), "[0, 16]" where the two are one.
+std::string range_text(const pfx_param_desc& p) {
+  char text[160];
+  std::snprintf(text, sizeof text, "[%g, %g]", p.display_min, p.display_max);
+  std::string range = text;
+  if (p.hard_min == p.display_min && p.hard_max == p.display_max) return range;
+  const double unbounded = 1e30;  // beyond any slider: the float's and the int's own limits
+  if (!(std::fabs(p.hard_min) < unbounded && std::fabs(p.hard_max) < unbounded) ||
+      (p.type == PFX_PARAM_INT && p.hard_min <= -2147483648.0 && p.hard_max >= 2147483647.0))
+    return range + " (accepts any value)";
+  std::snprintf(text, sizeof text, " (accepts [%g, %g])", p.hard_min, p.hard_max);
+  return range + text;
+}
+
 }  // namespace
 
 std::string value_text(const pfx_param_desc& p, const pfx_value& value) {
@@ -108,8 +124,8 @@ std::string plugin_listing_text(const pfx::host::PluginRegistry& registry, const
       out += "  effect " + std::string(effect->id) + ": " + (effect->description ? effect->description : "") + "\n";
       for (uint32_t i = 0; i < effect->param_count; ++i) {
         const pfx_param_desc& p = effect->params[i];
-        std::snprintf(line, sizeof line, "    %s.%-18s %-6s default %-10s range [%g, %g] %s\n", effect->id, p.id,
-                      type_name(p.type), default_value_text(p).c_str(), p.hard_min, p.hard_max, p.unit ? p.unit : "");
+        std::snprintf(line, sizeof line, "    %s.%-18s %-6s default %-10s range %s %s\n", effect->id, p.id,
+                      type_name(p.type), default_value_text(p).c_str(), range_text(p).c_str(), p.unit ? p.unit : "");
         out += line;
         if (has_display_default(p))
           out += "      default on display-referred (8-bit) frames: " + value_text(p, p.display_default) + "\n";
