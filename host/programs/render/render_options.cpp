@@ -83,7 +83,8 @@ bool parse_chain_or_output_option(ArgReader& args, RenderOptions* options, bool*
   } else if (arg == "--chain") {
     if (!args.value(&text)) return false;
     options->chain_given = true;
-    options->chain = split_list(text);
+    // "none", as every other host takes it: no effect (the frame as read, converted for --out).
+    options->chain = text == "none" ? std::vector<std::string>{} : split_list(text);
   } else if (arg == "--out") {
     if (!args.value(&text)) return false;
     if (!ends_with(text, ".exr") && !ends_with(text, ".png"))

@@ -53,6 +53,20 @@ TEST_CASE("an unknown effect exits 4", "[render][errors]") {
   CHECK(r.err.find("unknown effect 'nothing'") != std::string::npos);
 }
 
+TEST_CASE("the chain none runs no effect, as every other host takes it", "[render]") {
+  Scratch scratch;
+  const std::string none = (scratch.dir / "none.png").string(), empty = (scratch.dir / "empty.png").string();
+  Result r = pfx_render("--demo-image --size 8x8 --chain none --out " + none);
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.err.find("unknown effect") == std::string::npos);
+  CHECK(r.err.find("no effect ran") != std::string::npos);
+  // The same picture as an empty chain gives.
+  REQUIRE(pfx_render("--demo-image --size 8x8 --chain '' --out " + empty).exit_code == 0);
+  std::ifstream a(none, std::ios::binary), b(empty, std::ios::binary);
+  CHECK(std::string(std::istreambuf_iterator<char>(a), {}) == std::string(std::istreambuf_iterator<char>(b), {}));
+}
+
 TEST_CASE("list in JSON lists the fixture effects with their parameter metadata", "[render]") {
   Result r = pfx_render("--list --json");
   REQUIRE(r.exit_code == 0);
