@@ -52,6 +52,13 @@ def main():
     for where in ("sub/Broken.fx:5:10: error:", "Syntax.fx:3:25: error:", "Cycle.fx:2:2: error: #include cycle"):
         check(any(where in e for e in errors), "load_errors lacks %r: %s" % (where, errors))
     check(not any("Good.fx" in e for e in errors), "Good.fx is in load_errors: %s" % errors)
+    # An effect asked for by the name of a file that did not compile: the file's error, not only
+    # "unknown effect".
+    asked = subprocess.run([render, "--demo-image", "--size", "8x8", "--chain", "fx_broken", "--out", os.path.join(out, "b.png")],
+                           env=env, capture_output=True, text=True, timeout=300)
+    check(asked.returncode == 4 and "unknown effect 'fx_broken'" in asked.stderr and
+          "did not compile: " in asked.stderr and "sub/Broken.fx:5:10: error:" in asked.stderr,
+          "--chain fx_broken: exit %d, %s" % (asked.returncode, asked.stderr))
 
     # 4x4 input; the stamp's top-left texel is red, so the top-left pixel becomes half red.
     pixels = np.full((4, 4, 4), 255, dtype=np.uint8)

@@ -1,7 +1,10 @@
 #include "pfx/host/chain.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
+
+#include <pfx/cpp/identifier.hpp>
 
 #include "chain_internal.hpp"
 
@@ -71,6 +74,35 @@ Chain::~Chain() {
   gl_.reset();
 }
 
+namespace {
+
+// Why `effect_id` names no effect when a plugin could not make effects of some of its source files
+// (an FX file that does not compile): the files whose name the id holds (fx_brokentech from
+// BrokenTech.fx), each with its first error; otherwise how many such files there are.
+std::string failed_sources_hint(const PluginRegistry& registry, const std::string& effect_id) {
+  std::string named;
+  size_t failed = 0;
+  for (const auto& plugin : registry.plugins())
+    for (const std::string& message : plugin->source_errors) {
+      ++failed;
+      const std::string first_line = message.substr(0, message.find('\n'));
+      size_t colon = 0;
+      while ((colon = first_line.find(':', colon)) != std::string::npos &&
+             !(colon + 1 < first_line.size() && std::isdigit(static_cast<unsigned char>(first_line[colon + 1]))))
+        ++colon;
+      std::string stem = first_line.substr(0, colon);
+      stem = stem.substr(stem.find_last_of('/') == std::string::npos ? 0 : stem.find_last_of('/') + 1);
+      stem = stem.substr(0, stem.rfind('.'));
+      if (!stem.empty() && effect_id.find(pfx::identifier_from(stem)) != std::string::npos)
+        named += (named.empty() ? "" : "; ") + first_line;
+    }
+  if (!named.empty()) return "; a file it may come from did not compile: " + named;
+  if (failed) return "; " + std::to_string(failed) + " source file(s) gave no effect (--list names them)";
+  return "";
+}
+
+}  // namespace
+
 bool Chain::add(const std::string& effect_id, std::string* error) {
   if (!gl_loaded_) {
     if (error) *error = kNoContext;
@@ -80,7 +112,9 @@ bool Chain::add(const std::string& effect_id, std::string* error) {
   if (!info) {
     std::string known;
     for (const auto& effect : registry_.effects()) known += (known.empty() ? "" : ", ") + std::string(effect.desc->id);
-    if (error) *error = "unknown effect '" + effect_id + "' (loaded: " + (known.empty() ? "none" : known) + ")";
+    if (error)
+      *error = "unknown effect '" + effect_id + "' (loaded: " + (known.empty() ? "none" : known) + ")" +
+               failed_sources_hint(registry_, effect_id);
     return false;
   }
   void* handle = nullptr;
