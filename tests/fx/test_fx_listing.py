@@ -89,14 +89,43 @@ def main():
     run = subprocess.run([render, "--input", source, "--preset", preset, "--out", target, "--json"], env=env,
                          capture_output=True, text=True, timeout=300)
     check(run.returncode == 0, "rendering with the ReShade preset failed: %s" % run.stderr)
-    warnings = [line for line in run.stderr.splitlines() if "not found, left out" in line]
-    check(len(warnings) == 1 and "fx_missing" in warnings[0] and "fx_goodtint.nosuchvalue" in warnings[0],
-          "expected one warning naming fx_missing and fx_goodtint.nosuchvalue: %s" % run.stderr)
+    warnings = [line for line in run.stderr.splitlines() if "left out:" in line]
+    check(len(warnings) == 1 and "fx_missing (not loaded)" in warnings[0] and
+          "fx_goodtint.nosuchvalue (no such parameter)" in warnings[0],
+          "expected one warning naming fx_missing and fx_goodtint.nosuchvalue with their reasons: %s" % run.stderr)
     if run.returncode == 0:
         report = json.loads(run.stdout)
         check(report.get("effects") == ["fx_goodtint"], "the chain is not [fx_goodtint]: %s" % report.get("effects"))
         got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[..., :3].astype(int)
         check(np.abs(got - 100).max() == 0, "Amount=0 from the preset did not reach the effect: %s" % got[0, 0])
+    # An old-style preset (techniques without their files), a value of the wrong type and a
+    # colour given one number: one warning with each reason, nothing said of a value that a
+    # technique of another file has (Gain is Grade.fx's, not Other.fx's), and the rest applies.
+    grade = os.path.join(out, "grade")
+    os.makedirs(grade, exist_ok=True)
+    with open(os.path.join(grade, "Grade.fx"), "w") as f:
+        f.write('#include "ReShade.fxh"\nuniform float Gain = 1.0;\nuniform float3 Lift = float3(0, 0, 0);\n'
+                'float4 Main(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target '
+                '{ return float4(tex2D(ReShade::BackBuffer, uv).rgb * Gain + Lift, 1.0); }\n'
+                'technique Grade { pass { VertexShader = PostProcessVS; PixelShader = Main; } }\n')
+    with open(os.path.join(grade, "Other.fx"), "w") as f:
+        f.write('#include "ReShade.fxh"\nuniform float Strength = 0.0;\n'
+                'float4 Main(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target '
+                '{ return tex2D(ReShade::BackBuffer, uv) + Strength; }\n'
+                'technique Other { pass { VertexShader = PostProcessVS; PixelShader = Main; } }\n')
+    old_style = os.path.join(out, "old_style.ini")
+    with open(old_style, "w") as f:
+        f.write("Techniques=Grade,Other\n\n[Grade.fx]\nGain=0.500000\nLift=0.1\n\n[Other.fx]\nStrength=abc\n")
+    target = os.path.join(out, "old_style.png")
+    run = subprocess.run([render, "--input", source, "--preset", old_style, "--out", target],
+                         env=dict(os.environ, PFX_FX_PATH=grade), capture_output=True, text=True, timeout=300)
+    warnings = [line for line in run.stderr.splitlines() if "left out:" in line]
+    check(run.returncode == 0 and len(warnings) == 1 and "fx_grade.lift (expects 3 numbers, got 1)" in warnings[0] and
+          "fx_other.strength ('abc' is not a number)" in warnings[0] and "gain" not in warnings[0],
+          "the old-style preset: exit %d, %s" % (run.returncode, run.stderr))
+    if run.returncode == 0:
+        got = oiio.ImageBuf(target).get_pixels(oiio.UINT8)[..., :3].astype(int)
+        check(np.abs(got - 50).max() <= 1, "Gain=0.5 from the old-style preset: %s, expected 50" % got[0, 0])
     # PreprocessorDefinitions: Level.fx's grey is its macro PFX_TEST_LEVEL (0.25 by default) plus
     # 0.125 times RESHADE_DEPTH_INPUT_IS_UPSIDE_DOWN, which pfx defines as 0 and a preset may not
     # change. The back buffer holds sRGB-encoded 8-bit codes and the output is encoded again, so a

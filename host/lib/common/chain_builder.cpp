@@ -72,15 +72,11 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
     if (store.from_json(preset.parameters_json, &error)) recipe.parameters_json = preset.parameters_json;
     else problems->push_back({RecipeProblem::PRESET, preset_path + ": parameters: " + error});
   }
-  // A ReShade preset's values: those no loaded effect has are named in one problem.
+  // A ReShade preset's values: those that do not apply are named in one problem.
   std::vector<std::string> applied;
-  std::vector<std::string> left_out = apply_preset_assignments(store, preset.assignments, &applied);
+  const std::string left_out = preset_left_out_warning(preset_path, {}, apply_preset_assignments(store, preset.assignments, &applied));
   recipe.sets.insert(recipe.sets.begin(), applied.begin(), applied.end());
-  if (!left_out.empty()) {
-    std::string names;
-    for (const auto& a : left_out) names += (names.empty() ? "" : ", ") + a.substr(0, a.find('='));
-    problems->push_back({RecipeProblem::PRESET, preset_path + ": not found, left out: " + names});
-  }
+  if (!left_out.empty()) problems->push_back({RecipeProblem::PRESET, left_out});
   recipe.source_definitions = preset.source_definitions;
   for (const auto& note : preset.notes) notes->push_back(preset_path + ": " + note);
   for (const auto& assignment : sets) {
@@ -95,22 +91,64 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
   return recipe;
 }
 
-std::vector<std::string> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
-                                                  std::vector<std::string>* applied) {
-  std::vector<std::string> left_out;
+namespace {
+
+// The store's reason in a few words: its message without the key it names.
+std::string short_reason(const std::string& key, const std::string& message) {
+  if (message.rfind("unknown effect", 0) == 0) return "not loaded";
+  if (message.find("has no parameter") != std::string::npos) return "no such parameter";
+  const std::string prefix = key + ": ";
+  return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+}
+
+// For "effect.param=v1,v2": whether the parameter's component count differs from the numbers
+// given (then *reason says so). Parameters of one number, and unknown ones, are the store's to judge.
+bool wrong_count(const host::ParamStore& store, const std::string& key, const std::string& value, std::string* reason) {
+  const size_t dot = key.find('.');
+  if (dot == std::string::npos) return false;
+  const pfx_param_desc* desc = store.descriptor(key.substr(0, dot), key.substr(dot + 1));
+  if (!desc) return false;
+  const size_t components = desc->type == PFX_PARAM_VEC2 ? 2 : (desc->type == PFX_PARAM_VEC3 || desc->type == PFX_PARAM_COLOR) ? 3 : 1;
+  const size_t given = static_cast<size_t>(std::count(value.begin(), value.end(), ',')) + 1;
+  if (components == 1 || given == components) return false;
+  *reason = "expects " + std::to_string(components) + " numbers, got " + std::to_string(given);
+  return true;
+}
+
+}  // namespace
+
+std::vector<LeftOutValue> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
+                                                   std::vector<std::string>* applied) {
+  std::vector<LeftOutValue> left_out;
   for (const auto& alternatives : assignments) {
+    std::string first_reason;
     bool done = false;
     for (const auto& assignment : alternatives) {
-      std::string error, note;
-      if (store.set_assignment(assignment, &error, &note)) {
-        if (applied) applied->push_back(assignment);
-        done = true;
-        break;
+      const size_t equals = assignment.find('=');
+      const std::string key = assignment.substr(0, equals);
+      std::string error, note, reason;
+      if (equals == std::string::npos || !wrong_count(store, key, assignment.substr(equals + 1), &reason)) {
+        if (store.set_assignment(assignment, &error, &note)) {
+          if (applied) applied->push_back(assignment);
+          done = true;
+          break;
+        }
+        reason = short_reason(key, error);
       }
+      if (first_reason.empty()) first_reason = reason;
     }
-    if (!done && !alternatives.empty()) left_out.push_back(alternatives.front());
+    if (!done && !alternatives.empty())
+      left_out.push_back({alternatives.front().substr(0, alternatives.front().find('=')), first_reason});
   }
   return left_out;
+}
+
+std::string preset_left_out_warning(const std::string& preset_path, const std::vector<std::string>& unloaded_effects,
+                                    const std::vector<LeftOutValue>& values) {
+  std::string named;
+  for (const auto& effect : unloaded_effects) named += (named.empty() ? "" : ", ") + effect + " (not loaded)";
+  for (const auto& value : values) named += (named.empty() ? "" : ", ") + value.key + " (" + value.reason + ")";
+  return named.empty() ? "" : preset_path + ": left out: " + named;
 }
 
 std::vector<std::string> drop_unloaded_reshade_effects(Preset& preset, const host::PluginRegistry& registry) {

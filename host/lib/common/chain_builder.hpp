@@ -29,11 +29,23 @@ struct ChainRecipe {
   std::string source_definitions;  // the preset's, for the effects made from source files
 };
 
-// One thing of the settings that does not apply, and where it came from.
+// A preset value that does not apply: its key ("fx_vibrance.vibrance") and why, in a few words
+// ("no such parameter", "not loaded", "'abc' is not a number", "expects 3 numbers, got 1").
+struct LeftOutValue {
+  std::string key, reason;
+};
+
 // Applies a preset's one-by-one assignments (Preset::assignments) to `store`, each by the first of
-// its alternatives that applies; returns those none of whose alternatives did ("fx_x.y=1").
-std::vector<std::string> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
-                                                  std::vector<std::string>* applied = nullptr);
+// its alternatives that applies; returns those none of whose alternatives did, with the reason
+// the first alternative gave. A vector parameter given another count of numbers than it has is
+// left out too: a ReShade preset writes every component, so fewer are a mistake, not a splat.
+std::vector<LeftOutValue> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
+                                                   std::vector<std::string>* applied = nullptr);
+
+// The one warning of a preset load, every host's: "look.ini: left out: fx_missing (not loaded),
+// fx_vibrance.vibrance ('abc' is not a number)"; empty when everything applied.
+std::string preset_left_out_warning(const std::string& preset_path, const std::vector<std::string>& unloaded_effects,
+                                    const std::vector<LeftOutValue>& values);
 
 // A ReShade preset's chain without the effects no loaded plugin has (returned, for one warning);
 // other presets are left as they are.

@@ -38,6 +38,8 @@ std::string file_name_of(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+std::string stem_of(const std::string& file_name) { return file_name.substr(0, file_name.rfind('.')); }
+
 }  // namespace
 
 bool looks_like_reshade_preset(const std::string& text) {
@@ -105,9 +107,15 @@ bool parse_reshade_preset(const std::string& text, Preset* out, std::string* err
   for (const Technique& t : chain) {
     std::string effect = "fx_" + pfx::identifier_from(t.name);
     out->chain->push_back({effect, true});
-    // The values of the technique's file, or of every file when the preset does not say which.
+    // The values of the technique's file. An old preset names techniques without their file
+    // (Techniques=LumaSharpen,Vibrance): then the section of the file named like the technique
+    // (SweetFX's LumaSharpen in LumaSharpen.fx), else every section.
+    std::string file_of_technique = t.file.empty() ? "" : file_name_of(t.file);
+    if (file_of_technique.empty())
+      for (const auto& section_entry : sections)
+        if (pfx::identifier_from(stem_of(section_entry.first)) == pfx::identifier_from(t.name)) file_of_technique = section_entry.first;
     for (const auto& [file, values] : sections) {
-      if (!t.file.empty() && file != file_name_of(t.file)) continue;
+      if (!file_of_technique.empty() && file != file_of_technique) continue;
       for (const auto& [name, value] : values) {
         std::string id = effect + "." + pfx::identifier_from(name);
         std::vector<std::string> parts = split(value, ',');

@@ -48,13 +48,8 @@ int RenderChain::build(const RenderOptions& options, const Preset& preset, std::
     *message = options.preset + ": parameters: " + *message;
     return exit_code::kBadInput;
   }
-  for (const auto& assignment : apply_preset_assignments(params_, preset.assignments))
-    left_out.push_back(assignment.substr(0, assignment.find('=')));
-  if (!left_out.empty()) {
-    std::string names;
-    for (const auto& name : left_out) names += (names.empty() ? "" : ", ") + name;
-    std::fprintf(stderr, "pfx-render: warning: %s: not found, left out: %s\n", options.preset.c_str(), names.c_str());
-  }
+  const std::string warning = preset_left_out_warning(options.preset, left_out, apply_preset_assignments(params_, preset.assignments));
+  if (!warning.empty()) std::fprintf(stderr, "pfx-render: warning: %s\n", warning.c_str());
   for (const auto& note : preset.notes) std::fprintf(stderr, "pfx-render: note: %s: %s\n", options.preset.c_str(), note.c_str());
   for (const auto& assignment : options.sets) {
     std::string note;

@@ -74,13 +74,8 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
   if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
     return fail(exit_code::kBadInput, options.preset + ": parameters: " + message);
-  for (const auto& assignment : apply_preset_assignments(self->params_, preset.assignments))
-    left_out.push_back(assignment.substr(0, assignment.find('=')));
-  if (!left_out.empty()) {
-    std::string names;
-    for (const auto& name : left_out) names += (names.empty() ? "" : ", ") + name;
-    self->warning(start + ": not found, left out: " + names);
-  }
+  const std::string warning = preset_left_out_warning(start, left_out, apply_preset_assignments(self->params_, preset.assignments));
+  if (!warning.empty()) self->warning(warning);
   for (const auto& note : preset.notes) self->info(start + ": " + note);
   for (const auto& assignment : options.sets) {
     std::string note;
