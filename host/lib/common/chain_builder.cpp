@@ -4,6 +4,7 @@
 #include <map>
 
 #include "default_chain.hpp"
+#include "plugin_listing.hpp"
 
 namespace pfx::app {
 namespace {
@@ -108,7 +109,7 @@ bool wrong_count(const host::ParamStore& store, const std::string& key, const st
   if (dot == std::string::npos) return false;
   const pfx_param_desc* desc = store.descriptor(key.substr(0, dot), key.substr(dot + 1));
   if (!desc) return false;
-  const size_t components = desc->type == PFX_PARAM_VEC2 ? 2 : (desc->type == PFX_PARAM_VEC3 || desc->type == PFX_PARAM_COLOR) ? 3 : 1;
+  const size_t components = static_cast<size_t>(component_count(desc->type));
   const size_t given = static_cast<size_t>(std::count(value.begin(), value.end(), ',')) + 1;
   if (components == 1 || given == components) return false;
   *reason = "expects " + std::to_string(components) + " numbers, got " + std::to_string(given);

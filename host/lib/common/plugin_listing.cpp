@@ -20,10 +20,6 @@ const char* type_name(pfx_param_type type) {
   }
 }
 
-int components(pfx_param_type type) {
-  return type == PFX_PARAM_VEC2 ? 2 : (type == PFX_PARAM_COLOR || type == PFX_PARAM_VEC3) ? 3 : 1;
-}
-
 // JSON has no infinity: unbounded ranges are written as null.
 nlohmann::ordered_json number(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
@@ -47,6 +43,10 @@ std::string range_text(const pfx_param_desc& p) {
 
 }  // namespace
 
+int component_count(pfx_param_type type) {
+  return type == PFX_PARAM_VEC2 ? 2 : (type == PFX_PARAM_COLOR || type == PFX_PARAM_VEC3) ? 3 : 1;
+}
+
 std::string value_text(const pfx_param_desc& p, const pfx_value& value) {
   if (p.type == PFX_PARAM_ENUM) {
     auto index = static_cast<uint32_t>(value.v[0]);
@@ -54,7 +54,7 @@ std::string value_text(const pfx_param_desc& p, const pfx_value& value) {
   }
   if (p.type == PFX_PARAM_BOOL) return value.v[0] != 0 ? "true" : "false";
   std::string text;
-  for (int i = 0; i < components(p.type); ++i) {
+  for (int i = 0; i < component_count(p.type); ++i) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%g", value.v[i]);
     text += (i ? "," : "") + std::string(buffer);
@@ -71,9 +71,9 @@ bool has_display_default(const pfx_param_desc& p) {
 nlohmann::ordered_json value_json(const pfx_param_desc& p, const pfx_value& value) {
   if (p.type == PFX_PARAM_ENUM) return value_text(p, value);
   if (p.type == PFX_PARAM_BOOL) return value.v[0] != 0;
-  if (components(p.type) == 1) return number(value.v[0]);
+  if (component_count(p.type) == 1) return number(value.v[0]);
   auto array = nlohmann::ordered_json::array();
-  for (int c = 0; c < components(p.type); ++c) array.push_back(number(value.v[c]));
+  for (int c = 0; c < component_count(p.type); ++c) array.push_back(number(value.v[c]));
   return array;
 }
 

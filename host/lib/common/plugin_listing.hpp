@@ -11,6 +11,8 @@
 
 namespace pfx::app {
 
+// How many numbers a value of the type holds: 3 for a colour or vec3, 2 for a vec2, else 1.
+int component_count(pfx_param_type type);
 // A parameter's value as text: the item id of an enum, true/false, "%g" numbers joined by ','.
 std::string value_text(const pfx_param_desc& param, const pfx_value& value);
 // Its (scene-referred) default as text.

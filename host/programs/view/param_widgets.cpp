@@ -11,10 +11,6 @@
 namespace pfx::app {
 namespace {
 
-int component_count(pfx_param_type type) {
-  return type == PFX_PARAM_VEC2 ? 2 : (type == PFX_PARAM_COLOR || type == PFX_PARAM_VEC3) ? 3 : 1;
-}
-
 bool same_value(const pfx_value& a, const pfx_value& b, pfx_param_type type) {
   for (int i = 0; i < component_count(type); ++i)
     if (a.v[i] != b.v[i]) return false;
