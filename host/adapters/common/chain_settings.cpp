@@ -38,12 +38,22 @@ bool resolve_chain_settings(const ChainSettings& settings, const host::PluginReg
     chain.emplace();
     for (const auto& id : app::split_list(chain_text)) chain->push_back(trimmed(id));
   }
-  // A video host has nobody to tell what was left out while frames run: anything that does not
-  // apply is an error, and the filter passes frames through saying why.
+  // What a user typed into the chain or set field that does not apply is an error, and the filter
+  // passes frames through saying why; what a preset holds that does not apply is left out with
+  // one warning, as every host does.
   std::vector<app::RecipeProblem> problems;
   std::vector<std::string> notes;
-  *recipe = app::make_chain_recipe(trimmed(settings.preset), chain, split_assignments(settings.set), registry,
-                                   app::WithoutChain::NO_EFFECT, &problems, &notes);
+  auto recipe_for = [&](const std::optional<std::vector<std::string>>& ids) {
+    problems.clear();
+    notes.clear();
+    return app::make_chain_recipe(trimmed(settings.preset), ids, split_assignments(settings.set), registry,
+                                  app::WithoutChain::NO_EFFECT, &problems, &notes);
+  };
+  *recipe = recipe_for(chain);
+  // Neither the setting nor the preset names a chain: the adapter's default, with the assignments
+  // checked against it.
+  if (!chain && !recipe->chosen && registry.find_effect(kAdapterDefaultChain))
+    *recipe = recipe_for(std::vector<std::string>{kAdapterDefaultChain});
   if (left_out) {
     left_out->insert(left_out->end(), problems.begin(), problems.end());
     return true;

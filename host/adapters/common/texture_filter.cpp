@@ -73,8 +73,10 @@ void TextureFilter::Impl::apply(const ChainSettings& settings, uint64_t revision
   app::ChainRecipe recipe;
   std::vector<std::string> notes;
   std::string why;
-  if (resolve_chain_settings(settings, *registry, &transfer, &recipe, &why))
+  if (resolve_chain_settings(settings, *registry, &transfer, &recipe, &why)) {
+    if (!recipe.left_out.empty()) notes.push_back(recipe.left_out);
     chain = FrameChain::build(*registry, recipe, "set", &notes, &why);
+  }
   if (!chain) *warning = why + "; frames pass through unchanged";
   for (const auto& note : notes) *warning += (warning->empty() ? "" : "; ") + note;
 }

@@ -169,8 +169,10 @@ bool Instance::prepare_chain(std::string* error) {
   if (library_->kind == Library::Kind::CHAIN) {
     gl_->chain.reset();
     app::ChainRecipe recipe;
-    if (adapters::resolve_chain_settings(settings_, *library_->registry, &gl_->transfer, &recipe, error))
+    if (adapters::resolve_chain_settings(settings_, *library_->registry, &gl_->transfer, &recipe, error)) {
+      if (!recipe.left_out.empty()) notes.push_back("warning: " + recipe.left_out);
       gl_->chain = adapters::FrameChain::build(*library_->registry, recipe, "set", &notes, error);
+    }
   } else if (!library_->effect) {
     *error = library_->problems.empty() ? "the effect is missing" : library_->problems.back();
   } else {

@@ -159,8 +159,9 @@ void Injector::say_captures_skipped(const std::string& why) {
 
 void Injector::reread_preset_if_changed() {
   if (!preset_watch_.changed()) return;
-  // A change of the preset is all or nothing: an edit that leaves out anything keeps the chain
-  // that runs. (What the variables left out was said at the start.)
+  // An edit that does not read (saved half-way, a typo in the JSON) keeps the chain that runs; in
+  // one that reads, what does not apply is left out with one warning, as at the start. (What the
+  // variables left out was said at the start.)
   std::vector<RecipeProblem> problems;
   std::vector<std::string> notes;
   ChainRecipe recipe = make_recipe(settings_, *registry_, &problems, &notes);
@@ -171,6 +172,7 @@ void Injector::reread_preset_if_changed() {
     log_.line("the changed preset could not be applied (" + why + "); the previous chain keeps running");
     return;
   }
+  if (!recipe.left_out.empty()) log_.line("warning: " + recipe.left_out);
   for (const auto& note : notes) log_.line(note);
   recipe_ = std::move(recipe);
   ++recipe_generation_;
@@ -197,6 +199,7 @@ bool Injector::load_plugins(WindowSystem system) {
   std::vector<std::string> notes;
   recipe_ = make_recipe(settings_, *registry, &problems, &notes);
   for (const auto& problem : problems) log_.line("ignored " + std::string(variable_of(problem.source)) + ": " + problem.message);
+  if (!recipe_.left_out.empty()) log_.line("warning: " + recipe_.left_out);
   for (const auto& note : notes) log_.line(note);
   recipe_generation_ = 1;
   registry_ = std::move(registry);

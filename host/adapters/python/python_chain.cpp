@@ -85,6 +85,7 @@ app::ChainRecipe PythonChain::recipe_for(const ChainSettings& settings, std::vec
     if (problem.source == app::RecipeProblem::CHAIN) throw Error(problem.message);
     warnings->push_back(problem.message);
   }
+  if (!recipe.left_out.empty()) warnings->push_back(recipe.left_out);
   warnings->insert(warnings->end(), notes.begin(), notes.end());
   return recipe;
 }

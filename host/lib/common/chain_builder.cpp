@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "default_chain.hpp"
 #include "plugin_listing.hpp"
 
@@ -51,17 +53,19 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
     problems->push_back({RecipeProblem::PRESET, error});
     preset = Preset{};
   }
-  // The first chain that names something usable: the given one, then the preset's. An empty
-  // given chain ("none") is a choice too: no effect.
+  // The first chain given: the setting's, then the preset's (what of it is loaded, even nothing).
+  // An empty given chain ("none") is a choice too: no effect.
+  const std::vector<std::string> unloaded = drop_unloaded_effects(preset, registry);
   if (chain) {
     std::vector<PresetEffect> wanted;
     for (const auto& id : *chain) wanted.push_back({id, true});
     recipe.effects = loaded_only(wanted, registry, RecipeProblem::CHAIN, problems);
     recipe.chosen = wanted.empty() || !recipe.effects.empty();
   }
-  if (!recipe.chosen && preset.chain) {
-    recipe.effects = loaded_only(*preset.chain, registry, RecipeProblem::PRESET, problems);
-    recipe.chosen = preset.chain->empty() || !recipe.effects.empty();
+  const bool preset_chain = !recipe.chosen && preset.chain;
+  if (preset_chain) {
+    recipe.effects = *preset.chain;
+    recipe.chosen = true;
   }
   if (!recipe.chosen && without == WithoutChain::DEFAULT_CHAIN)
     for (const auto& id : default_chain(registry)) recipe.effects.push_back({id, true});
@@ -69,15 +73,11 @@ ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optiona
   // Values are checked in a store shaped like the chain ("bloom#2" needs a second bloom), the
   // way the host's own store will be.
   host::ParamStore store = store_for(recipe.effects, registry);
-  if (!preset.parameters_json.empty()) {
-    if (store.from_json(preset.parameters_json, &error)) recipe.parameters_json = preset.parameters_json;
-    else problems->push_back({RecipeProblem::PRESET, preset_path + ": parameters: " + error});
-  }
-  // A ReShade preset's values: those that do not apply are named in one problem.
-  std::vector<std::string> applied;
-  const std::string left_out = preset_left_out_warning(preset_path, {}, apply_preset_assignments(store, preset.assignments, &applied));
-  recipe.sets.insert(recipe.sets.begin(), applied.begin(), applied.end());
-  if (!left_out.empty()) problems->push_back({RecipeProblem::PRESET, left_out});
+  PresetValues applied;
+  recipe.left_out = preset_left_out_warning(preset_path, preset_chain ? unloaded : std::vector<std::string>{},
+                                            apply_preset_values(store, preset, &applied));
+  recipe.parameters_json = applied.parameters_json;
+  recipe.sets = applied.assignments;
   recipe.source_definitions = preset.source_definitions;
   for (const auto& note : preset.notes) notes->push_back(preset_path + ": " + note);
   for (const auto& assignment : sets) {
@@ -116,11 +116,10 @@ bool wrong_count(const host::ParamStore& store, const std::string& key, const st
   return true;
 }
 
-}  // namespace
-
-std::vector<LeftOutValue> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
-                                                   std::vector<std::string>* applied) {
-  std::vector<LeftOutValue> left_out;
+// A ReShade preset's values (Preset::assignments), each by the first of its alternatives that
+// applies.
+void apply_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
+                       std::vector<std::string>* applied, std::vector<LeftOutValue>* left_out) {
   for (const auto& alternatives : assignments) {
     std::string first_reason;
     bool done = false;
@@ -130,7 +129,7 @@ std::vector<LeftOutValue> apply_preset_assignments(host::ParamStore& store, cons
       std::string error, note, reason;
       if (equals == std::string::npos || !wrong_count(store, key, assignment.substr(equals + 1), &reason)) {
         if (store.set_assignment(assignment, &error, &note)) {
-          if (applied) applied->push_back(assignment);
+          applied->push_back(assignment);
           done = true;
           break;
         }
@@ -139,10 +138,43 @@ std::vector<LeftOutValue> apply_preset_assignments(host::ParamStore& store, cons
       if (first_reason.empty()) first_reason = reason;
     }
     if (!done && !alternatives.empty())
-      left_out.push_back({alternatives.front().substr(0, alternatives.front().find('=')), first_reason});
+      left_out->push_back({alternatives.front().substr(0, alternatives.front().find('=')), first_reason});
   }
+}
+
+// A pfx preset's values ({"bloom": {"strength": 2}}), one by one: the store takes them from JSON
+// (the text rules of --set), and one that does not apply leaves the others.
+void apply_parameters(host::ParamStore& store, const std::string& json, std::string* applied_json,
+                      std::vector<LeftOutValue>* left_out) {
+  if (json.empty()) return;
+  nlohmann::ordered_json applied = nlohmann::ordered_json::object();
+  const nlohmann::ordered_json given = nlohmann::ordered_json::parse(json);
+  for (const auto& [instance, params] : given.items()) {
+    if (!params.is_object()) {
+      left_out->push_back({instance, "not an object of parameters"});
+      continue;
+    }
+    for (const auto& [param, value] : params.items()) {
+      const nlohmann::ordered_json one = {{instance, {{param, value}}}};
+      std::string error;
+      if (store.from_json(one.dump(), &error)) applied[instance][param] = value;
+      else left_out->push_back({instance + "." + param, short_reason(instance + "." + param, error)});
+    }
+  }
+  if (!applied.empty()) *applied_json = applied.dump();
+}
+
+}  // namespace
+
+std::vector<LeftOutValue> apply_preset_values(host::ParamStore& store, const Preset& preset, PresetValues* applied) {
+  PresetValues kept;
+  std::vector<LeftOutValue> left_out;
+  apply_parameters(store, preset.parameters_json, &kept.parameters_json, &left_out);
+  apply_assignments(store, preset.assignments, &kept.assignments, &left_out);
+  if (applied) *applied = std::move(kept);
   return left_out;
 }
+
 
 std::string preset_left_out_warning(const std::string& preset_path, const std::vector<std::string>& unloaded_effects,
                                     const std::vector<LeftOutValue>& values) {
@@ -152,9 +184,9 @@ std::string preset_left_out_warning(const std::string& preset_path, const std::v
   return named.empty() ? "" : preset_path + ": left out: " + named;
 }
 
-std::vector<std::string> drop_unloaded_reshade_effects(Preset& preset, const host::PluginRegistry& registry) {
+std::vector<std::string> drop_unloaded_effects(Preset& preset, const host::PluginRegistry& registry) {
   std::vector<std::string> dropped;
-  if (!preset.from_reshade || !preset.chain) return dropped;
+  if (!preset.chain) return dropped;
   std::vector<PresetEffect> kept;
   for (const auto& effect : *preset.chain)
     if (registry.find_effect(effect.id)) kept.push_back(effect);

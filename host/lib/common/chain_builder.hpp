@@ -27,7 +27,15 @@ struct ChainRecipe {
   std::string parameters_json;    // the preset's values, or empty
   std::vector<std::string> sets;  // assignments that apply, in order
   std::string source_definitions;  // the preset's, for the effects made from source files
+  // What of the preset did not apply, as the one warning of its load (preset_left_out_warning):
+  // every host says it once and runs the rest; "" when all of it applied.
+  std::string left_out;
 };
+
+// The one preset policy of every pfx host (docs/fx.md, "Presets"): what a preset names that is
+// loaded and fits runs with its values; what is not there or does not fit is left out and named in
+// one warning per preset load, with the reason. A preset that does not read at all is an error.
+// The three steps: drop_unloaded_effects, apply_preset_values, preset_left_out_warning.
 
 // A preset value that does not apply: its key ("fx_vibrance.vibrance") and why, in a few words
 // ("no such parameter", "not loaded", "'abc' is not a number", "expects 3 numbers, got 1").
@@ -35,21 +43,27 @@ struct LeftOutValue {
   std::string key, reason;
 };
 
-// Applies a preset's one-by-one assignments (Preset::assignments) to `store`, each by the first of
-// its alternatives that applies; returns those none of whose alternatives did, with the reason
-// the first alternative gave. A vector parameter given another count of numbers than it has is
-// left out too: a ReShade preset writes every component, so fewer are a mistake, not a splat.
-std::vector<LeftOutValue> apply_preset_assignments(host::ParamStore& store, const std::vector<std::vector<std::string>>& assignments,
-                                                   std::vector<std::string>* applied = nullptr);
+// The preset's chain without the effects no loaded plugin has (returned, for the warning).
+std::vector<std::string> drop_unloaded_effects(Preset& preset, const host::PluginRegistry& registry);
+
+// What of a preset's values applied, to hand on (ChainRecipe) or to count as set (Python).
+struct PresetValues {
+  std::string parameters_json;           // a pfx preset's values that applied, or ""
+  std::vector<std::string> assignments;  // a ReShade preset's values that applied, in order
+};
+
+// Applies the preset's values to `store` (shaped like the chain: "bloom#2" needs a second bloom),
+// each one by itself: a pfx preset's "parameters", then a ReShade preset's assignments, each by the
+// first of its alternatives that applies. Returns the values left out, with the reason the first
+// alternative gave. A vector parameter given another count of numbers than it has is left out
+// too: a ReShade preset writes every component, so fewer are a mistake, not a splat.
+std::vector<LeftOutValue> apply_preset_values(host::ParamStore& store, const Preset& preset,
+                                              PresetValues* applied = nullptr);
 
 // The one warning of a preset load, every host's: "look.ini: left out: fx_missing (not loaded),
 // fx_vibrance.vibrance ('abc' is not a number)"; empty when everything applied.
 std::string preset_left_out_warning(const std::string& preset_path, const std::vector<std::string>& unloaded_effects,
                                     const std::vector<LeftOutValue>& values);
-
-// A ReShade preset's chain without the effects no loaded plugin has (returned, for one warning);
-// other presets are left as they are.
-std::vector<std::string> drop_unloaded_reshade_effects(Preset& preset, const host::PluginRegistry& registry);
 
 struct RecipeProblem {
   enum Source { CHAIN, PRESET, SET } source;
@@ -63,11 +77,12 @@ enum class WithoutChain {
 };
 
 // Reads the preset (when preset_path is not empty) and checks the chain's effect ids, the preset's
-// values and every assignment against the loaded effects. What does not apply is left out and
-// described in *problems: an unknown effect leaves the chain (a chain left with none gives way to
-// the default), a preset that does not read or whose values do not apply is not used, an
-// assignment that does not apply is dropped. *notes gets the store's remarks on values it adjusted
-// (clamped). Hosts that must refuse rather than leave out treat any problem as an error.
+// values and every assignment against the loaded effects. What of the preset does not apply is
+// left out and named in recipe.left_out (the preset policy above). The other problems are left
+// out and described in *problems: an unknown effect of the given chain leaves it (a given chain
+// left with none gives way to the preset's, then the default), a preset that does not read is not
+// used, an assignment that does not apply is dropped. *notes gets the store's remarks on values it
+// adjusted (clamped). Hosts that must refuse rather than leave out treat any problem as an error.
 ChainRecipe make_chain_recipe(const std::string& preset_path, const std::optional<std::vector<std::string>>& chain,
                               const std::vector<std::string>& sets, const host::PluginRegistry& registry,
                               WithoutChain without, std::vector<RecipeProblem>* problems,

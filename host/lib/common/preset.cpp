@@ -170,8 +170,11 @@ bool read_preset(const std::string& path, Preset* out, std::string* error) {
   std::ostringstream text;
   text << in.rdbuf();
   std::string message;
-  const bool reshade = looks_like_reshade_preset(text.str());
-  if (!(reshade ? parse_reshade_preset(text.str(), out, &message) : parse_preset(text.str(), out, &message))) {
+  if (looks_like_reshade_preset(text.str())) {
+    parse_reshade_preset(text.str(), out);
+    return true;
+  }
+  if (!parse_preset(text.str(), out, &message)) {
     if (error) *error = path + ": " + message;
     return false;
   }

@@ -40,12 +40,18 @@ std::string file_name_of(const std::string& path) {
 
 std::string stem_of(const std::string& file_name) { return file_name.substr(0, file_name.rfind('.')); }
 
+// ReShade and Windows editors may start a UTF-8 file with a byte-order mark.
+std::string without_byte_order_mark(const std::string& text) {
+  static const std::string mark = "\xEF\xBB\xBF";
+  return text.rfind(mark, 0) == 0 ? text.substr(mark.size()) : text;
+}
+
 }  // namespace
 
 bool looks_like_reshade_preset(const std::string& text) {
   std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string::npos || text[first] == '{') return false;
-  std::istringstream in(text);
+  std::istringstream in(without_byte_order_mark(text));
   std::string line;
   while (std::getline(in, line)) {
     line = trimmed(line);
@@ -56,34 +62,38 @@ bool looks_like_reshade_preset(const std::string& text) {
   return false;
 }
 
-bool parse_reshade_preset(const std::string& text, Preset* out, std::string* error) {
+void parse_reshade_preset(const std::string& text, Preset* out) {
+  // Read the way ReShade reads its .ini files: a UTF-8 byte-order mark and blanks around each line
+  // are dropped (so are CRLF ends), lines starting with ';', '#' or '/' are comments, a section
+  // name ends at its first ']', and a line without '=' is a key without a value. A key given
+  // twice keeps its first value in a section (ReShade appends the second one after the values it
+  // reads) and adds to the list in the global part (two Techniques= lines enable both lists).
   std::map<std::string, std::string> globals;
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> sections;  // by file name
   std::string section;
-  std::istringstream in(text);
+  std::istringstream in(without_byte_order_mark(text));
   std::string line;
-  int number = 0;
   while (std::getline(in, line)) {
-    ++number;
     line = trimmed(line);
-    if (line.empty() || line[0] == ';' || line[0] == '#') continue;
+    if (line.empty() || line[0] == ';' || line[0] == '#' || line[0] == '/') continue;
     if (line.front() == '[') {
-      if (line.back() != ']') {
-        if (error) *error = "line " + std::to_string(number) + ": a section name needs a closing ']'";
-        return false;
-      }
-      section = file_name_of(trimmed(line.substr(1, line.size() - 2)));
+      const std::size_t close = line.find(']');
+      section = file_name_of(trimmed(line.substr(1, close == std::string::npos ? std::string::npos : close - 1)));
       sections[section];
       continue;
     }
-    std::size_t equals = line.find('=');
-    if (equals == std::string::npos) {
-      if (error) *error = "line " + std::to_string(number) + ": expected NAME=VALUE, found '" + line + "'";
-      return false;
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos) continue;
+    const std::string key = trimmed(line.substr(0, equals)), value = trimmed(line.substr(equals + 1));
+    if (section.empty()) {
+      std::string& list = globals[key];
+      list += (list.empty() || value.empty() ? "" : ",") + value;
+      continue;
     }
-    std::string key = trimmed(line.substr(0, equals)), value = trimmed(line.substr(equals + 1));
-    if (section.empty()) globals[key] = value;
-    else sections[section].emplace_back(key, value);
+    auto& values = sections[section];
+    bool seen = false;
+    for (const auto& earlier : values) seen = seen || earlier.first == key;
+    if (!seen) values.emplace_back(key, value);
   }
   std::vector<Technique> enabled;
   for (const std::string& entry : split(globals["Techniques"], ',')) enabled.push_back(technique_of(entry));
@@ -129,7 +139,6 @@ bool parse_reshade_preset(const std::string& text, Preset* out, std::string* err
     }
   }
   out->source_definitions = globals["PreprocessorDefinitions"];  // trimmed; checked when applied
-  return true;
 }
 
 }  // namespace pfx::app

@@ -25,7 +25,9 @@ namespace pfx::app {
 // Whether the text is a ReShade preset rather than a pfx JSON preset.
 bool looks_like_reshade_preset(const std::string& text);
 
-// Fills out->chain, out->assignments and out->source_definitions; false with *error for a file that is not one.
-bool parse_reshade_preset(const std::string& text, Preset* out, std::string* error);
+// Fills out->chain, out->assignments and out->source_definitions. Every text reads, as ReShade
+// reads its .ini files: a byte-order mark, CRLF ends, comments (';', '#', '/') and lines that are
+// not NAME=VALUE are passed over; a key given twice in a section keeps its first value.
+void parse_reshade_preset(const std::string& text, Preset* out);
 
 }  // namespace pfx::app

@@ -20,21 +20,15 @@ RenderChain::RenderChain(const host::PluginRegistry& registry, const RenderOptio
   chain_.set_timing(timing);
 }
 
-int RenderChain::build(const RenderOptions& options, const Preset& preset, std::string* message) {
+int RenderChain::build(const RenderOptions& options, Preset preset, std::string* message) {
+  // The preset policy every host shares (chain_builder.hpp): what is not loaded or does not fit
+  // is named in one warning, and the rest runs.
+  const std::vector<std::string> unloaded = options.chain_given ? std::vector<std::string>{} : drop_unloaded_effects(preset, registry_);
   std::vector<PresetEffect> effects;
   if (options.chain_given || !preset.chain)
     for (const auto& id : options.chain_given ? options.chain : default_chain(registry_)) effects.push_back({id, true});
   else
     effects = *preset.chain;
-  // A ReShade preset may name techniques no loaded file has: one warning, and the rest runs.
-  std::vector<std::string> left_out;
-  if (preset.from_reshade && !options.chain_given) {
-    std::vector<PresetEffect> found;
-    for (const auto& effect : effects)
-      if (registry_.find_effect(effect.id)) found.push_back(effect);
-      else left_out.push_back(effect.id);
-    effects = found;
-  }
   for (const auto& effect : effects) {
     if (!chain_.add(effect.id, message)) return exit_code::kEffectError;
     chain_.set_enabled(chain_.size() - 1, effect.enabled);
@@ -44,11 +38,7 @@ int RenderChain::build(const RenderOptions& options, const Preset& preset, std::
     return exit_code::kBadInput;
   }
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
-  if (!preset.parameters_json.empty() && !params_.from_json(preset.parameters_json, message)) {
-    *message = options.preset + ": parameters: " + *message;
-    return exit_code::kBadInput;
-  }
-  const std::string warning = preset_left_out_warning(options.preset, left_out, apply_preset_assignments(params_, preset.assignments));
+  const std::string warning = preset_left_out_warning(options.preset, unloaded, apply_preset_values(params_, preset));
   if (!warning.empty()) std::fprintf(stderr, "pfx-render: warning: %s\n", warning.c_str());
   for (const auto& note : preset.notes) std::fprintf(stderr, "pfx-render: note: %s: %s\n", options.preset.c_str(), note.c_str());
   for (const auto& assignment : options.sets) {

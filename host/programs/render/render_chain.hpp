@@ -20,9 +20,10 @@ class RenderChain {
   // decides when given).
   RenderChain(const host::PluginRegistry& registry, const RenderOptions& options, const std::string& gl_renderer);
 
-  // Adds the effects and sets their values. kOk, or an exit code (exit_codes.hpp) with *message
-  // naming the effect, the preset or the --set that failed.
-  int build(const RenderOptions& options, const Preset& preset, std::string* message);
+  // Adds the effects and sets their values; what of the preset does not apply is left out with
+  // one warning on stderr. kOk, or an exit code (exit_codes.hpp) with *message naming the effect,
+  // the preset's definitions or the --set that failed.
+  int build(const RenderOptions& options, Preset preset, std::string* message);
 
   host::Chain& chain() { return chain_; }
 

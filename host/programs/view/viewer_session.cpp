@@ -58,7 +58,10 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   std::string message;
   const std::string& start = options.attach.empty() ? options.preset : options.attach;
   if (!start.empty() && !read_preset(start, &preset, &message)) return fail(exit_code::kBadInput, message);
-  std::vector<std::string> left_out = drop_unloaded_reshade_effects(preset, *self->registry_);
+  // The preset policy every host shares (chain_builder.hpp): what is not loaded or does not fit
+  // is named in one warning, and the rest runs.
+  const std::vector<std::string> unloaded =
+      options.chain_given ? std::vector<std::string>{} : drop_unloaded_effects(preset, *self->registry_);
 
   self->chain_ = std::make_unique<pfx::host::Chain>(*self->registry_, self->params_);
   self->chain_->set_timing(default_timing(renderer));
@@ -72,9 +75,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
     return fail(exit_code::kBadInput, start + ": PreprocessorDefinitions: " + message);
 
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
-  if (!preset.parameters_json.empty() && !self->params_.from_json(preset.parameters_json, &message))
-    return fail(exit_code::kBadInput, options.preset + ": parameters: " + message);
-  const std::string warning = preset_left_out_warning(start, left_out, apply_preset_assignments(self->params_, preset.assignments));
+  const std::string warning = preset_left_out_warning(start, unloaded, apply_preset_values(self->params_, preset));
   if (!warning.empty()) self->warning(warning);
   for (const auto& note : preset.notes) self->info(start + ": " + note);
   for (const auto& assignment : options.sets) {
@@ -218,15 +219,9 @@ Preset ViewerSession::current_preset() const {
   return preset;
 }
 
-bool ViewerSession::apply_preset(const Preset& given, std::string* error) {
+bool ViewerSession::apply_preset(const Preset& given, std::string* error, std::string* left_out) {
   Preset preset = given;
-  drop_unloaded_reshade_effects(preset, *registry_);
-  if (preset.chain)
-    for (const auto& effect : *preset.chain)
-      if (!registry_->find_effect(effect.id)) {
-        *error = "chain: effect '" + effect.id + "' is not loaded";
-        return false;
-      }
+  const std::vector<std::string> unloaded = drop_unloaded_effects(preset, *registry_);
   // The values are checked against a store shaped like the preset's chain ("bloom#2" needs a
   // second bloom) before anything changes.
   pfx::host::ParamStore values = params_;
@@ -238,11 +233,7 @@ bool ViewerSession::apply_preset(const Preset& given, std::string* error) {
     if (!values.has_effect(effect.desc->id)) values.add_effect(effect.desc);
     if (preset.chain) values.set_instance_count(effect.desc->id, std::max<size_t>(1, counts[effect.desc->id]));
   }
-  if (!preset.parameters_json.empty() && !values.from_json(preset.parameters_json, error)) {
-    *error = "parameters: " + *error;
-    return false;
-  }
-  apply_preset_assignments(values, preset.assignments);  // a ReShade preset's: what fits applies
+  *left_out = preset_left_out_warning(preset_path_, unloaded, apply_preset_values(values, preset));
   Camera camera;
   if (source_) {
     camera = source_->camera();
@@ -279,8 +270,10 @@ void ViewerSession::load_preset() {
   Preset preset;
   std::string message;
   if (!read_preset(preset_path_, &preset, &message)) return error(message);
-  if (!apply_preset(preset, &message)) return error(preset_path_ + ": " + message);
+  std::string left_out;
+  if (!apply_preset(preset, &message, &left_out)) return error(preset_path_ + ": " + message);
   info("loaded preset " + preset_path_);
+  if (!left_out.empty()) warning(left_out);
 }
 
 bool ViewerSession::write_frame(const std::string& png_path, std::string* error) {

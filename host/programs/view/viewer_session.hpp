@@ -62,9 +62,10 @@ class ViewerSession {
   void poll_plugins(double now_seconds);
   uint64_t reload_count() const { return reload_count_; }
 
-  // Presets: the current look, and applying one (the chain, values, camera, display).
+  // Presets: the current look, and applying one (the chain, values, camera, display). What of it
+  // is not loaded or does not fit is left out and named in *left_out (chain_builder.hpp).
   Preset current_preset() const;
-  bool apply_preset(const Preset& preset, std::string* error);
+  bool apply_preset(const Preset& preset, std::string* error, std::string* left_out);
   std::string& preset_path() { return preset_path_; }
   void save_preset();  // to preset_path(), reported as a message
   void load_preset();

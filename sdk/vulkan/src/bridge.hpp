@@ -52,8 +52,9 @@ bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::st
 // thread.
 pfx_vk_status settings_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::Transfer* transfer,
                               app::ChainRecipe* recipe, std::vector<app::RecipeProblem>* left_out, std::string* error);
-// Each item of the settings left out, as a warning to the log.
-void say_left_out(const pfx_vk_bridge* bridge, const std::vector<app::RecipeProblem>& left_out);
+// Each item of the settings left out, and what of the preset did not apply (the recipe's one
+// warning), as warnings to the log.
+void say_left_out(const pfx_vk_bridge* bridge, const std::vector<app::RecipeProblem>& left_out, const app::ChainRecipe& recipe);
 void copy_error(const std::string& message, char* error, size_t error_size);
 // Leaves out of the default chain, or switches off in a chosen one, every effect that needs more
 // than colour (colour_fit.cpp).

@@ -76,8 +76,9 @@ void copy_error(const std::string& message, char* error, size_t error_size) {
   error[error_size - 1] = '\0';
 }
 
-void say_left_out(const pfx_vk_bridge* bridge, const std::vector<app::RecipeProblem>& left_out) {
+void say_left_out(const pfx_vk_bridge* bridge, const std::vector<app::RecipeProblem>& left_out, const app::ChainRecipe& recipe) {
   for (const auto& item : adapters::describe_problems(left_out)) bridge->say(1, "ignored " + item);
+  if (!recipe.left_out.empty()) bridge->say(1, recipe.left_out);
 }
 
 pfx_vk_status settings_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, app::Transfer* transfer,
@@ -189,7 +190,7 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_des
     pfx_vk_bridge_destroy(bridge.release());
     return settings;
   }
-  vk::say_left_out(bridge.get(), left_out);
+  vk::say_left_out(bridge.get(), left_out, recipe);
   if (!vk::start_bridge_gl(bridge.get(), *desc, recipe, &message)) {
     vk::copy_error(message, error, error_size);
     // A worker that made its context ran the chain's creation: then an effect failed.

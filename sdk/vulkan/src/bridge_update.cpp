@@ -40,7 +40,7 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_update(pfx_vk_bridge* bridge, 
     vk::copy_error(message, error, error_size);
     return status;
   }
-  vk::say_left_out(bridge, left_out);
+  vk::say_left_out(bridge, left_out, recipe);
   bridge->transfer = transfer;
   bridge->chain_text = chain;
   bridge->dry_run = (desc->flags & PFX_VK_DRY_RUN) != 0;

@@ -181,7 +181,13 @@ TEST_CASE("an edited preset applies while the application runs") {
   std::filesystem::rename(folder.file("look.tmp"), preset);
   INFO(app.output());
   CHECK_FALSE(app.wait_for_line("preset applied: chain glare,bloom (off)", 10).empty());
-  write_text(folder.file("look.tmp"), R"({"pfx_preset": 1, "chain": [{"effect": "no-such-effect"}]})");
+  // What of it is not there is left out with one warning, and the rest applies.
+  write_text(folder.file("look.tmp"), R"({"pfx_preset": 1, "chain": [{"effect": "no-such-effect"}, {"effect": "bloom"}]})");
+  std::filesystem::rename(folder.file("look.tmp"), preset);
+  CHECK_FALSE(app.wait_for_line("look.json: left out: no-such-effect (not loaded)", 10).empty());
+  CHECK_FALSE(app.wait_for_line("preset applied: chain bloom", 10).empty());
+  // One that does not read (saved half-way) keeps the chain that runs.
+  write_text(folder.file("look.tmp"), R"({"pfx_preset": 1, "chain": [{"effect": "glare"}, )");
   std::filesystem::rename(folder.file("look.tmp"), preset);
   CHECK_FALSE(app.wait_for_line("the previous chain keeps running", 10).empty());
 }

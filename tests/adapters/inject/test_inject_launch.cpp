@@ -35,12 +35,10 @@ RunResult run_marker_app(const std::vector<std::string>& args, const std::string
 
 }  // namespace
 
-TEST_CASE("a bad chain, preset, --set or capture is refused before the application starts") {
+TEST_CASE("a bad chain, --set or capture, or a preset that does not read, is refused before the application starts") {
   ScratchFolder folder("refused");
-  const std::string unknown_effect = folder.file("unknown-effect.json");
-  write_text(unknown_effect, R"({"pfx_preset": 1, "chain": [{"effect": "nosuch"}]})");
-  const std::string bad_value = folder.file("bad-value.json");
-  write_text(bad_value, R"({"pfx_preset": 1, "parameters": {"bloom": {"threshold": "abc"}}})");
+  const std::string half_saved = folder.file("half-saved.json");
+  write_text(half_saved, R"({"pfx_preset": 1, "chain": [{"effect": "bloom"}, )");
   struct Case {
     std::vector<std::string> args;
     std::string named;  // what the message must name
@@ -54,8 +52,7 @@ TEST_CASE("a bad chain, preset, --set or capture is refused before the applicati
       {{"--set", "garbage"}, "--set garbage: expected EFFECT.PARAM=VALUE"},
       {{"--chain", "bloom", "--set", "bloom#2.strength=2"}, "there is no bloom#2"},
       {{"--preset", folder.file("missing.json")}, "missing.json"},
-      {{"--preset", unknown_effect}, "effect 'nosuch' is not loaded"},
-      {{"--preset", bad_value}, "bad-value.json: parameters"},
+      {{"--preset", half_saved}, "half-saved.json: not valid JSON"},
       {{"--capture", "3:" + folder.file("no-such-folder/shot")}, "no-such-folder does not exist"},
       {{"--quit-after", "3", "--capture", "5:" + folder.file("shot")}, "ends after frame 3"},
       {{"--from-frame", "2", "--capture", "1:" + folder.file("shot")}, "before --from-frame 2"},
@@ -79,6 +76,21 @@ TEST_CASE("a bad chain, preset, --set or capture is refused before the applicati
   CHECK(none.exit_code == 241);
   CHECK(none.output.find("no effect plugins found") != std::string::npos);
   CHECK_FALSE(exists(folder.file("ran")));
+}
+
+TEST_CASE("a preset naming what is not loaded or does not fit starts the application, the rest applied, with one warning") {
+  ScratchFolder folder("left-out");
+  const std::string preset = folder.file("shared.json");
+  write_text(preset, R"({"pfx_preset": 1, "chain": [{"effect": "nosuch"}, {"effect": "bloom"}],
+                         "parameters": {"bloom": {"threshold": "abc", "strength": 2}}})");
+  const std::string marker = folder.file("ran");
+  const RunResult run = run_marker_app({"--plugins", PFX_PLUGIN_OUTPUT_DIR, "--preset", preset}, marker);
+  INFO(run.output);
+  CHECK(run.exit_code == 0);
+  CHECK(exists(marker));
+  CHECK(run.output.find("pfx-inject: warning: " + preset + ": left out: nosuch (not loaded), bloom.threshold ('abc' is not a "
+                        "number)") != std::string::npos);
+  CHECK(run.output.find("warning:") == run.output.rfind("warning:"));
 }
 
 TEST_CASE("the application's own exit code passes through unchanged, and one that cannot start gives 242") {
