@@ -1,6 +1,7 @@
 #include "display_transfer.hpp"
 
 #include <array>
+#include <cctype>
 #include <cmath>
 
 namespace pfx::app {
@@ -37,6 +38,13 @@ Image decode_display_image(const DisplayImage& encoded, Transfer transfer) {
     if (encoded.channels == 4) image.rgba[i * 4 + 3] = pixel[3] / 255.0f;
   }
   return image;
+}
+
+bool is_display_input(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string extension = path.substr(path.size() - 4);
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".png";
 }
 
 }  // namespace pfx::app

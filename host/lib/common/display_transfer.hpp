@@ -15,6 +15,10 @@ enum class Transfer {
   LINEAR,  // the values are linear light: divided by 255, multiplied back
 };
 
+// "x.png" (any case): the inputs our programs read as 8-bit display-referred frames (a frame a
+// video tool wrote, a photograph), decoded by a transfer rather than read as EXR.
+bool is_display_input(const std::string& path);
+
 // "srgb" or "linear"; false with *error naming what was given.
 bool parse_transfer(const std::string& text, Transfer* out, std::string* error);
 const char* transfer_name(Transfer transfer);

@@ -155,13 +155,6 @@ bool parse_render_options(const std::vector<std::string>& list, RenderOptions* o
   return true;
 }
 
-bool is_display_input(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string extension = path.substr(path.size() - 4);
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".png";
-}
-
 bool has_display_input(const RenderOptions& options) { return is_display_input(options.input); }
 
 bool uses_display_defaults(const RenderOptions& options) {

@@ -48,8 +48,6 @@ struct RenderOptions {
 
 // Parses argv (without argv[0]). False with *error for a usage error (exit code 2).
 bool parse_render_options(const std::vector<std::string>& args, RenderOptions* out, std::string* error);
-// "x.png" (any case): the inputs pfx-render reads as 8-bit display-referred frames.
-bool is_display_input(const std::string& path);
 // Whether --input is an 8-bit display-referred frame (a PNG), which --transfer decodes.
 bool has_display_input(const RenderOptions& options);
 // Whether parameters start from their display-referred defaults: --defaults, else an 8-bit input.

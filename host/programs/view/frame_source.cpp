@@ -5,10 +5,12 @@
 #include "camera_settings.hpp"
 #include "demo_image.hpp"
 #include "demo_scene.hpp"
+#include "display_transfer.hpp"
 #include "frame_description.hpp"
 #include "image_texture.hpp"
 #include "import_scene.hpp"
 #include "input_image.hpp"
+#include "png_io.hpp"
 
 namespace pfx::app {
 namespace {
@@ -24,6 +26,27 @@ CameraOptions lens_of(const Camera& camera) {
   lens.near_plane = camera.near_plane;
   lens.far_plane = camera.far_plane;
   return lens;
+}
+
+// --input: an EXR as pfx-render reads it, or a PNG (8-bit, display-referred) decoded to linear
+// light with the exact sRGB curve, as pfx-render decodes one (its --transfer default).
+bool read_image_input(const ViewOptions& options, Image* image, InputReport* report, std::string* error) {
+  if (!is_display_input(options.input_path)) {
+    InputFiles files;
+    files.input = options.input_path;
+    files.layer = options.layer;
+    files.depth = options.depth_path;
+    return read_input_image(files, image, report, error);
+  }
+  if (!options.depth_path.empty() || !options.layer.empty()) {
+    *error = options.input_path + ": --depth and --layer go with an EXR input, not a PNG";
+    return false;
+  }
+  DisplayImage encoded;
+  if (!read_png(options.input_path, &encoded, error)) return false;
+  *image = decode_display_image(encoded, Transfer::SRGB);
+  report->color = std::string(encoded.channels == 4 ? "R, G, B, A" : "R, G, B") + " (8-bit, decoded as srgb)";
+  return true;
 }
 
 }  // namespace
@@ -60,12 +83,8 @@ std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, con
     apply_camera_keys(CameraOptions{}, {"fovy", "near", "far"}, &self->camera_);
     if (options.input == ViewInput::Image) {
       Image image;
-      InputFiles files;
-      files.input = options.input_path;
-      files.layer = options.layer;
-      files.depth = options.depth_path;
       InputReport report;
-      if (!read_input_image(files, &image, &report, error)) {
+      if (!read_image_input(options, &image, &report, error)) {
         *bad_input = true;
         return nullptr;
       }

@@ -10,7 +10,8 @@ namespace pfx::app {
 std::string view_usage() {
   return
       "usage: pfx-view [--plugins DIR]... [--demo [--lights N] [--seed S] | --demo-image\n"
-      "                | --scene FILE.obj [--lights N] [--seed S] | --input IMG.exr [--layer NAME] [--depth DEPTH.exr]]\n"
+      "                | --scene FILE.obj [--lights N] [--seed S] | --input IMG.exr [--layer NAME] [--depth DEPTH.exr]\n"
+      "                | --input IMG.png]\n"
       "                [--size WxH] [--window WxH]\n"
       "                [--camera fovy=45,near=0.1,far=1000] [--chain a,b,...] [--preset FILE]\n"
       "                [--set effect.param=value]... [--exposure EV] [--tone NAME] [--save-preset FILE]\n"
@@ -34,6 +35,9 @@ std::string view_usage() {
       "                       one is 0) and A (else 1); or Y as grey (Y, RY, BY converted to RGB); or\n"
       "                       its only channel as grey; the only layer with colour when none is plain.\n"
       "                       A Z channel is linear depth (m). The panel says what was read\n"
+      "  --input IMG.png      an 8-bit picture (a photograph, a video frame), decoded to linear light\n"
+      "                       with the sRGB curve as pfx-render decodes it; effects start from their\n"
+      "                       display-referred defaults, as there\n"
       "  --layer NAME         with --input: read the part or layer NAME (e.g. diffuse for diffuse.R)\n"
       "  --depth DEPTH.exr    linear depth (m) from another EXR: its Z channel, else a 'depth' channel\n"
       "                       or the Z of a layer, else R, else Y, else its only channel\n"
@@ -168,7 +172,7 @@ bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, 
     *out = options;
     return true;
   }
-  if (inputs_given > 1) return args.fail("give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
+  if (inputs_given > 1) return args.fail("give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG");
   if (!options.depth_path.empty() && options.input != ViewInput::Image) return args.fail("--depth goes with --input");
   if (!options.layer.empty() && options.input != ViewInput::Image) return args.fail("--layer goes with --input");
   if (options.size_given && options.input == ViewInput::Image)

@@ -1,5 +1,7 @@
 #include "viewer_session.hpp"
 
+#include "input_image.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -13,6 +15,7 @@
 #include "default_chain.hpp"
 #include "exit_codes.hpp"
 #include "frame_files.hpp"
+#include "display_transfer.hpp"
 #include "image_texture.hpp"
 #include "plugin_directory.hpp"
 #include "timing_choice.hpp"
@@ -50,8 +53,9 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   for (const auto& message : load_plugins(*self->registry_, options.plugin_dirs))
     self->warning("plugin not loaded: " + message);
   // Attached to an application's chain, values start where the injected library starts them: at
-  // the defaults for its display-referred frames.
-  if (!options.attach.empty()) self->params_ = pfx::host::ParamStore(pfx::host::DefaultSet::DISPLAY_REFERRED);
+  // the defaults for its display-referred frames; so do they for an 8-bit picture, as in pfx-render.
+  const bool png_input = options.input == ViewInput::Image && is_display_input(options.input_path);
+  if (!options.attach.empty() || png_input) self->params_ = pfx::host::ParamStore(pfx::host::DefaultSet::DISPLAY_REFERRED);
   for (const auto& effect : self->registry_->effects()) self->params_.add_effect(effect.desc);
 
   Preset preset;
