@@ -72,7 +72,7 @@ TEST_CASE("a constant frame gains strength x its bright part away from the borde
   CHECK(out[0] < centre[0]);
 }
 
-TEST_CASE("knee 0 is the plain threshold ratio; a knee makes it continuous and never adds light below zero", "[bloom][model]") {
+TEST_CASE("knee 0 is the plain threshold ratio, a knee makes it continuous and never adds light below zero", "[bloom][model]") {
   // A constant frame far from the border gains exactly strength x bright part (see above), so
   // its centre shows the bright-pass curve itself.
   auto gain_at = [](double knee, float r, float g) {

@@ -295,7 +295,7 @@ TEST_CASE("degenerate cameras are named, not decoded", "[dof][camera][hard]") {
   CHECK(camera_problem(g).empty());
 }
 
-TEST_CASE("autofocus reads the depth under the focus point; the sky focuses at infinity", "[dof][camera][hard]") {
+TEST_CASE("autofocus reads the depth under the focus point, the sky focuses at infinity", "[dof][camera][hard]") {
   Settings s = defaults();
   s.autofocus = AUTOFOCUS_POINT;
   const uint32_t w = 5, h = 3;

@@ -160,7 +160,7 @@ TEST_CASE("1x1, 2x1, 1x3 and odd sizes render and match the model", "[dof][hard]
     }
 }
 
-TEST_CASE("focus at the focal length, at 0 and at infinity; the f-number at its hard minimum", "[dof][hard]") {
+TEST_CASE("focus at the focal length, at 0 and at infinity, the f-number at its hard minimum", "[dof][hard]") {
   for (const char* mode : kModes) {
     Rig& rig = rig_for(mode);
     const Frame f = scene(48, 32);
@@ -176,7 +176,7 @@ TEST_CASE("focus at the focal length, at 0 and at infinity; the f-number at its 
   }
 }
 
-TEST_CASE("out-of-range camera parameters are clamped with a note; NaN is refused", "[dof][hard]") {
+TEST_CASE("out-of-range camera parameters are clamped with a note, NaN is refused", "[dof][hard]") {
   pfx::host::ParamStore store;
   {
     auto registry = pfx::test::make_registry();

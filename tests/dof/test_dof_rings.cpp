@@ -33,7 +33,7 @@ TEST_CASE("ring samples: exactly N, inside the unit disc, areas summing to pi, s
   CHECK(inner == 4);
 }
 
-TEST_CASE("gather plan: half resolution rounds odd sides up; tiles cover the frame; dilation follows the CoC cap",
+TEST_CASE("gather plan: half resolution rounds odd sides up, tiles cover the frame, dilation follows the CoC cap",
           "[dof][rings]") {
   Settings s;
   s.resolution = RESOLUTION_HALF;

@@ -125,7 +125,7 @@ TEST_CASE("seed mode: every depth encoding and a real depth texture give the sam
   }
 }
 
-TEST_CASE("seed mode autofocus focuses on the depth under the point; on the sky it focuses at infinity",
+TEST_CASE("seed mode autofocus focuses on the depth under the point, on the sky it focuses at infinity",
           "[dof][seed][hard]") {
   Rig& rig = seed_rig();
   rig.set("dof.focus_distance=100");

@@ -5,7 +5,7 @@
 namespace pfx::inject {
 namespace {
 
-constexpr std::chrono::milliseconds kInterval{250};
+constexpr std::chrono::milliseconds kInterval{100};
 constexpr int kPresentsBetweenLooks = 16;
 
 // The modification time, the size and the inode: a preset replaced the way editors and the panel

@@ -1,5 +1,5 @@
 // Notices that the preset file changed, so an edit applies while the application runs. Looks at
-// the file's modification time and size from the present call, four times a second or every
+// the file's modification time and size from the present call, ten times a second or every
 // 16th present, whichever comes first: a clock stopped by libfaketime (the tests run
 // applications so) must not stop the watch.
 #pragma once

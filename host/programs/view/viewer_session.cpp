@@ -135,6 +135,7 @@ uint64_t ViewerSession::state_stamp(int width, int height) const {
   mix(&h, uint64_t(width));
   mix(&h, uint64_t(height));
   mix(&h, reload_count_);
+  mix(&h, source_frames_);
   mix(&h, uint64_t(chain_->size()));
   for (size_t i = 0; i < chain_->size(); ++i) {
     mix(&h, std::hash<std::string>{}(chain_->effect_id(i)));
@@ -183,7 +184,25 @@ void ViewerSession::set_watching(bool on) {
   for (const auto& plugin : registry_->plugins()) watcher_.watch(plugin->id, plugin->path);
 }
 
+std::vector<std::string> ViewerSession::chain_source_files() const {
+  std::vector<std::string> files;
+  for (size_t i = 0; i < chain_->size(); ++i) {
+    const pfx::host::EffectInfo* info = registry_->find_effect(chain_->effect_id(i));
+    if (!info) continue;
+    const auto source = info->plugin->effect_sources.find(chain_->effect_id(i));
+    if (source != info->plugin->effect_sources.end()) files.push_back(source->second.file);
+  }
+  return files;
+}
+
 void ViewerSession::poll_plugins(double now_seconds) {
+  if (now_seconds - last_source_look_ >= kPollInterval) {
+    last_source_look_ = now_seconds;
+    // Two frames: the effect may have looked at its files just before the edit, and looks again
+    // only after its own short interval.
+    if (sources_.changed(chain_source_files())) source_frames_owed_ = 2;
+    if (source_frames_owed_ > 0) --source_frames_owed_, ++source_frames_;
+  }
   if (!watching_ || now_seconds - last_poll_ < kPollInterval) return;
   last_poll_ = now_seconds;
   for (const auto& id : watcher_.poll(now_seconds)) {

@@ -13,6 +13,7 @@
 
 #include "frame_source.hpp"
 #include "preset.hpp"
+#include "source_watch.hpp"
 #include "tonemap.hpp"
 #include "view_options.hpp"
 
@@ -56,7 +57,9 @@ class ViewerSession {
   const std::string& render_error() const { return render_error_; }
   double last_render_ms() const { return last_render_ms_; }
 
-  // Hot reload: polls the plugin files and reloads those rebuilt (keeping parameter values).
+  // Hot reload: polls the plugin files and reloads those rebuilt (keeping parameter values), and
+  // the files the chain's effects were made from (FX files): an edit of one changes state_stamp
+  // for two frames a poll apart, so the effect runs and picks it up in any drawing mode.
   bool watching() const { return watching_; }
   void set_watching(bool on);
   void poll_plugins(double now_seconds);
@@ -84,6 +87,8 @@ class ViewerSession {
   ViewerSession() = default;
   bool build_chain(const std::vector<PresetEffect>& effects, std::string* error);
   void remember(Message message);
+  // The files the chain's effects were made from (an FX effect's .fx), for sources_.
+  std::vector<std::string> chain_source_files() const;
 
   std::string renderer_;
   std::unique_ptr<pfx::host::PluginRegistry> registry_;
@@ -95,6 +100,11 @@ class ViewerSession {
   bool watching_ = false;
   double last_poll_ = -1;
   uint64_t reload_count_ = 0;
+  // Edits of the chain's source files: each adds frames to draw (state_stamp changes).
+  SourceWatch sources_;
+  double last_source_look_ = -1;
+  uint64_t source_frames_ = 0;
+  int source_frames_owed_ = 0;
   uint32_t output_ = 0, spare_ = 0;
   uint64_t frame_index_ = 0;
   int output_width_ = 0, output_height_ = 0;

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -116,6 +117,71 @@ TEST_CASE("a plugin rebuilt under the running viewer is reloaded with its values
   rig.install("v1");
   CHECK(viewer.wait_for_line("pfx-view: reloaded", 20).find("2.0.0 -> 1.0.0") != std::string::npos);
   CHECK(rig.screenshot(viewer) == Approx(0.125));  // the strength survived every reload
+
+  viewer.send(SIGTERM);
+  CHECK(viewer.wait_exit(20) == 0);
+}
+
+namespace {
+
+// How soon an edited FX file must show: half a second (docs/fx.md), four times that where the
+// sanitizers slow every compile.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kEditSeconds = 2.0;
+#else
+constexpr double kEditSeconds = 0.5;
+#endif
+
+// Writes `text` as `path` whole, the way editors save: a new file renamed over the old.
+void save_whole(const fs::path& path, const std::string& text) {
+  std::ofstream(path.string() + ".new") << text;
+  fs::rename(path.string() + ".new", path);
+}
+
+}  // namespace
+
+TEST_CASE("an edited FX file shows within half a second while the viewer draws only on change, a broken edit is an error "
+          "and the last good version keeps running",
+          "[view][window][reload][fx]") {
+  ReloadRig rig;
+  const fs::path shaders = rig.dir / "Shaders", grade = shaders / "Grade.fx";
+  fs::create_directories(shaders);
+  fs::copy_file(fs::path(PFX_FX_TEST_SHADERS) / "Grade.fx", grade);
+  std::string source;
+  {
+    std::ifstream in(grade);
+    source.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // The viewer's default: no "render every frame"; the picture is drawn again only on a change.
+  pfx::test::ViewerProcess viewer({"/usr/bin/env", "PFX_FX_PATH=" + shaders.string(), PFX_VIEW, "--input",
+                                   (rig.dir / "grey.exr").string(), "--chain", "fx_grade", "--shots",
+                                   (rig.dir / "shots").string(), "--window", "200x160"});
+  INFO(viewer.output());
+  REQUIRE(!viewer.wait_for_line("pfx-view: ready", 30).empty());
+  CHECK(rig.screenshot(viewer) == Approx(0.5).margin(0.01));  // Gain 1 keeps the grey
+
+  // The same grade at a quarter of the light: 0.5 is code 188 in the effect's sRGB frame, 47 after.
+  const std::string quarter = "c = Mode == 0 ? c * Gain * 0.25 :";
+  const std::string plain = "c = Mode == 0 ? c * Gain :";
+  REQUIRE(source.find(plain) != std::string::npos);
+  std::string edited = source;
+  edited.replace(edited.find(plain), plain.size(), quarter);
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point saved = Clock::now();
+  save_whole(grade, edited);
+  const std::string reloaded = viewer.wait_for_line("reloaded " + grade.string(), 10);
+  const double seconds = std::chrono::duration<double>(Clock::now() - saved).count();
+  REQUIRE(!reloaded.empty());
+  INFO("the edit showed " << seconds << " s after the file was saved");
+  CHECK(seconds <= kEditSeconds);
+  CHECK(rig.screenshot(viewer) == Approx(0.0284).margin(0.003));  // sRGB code 47 in linear light
+
+  // A broken edit: its error is shown, and the quarter grade stays.
+  save_whole(grade, edited + "\nfloat4 Broken( {\n");
+  CHECK(!viewer.wait_for_line("error", 10).empty());
+  CHECK(viewer.output().find("Grade.fx:") != std::string::npos);
+  CHECK(viewer.output().find("The last version that compiled keeps running") != std::string::npos);
+  CHECK(rig.screenshot(viewer) == Approx(0.0284).margin(0.003));
 
   viewer.send(SIGTERM);
   CHECK(viewer.wait_exit(20) == 0);

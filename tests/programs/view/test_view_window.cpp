@@ -85,7 +85,7 @@ TEST_CASE("pfx-view without a display exits 1 and says how to run it headless", 
   CHECK(r.output.find("xvfb-run") != std::string::npos);
 }
 
-TEST_CASE("pfx-view usage, input and effect errors exit 2, 3 and 4 with a message; a preset's unknown values are a warning", "[view][window][errors]") {
+TEST_CASE("pfx-view usage, input and effect errors exit 2, 3 and 4 with a message, a preset's unknown values are a warning", "[view][window][errors]") {
   Scratch scratch;
   auto r = run_program(viewer({"--frames", "1", "--set", "gain.gain=nan"}));
   CHECK(r.exit_code == 2);
