@@ -184,7 +184,7 @@ bool Injector::load_plugins(WindowSystem system) {
   plugins_refused_ = true;  // until it succeeds: one attempt, one message
   auto loader = [system](const char* name) { return reinterpret_cast<pfx_gl_proc>(gl_proc(system, name)); };
   auto sink = [this](pfx_log_level level, const std::string& source, const std::string& message) {
-    if (level >= PFX_LOG_WARNING) log_.line(std::string(host::log_level_name(level)) + ": [" + source + "] " + message);
+    if (level >= PFX_LOG_INFO) log_.line(std::string(host::log_level_name(level)) + ": [" + source + "] " + message);
   };
   auto registry = std::make_unique<host::PluginRegistry>(loader, sink, "pfx-inject");
   const std::vector<std::string> dirs = settings_.plugin_dirs.empty() ? plugin_dirs_beside_library() : settings_.plugin_dirs;

@@ -3,6 +3,9 @@
 // glXSwapBuffers with dlsym) and glmark2-es2 (OpenGL ES through EGL, which pfx refuses).
 #include <catch2/catch.hpp>
 
+#include <signal.h>
+
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -190,6 +193,47 @@ TEST_CASE("an edited preset applies while the application runs") {
   write_text(folder.file("look.tmp"), R"({"pfx_preset": 1, "chain": [{"effect": "glare"}, )");
   std::filesystem::rename(folder.file("look.tmp"), preset);
   CHECK_FALSE(app.wait_for_line("the previous chain keeps running", 10).empty());
+}
+
+TEST_CASE("an edited FX file shows within half a second while the application runs, a broken edit keeps the last good one") {
+  ScratchFolder folder("fx-edit");
+  std::filesystem::create_directories(folder.file("Shaders"));
+  const std::string grade = folder.file("Shaders/Grade.fx");
+  std::filesystem::copy_file(std::string(PFX_FX_TEST_SHADERS) + "/Grade.fx", grade);
+  const std::string source = read_text_file(grade);
+  // The effect looks at its files by the steady clock: no libfaketime here, and glmark2 runs until
+  // it is stopped.
+  std::vector<std::string> argv = {"/usr/bin/env", "PFX_FX_PATH=" + folder.file("Shaders")};
+  const std::string runtime = sanitizer_runtime();
+  if (!runtime.empty()) argv.push_back("LD_PRELOAD=" + runtime);
+  argv.insert(argv.end(), {PFX_INJECT, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--chain", "fx_grade", "--",
+                           PFX_GLMARK2, "-s", "96x64", "-b", "build:duration=60"});
+  ViewerProcess app(argv);
+  INFO(app.output());
+  REQUIRE_FALSE(app.wait_for_line("chain: fx_grade", 60).empty());
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // frames with the first version
+  const std::string plain = "c = Mode == 0 ? c * Gain :";
+  REQUIRE(source.find(plain) != std::string::npos);
+  std::string edited = source;
+  edited.replace(edited.find(plain), plain.size(), "c = Mode == 0 ? c * Gain * 0.25 :");
+  auto save_whole = [&](const std::string& text) {
+    write_text(grade + ".new", text);
+    std::filesystem::rename(grade + ".new", grade);
+  };
+  const auto saved = std::chrono::steady_clock::now();
+  save_whole(edited);
+  REQUIRE_FALSE(app.wait_for_line("reloaded " + grade, 10).empty());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - saved).count();
+  INFO("the edit showed " << seconds << " s after the file was saved");
+#if defined(__SANITIZE_ADDRESS__)
+  CHECK(seconds <= 2.0);  // every compile is slower under the sanitizers
+#else
+  CHECK(seconds <= 0.5);
+#endif
+  save_whole(edited + "\nfloat4 Broken( {\n");
+  CHECK_FALSE(app.wait_for_line("The last version that compiled keeps running", 10).empty());
+  app.send(SIGTERM);
+  app.wait_exit(30);
 }
 
 TEST_CASE("pfx-inject --bench reports the application alone, with an empty chain and with the chain") {
