@@ -44,12 +44,12 @@ std::shared_ptr<Library> make_library() {
   if (self->kind == Library::Kind::CHAIN) {
     self->explanation =
         "A chain of pfx effects (docs/hosts.md): chain = effect ids in order (none: no effect), set = "
-        "effect.param=value items separated by ';', transfer = srgb or linear, preset = a pfx-view preset file";
+        "effect.param=value items separated by ';', transfer = srgb or linear, preset = a pfx-view (.json) or ReShade (.ini) preset";
     self->params = {
-        {"chain", F0R_PARAM_STRING, "Effects in order, separated by ','; none: no effect; empty: the preset's chain"},
+        {"chain", F0R_PARAM_STRING, "Effects in order, separated by ','; none: no effect; empty (the default): the preset's chain, else bloom"},
         {"set", F0R_PARAM_STRING, "effect.param=value items separated by ';' (bloom#2.x for a second bloom)"},
         {"transfer", F0R_PARAM_STRING, "How the frame's values relate to light: srgb (default) or linear"},
-        {"preset", F0R_PARAM_STRING, "A preset file saved by pfx-view: chain, on/off, values"}};
+        {"preset", F0R_PARAM_STRING, "A preset file (pfx-view's .json, ReShade's .ini): chain, on/off, values; what is not there is left out with one warning"}};
     return self;
   }
   if (const host::EffectInfo* info = self->registry->find_effect(self->effect_id)) {

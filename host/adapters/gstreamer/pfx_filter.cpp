@@ -236,7 +236,7 @@ static void gst_pfx_filter_class_init(GstPfxFilterClass* klass) {
   const pfx::adapters::ChainSettings defaults;
   install_string(object_class, PROP_CHAIN, "chain", "Chain",
                  "pfx effects to run, in order, separated by ',' (e.g. bloom,glare); none: no effect, the frame is "
-                 "handed on as it came; empty: the preset's chain. Effects see colour alone (no depth)",
+                 "handed on as it came; empty (the default): the preset's chain, else bloom. Effects see colour alone (no depth)",
                  defaults.chain.c_str());
   install_string(object_class, PROP_SET, "set", "Set",
                  "Parameter values, effect.param=value items separated by ';' (bloom.threshold=0.5;bloom.strength=2; "
@@ -247,8 +247,8 @@ static void gst_pfx_filter_class_init(GstPfxFilterClass* klass) {
                  "linear",
                  defaults.transfer.c_str());
   install_string(object_class, PROP_PRESET, "preset", "Preset",
-                 "A preset file saved by pfx-view: its chain (unless chain names one), effects on or off, values "
-                 "(set overrides them)",
+                 "A preset file, pfx-view's .json or ReShade's .ini: its chain (unless chain names one), effects on or "
+                 "off, values (set overrides them); what it names that is not there is left out with one warning",
                  defaults.preset.c_str());
 
   auto* element_class = GST_ELEMENT_CLASS(klass);

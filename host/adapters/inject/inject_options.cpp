@@ -13,7 +13,9 @@ back buffer runs through a pfx chain, on the application's own context, and the 
 presented instead. The application is not changed; a context below OpenGL 4.5, an OpenGL ES
 context or any failure leaves its frames untouched, with one line in the log.
 
-  --preset FILE        a preset saved by pfx-view (chain and values); edits apply while APP runs
+  --preset FILE        a preset, pfx-view's .json or ReShade's .ini (chain and values); what it
+                       names that is not there is left out with one warning; edits apply while
+                       APP runs
   --chain LIST         effects in order, e.g. bloom,dof; "none": no effect, frames presented as drawn
                        (default: the preset's chain, else every effect found)
   --set EFFECT.P=V     a parameter value, after the preset (repeatable; bloom#2.x for a second bloom)

@@ -63,10 +63,10 @@ LaunchCheck check_launch(const InjectOptions& options) {
   }
   std::vector<RecipeProblem> problems;
   std::vector<std::string> notes;
-  // What of the preset does not apply is left out with one warning, as in every host; a preset
-  // that does not read, and a --chain or --set that does not apply, are refused.
-  const ChainRecipe recipe = make_recipe(settings, registry, &problems, &notes);
-  if (!recipe.left_out.empty()) check.notes.push_back("warning: " + recipe.left_out);
+  // A preset that does not read, and a --chain or --set that does not apply, are refused. What a
+  // preset that reads holds that does not apply is left out by the library, which says so once
+  // when it loads the preset in the application, as every host does.
+  make_recipe(settings, registry, &problems, &notes);
   for (const auto& problem : problems) check.errors.push_back(std::string(option_of(problem.source)) + ": " + problem.message);
   for (const auto& note : notes) check.notes.push_back("--set " + note);
   if (!check.errors.empty()) check.exit_code = exit_code::kInjectUsage;

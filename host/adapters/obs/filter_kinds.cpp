@@ -88,8 +88,8 @@ obs_properties_t* kind_properties(const FilterKind& kind, uint32_t width, uint32
                                                      OBS_COMBO_FORMAT_STRING);
   obs_property_list_add_string(transfer, "sRGB (what almost all video holds)", "srgb");
   obs_property_list_add_string(transfer, "linear", "linear");
-  obs_properties_add_path(props, "preset", "Preset (saved by pfx-view)", OBS_PATH_FILE, "pfx preset (*.json);;All files (*)",
-                          nullptr);
+  obs_properties_add_path(props, "preset", "Preset (pfx-view's .json or ReShade's .ini)", OBS_PATH_FILE,
+                          "Presets (*.json *.ini);;All files (*)", nullptr);
   return props;
 }
 

@@ -78,21 +78,6 @@ TEST_CASE("a bad chain, --set or capture, or a preset that does not read, is ref
   CHECK_FALSE(exists(folder.file("ran")));
 }
 
-TEST_CASE("a preset naming what is not loaded or does not fit starts the application, the rest applied, with one warning") {
-  ScratchFolder folder("left-out");
-  const std::string preset = folder.file("shared.json");
-  write_text(preset, R"({"pfx_preset": 1, "chain": [{"effect": "nosuch"}, {"effect": "bloom"}],
-                         "parameters": {"bloom": {"threshold": "abc", "strength": 2}}})");
-  const std::string marker = folder.file("ran");
-  const RunResult run = run_marker_app({"--plugins", PFX_PLUGIN_OUTPUT_DIR, "--preset", preset}, marker);
-  INFO(run.output);
-  CHECK(run.exit_code == 0);
-  CHECK(exists(marker));
-  CHECK(run.output.find("pfx-inject: warning: " + preset + ": left out: nosuch (not loaded), bloom.threshold ('abc' is not a "
-                        "number)") != std::string::npos);
-  CHECK(run.output.find("warning:") == run.output.rfind("warning:"));
-}
-
 TEST_CASE("the application's own exit code passes through unchanged, and one that cannot start gives 242") {
   ScratchFolder folder("exit-codes");
   for (int code : {0, 1, 2, 7, 127}) {

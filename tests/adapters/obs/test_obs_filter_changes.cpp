@@ -3,6 +3,8 @@
 // alpha, and bad settings pass the source through with a line in OBS's log, once they have held
 // (not one per keystroke while a user types into a text field).
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <thread>
 
 #include <catch2/catch.hpp>
@@ -194,6 +196,45 @@ TEST_CASE("typing an effect name into the chain field logs nothing on the way an
   for (size_t at = log.find("[pfx-obs]"); at != std::string::npos; at = log.find("[pfx-obs]", at + 1)) ++lines;
   CHECK(lines == 1);
   obs_data_release(empty);
+  obs_source_release(chain);
+  obs_source_release(image);
+}
+
+TEST_CASE("a ReShade preset as users share it gives pfx-render's frame of what applies, and one line names what it left out",
+          "[obs][fx]") {
+  ::setenv("PFX_FX_PATH", PFX_SOURCE_DIR "/tests/fx/presets/Shaders", 1);  // before the module lists its effects
+  ObsSession& obs = ObsSession::get();
+  Scratch scratch;
+  const auto picture = write_photo_crop(scratch / "in.png", 200, 180, 96, 64);
+  // From a Windows editor (a byte-order mark, CRLF), naming a technique whose file is not here and
+  // values that do not fit; the chain is the preset's (the filter's chain field left empty).
+  const std::string preset = scratch / "shared.ini";
+  {
+    std::FILE* file = std::fopen(preset.c_str(), "wb");
+    std::fputs("\xEF\xBB\xBF; shared\r\nTechniques=Grade@Grade.fx,Bogus@Bogus.fx,Edge@Edge.fx\r\n"
+               "TechniqueSorting=Edge@Edge.fx,Bogus@Bogus.fx,Grade@Grade.fx\r\n\r\n"
+               "[Grade.fx]\r\nLift=0.1\r\nGain=0.800000\r\nGain=1.500000\r\nInvert=1\r\n\r\n[Edge.fx]\r\nStrength=0.5\r\n",
+               file);
+    std::fclose(file);
+  }
+  const auto reference = pfx_render_picture(scratch / "in.png", "fx_edge,fx_grade",
+                                            {"fx_edge.strength=0.5", "fx_grade.gain=0.8", "fx_grade.invert=1"},
+                                            scratch / "pfx.png");
+  REQUIRE(worst_difference_pictures(reference, picture) > 8);
+
+  obs.clear_log();
+  obs_source_t* image = obs.image_source(scratch / "in.png");
+  obs_data_t* values = chain_values("", "", preset.c_str());
+  obs_source_t* chain = obs.add_filter(image, "pfx_chain_filter", values);
+  CHECK(worst_difference(obs.render(image), reference) <= 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // the log line waits for settings that hold
+  CHECK(worst_difference(obs.render(image), reference) <= 1);
+  const std::string log = obs.log();
+  INFO(log);
+  const size_t line = log.find("left out: fx_bogus (not loaded), fx_grade.lift (expects 3 numbers, got 1)");
+  CHECK(line != std::string::npos);
+  CHECK(log.find("left out:", line + 1) == std::string::npos);
+  obs_data_release(values);
   obs_source_release(chain);
   obs_source_release(image);
 }
