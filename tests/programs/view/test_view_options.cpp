@@ -40,9 +40,9 @@ TEST_CASE("pfx-view defaults to the demo scene, a window-sized frame and watchin
 TEST_CASE("pfx-view usage errors name the option", "[view][options][errors]") {
   CHECK(usage_error({"--bogus"}) == "unknown option '--bogus' (see --help)");
   CHECK(usage_error({"--demo", "--demo-image"}) ==
-        "give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
+        "give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG");
   CHECK(usage_error({"--scene", "a.obj", "--input", "b.exr"}) ==
-        "give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG.exr");
+        "give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG");
   CHECK(usage_error({"--depth", "d.exr"}) == "--depth goes with --input");
   CHECK(usage_error({"--input", "a.exr", "--size", "10x10"}) ==
         "--size applies to --demo and --demo-image (an input image has its own size)");
