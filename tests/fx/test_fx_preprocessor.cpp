@@ -97,7 +97,7 @@ TEST_CASE("#if evaluates integer constant expressions", "[fx][preprocessor]") {
   }
 }
 
-TEST_CASE("#if exists \"file\": whether a quoted #include would find it", "[fx][preprocessor]") {
+TEST_CASE("#if exists with a quoted file name: whether a quoted #include would find it", "[fx][preprocessor]") {
   MemoryFiles files;
   files.files["main.fx"] =
       "#define HEADER \"there.fxh\"\n"

@@ -27,6 +27,7 @@ std::vector<std::string> load_adapter_plugins(host::PluginRegistry& registry, co
     }
   }
   std::vector<std::string> messages = registry.load_search_path(folders);
+  for (const auto& message : registry.source_errors()) messages.push_back("no effect from " + message);
   const char* path = std::getenv("PFX_PLUGIN_PATH");
   if (folders.empty() && (!path || !*path)) {
     std::string tried;

@@ -21,8 +21,9 @@ struct PluginFolderRule {
 };
 
 // Loads the plugins of the folder beside the library and of PFX_PLUGIN_PATH into `registry`;
-// returns a message for every plugin or folder refused (and one when no folder was found and
-// PFX_PLUGIN_PATH is unset: then nothing can load).
+// returns a message for every plugin or folder refused, one for every source file that gave no
+// effect ("no effect from FILE:LINE:COLUMN: error: ..."), and one when no folder was found and
+// PFX_PLUGIN_PATH is unset (then nothing can load).
 std::vector<std::string> load_adapter_plugins(host::PluginRegistry& registry, const PluginFolderRule& rule);
 
 }  // namespace pfx::adapters

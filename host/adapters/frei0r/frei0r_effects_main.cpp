@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
       [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); },
       pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-frei0r-effects");
   for (const auto& message : pfx::app::load_plugins(registry, folders))
-    std::fprintf(stderr, "pfx-frei0r-effects: warning: plugin not loaded: %s\n", message.c_str());
+    std::fprintf(stderr, "pfx-frei0r-effects: warning: %s\n", message.c_str());
   std::vector<std::string> colour_only;
   std::string tables;
   for (const auto& effect : pfx::adapters::classify_effects(registry)) {

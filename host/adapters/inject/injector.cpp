@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "frame_capture.hpp"
+#include "plugin_directory.hpp"
 #include "real_symbols.hpp"
 #include "resource_report.hpp"
 
@@ -188,7 +189,7 @@ bool Injector::load_plugins(WindowSystem system) {
   };
   auto registry = std::make_unique<host::PluginRegistry>(loader, sink, "pfx-inject");
   const std::vector<std::string> dirs = settings_.plugin_dirs.empty() ? plugin_dirs_beside_library() : settings_.plugin_dirs;
-  for (const auto& error : registry->load_search_path(dirs)) log_.line("plugin not loaded: " + error);
+  for (const auto& message : app::load_messages(*registry, registry->load_search_path(dirs))) log_.line(message);
   if (registry->effects().empty()) {
     log_.line("no effect plugins found (searched: " + (dirs.empty() ? std::string("no folder") : join(dirs)) +
               ", and PFX_PLUGIN_PATH); frames pass through untouched");

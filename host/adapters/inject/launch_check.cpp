@@ -7,6 +7,7 @@
 
 #include "app_launch.hpp"
 #include "chain_recipe.hpp"
+#include "plugin_directory.hpp"
 
 namespace pfx::inject {
 namespace {
@@ -52,7 +53,7 @@ LaunchCheck check_launch(const InjectOptions& options) {
   };
   host::PluginRegistry registry(no_gl, sink, "pfx-inject");
   const std::vector<std::string> folders = plugin_folders(settings);
-  for (const auto& error : registry.load_search_path(folders)) check.notes.push_back("plugin not loaded: " + error);
+  for (const auto& message : app::load_messages(registry, registry.load_search_path(folders))) check.notes.push_back(message);
   if (registry.effects().empty()) {
     std::string searched;
     for (const auto& folder : host::PluginRegistry::search_path(folders)) searched += (searched.empty() ? "" : ", ") + folder;

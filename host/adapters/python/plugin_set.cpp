@@ -34,6 +34,8 @@ std::unique_ptr<host::PluginRegistry> load_plugin_set(const std::optional<std::v
       throw Error(error);
     }
   }
+  // A source file a plugin could not use refuses no plugin: it gave no effect, and is said so.
+  for (const auto& message : registry->source_errors()) warn("no effect from " + message);
   return registry;
 }
 

@@ -26,7 +26,14 @@ std::vector<std::string> load_plugins(pfx::host::PluginRegistry& registry, const
     std::string fallback = default_plugin_directory();
     if (!fallback.empty()) search.push_back(fallback);
   }
-  return registry.load_search_path(search);
+  return load_messages(registry, registry.load_search_path(search));
+}
+
+std::vector<std::string> load_messages(const pfx::host::PluginRegistry& registry, const std::vector<std::string>& refused) {
+  std::vector<std::string> messages;
+  for (const auto& message : refused) messages.push_back("plugin not loaded: " + message);
+  for (const auto& message : registry.source_errors()) messages.push_back("no effect from " + message);
+  return messages;
 }
 
 }  // namespace pfx::app

@@ -254,7 +254,7 @@ int import_bench_main(const std::vector<std::string>& args) {
   pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
                                      pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
   for (const auto& error : pfx::app::load_plugins(registry, options.plugin_dirs))
-    std::fprintf(stderr, "pfx-bench: warning: plugin not loaded: %s\n", error.c_str());
+    std::fprintf(stderr, "pfx-bench: warning: %s\n", error.c_str());
   const std::vector<std::string> built = available_loaders();
 
   bool temporary_dir = options.work_dir.empty();

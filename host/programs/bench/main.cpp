@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
       [](const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); },
       pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-bench");
   for (const auto& error : pfx::app::load_plugins(registry, options.plugin_dirs))
-    std::fprintf(stderr, "pfx-bench: warning: plugin not loaded: %s\n", error.c_str());
+    std::fprintf(stderr, "pfx-bench: warning: %s\n", error.c_str());
   for (const auto& id : options.effects)
     if (!registry.find_effect(id)) return error_exit(kEffectError, "--effects: effect '" + id + "' is not loaded");
 

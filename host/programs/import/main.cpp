@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
   pfx::host::PluginRegistry registry([](const char*) { return pfx_gl_proc{nullptr}; },
                                      pfx::host::stderr_log_sink(PFX_LOG_WARNING), "pfx-import");
   for (const auto& error : pfx::app::load_plugins(registry, options.plugin_dirs))
-    std::fprintf(stderr, "pfx-import: warning: plugin not loaded: %s\n", error.c_str());
+    std::fprintf(stderr, "pfx-import: warning: %s\n", error.c_str());
   const pfx::host::ImporterInfo* importer = registry.find_importer_for_path(options.file);
   if (!importer)
     return error_exit(kEffectError, options.file + ": no importer for this file's extension (importers loaded for: " +

@@ -116,7 +116,7 @@ int run(const RenderOptions& options) {
   host::PluginRegistry registry(headless_loader(), host::stderr_log_sink(options.verbose ? PFX_LOG_DEBUG : PFX_LOG_INFO),
                                 "pfx-render " PFX_VERSION);
   for (const auto& error : load_plugins(registry, options.plugin_dirs))
-    std::fprintf(stderr, "pfx-render: warning: plugin not loaded: %s\n", error.c_str());
+    std::fprintf(stderr, "pfx-render: warning: %s\n", error.c_str());
 
   // A preset gives the chain, the values, the camera and the display settings; the command line
   // overrides each of them.

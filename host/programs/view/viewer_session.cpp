@@ -51,7 +51,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   };
   self->registry_ = std::make_unique<pfx::host::PluginRegistry>(std::move(gl_loader), sink, "pfx-view " PFX_VERSION);
   for (const auto& message : load_plugins(*self->registry_, options.plugin_dirs))
-    self->warning("plugin not loaded: " + message);
+    self->warning(message);
   // Attached to an application's chain, values start where the injected library starts them: at
   // the defaults for its display-referred frames; so do they for an 8-bit picture, as in pfx-render.
   const bool png_input = options.input == ViewInput::Image && is_display_input(options.input_path);

@@ -371,16 +371,26 @@ std::vector<std::string> PluginRegistry::load_directory(const std::string& direc
     if (item.path().extension() == ".so") files.push_back(item.path().string());
   std::sort(files.begin(), files.end());
   for (const auto& file : files) {
+    // A folder named twice (given, and in PFX_PLUGIN_PATH too) is the same plugins, not duplicates.
+    if (loaded_from(file)) continue;
     std::string error;
-    if (!load(file, &error)) {
-      errors.push_back(error);
-      continue;
-    }
-    // A plugin that makes its effects from files reports the files it could not use with them.
-    const auto& messages = plugins_.back()->source_errors;
-    errors.insert(errors.end(), messages.begin(), messages.end());
+    if (!load(file, &error)) errors.push_back(error);
   }
   return errors;
+}
+
+bool PluginRegistry::loaded_from(const std::string& file) const {
+  std::error_code ec;
+  const fs::path wanted = fs::weakly_canonical(file, ec);
+  for (const auto& plugin : plugins_)
+    if (fs::weakly_canonical(plugin->path, ec) == wanted) return true;
+  return false;
+}
+
+std::vector<std::string> PluginRegistry::source_errors() const {
+  std::vector<std::string> messages;
+  for (const auto& plugin : plugins_) messages.insert(messages.end(), plugin->source_errors.begin(), plugin->source_errors.end());
+  return messages;
 }
 
 std::vector<std::string> PluginRegistry::search_path(const std::vector<std::string>& explicit_directories) {

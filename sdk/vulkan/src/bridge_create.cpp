@@ -109,6 +109,7 @@ bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::st
   std::vector<std::string> messages;
   if (plugin_path && *plugin_path) {
     messages = bridge->registry->load_search_path(app::split_list(plugin_path, ':'));
+    for (const auto& message : bridge->registry->source_errors()) messages.push_back("no effect from " + message);
   } else {
     const adapters::PluginFolderRule rule{
         adapters::library_path_of(reinterpret_cast<const void*>(&pfx_vk_bridge_create)),

@@ -82,8 +82,12 @@ class PFX_HOST_API PluginRegistry {
   // its own (what it keeps of its host - this registry's thread pool and log - stays this
   // registry's); otherwise the file itself. plugins()'s path is the file's either way.
   bool load(const std::string& path, std::string* error);
-  // Loads every *.so in a folder, in name order; returns the messages of those refused.
+  // Loads every *.so in a folder, in name order, but those already loaded from the same file;
+  // returns the messages of those refused.
   std::vector<std::string> load_directory(const std::string& directory);
+  // The files the loaded plugins that make effects from files could not use, each as its compiler
+  // reports it ("FILE:LINE:COLUMN: error: ..."): no plugin was refused for them, they gave no effect.
+  std::vector<std::string> source_errors() const;
   // The folders to search: the explicit ones, then each entry of PFX_PLUGIN_PATH (':'-separated).
   static std::vector<std::string> search_path(const std::vector<std::string>& explicit_directories);
   // load_directory over search_path(explicit_directories); a missing folder is an error message.
@@ -127,6 +131,8 @@ class PFX_HOST_API PluginRegistry {
   struct Record;
 
  private:
+  // Whether a plugin of this registry was loaded from that file (paths compared resolved).
+  bool loaded_from(const std::string& file) const;
   struct Opened;
   // Opens `file` (the plugin's own path, or a private copy of it) and checks it, reporting errors
   // against `path`. `replacing` is the plugin a reload replaces: its ids do not count as duplicates.
