@@ -92,6 +92,10 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
                        : preset.from_reshade         ? options.preset + ".pfx.json"  // never written over a ReShade preset
                        : !options.preset.empty()     ? options.preset
                                                      : "pfx-preset.json";
+  if (options.attach.empty()) {
+    self->watched_preset_ = options.preset;
+    self->preset_watch_.changed({options.preset});  // its stamp as read now
+  }
   self->shots_dir_ = options.shots_dir;
   self->set_watching(options.watch);
   if (!options.attach.empty()) return self;  // no picture of its own
@@ -202,6 +206,7 @@ void ViewerSession::poll_plugins(double now_seconds) {
     // only after its own short interval.
     if (sources_.changed(chain_source_files())) source_frames_owed_ = 2;
     if (source_frames_owed_ > 0) --source_frames_owed_, ++source_frames_;
+    if (!watched_preset_.empty() && preset_watch_.changed({watched_preset_})) load_preset(watched_preset_);
   }
   if (!watching_ || now_seconds - last_poll_ < kPollInterval) return;
   last_poll_ = now_seconds;
@@ -242,7 +247,7 @@ Preset ViewerSession::current_preset() const {
   return preset;
 }
 
-bool ViewerSession::apply_preset(const Preset& given, std::string* error, std::string* left_out) {
+bool ViewerSession::apply_preset(const Preset& given, const std::string& path, std::string* error, std::string* left_out) {
   Preset preset = given;
   const std::vector<std::string> unloaded = drop_unloaded_effects(preset, *registry_);
   // The values are checked against a store shaped like the preset's chain ("bloom#2" needs a
@@ -256,7 +261,7 @@ bool ViewerSession::apply_preset(const Preset& given, std::string* error, std::s
     if (!values.has_effect(effect.desc->id)) values.add_effect(effect.desc);
     if (preset.chain) values.set_instance_count(effect.desc->id, std::max<size_t>(1, counts[effect.desc->id]));
   }
-  *left_out = preset_left_out_warning(preset_path_, unloaded, apply_preset_values(values, preset));
+  *left_out = preset_left_out_warning(path, unloaded, apply_preset_values(values, preset));
   Camera camera;
   if (source_) {
     camera = source_->camera();
@@ -287,15 +292,17 @@ void ViewerSession::save_preset() {
   std::string message;
   if (write_preset(preset_path_, current_preset(), &message)) info("saved preset " + preset_path_);
   else error(message);
+  // The viewer's own save is no edit to apply again.
+  if (preset_path_ == watched_preset_) preset_watch_.changed({watched_preset_});
 }
 
-void ViewerSession::load_preset() {
+void ViewerSession::load_preset(const std::string& path) {
   Preset preset;
   std::string message;
-  if (!read_preset(preset_path_, &preset, &message)) return error(message);
+  if (!read_preset(path, &preset, &message)) return error(message + "; the look shown stays");
   std::string left_out;
-  if (!apply_preset(preset, &message, &left_out)) return error(preset_path_ + ": " + message);
-  info("loaded preset " + preset_path_);
+  if (!apply_preset(preset, path, &message, &left_out)) return error(path + ": " + message + "; the look shown stays");
+  info("loaded preset " + path);
   if (!left_out.empty()) warning(left_out);
 }
 

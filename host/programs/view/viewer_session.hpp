@@ -11,9 +11,9 @@
 #include <pfx/host/chain.hpp>
 #include <pfx/host/plugin_watcher.hpp>
 
+#include "file_watch.hpp"
 #include "frame_source.hpp"
 #include "preset.hpp"
-#include "source_watch.hpp"
 #include "tonemap.hpp"
 #include "view_options.hpp"
 
@@ -57,21 +57,24 @@ class ViewerSession {
   const std::string& render_error() const { return render_error_; }
   double last_render_ms() const { return last_render_ms_; }
 
-  // Hot reload: polls the plugin files and reloads those rebuilt (keeping parameter values), and
-  // the files the chain's effects were made from (FX files): an edit of one changes state_stamp
-  // for two frames a poll apart, so the effect runs and picks it up in any drawing mode.
+  // Hot reload: polls the plugin files and reloads those rebuilt (keeping parameter values); the
+  // files the chain's effects were made from (FX files): an edit of one changes state_stamp for
+  // two frames a poll apart, so the effect runs and picks it up in any drawing mode; and the
+  // preset it started from, which is applied again when another program saved it.
   bool watching() const { return watching_; }
   void set_watching(bool on);
   void poll_plugins(double now_seconds);
   uint64_t reload_count() const { return reload_count_; }
 
-  // Presets: the current look, and applying one (the chain, values, camera, display). What of it
-  // is not loaded or does not fit is left out and named in *left_out (chain_builder.hpp).
+  // Presets: the current look, and applying one read from `path` (the chain, values, camera,
+  // display). What of it is not loaded or does not fit is left out and named in *left_out
+  // (chain_builder.hpp).
   Preset current_preset() const;
-  bool apply_preset(const Preset& preset, std::string* error, std::string* left_out);
+  bool apply_preset(const Preset& preset, const std::string& path, std::string* error, std::string* left_out);
   std::string& preset_path() { return preset_path_; }
   void save_preset();  // to preset_path(), reported as a message
-  void load_preset();
+  void load_preset() { load_preset(preset_path_); }
+  void load_preset(const std::string& path);  // applied and reported, or its error shown
 
   // Screenshots: the current output as pfx-render writes it.
   bool write_frame(const std::string& png_path, std::string* error);
@@ -101,10 +104,14 @@ class ViewerSession {
   double last_poll_ = -1;
   uint64_t reload_count_ = 0;
   // Edits of the chain's source files: each adds frames to draw (state_stamp changes).
-  SourceWatch sources_;
+  FileWatch sources_;
   double last_source_look_ = -1;
   uint64_t source_frames_ = 0;
   int source_frames_owed_ = 0;
+  // The preset the viewer started from (--preset), applied again when it is saved by another
+  // program (an editor); "" for none.
+  std::string watched_preset_;
+  FileWatch preset_watch_;
   uint32_t output_ = 0, spare_ = 0;
   uint64_t frame_index_ = 0;
   int output_width_ = 0, output_height_ = 0;

@@ -1,6 +1,6 @@
-// Notices an edit of a file an effect of the chain was made from (an FX file), so the viewer draws
-// a frame when one is saved even while nothing else changes: the effect looks at its own files when
-// it runs, and a viewer that draws only on change would otherwise never run it.
+// Notices that files were saved: the FX files the chain's effects were made from (the viewer draws
+// a frame then, since an effect looks at its own files only when it runs, and a viewer that draws
+// only on change would otherwise never run it) and the preset it started from (applied again).
 #pragma once
 
 #include <map>
@@ -9,10 +9,10 @@
 
 namespace pfx::app {
 
-class SourceWatch {
+class FileWatch {
  public:
-  // Whether any of `files` (the chain's, looked up again at each call, so a chain changed since is
-  // followed) changed since the last call: a new modification time, size or inode, the file
+  // Whether any of `files` (given at each call, so a list that changed since is followed) changed
+  // since the last call: a new modification time, size or inode, the file
   // appearing or going. A file seen for the first time counts as unchanged.
   bool changed(const std::vector<std::string>& files);
 

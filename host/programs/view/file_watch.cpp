@@ -1,10 +1,10 @@
-#include "source_watch.hpp"
+#include "file_watch.hpp"
 
 #include <sys/stat.h>
 
 namespace pfx::app {
 
-bool SourceWatch::changed(const std::vector<std::string>& files) {
+bool FileWatch::changed(const std::vector<std::string>& files) {
   std::map<std::string, Stamp> now;
   bool any = false;
   for (const auto& file : files) {
