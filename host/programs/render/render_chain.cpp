@@ -39,6 +39,10 @@ int RenderChain::build(const RenderOptions& options, Preset preset, std::string*
   }
   // Values after the chain: "bloom#2" exists once the chain holds a second bloom.
   const std::string warning = preset_left_out_warning(options.preset, unloaded, apply_preset_values(params_, preset));
+  if (!warning.empty() && options.strict) {
+    *message = warning + " (--strict)";
+    return exit_code::kBadInput;
+  }
   if (!warning.empty()) std::fprintf(stderr, "pfx-render: warning: %s\n", warning.c_str());
   for (const auto& note : preset.notes) std::fprintf(stderr, "pfx-render: note: %s: %s\n", options.preset.c_str(), note.c_str());
   for (const auto& assignment : options.sets) {

@@ -21,6 +21,7 @@ bool take_switch(const std::string& arg, RenderOptions* options) {
   else if (arg == "--demo-image") options->demo_image = true;
   else if (arg == "--float") options->float_exr = true;
   else if (arg == "-v" || arg == "--verbose") options->verbose = true;
+  else if (arg == "--strict") options->strict = true;
   else return false;
   return true;
 }

@@ -37,6 +37,7 @@ struct RenderOptions {
   ToneMapSettings tone;
   bool exposure_given = false, tone_given = false;
   std::string preset;                    // --preset FILE (pfx-view saves them)
+  bool strict = false;                   // --strict: a preset that does not apply whole is an error
   std::string transfer = "srgb";         // --transfer srgb|linear: how an 8-bit --input is decoded
   bool transfer_given = false;
   std::string defaults;                  // --defaults scene|display; empty: display for an 8-bit input

@@ -84,4 +84,9 @@ TEST_CASE("pfx-render leaves out what a preset names that is not loaded or does 
   CHECK(report["effects_skipped"] == nlohmann::json::parse(R"(["gain"])"));
   const double plain = render_report({"--chain", "gain"})["output"]["mean"][0];
   CHECK(report["output"]["mean"][0] == Approx(plain).epsilon(1e-6));
+
+  // A farm job that wants all of it or nothing: --strict refuses the same preset, naming the same.
+  const std::string refused = render_report({"--preset", preset, "--strict"}, 3).get<std::string>();
+  CHECK(refused.find("mixed.json: left out: nosuch (not loaded)") != std::string::npos);
+  CHECK(refused.find("(--strict)") != std::string::npos);
 }

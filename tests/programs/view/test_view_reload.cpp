@@ -186,3 +186,37 @@ TEST_CASE("an edited FX file shows within half a second while the viewer draws o
   viewer.send(SIGTERM);
   CHECK(viewer.wait_exit(20) == 0);
 }
+
+TEST_CASE("the preset the viewer started from applies again within half a second when an editor saves it, one that does "
+          "not read leaves the look shown",
+          "[view][window][reload][preset]") {
+  ReloadRig rig;
+  const fs::path preset = rig.dir / "look.json";
+  auto look = [](const std::string& gain) {
+    return R"({"pfx_preset": 1, "chain": [{"effect": "fx_grade"}], "parameters": {"fx_grade": {"gain": )" + gain + "}}}";
+  };
+  save_whole(preset, look("1"));
+  pfx::test::ViewerProcess viewer({"/usr/bin/env", std::string("PFX_FX_PATH=") + PFX_FX_TEST_SHADERS, PFX_VIEW, "--input",
+                                   (rig.dir / "grey.exr").string(), "--preset", preset.string(), "--shots",
+                                   (rig.dir / "shots").string(), "--window", "200x160"});
+  INFO(viewer.output());
+  REQUIRE(!viewer.wait_for_line("pfx-view: ready", 30).empty());
+  CHECK(rig.screenshot(viewer) == Approx(0.5).margin(0.01));
+
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point saved = Clock::now();
+  save_whole(preset, look("0.25"));  // 0.5 is code 188 in the effect's sRGB frame, 47 after
+  REQUIRE(!viewer.wait_for_line("loaded preset " + preset.string(), 10).empty());
+  const double seconds = std::chrono::duration<double>(Clock::now() - saved).count();
+  INFO("the edited preset applied " << seconds << " s after it was saved");
+  CHECK(seconds <= kEditSeconds);
+  CHECK(rig.screenshot(viewer) == Approx(0.0284).margin(0.003));
+
+  save_whole(preset, R"({"pfx_preset": 1, "chain": [)");  // saved half-way
+  const std::string refused = viewer.wait_for_line("the look shown stays", 10);
+  CHECK(refused.find("look.json") != std::string::npos);
+  CHECK(rig.screenshot(viewer) == Approx(0.0284).margin(0.003));
+
+  viewer.send(SIGTERM);
+  CHECK(viewer.wait_exit(20) == 0);
+}
