@@ -46,6 +46,47 @@ std::string without_byte_order_mark(const std::string& text) {
   return text.rfind(mark, 0) == 0 ? text.substr(mark.size()) : text;
 }
 
+// A ReShade .ini file's keys: those before the first section, and each section's by file name.
+struct IniFile {
+  std::map<std::string, std::string> globals;
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> sections;
+};
+
+// Read the way ReShade reads its .ini files: a UTF-8 byte-order mark and blanks around each line
+// are dropped (so are CRLF ends), lines starting with ';', '#' or '/' are comments, a section name
+// ends at its first ']', and a line without '=' is a key without a value. A key given twice keeps
+// its first value in a section (ReShade appends the second one after the values it reads) and adds
+// to the list in the global part (two Techniques= lines enable both lists).
+IniFile read_ini(const std::string& text) {
+  IniFile ini;
+  std::string section;
+  std::istringstream in(without_byte_order_mark(text));
+  std::string line;
+  while (std::getline(in, line)) {
+    line = trimmed(line);
+    if (line.empty() || line[0] == ';' || line[0] == '#' || line[0] == '/') continue;
+    if (line.front() == '[') {
+      const std::size_t close = line.find(']');
+      section = file_name_of(trimmed(line.substr(1, close == std::string::npos ? std::string::npos : close - 1)));
+      ini.sections[section];
+      continue;
+    }
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos) continue;
+    const std::string key = trimmed(line.substr(0, equals)), value = trimmed(line.substr(equals + 1));
+    if (section.empty()) {
+      std::string& list = ini.globals[key];
+      list += (list.empty() || value.empty() ? "" : ",") + value;
+      continue;
+    }
+    auto& values = ini.sections[section];
+    bool seen = false;
+    for (const auto& earlier : values) seen = seen || earlier.first == key;
+    if (!seen) values.emplace_back(key, value);
+  }
+  return ini;
+}
+
 }  // namespace
 
 bool looks_like_reshade_preset(const std::string& text) {
@@ -63,38 +104,9 @@ bool looks_like_reshade_preset(const std::string& text) {
 }
 
 void parse_reshade_preset(const std::string& text, Preset* out) {
-  // Read the way ReShade reads its .ini files: a UTF-8 byte-order mark and blanks around each line
-  // are dropped (so are CRLF ends), lines starting with ';', '#' or '/' are comments, a section
-  // name ends at its first ']', and a line without '=' is a key without a value. A key given
-  // twice keeps its first value in a section (ReShade appends the second one after the values it
-  // reads) and adds to the list in the global part (two Techniques= lines enable both lists).
-  std::map<std::string, std::string> globals;
-  std::map<std::string, std::vector<std::pair<std::string, std::string>>> sections;  // by file name
-  std::string section;
-  std::istringstream in(without_byte_order_mark(text));
-  std::string line;
-  while (std::getline(in, line)) {
-    line = trimmed(line);
-    if (line.empty() || line[0] == ';' || line[0] == '#' || line[0] == '/') continue;
-    if (line.front() == '[') {
-      const std::size_t close = line.find(']');
-      section = file_name_of(trimmed(line.substr(1, close == std::string::npos ? std::string::npos : close - 1)));
-      sections[section];
-      continue;
-    }
-    const std::size_t equals = line.find('=');
-    if (equals == std::string::npos) continue;
-    const std::string key = trimmed(line.substr(0, equals)), value = trimmed(line.substr(equals + 1));
-    if (section.empty()) {
-      std::string& list = globals[key];
-      list += (list.empty() || value.empty() ? "" : ",") + value;
-      continue;
-    }
-    auto& values = sections[section];
-    bool seen = false;
-    for (const auto& earlier : values) seen = seen || earlier.first == key;
-    if (!seen) values.emplace_back(key, value);
-  }
+  IniFile ini = read_ini(text);
+  std::map<std::string, std::string>& globals = ini.globals;
+  const auto& sections = ini.sections;
   std::vector<Technique> enabled;
   for (const std::string& entry : split(globals["Techniques"], ',')) enabled.push_back(technique_of(entry));
   std::vector<Technique> order;
