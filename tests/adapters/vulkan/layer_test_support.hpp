@@ -10,9 +10,9 @@
 namespace pfx::test {
 
 // The sanitizer pass (./run test) builds the layer with AddressSanitizer and the loader opens it in
-// applications that are not: the runtime must then come first in the process, and the
-// application's and the drivers' own allocations are not ours to judge (pfx-inject's tests do the
-// same with glxgears). Adds to an `env` command line (NAME=VALUE items); nothing in other builds.
+// applications that are not: the runtime must then come first in the process (with the C++
+// library after it, for C applications), and the application's and the drivers' own allocations
+// are not ours to judge (pfx-inject's tests do the same with glxgears). Adds to an `env` command line (NAME=VALUE items); nothing in other builds.
 void add_sanitizer_runtime(std::vector<std::string>* argv);
 
 // The name of lavapipe's device, which mpv must be told: libplacebo passes over software devices
