@@ -2,9 +2,7 @@
 
 #include <unistd.h>
 
-#if defined(__SANITIZE_ADDRESS__)
 #include <link.h>
-#endif
 
 #include <catch2/catch.hpp>
 
@@ -13,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "exr_io.hpp"
 #include "png_io.hpp"
@@ -30,20 +29,25 @@ ScratchFolder::~ScratchFolder() {
   std::filesystem::remove_all(path_, ec);
 }
 
-std::string sanitizer_runtime() {
-  std::string runtime;
-#if defined(__SANITIZE_ADDRESS__)
+std::string loaded_library(const char* name) {
+  std::pair<const char*, std::string> search{name, ""};
   dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* out) {
-        if (info->dlpi_name && std::strstr(info->dlpi_name, "libasan.so")) {
-          *static_cast<std::string*>(out) = info->dlpi_name;
-          return 1;
-        }
-        return 0;
+      [](dl_phdr_info* info, size_t, void* data) {
+        auto* wanted = static_cast<std::pair<const char*, std::string>*>(data);
+        if (!info->dlpi_name || !std::strstr(info->dlpi_name, wanted->first)) return 0;
+        wanted->second = info->dlpi_name;
+        return 1;
       },
-      &runtime);
+      &search);
+  return search.second;
+}
+
+std::string sanitizer_runtime() {
+#if defined(__SANITIZE_ADDRESS__)
+  return loaded_library("libasan.so");
+#else
+  return "";
 #endif
-  return runtime;
 }
 
 InjectRun run_injected(const ScratchFolder& folder, const std::string& name, const std::vector<std::string>& inject_args,

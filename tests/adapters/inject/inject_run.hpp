@@ -31,6 +31,8 @@ class ScratchFolder {
 // application that is not sanitized gets it first in LD_PRELOAD when a sanitized pfx library goes
 // into it.
 std::string sanitizer_runtime();
+// The path of the library of this process whose file name holds `name` ("libstdc++.so"), or "".
+std::string loaded_library(const char* name);
 
 // pfx-inject INJECT_ARGS --log FOLDER/NAME.log -- APP_ARGS, with the clock stopped at
 // 2020-01-01 00:00:00 when frozen_clock, and `environment` (NAME=VALUE) added.

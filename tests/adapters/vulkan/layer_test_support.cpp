@@ -9,36 +9,16 @@
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <dlfcn.h>
-#include <link.h>
-
-#include <cstring>
 #endif
 
 namespace pfx::test {
-namespace {
-
-#if defined(__SANITIZE_ADDRESS__)
-// The C++ library this test program runs with: vkcube is a C program, and AddressSanitizer's
-// interceptor of C++ throws finds the real __cxa_throw only in libraries loaded when it starts,
-// so the layer's code that throws and catches (a preset's JSON parse error) needs it preloaded.
-std::string cxx_runtime() {
-  std::string path;
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* out) {
-        if (!info->dlpi_name || !std::strstr(info->dlpi_name, "libstdc++.so")) return 0;
-        *static_cast<std::string*>(out) = info->dlpi_name;
-        return 1;
-      },
-      &path);
-  return path;
-}
-#endif
-
-}  // namespace
 
 void add_sanitizer_runtime(std::vector<std::string>* argv) {
 #if defined(__SANITIZE_ADDRESS__)
-  argv->push_back("LD_PRELOAD=" + sanitizer_runtime() + " " + cxx_runtime());
+  // vkcube is a C program, and AddressSanitizer's interceptor of C++ throws finds the real
+  // __cxa_throw only in libraries loaded when it starts: the layer's code that throws and catches
+  // (a preset's JSON parse error) needs the C++ library preloaded too.
+  argv->push_back("LD_PRELOAD=" + sanitizer_runtime() + " " + loaded_library("libstdc++.so"));
   const char* asan_options = std::getenv("ASAN_OPTIONS");
   argv->push_back(std::string("ASAN_OPTIONS=") + (asan_options ? asan_options : "") + ":detect_leaks=0");
 #else
