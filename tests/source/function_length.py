@@ -21,6 +21,8 @@ import sys
 
 SOURCE_SUFFIXES = (".c", ".cc", ".cpp", ".cxx", ".h", ".hh", ".hpp", ".hxx", ".inl")
 SCOPE_KEYWORDS = re.compile(r"\b(namespace|class|struct|union)\b")
+# A function-like macro's call in capitals, such as G_DEFINE_TYPE(Name, name, PARENT).
+MACRO_CALL = re.compile(r"^\s*[A-Z][A-Z0-9_]*\s*\([^()]*\)\s*")
 ENUM_KEYWORD = re.compile(r"\benum\b")
 EXTERN_C = re.compile(r'\bextern\s*"[^"]*"\s*$')
 # A raw string literal: its prefix before the quote, and its delimiter and '(' after it.
@@ -108,6 +110,18 @@ def function_name(header):
     return match.group(1) if match else flat[:60]
 
 
+def opens_scope(header):
+    """Whether the brace after this header opens a namespace, class, struct or union. A macro
+    call in capitals before it that takes no ';' (GLib's G_DEFINE_TYPE(...)) is passed over, so
+    the namespace after it is not taken for a function's body."""
+    while True:
+        macro = MACRO_CALL.match(header)
+        if not macro:
+            break
+        header = header[macro.end():]
+    return bool(SCOPE_KEYWORDS.search(header)) and "(" not in header
+
+
 def functions(code, start=0, end=None):
     """Yields (name, first index, closing brace index) of every function body between start and
     end, a namespace- or class-level scope of the blanked code."""
@@ -129,7 +143,7 @@ def functions(code, start=0, end=None):
             if ENUM_KEYWORD.search(header) and "(" not in header:
                 i = close + 1
                 continue
-            if EXTERN_C.search(header.strip()) or (SCOPE_KEYWORDS.search(header) and "(" not in header):
+            if EXTERN_C.search(header.strip()) or opens_scope(header):
                 yield from functions(code, i + 1, close)
                 header_start = close + 1
                 i = close + 1

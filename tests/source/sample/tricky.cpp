@@ -36,6 +36,14 @@ T generic(T x) {
   return lambda(x);
 }
 
+}  // namespace sample
+
+// A macro that defines functions and takes no ';' (as GLib's G_DEFINE_TYPE): the namespace after it
+// is a scope, not a function's body.
+DEFINE_SOMETHING(Sample, sample)
+
+namespace sample {
+
 int ninety_one_lines() {
   int total = 0;
   int digits = 1'000'000;
