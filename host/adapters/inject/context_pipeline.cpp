@@ -8,6 +8,7 @@
 #include <pfx/host/gl_state_guard.hpp>
 
 #include "camera_options.hpp"
+#include "copy_pass.hpp"
 #include "frame_capture.hpp"
 #include "frame_description.hpp"
 #include "timing_choice.hpp"
@@ -77,7 +78,8 @@ std::unique_ptr<ContextPipeline> ContextPipeline::create(const host::PluginRegis
   std::unique_ptr<ContextPipeline> pipeline(new ContextPipeline(registry, settings));
   const GLubyte* renderer = glGetString(GL_RENDERER);
   pipeline->renderer_ = renderer ? reinterpret_cast<const char*>(renderer) : "";
-  if (!pipeline->copy_.create(reason) || !pipeline->depth_check_.create(reason)) return nullptr;
+  pipeline->copy_.create();
+  if (!pipeline->depth_check_.create(reason)) return nullptr;
   if (!pipeline->rebuild(recipe, notes, reason)) return nullptr;
   return pipeline;
 }
@@ -266,7 +268,8 @@ bool ContextPipeline::process(const FrameWork& work, std::vector<std::string>* m
     std::string error;
     if (!write_presented_png(copy_.read_back_buffer(), prefix + ".png", &error)) say(prefix + ".png", error);
   }
-  if (work.measure_copy_pass) copy_pass_ms_ = copy_.copy_pass_ms(9);
+  // The unit every host measures in, under the guard like the passes around it.
+  if (work.measure_copy_pass) copy_pass_ms_ = gl::median_copy_pass_ms(work.width, work.height, 9);
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR) {
     *reason = "GL error " + host::gl_error_text(error) + " while copying the frame in or out";

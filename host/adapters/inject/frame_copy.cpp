@@ -1,21 +1,13 @@
 #include "frame_copy.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
-#include <pfx/cpp/gl_program.hpp>
 
 #include "display_transfer.hpp"
 
 namespace pfx::inject {
 namespace {
-
-const char* kCopyShader = R"(#version 450 core
-layout(binding = 0) uniform sampler2D source;
-layout(location = 0) out vec4 color;
-void main() { color = texelFetch(source, ivec2(gl_FragCoord.xy), 0); }
-)";
 
 GLuint make_texture(GLenum format, int width, int height) {
   GLuint texture = 0;
@@ -28,34 +20,17 @@ GLuint make_texture(GLenum format, int width, int height) {
   return texture;
 }
 
-void draw_fullscreen(GLuint program, GLuint texture) {
-  glUseProgram(program);
-  glBindTextureUnit(0, texture);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-}
-
 }  // namespace
 
-bool FrameCopy::create(std::string* error) {
-  std::string message;
-  copy_program_ = pfx::gl::build_fullscreen_program(kCopyShader, &message);
-  if (!copy_program_) {
-    *error = "the copy program did not build: " + message;
-    return false;
-  }
-  glCreateVertexArrays(1, &vertex_array_);
+void FrameCopy::create() {
   glCreateFramebuffers(1, &read_framebuffer_);
   glCreateFramebuffers(1, &out_framebuffer_);
-  glCreateFramebuffers(1, &scratch_framebuffer_);
-  return true;
 }
 
 FrameCopy::~FrameCopy() {
   delete_targets();
-  const GLuint framebuffers[] = {read_framebuffer_, out_framebuffer_, scratch_framebuffer_};
-  glDeleteFramebuffers(3, framebuffers);
-  glDeleteVertexArrays(1, &vertex_array_);
-  glDeleteProgram(copy_program_);
+  const GLuint framebuffers[] = {read_framebuffer_, out_framebuffer_};
+  glDeleteFramebuffers(2, framebuffers);
 }
 
 void FrameCopy::delete_targets() {
@@ -207,27 +182,6 @@ app::DisplayImage FrameCopy::read_back_buffer() const {
   for (size_t i = 0; i < static_cast<size_t>(width_) * height_; ++i)
     for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = rgba[i * 4 + c];
   return image;
-}
-
-double FrameCopy::copy_pass_ms(int repeats) {
-  GLuint source = make_texture(GL_RGBA16F, width_, height_), target = make_texture(GL_RGBA16F, width_, height_);
-  glNamedFramebufferTexture(scratch_framebuffer_, GL_COLOR_ATTACHMENT0, target, 0);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, scratch_framebuffer_);
-  glViewport(0, 0, width_, height_);
-  glBindVertexArray(vertex_array_);
-  std::vector<double> times;
-  for (int i = 0; i < repeats; ++i) {
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    draw_fullscreen(copy_program_, source);
-    glFinish();
-    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  glNamedFramebufferTexture(scratch_framebuffer_, GL_COLOR_ATTACHMENT0, 0, 0);
-  glDeleteTextures(1, &target);
-  glDeleteTextures(1, &source);
-  std::sort(times.begin(), times.end());
-  return times.empty() ? 0 : times[times.size() / 2];
 }
 
 }  // namespace pfx::inject

@@ -24,9 +24,8 @@ namespace pfx::inject {
 
 class FrameCopy {
  public:
-  // Compiles the copy program of the bench's unit; false with *error (the context lacks what it
-  // needs).
-  bool create(std::string* error);
+  // Makes the framebuffers it reads and draws through; the context must be current.
+  void create();
   ~FrameCopy();  // the context must be current
 
   // Matches the textures to the back buffer: its size, and whether and how it stores depth.
@@ -82,21 +81,17 @@ class FrameCopy {
   app::Image linear_back_buffer() const;
   // The back buffer as it will be presented, row 0 at the top.
   app::DisplayImage read_back_buffer() const;
-  // Median time of one full-frame RGBA16F copy pass (glFinish and a clock), the unit the
-  // overhead is quoted in.
-  double copy_pass_ms(int repeats);
 
  private:
   void delete_targets();
   void choose_depth_format();
   // The back buffer's RGBA8 codes, row 0 at the top.
   std::vector<std::uint8_t> back_buffer_top_first() const;
-  GLuint copy_program_ = 0, vertex_array_ = 0;
   gl::EightBitTexture colour_in_;   // the back buffer's bytes as they are
   gl::EightBitTexture colour_out_;  // the chain's result, as it will be presented
   Transfer transfer_ = Transfer::SRGB;
   GLuint depth_ = 0;              // the default framebuffer's depth format, or 0
-  GLuint read_framebuffer_ = 0, out_framebuffer_ = 0, scratch_framebuffer_ = 0;
+  GLuint read_framebuffer_ = 0, out_framebuffer_ = 0;
   GLenum depth_format_ = 0;
   bool back_buffer_srgb_ = false;  // the back buffer encodes sRGB as GL_FRAMEBUFFER_SRGB draws into it
   bool depth_lost_ = false;

@@ -22,7 +22,9 @@ class CopyPass {
 
 // The median time in milliseconds of `repeats` copy passes between two new RGBA16F textures of
 // that size, each timed with glFinish around it and a clock (after three not counted): the unit
-// where no timer query is trusted (a software renderer). GL current.
+// where no timer query is trusted (a software renderer). GL current. It changes bindings, the
+// viewport and blending: inside a context the host does not own (pfx-inject's), call it under a
+// GlStateGuard, which puts the application's state back.
 double median_copy_pass_ms(int width, int height, int repeats);
 
-}  // namespace pfx::bench
+}  // namespace pfx::gl
