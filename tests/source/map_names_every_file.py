@@ -36,10 +36,11 @@ def names_in(map_text):
 
 
 def product_files(root, folders):
-    """The files git tracks under the folders (a build tree or an editor's files are not code);
-    every file under them when the root is not a git checkout (a source tarball)."""
-    listed = subprocess.run(["git", "-C", root, "ls-files", "--", *folders],
-                            capture_output=True, text=True)
+    """The files under the folders that git tracks or would track (a new file not yet added counts,
+    a build tree or what .gitignore names does not); every file under them when the root is not a
+    git checkout (a source tarball)."""
+    listed = subprocess.run(["git", "-C", root, "ls-files", "--cached", "--others", "--exclude-standard", "--",
+                             *folders], capture_output=True, text=True)
     if listed.returncode == 0:
         return sorted(path for path in listed.stdout.split("\n") if path)
     found = []
