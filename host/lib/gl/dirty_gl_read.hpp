@@ -28,6 +28,17 @@ inline std::vector<double> get_integers(std::initializer_list<GLenum> pnames) {
   return values;
 }
 
+// An indexed state's values at one index (a draw buffer's, an image unit's), as glGetIntegeri_v reads them.
+inline std::vector<double> get_integers_at(std::initializer_list<GLenum> pnames, GLuint index) {
+  std::vector<double> values;
+  for (GLenum pname : pnames) {
+    GLint value = 0;
+    glGetIntegeri_v(pname, index, &value);
+    values.push_back(value);
+  }
+  return values;
+}
+
 inline std::vector<double> get_floats(GLenum pname, int count) {
   GLfloat v[4] = {0, 0, 0, 0};
   glGetFloatv(pname, v);
