@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "adapter_report.hpp"
+#include "adapter_rows.hpp"
 #include "cli_text.hpp"
 #include "copy_pass.hpp"
 #include "exit_codes.hpp"
@@ -34,17 +36,10 @@
 #include "plugin_directory.hpp"
 
 namespace fs = std::filesystem;
+using pfx::adapter_bench::Row;
 extern char** environ;
 
 namespace {
-
-struct Row {
-  std::string host, name, what;   // "ffmpeg", "pfx_bloom", the filter as given to the host
-  std::string baseline;           // the row whose time this one's extra is measured from ("" for none)
-  double ms_per_frame = 0;
-  std::string not_run = "";       // why the row was not measured ("" when it was)
-  bool fx_file = false;           // vkBasalt runs an FX file: whether it compiled is checked first
-};
 
 struct Options {
   int width = 1920, height = 1080;
@@ -196,44 +191,22 @@ std::vector<std::string> vkcube_command(const Row& row, int frames, const Option
   return argv;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options options;
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::fputs(kUsage, stdout);
-      return pfx::exit_code::kOk;
-    }
-  if (!parse(argc, argv, &options)) {
-    std::fputs(kUsage, stderr);
-    return pfx::exit_code::kUsage;
-  }
-  std::string error;
-  auto context = pfx::app::HeadlessContext::create(&error);
-  if (!context) {
-    std::fprintf(stderr, "pfx-adapter-bench: %s\n", error.c_str());
-    return pfx::exit_code::kInternal;
-  }
+// The variables the hosts run with: where they find the adapters beside this program, and where the
+// Vulkan loader finds pfx's layer.
+std::vector<std::string> host_environment() {
   const fs::path lib = fs::path(pfx::app::executable_directory()) / ".." / "lib";
   const char* data_dirs = std::getenv("XDG_DATA_DIRS");
-  const std::vector<std::string> environment = {
-      "FREI0R_PATH=" + (lib / "frei0r-1").string() + ":/usr/lib/frei0r-1",
-      "GST_PLUGIN_PATH=" + (lib / "gstreamer-1.0").string(), "GST_GL_PLATFORM=egl", "GST_GL_WINDOW=egl-device",
-      // Where the loader finds pfx's layer manifest in a build tree (pfx-inject does the same).
-      "XDG_DATA_DIRS=" + (lib / ".." / "share").string() + ":" + (data_dirs ? data_dirs : "/usr/local/share:/usr/share")};
-  const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height);
-  const fs::path scratch = fs::temp_directory_path() / ("pfx-adapter-bench-" + std::to_string(getpid()));
-  fs::create_directories(scratch);
-  const std::string clip = (scratch / "clip.mkv").string();
-  if (timed_run({"ffmpeg", "-hide_banner", "-loglevel", "error", "-f", "lavfi", "-i", "testsrc2=size=" + size + ":rate=25",
-                 "-frames:v", std::to_string(options.long_frames), "-c:v", "ffv1", "-y", clip},
-                environment) < 0) {
-    std::fprintf(stderr, "pfx-adapter-bench: ffmpeg could not make the clip\n");
-    return pfx::exit_code::kInternal;
-  }
+  return {"FREI0R_PATH=" + (lib / "frei0r-1").string() + ":/usr/lib/frei0r-1",
+          "GST_PLUGIN_PATH=" + (lib / "gstreamer-1.0").string(), "GST_GL_PLATFORM=egl", "GST_GL_WINDOW=egl-device",
+          // Where the loader finds pfx's layer manifest in a build tree (pfx-inject does the same).
+          "XDG_DATA_DIRS=" + (lib / ".." / "share").string() + ":" +
+              (data_dirs ? data_dirs : "/usr/local/share:/usr/share")};
+}
 
-  std::vector<Row> rows = options.vulkan ? vulkan_rows(scratch, options) : std::vector<Row>{
+// ffmpeg's and GStreamer's rows: each host alone, through pfx's adapters, and through what a user
+// would pick instead.
+std::vector<Row> video_host_rows() {
+  return {
       {"ffmpeg", "no filter (decode, to RGBA)", "format=rgba", ""},
       {"ffmpeg", "pfx_chain chain=none", "format=rgba,frei0r=filter_name=pfx_chain:filter_params=none",
        "no filter (decode, to RGBA)"},
@@ -254,11 +227,29 @@ int main(int argc, char** argv) {
       {"gst-launch-1.0", "pfxfilter chain=bloom,bloom", "pfxfilter chain=\"bloom,bloom\" !", "pfxfilter chain=bloom"},
       {"gst-launch-1.0", "gleffects effect=glow", "gleffects effect=glow !", "no filter (upload, download)"},
   };
-  auto command = [&](const Row& row, int frames) {
+}
+
+// How the rows' host programs run: with the adapters' environment, ffmpeg on the clip.
+struct Hosts {
+  const Options& options;
+  std::vector<std::string> environment;
+  std::string clip;
+
+  // The clip ffmpeg's rows decode: the long run's frames of a test pattern, losslessly.
+  bool make_clip() const {
+    const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height);
+    return timed_run({"ffmpeg", "-hide_banner", "-loglevel", "error", "-f", "lavfi", "-i",
+                      "testsrc2=size=" + size + ":rate=25", "-frames:v", std::to_string(options.long_frames), "-c:v",
+                      "ffv1", "-y", clip},
+                     environment) >= 0;
+  }
+
+  // The row's host for `frames` frames.
+  std::vector<std::string> command(const Row& row, int frames) const {
     if (row.host == "vkcube") return vkcube_command(row, frames, options);
     if (row.host == "ffmpeg")
-      return std::vector<std::string>{"ffmpeg", "-hide_banner", "-loglevel", "error", "-i", clip, "-frames:v",
-                                      std::to_string(frames), "-vf", row.what, "-f", "null", "-"};
+      return {"ffmpeg", "-hide_banner", "-loglevel", "error", "-i", clip, "-frames:v",
+              std::to_string(frames), "-vf", row.what, "-f", "null", "-"};
     std::vector<std::string> argv = {"gst-launch-1.0", "-q"};
     const std::string pipeline = "videotestsrc num-buffers=" + std::to_string(frames) +
                                  " pattern=smpte ! video/x-raw,format=RGBA,width=" + std::to_string(options.width) +
@@ -266,84 +257,98 @@ int main(int argc, char** argv) {
                                  " gldownload ! fakesink sync=false";
     for (const auto& word : words(pipeline)) argv.push_back(word);
     return argv;
-  };
+  }
+};
 
+// vkBasalt goes on without an effect it cannot compile (it logs "vkBasalt err:" and vkcube ends
+// with 0), which would time plain vkcube: one frame first, its log read. False, with the row's
+// not_run saying why, when vkBasalt could not compile it or vkcube failed.
+bool fx_file_compiles(const Hosts& hosts, const fs::path& scratch, Row* row) {
+  const fs::path log = scratch / "vkbasalt-check.log";
+  const bool ran = timed_run(hosts.command(*row, 1), hosts.environment, log.string()) >= 0;
+  std::ifstream in(log);
+  std::string last;
+  for (std::string line; std::getline(in, line); last = line)
+    if (line.rfind("vkBasalt err:", 0) == 0) {
+      row->not_run = line.substr(13);
+      break;
+    }
+  if (row->not_run.empty() && !ran) row->not_run = " vkcube failed; its last words: " + last;
+  if (row->not_run.empty()) return true;
+  std::fprintf(stderr, "%s %s: not measured:%s\n", row->host.c_str(), row->name.c_str(), row->not_run.c_str());
+  return false;
+}
+
+// The row's time a frame: the difference of a long and a short run's wall times over the
+// difference of their frame counts, the median of --runs. False when a run failed.
+bool measure_row(const Hosts& hosts, Row* row) {
+  const Options& options = hosts.options;
+  std::vector<double> per_frame;
+  for (int run = 0; run < options.runs; ++run) {
+    const double short_run = timed_run(hosts.command(*row, options.short_frames), hosts.environment);
+    const double long_run = timed_run(hosts.command(*row, options.long_frames), hosts.environment);
+    if (short_run < 0 || long_run < 0) {
+      std::fprintf(stderr, "pfx-adapter-bench: %s %s failed\n", row->host.c_str(), row->name.c_str());
+      return false;
+    }
+    per_frame.push_back(1000 * (long_run - short_run) / (options.long_frames - options.short_frames));
+  }
+  row->ms_per_frame = median(per_frame);
+  std::fprintf(stderr, "%s %s: %.1f ms a frame\n", row->host.c_str(), row->name.c_str(), row->ms_per_frame);
+  return true;
+}
+
+bool asks_for_help(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") return true;
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (asks_for_help(argc, argv)) {
+    std::fputs(kUsage, stdout);
+    return pfx::exit_code::kOk;
+  }
+  if (!parse(argc, argv, &options)) {
+    std::fputs(kUsage, stderr);
+    return pfx::exit_code::kUsage;
+  }
+  std::string error;
+  auto context = pfx::app::HeadlessContext::create(&error);
+  if (!context) {
+    std::fprintf(stderr, "pfx-adapter-bench: %s\n", error.c_str());
+    return pfx::exit_code::kInternal;
+  }
+  const fs::path scratch = fs::temp_directory_path() / ("pfx-adapter-bench-" + std::to_string(getpid()));
+  fs::create_directories(scratch);
+  const Hosts hosts{options, host_environment(), (scratch / "clip.mkv").string()};
+  if (!hosts.make_clip()) {
+    std::fprintf(stderr, "pfx-adapter-bench: ffmpeg could not make the clip\n");
+    return pfx::exit_code::kInternal;
+  }
+
+  std::vector<Row> rows = options.vulkan ? vulkan_rows(scratch, options) : video_host_rows();
   const double copy_before = pfx::gl::median_copy_pass_ms(options.width, options.height, 15);
   for (auto& row : rows) {
-    // vkBasalt goes on without an effect it cannot compile (it logs "vkBasalt err:" and vkcube ends
-    // with 0), which would time plain vkcube: one frame first, its log read.
-    if (row.fx_file) {
-      const fs::path log = scratch / "vkbasalt-check.log";
-      const bool ran = timed_run(command(row, 1), environment, log.string()) >= 0;
-      std::ifstream in(log);
-      std::string last;
-      for (std::string line; std::getline(in, line); last = line)
-        if (line.rfind("vkBasalt err:", 0) == 0) {
-          row.not_run = line.substr(13);
-          break;
-        }
-      if (row.not_run.empty() && !ran) row.not_run = " vkcube failed; its last words: " + last;
-      if (!row.not_run.empty()) {
-        std::fprintf(stderr, "%s %s: not measured:%s\n", row.host.c_str(), row.name.c_str(), row.not_run.c_str());
-        continue;
-      }
-    }
-    std::vector<double> per_frame;
-    for (int run = 0; run < options.runs; ++run) {
-      const double short_run = timed_run(command(row, options.short_frames), environment);
-      const double long_run = timed_run(command(row, options.long_frames), environment);
-      if (short_run < 0 || long_run < 0) {
-        std::fprintf(stderr, "pfx-adapter-bench: %s %s failed\n", row.host.c_str(), row.name.c_str());
-        return pfx::exit_code::kInternal;
-      }
-      per_frame.push_back(1000 * (long_run - short_run) / (options.long_frames - options.short_frames));
-    }
-    row.ms_per_frame = median(per_frame);
-    std::fprintf(stderr, "%s %s: %.1f ms a frame\n", row.host.c_str(), row.name.c_str(), row.ms_per_frame);
+    if (row.fx_file && !fx_file_compiles(hosts, scratch, &row)) continue;
+    if (!measure_row(hosts, &row)) return pfx::exit_code::kInternal;
   }
   const double copy_after = pfx::gl::median_copy_pass_ms(options.width, options.height, 15);
-  const double copy = (copy_before + copy_after) / 2;
   fs::remove_all(scratch);
 
-  std::printf("renderer: %s\nsize: %s, frames %d and %d, median of %d runs; copy pass %.2f ms (%.2f before, %.2f after)\n\n",
-              context->renderer().c_str(), size.c_str(), options.short_frames, options.long_frames, options.runs, copy,
-              copy_before, copy_after);
-  std::printf("| host | filter | frames/s | ms a frame | added ms a frame | added, in copy passes |\n|---|---|---|---|---|---|\n");
-  std::string json = "{\"renderer\": \"" + context->renderer() + "\", \"size\": \"" + size + "\", \"copy_pass_ms\": " +
-                     std::to_string(copy) + ", \"rows\": [";
-  for (const auto& row : rows) {
-    if (!row.not_run.empty()) {
-      std::printf("| %s | %s | | | | not measured:%s |\n", row.host.c_str(), row.name.c_str(), row.not_run.c_str());
-      json += std::string(&row == &rows.front() ? "" : ", ") + "{\"host\": \"" + row.host + "\", \"filter\": \"" +
-              row.name + "\", \"not_run\": true}";
-      continue;
-    }
-    double base = 0;
-    for (const auto& other : rows)
-      if (other.host == row.host && other.name == row.baseline) base = other.ms_per_frame;
-    const double added = row.baseline.empty() ? 0 : row.ms_per_frame - base;
-    std::printf("| %s | %s | %.1f | %.1f | %s | %s |\n", row.host.c_str(), row.name.c_str(), 1000 / row.ms_per_frame,
-                row.ms_per_frame, row.baseline.empty() ? "" : std::to_string(added).substr(0, 6).c_str(),
-                row.baseline.empty() ? "" : std::to_string(added / copy).substr(0, 5).c_str());
-    json += std::string(&row == &rows.front() ? "" : ", ") + "{\"host\": \"" + row.host + "\", \"filter\": \"" + row.name +
-            "\", \"ms_per_frame\": " + std::to_string(row.ms_per_frame) + ", \"added_ms\": " + std::to_string(added) + "}";
-  }
-  json += "]}\n";
-  // A row measured from another filtered row adds a second copy of the same effect: only its
-  // passes. What the first copy added beyond that is the way in and out of pfx around it.
-  for (const auto& row : rows) {
-    const Row* once = nullptr;
-    for (const auto& other : rows)
-      if (other.host == row.host && other.name == row.baseline && !other.baseline.empty()) once = &other;
-    if (!once || !row.not_run.empty() || !once->not_run.empty()) continue;
-    double base = 0;
-    for (const auto& other : rows)
-      if (other.host == once->host && other.name == once->baseline) base = other.ms_per_frame;
-    const double around = (once->ms_per_frame - base) - (row.ms_per_frame - once->ms_per_frame);
-    std::printf("\n%s, %s: beyond its effects' passes (what it added less what the second copy added): %.2f ms, "
-                "%.2f copy passes\n",
-                row.host.c_str(), once->name.c_str(), around, around / copy);
-  }
-  if (!options.json.empty()) std::ofstream(options.json) << json;
+  pfx::adapter_bench::RunFacts facts;
+  facts.renderer = context->renderer();
+  facts.size = std::to_string(options.width) + "x" + std::to_string(options.height);
+  facts.short_frames = options.short_frames;
+  facts.long_frames = options.long_frames;
+  facts.runs = options.runs;
+  facts.copy_ms = (copy_before + copy_after) / 2;
+  facts.copy_before_ms = copy_before;
+  facts.copy_after_ms = copy_after;
+  pfx::adapter_bench::print_report(rows, facts);
+  if (!options.json.empty()) std::ofstream(options.json) << pfx::adapter_bench::report_json(rows, facts);
   return pfx::exit_code::kOk;
 }

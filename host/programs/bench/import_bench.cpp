@@ -148,6 +148,103 @@ bool write_text(const std::string& path, const std::string& text, std::string* e
   }, error);
 }
 
+// The folder the files are generated in: --dir, or a new one under /tmp.
+bool make_work_dir(ImportBenchOptions* options) {
+  if (options->work_dir.empty())
+    options->work_dir = (fs::temp_directory_path() / ("pfx-bench-import-" + std::to_string(::getpid()))).string();
+  std::error_code ec;
+  fs::create_directories(options->work_dir, ec);
+  if (ec) {
+    std::fprintf(stderr, "pfx-bench: cannot create %s: %s\n", options->work_dir.c_str(), ec.message().c_str());
+    return false;
+  }
+  return true;
+}
+
+// One file's rows: every loader at each of its thread counts; a loader not built in is a failed row.
+void add_file_rows(const ImportBenchOptions& options, const std::vector<std::string>& built, ObjLayout layout,
+                   double size, const GeneratedObj& file, std::vector<ImportRow>* rows) {
+  for (const auto& loader : options.loaders) {
+    const std::vector<unsigned> thread_counts = loader_is_multithreaded(loader) ? options.threads
+                                                                                : std::vector<unsigned>{1};
+    for (unsigned threads : thread_counts) {
+      ImportRow row;
+      row.layout = layout;
+      row.size_mb = size;
+      row.bytes = file.bytes;
+      row.loader = loader;
+      row.threads = threads;
+      if (std::find(built.begin(), built.end(), loader) == built.end())
+        row.counts.error = "not built into this pfx-bench (package missing at configure time)";
+      rows->push_back(row);
+    }
+  }
+}
+
+// Every row's loads in rounds — one load of each row per round — so that whatever changes on
+// the machine during the run (memory handed back to the hypervisor, other work) falls on every
+// loader alike instead of on whichever row came first. A row stops at its first failed load.
+void measure_in_rounds(const ImportBenchOptions& options, const GeneratedObj& file, ObjLayout layout,
+                       std::vector<ImportRow>::iterator first, std::vector<ImportRow>::iterator last) {
+  const size_t count = static_cast<size_t>(last - first);
+  std::vector<std::vector<double>> seconds(count), cpu_seconds(count);
+  std::vector<bool> stopped(count, false);
+  for (size_t i = 0; i < count; ++i) stopped[i] = !first[i].counts.error.empty();
+  for (int r = 0; r < options.runs; ++r) {
+    for (size_t i = 0; i < count; ++i) {
+      ImportRow& row = first[i];
+      if (stopped[i]) continue;
+      std::fprintf(stderr, "pfx-bench: round %d of %d, %s, %u thread(s), %s, %.0f MB\n", r + 1, options.runs,
+                   row.loader.c_str(), row.threads, layout_name(layout), file.bytes / 1e6);
+      LoadMeasure m = measure_in_new_process(row.loader, file.path, row.threads, options.plugin_dirs);
+      row.counts = m.counts;
+      if (!m.counts.ok) {
+        stopped[i] = true;
+        continue;
+      }
+      seconds[i].push_back(m.seconds);
+      cpu_seconds[i].push_back(m.cpu_seconds);
+      row.peak_bytes = std::max(row.peak_bytes, m.peak_bytes);
+      ++row.runs;
+    }
+  }
+  for (size_t i = 0; i < count; ++i) {
+    first[i].median_seconds = median(seconds[i]);
+    first[i].median_cpu_seconds = median(cpu_seconds[i]);
+  }
+}
+
+// A file in each layout at each size, generated and read into the page cache, then its rows
+// measured. False with *error when a file cannot be made; the rows so far stay.
+bool measure_files(const ImportBenchOptions& options, const std::vector<std::string>& built,
+                   std::vector<ImportRow>* rows, std::string* error) {
+  for (ObjLayout layout : options.layouts)
+    for (double size : options.sizes_mb) {
+      GeneratedObj file;
+      std::fprintf(stderr, "pfx-bench: generating a %g MB OBJ file (%s) in %s\n", size, layout_name(layout),
+                   options.work_dir.c_str());
+      if (!generate_obj(options.work_dir, layout, size, &file, error) || !warm_file(file.path, error)) return false;
+      const size_t first_row = rows->size();
+      add_file_rows(options, built, layout, size, file, rows);
+      measure_in_rounds(options, file, layout, rows->begin() + static_cast<long>(first_row), rows->end());
+    }
+  return true;
+}
+
+// DIR/import.json and DIR/import.md, and the tables on stdout.
+bool write_reports(const std::vector<ImportRow>& rows, const ImportBenchOptions& options, std::string* error) {
+  std::error_code ec;
+  fs::create_directories(options.out_dir, ec);
+  const std::string text = markdown(rows, options);
+  if (!write_text(options.out_dir + "/import.json", json(rows).dump(2) + "\n", error) ||
+      !write_text(options.out_dir + "/import.md", text, error))
+    return false;
+  std::fputs(text.c_str(), stdout);
+  std::fprintf(stderr, "pfx-bench: wrote %s/import.json, %s/import.md\n", options.out_dir.c_str(),
+               options.out_dir.c_str());
+  return true;
+}
+
 }  // namespace
 
 std::string import_bench_usage() {
@@ -257,85 +354,21 @@ int import_bench_main(const std::vector<std::string>& args) {
     std::fprintf(stderr, "pfx-bench: warning: %s\n", error.c_str());
   const std::vector<std::string> built = available_loaders();
 
-  bool temporary_dir = options.work_dir.empty();
-  std::error_code ec;
-  if (temporary_dir) options.work_dir = (fs::temp_directory_path() / ("pfx-bench-import-" + std::to_string(::getpid()))).string();
-  fs::create_directories(options.work_dir, ec);
-  if (ec) {
-    std::fprintf(stderr, "pfx-bench: cannot create %s: %s\n", options.work_dir.c_str(), ec.message().c_str());
-    return exit_code::kInternal;
-  }
-
+  const bool temporary_dir = options.work_dir.empty();
+  if (!make_work_dir(&options)) return exit_code::kInternal;
   std::vector<ImportRow> rows;
   int code = exit_code::kOk;
-  for (ObjLayout layout : options.layouts)
-  for (double size : options.sizes_mb) {
-    if (code != 0) break;
-    GeneratedObj file;
-    std::fprintf(stderr, "pfx-bench: generating a %g MB OBJ file (%s) in %s\n", size, layout_name(layout),
-                 options.work_dir.c_str());
-    if (!generate_obj(options.work_dir, layout, size, &file, &message) || !warm_file(file.path, &message)) {
-      std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
-      code = exit_code::kInternal;
-      break;
-    }
-    // Every row's loads in rounds — one load of each row per round — so that whatever changes on
-    // the machine during the run (memory handed back to the hypervisor, other work) falls on every
-    // loader alike instead of on whichever row came first.
-    const int runs = options.runs;
-    const size_t first_row = rows.size();
-    for (const auto& loader : options.loaders) {
-      const std::vector<unsigned> thread_counts =
-          loader_is_multithreaded(loader) ? options.threads : std::vector<unsigned>{1};
-      for (unsigned threads : thread_counts) {
-        ImportRow row;
-        row.layout = layout;
-        row.size_mb = size;
-        row.bytes = file.bytes;
-        row.loader = loader;
-        row.threads = threads;
-        if (std::find(built.begin(), built.end(), loader) == built.end())
-          row.counts.error = "not built into this pfx-bench (package missing at configure time)";
-        rows.push_back(row);
-      }
-    }
-    std::vector<std::vector<double>> seconds(rows.size()), cpu_seconds(rows.size());
-    std::vector<bool> stopped(rows.size(), false);  // not built, or a load failed
-    for (size_t i = first_row; i < rows.size(); ++i) stopped[i] = !rows[i].counts.error.empty();
-    for (int r = 0; r < runs; ++r) {
-      for (size_t i = first_row; i < rows.size(); ++i) {
-        ImportRow& row = rows[i];
-        if (stopped[i]) continue;
-        std::fprintf(stderr, "pfx-bench: round %d of %d, %s, %u thread(s), %s, %.0f MB\n", r + 1, runs, row.loader.c_str(),
-                     row.threads, layout_name(layout), file.bytes / 1e6);
-        LoadMeasure m = measure_in_new_process(row.loader, file.path, row.threads, options.plugin_dirs);
-        row.counts = m.counts;
-        if (!m.counts.ok) {
-          stopped[i] = true;
-          continue;
-        }
-        seconds[i].push_back(m.seconds);
-        cpu_seconds[i].push_back(m.cpu_seconds);
-        row.peak_bytes = std::max(row.peak_bytes, m.peak_bytes);
-        ++row.runs;
-      }
-    }
-    for (size_t i = first_row; i < rows.size(); ++i) {
-      rows[i].median_seconds = median(seconds[i]);
-      rows[i].median_cpu_seconds = median(cpu_seconds[i]);
-    }
+  if (!measure_files(options, built, &rows, &message)) {
+    std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
+    code = exit_code::kInternal;
   }
+  std::error_code ec;
   if (temporary_dir && !options.keep_files) fs::remove_all(options.work_dir, ec);
 
-  fs::create_directories(options.out_dir, ec);
-  const std::string text = markdown(rows, options);
-  if (!write_text(options.out_dir + "/import.json", json(rows).dump(2) + "\n", &message) ||
-      !write_text(options.out_dir + "/import.md", text, &message)) {
+  if (!write_reports(rows, options, &message)) {
     std::fprintf(stderr, "pfx-bench: %s\n", message.c_str());
     return exit_code::kInternal;
   }
-  std::fputs(text.c_str(), stdout);
-  std::fprintf(stderr, "pfx-bench: wrote %s/import.json, %s/import.md\n", options.out_dir.c_str(), options.out_dir.c_str());
   return code;
 }
 

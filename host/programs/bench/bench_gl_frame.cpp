@@ -1,0 +1,39 @@
+#include "bench_gl_frame.hpp"
+
+#include <algorithm>
+
+#include "frame_description.hpp"
+#include "image_texture.hpp"
+
+namespace pfx::bench {
+
+GlBenchFrame upload_gl_bench_frame(const BenchFrame& input, const pfx::app::CameraOptions& camera) {
+  const pfx::app::Image& image = input.image;
+  GlBenchFrame gl;
+  const int width = gl.width = image.width, height = gl.height = image.height;
+  gl.color = pfx::app::upload_color_texture(image);
+  gl.depth = pfx::app::upload_depth_texture(image);
+  gl.output = pfx::app::create_color_texture(width, height);
+  gl.color_gl = pfx::app::flip_rows(image.rgba, width, height, 4);
+  if (!image.depth.empty()) gl.depth_gl = pfx::app::flip_rows(image.depth, width, height, 1);
+  if (!input.truth.empty()) gl.truth_gl = pfx::app::flip_rows(input.truth, width, height, 4);
+  gl.mask_gl.resize(input.halo_mask.size());
+  for (int y = 0; y < height && !gl.mask_gl.empty(); ++y)
+    std::copy_n(input.halo_mask.begin() + static_cast<long>(y) * width, width,
+                gl.mask_gl.begin() + static_cast<long>(height - 1 - y) * width);
+
+  gl.frame = pfx::app::describe_frame(
+      width, height, PFX_INPUT_COLOR | (image.has_depth() ? static_cast<uint32_t>(PFX_INPUT_DEPTH) : 0u),
+      PFX_DEPTH_LINEAR, pfx::app::make_camera(camera, width, height));
+  gl.textures.color = gl.color;
+  gl.textures.depth = gl.depth;
+  return gl;
+}
+
+void release_gl_bench_frame(const GlBenchFrame& frame) {
+  pfx::app::delete_texture(frame.color);
+  pfx::app::delete_texture(frame.depth);
+  pfx::app::delete_texture(frame.output);
+}
+
+}  // namespace pfx::bench
