@@ -180,13 +180,10 @@ void set_frame_uniforms(GLuint program, const pfx_frame& frame, const Perspectiv
                      static_cast<float>(std::log(far_depth / near_depth)));
 }
 
-// The first pass of a frame: prepare the lights, cull what the mode culls on the CPU, upload.
-pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
-  const pfx_frame& frame = *context->frame;
-  const Settings s = settings_from(context->params);
-  inst->settings = s;
-  Perspective perspective;
-  if (!check_frame(inst, frame, s, &perspective)) return PFX_INVALID_ARGUMENT;
+// The lights this frame uploads (every one for brute force, else those in view) and the CPU
+// grid's lists; what the last frame's lists left is cleared.
+pfx_status cull_on_cpu(Instance* inst, const pfx_frame& frame, const Perspective& perspective) {
+  const Settings& s = inst->settings;
   const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
   try {
     if (s.mode == MODE_BRUTE) {
@@ -217,13 +214,22 @@ pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
     log_error(inst, "out of memory culling " + std::to_string(inst->set.lights.size()) + " lights");
     return PFX_OUT_OF_MEMORY;
   }
+  return PFX_OK;
+}
 
+// Whether every light in view fits under llvmpipe's loop guard (always, elsewhere); logs when not.
+bool within_loop_guard(Instance* inst) {
+  const Settings& s = inst->settings;
   const uint64_t guard = s.mode == MODE_CLUSTERED ? inst->loop_guard_lights * 4 / 9 : inst->loop_guard_lights;
-  if (guard && inst->visible.size() > guard) {
-    log_error(inst, std::to_string(inst->visible.size()) + " lights in view: more than llvmpipe's loop guard lets a " +
-                        kModeNames[s.mode] + " frame sum (" + std::to_string(guard) + ")");
-    return PFX_UNSUPPORTED;
-  }
+  if (!guard || inst->visible.size() <= guard) return true;
+  log_error(inst, std::to_string(inst->visible.size()) + " lights in view: more than llvmpipe's loop guard lets a " +
+                      kModeNames[s.mode] + " frame sum (" + std::to_string(guard) + ")");
+  return false;
+}
+
+// One slot of the upload ring holds the lights, then the CPU grid's list heads and indices, each
+// at the shader storage alignment; the lights are bound for the passes that read them.
+pfx_status upload_lights(Instance* inst) {
   const size_t alignment = static_cast<size_t>(std::max(inst->ssbo_alignment, 4));
   inst->lights_offset = 0;
   inst->lights_bytes = std::max<size_t>(1, inst->visible.size()) * sizeof(GpuLight);
@@ -243,51 +249,71 @@ pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
   auto* lights = reinterpret_cast<GpuLight*>(mapping + inst->lights_offset);
   for (size_t k = 0; k < inst->visible.size(); ++k) lights[k] = inst->set.lights[inst->visible[k]];
   if (inst->heads_bytes) std::memcpy(mapping + inst->heads_offset, inst->grid.heads.data(), inst->heads_bytes);
-  if (!inst->grid.indices.empty() && s.mode == MODE_CPU8X4)
+  if (!inst->grid.indices.empty() && inst->settings.mode == MODE_CPU8X4)
     std::memcpy(mapping + inst->indices_offset, inst->grid.indices.data(), inst->grid.indices.size() * 4);
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, sh::SSBO_LIGHTS, inst->ring.buffer(),
                     static_cast<GLintptr>(inst->lights_offset), static_cast<GLsizeiptr>(inst->lights_bytes));
+  return PFX_OK;
+}
 
-  if (s.mode == MODE_TILED || s.mode == MODE_CLUSTERED) {
-    const bool clustered = s.mode == MODE_CLUSTERED;
-    inst->tile_size = clustered ? s.cluster_tile_size : s.tile_size;
-    inst->tiles_x = (w + inst->tile_size - 1) / inst->tile_size;
-    inst->tiles_y = (h + inst->tile_size - 1) / inst->tile_size;
-    inst->list_mode = clustered ? sh::LIST_CLUSTERS : sh::LIST_TILES_BY_SIZE;
-    ListShape shape;
-    shape.clustered = clustered;
-    shape.tiles_x = inst->tiles_x;
-    shape.tiles_y = inst->tiles_y;
-    shape.slices = s.slices;
-    const uint64_t lists = shape.lists();
-    if (static_cast<GLint64>(lists * 8) > inst->max_block_bytes) {
-      log_error(inst, std::to_string(lists) + " lists need more than this GL's shader storage block limit of " +
-                          std::to_string(inst->max_block_bytes) + " bytes: use larger tiles or fewer slices");
-      return PFX_OUT_OF_MEMORY;
-    }
-    ListGrid grid;
-    grid.width = w;
-    grid.height = h;
-    grid.tile_size = inst->tile_size;
-    grid.slices = clustered ? s.slices : 0;
-    grid.slice_near = frame.camera.near_plane;
-    grid.slice_far = std::isfinite(frame.camera.far_plane) ? double(frame.camera.far_plane)
-                                                            : 1000.0 * frame.camera.near_plane;
-    inst->list_bound = list_entries_bound(inst->set, inst->visible, perspective, grid);
-    // The index buffer is one shader storage block: its size limit, and the user's budget.
-    uint64_t budget = std::min<uint64_t>(uint64_t(inst->max_block_bytes) / 4, 0xffffffffull);
-    if (s.max_list_indices >= 1) budget = std::min<uint64_t>(budget, uint64_t(s.max_list_indices));
-    const GLuint program = inst->gpu_lists.program(clustered);
-    set_frame_uniforms(program, frame, perspective, static_cast<uint32_t>(inst->visible.size()), *inst);
-    std::string error;
-    if (!inst->gpu_lists.build(inst->ring.slot(), shape, inst->list_bound, budget, &error)) {
-      log_error(inst, error);
-      return PFX_OUT_OF_MEMORY;
-    }
-    inst->index_capacity = inst->gpu_lists.index_capacity(inst->ring.slot());
-    inst->list_stats.lists = lists;
-    inst->gpu_stats = true;
+// The tiled and clustered modes: per-tile or per-cluster lists built on the GPU into the ring
+// slot's buffers, within the storage block limit and the user's index budget.
+pfx_status build_gpu_lists(Instance* inst, const pfx_frame& frame, const Perspective& perspective) {
+  const Settings& s = inst->settings;
+  const int w = static_cast<int>(frame.width), h = static_cast<int>(frame.height);
+  const bool clustered = s.mode == MODE_CLUSTERED;
+  inst->tile_size = clustered ? s.cluster_tile_size : s.tile_size;
+  inst->tiles_x = (w + inst->tile_size - 1) / inst->tile_size;
+  inst->tiles_y = (h + inst->tile_size - 1) / inst->tile_size;
+  inst->list_mode = clustered ? sh::LIST_CLUSTERS : sh::LIST_TILES_BY_SIZE;
+  ListShape shape;
+  shape.clustered = clustered;
+  shape.tiles_x = inst->tiles_x;
+  shape.tiles_y = inst->tiles_y;
+  shape.slices = s.slices;
+  const uint64_t lists = shape.lists();
+  if (static_cast<GLint64>(lists * 8) > inst->max_block_bytes) {
+    log_error(inst, std::to_string(lists) + " lists need more than this GL's shader storage block limit of " +
+                        std::to_string(inst->max_block_bytes) + " bytes: use larger tiles or fewer slices");
+    return PFX_OUT_OF_MEMORY;
   }
+  ListGrid grid;
+  grid.width = w;
+  grid.height = h;
+  grid.tile_size = inst->tile_size;
+  grid.slices = clustered ? s.slices : 0;
+  grid.slice_near = frame.camera.near_plane;
+  grid.slice_far = std::isfinite(frame.camera.far_plane) ? double(frame.camera.far_plane)
+                                                         : 1000.0 * frame.camera.near_plane;
+  inst->list_bound = list_entries_bound(inst->set, inst->visible, perspective, grid);
+  // The index buffer is one shader storage block: its size limit, and the user's budget.
+  uint64_t budget = std::min<uint64_t>(uint64_t(inst->max_block_bytes) / 4, 0xffffffffull);
+  if (s.max_list_indices >= 1) budget = std::min<uint64_t>(budget, uint64_t(s.max_list_indices));
+  const GLuint program = inst->gpu_lists.program(clustered);
+  set_frame_uniforms(program, frame, perspective, static_cast<uint32_t>(inst->visible.size()), *inst);
+  std::string error;
+  if (!inst->gpu_lists.build(inst->ring.slot(), shape, inst->list_bound, budget, &error)) {
+    log_error(inst, error);
+    return PFX_OUT_OF_MEMORY;
+  }
+  inst->index_capacity = inst->gpu_lists.index_capacity(inst->ring.slot());
+  inst->list_stats.lists = lists;
+  inst->gpu_stats = true;
+  return PFX_OK;
+}
+
+// The first pass of a frame: prepare the lights, cull what the mode culls on the CPU, upload, and
+// in the GPU modes build the lists.
+pfx_status prepare(Instance* inst, const pfx_pass_context* context) {
+  const pfx_frame& frame = *context->frame;
+  const Settings s = settings_from(context->params);
+  inst->settings = s;
+  Perspective perspective;
+  if (!check_frame(inst, frame, s, &perspective)) return PFX_INVALID_ARGUMENT;
+  if (const pfx_status culled = cull_on_cpu(inst, frame, perspective); culled != PFX_OK) return culled;
+  if (!within_loop_guard(inst)) return PFX_UNSUPPORTED;
+  if (const pfx_status uploaded = upload_lights(inst); uploaded != PFX_OK) return uploaded;
+  if (s.mode == MODE_TILED || s.mode == MODE_CLUSTERED) return build_gpu_lists(inst, frame, perspective);
   return PFX_OK;
 }
 

@@ -127,12 +127,8 @@ pfx::app::CameraOptions make_camera(double fovy, double near_plane, double far_p
   return camera;
 }
 
-}  // namespace
-
-PYBIND11_MODULE(pfx, m) {
-  m.doc() = "pfx post effects on numpy pictures, headless (docs/python.md)";
-  m.attr("__version__") = PFX_VERSION;
-  m.attr("__license__") = PFX_LICENSE;
+// pfx.Error and its subclass pfx.ParameterError, which the chain's C++ exceptions become.
+void bind_errors(py::module_& m) {
   static py::exception<pfx::python::Error> error(m, "Error", PyExc_RuntimeError);
   static py::exception<pfx::python::ParameterError> parameter_error(m, "ParameterError", error.ptr());
   // Registered last, tried first: the subclass before its base.
@@ -145,7 +141,10 @@ PYBIND11_MODULE(pfx, m) {
       error(e.what());
     }
   });
+}
 
+// What the plugins offer and the lens a picture was seen through: pfx.effects() and pfx.Camera.
+void bind_descriptions(py::module_& m) {
   m.def("effects", &effects, "plugins"_a = py::none(),
         "The effects of the plugins found: a list of dicts with id, label, description, parameters (each with "
         "key, type, range, default...), plugin and plugin_path, as pfx-render --list --json describes them.");
@@ -161,7 +160,9 @@ PYBIND11_MODULE(pfx, m) {
                ", near=" + py::repr(py::float_(c.near_plane)).cast<std::string>() +
                ", far=" + py::repr(py::float_(c.far_plane)).cast<std::string>() + ")";
       });
+}
 
+void bind_chain(py::module_& m) {
   py::class_<PythonChain>(m, "Chain",
                           "Effects run in order over pictures, on an OpenGL 4.5 context of the chain's own. "
                           "Use one Chain from one thread at a time; several may run at once on different threads.")
@@ -215,8 +216,23 @@ PYBIND11_MODULE(pfx, m) {
         py::gil_scoped_release release;
         chain.close();
       });
+}
 
+void bind_import(py::module_& m) {
   m.def("import_model", &pfx::python::import_model, "path"_a, "plugins"_a = py::none(), "threads"_a = 0,
         "Imports a model file (OBJ...) through the importer plugins: positions, normals, uvs, colors, indices, "
         "submeshes as numpy arrays, with materials, bounds and warnings.");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(pfx, m) {
+  m.doc() = "pfx post effects on numpy pictures, headless (docs/python.md)";
+  m.attr("__version__") = PFX_VERSION;
+  m.attr("__license__") = PFX_LICENSE;
+  bind_errors(m);
+  // Camera before Chain, so that the signature of Chain.run names pfx.Camera.
+  bind_descriptions(m);
+  bind_chain(m);
+  bind_import(m);
 }

@@ -83,111 +83,205 @@ std::string view_usage() {
       "            file, 4 plugin or effect error (at start, or any frame of a scripted run)\n";
 }
 
-bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, std::string* error) {
+namespace {
+
+// What the arguments gave: the options, and what the checks of options that go together need
+// besides.
+struct Parsed {
   ViewOptions options;
   int inputs_given = 0;
   bool seed_given = false;
-  pfx::app::ArgReader args(list, error);
-  while (args.next()) {
-    const std::string& arg = args.arg();
-    std::string text;
-    if (arg == "-h" || arg == "--help") options.help = true;
-    else if (arg == "-v" || arg == "--verbose") options.verbose = true;
-    else if (arg == "--no-watch") options.watch = false;
-    else if (arg == "--hide-panels") options.hide_panels = true;
-    else if (arg == "--demo") options.input = ViewInput::DemoScene, ++inputs_given;
-    else if (arg == "--demo-image") options.input = ViewInput::DemoImage, ++inputs_given;
-    else if (arg == "--input") {
-      if (!args.value(&options.input_path)) return false;
-      options.input = ViewInput::Image;
-      ++inputs_given;
-    } else if (arg == "--scene") {
-      if (!args.value(&options.scene_path)) return false;
-      options.input = ViewInput::ModelScene;
-      ++inputs_given;
-    } else if (arg == "--depth") { if (!args.value(&options.depth_path)) return false; }
-    else if (arg == "--layer") { if (!args.value(&options.layer)) return false; }
-    else if (arg == "--preset") { if (!args.value(&options.preset)) return false; }
-    else if (arg == "--save-preset") { if (!args.value(&options.save_preset)) return false; }
-    else if (arg == "--screenshot") {
-      if (!args.value(&options.screenshot)) return false;
-      if (!ends_with(options.screenshot, ".png")) return args.fail("--screenshot " + options.screenshot + ": the file name must end in .png");
-    } else if (arg == "--window-shot") {
-      if (!args.value(&options.window_shot)) return false;
-      if (!ends_with(options.window_shot, ".png")) return args.fail("--window-shot " + options.window_shot + ": the file name must end in .png");
-    } else if (arg == "--shots") { if (!args.value(&options.shots_dir)) return false; }
-    else if (arg == "--plugins") {
-      if (!args.value(&options.plugin_dirs)) return false;
-    } else if (arg == "--set") {
-      if (!args.value(&options.sets)) return false;
-    } else if (arg == "--chain") {
-      if (!args.value(&text)) return false;
-      options.chain_given = true;
-      options.chain = split_list(text);
-    } else if (arg == "--size") {
-      if (!args.value(&text) || !parse_frame_size("--size", text, &options.width, &options.height, error)) return false;
-      options.size_given = true;
-    } else if (arg == "--window") {
-      if (!args.value(&text) || !parse_frame_size("--window", text, &options.window_width, &options.window_height, error))
-        return false;
-      options.window_given = true;
-    } else if (arg == "--camera") {
-      if (!args.value(&text) || !parse_camera_options(text, &options.camera, error)) return false;
-      for (const auto& key : option_keys(text)) options.camera_keys.push_back(key);
-    } else if (arg == "--lights") {
-      if (!args.value(&text) || !parse_light_count(text, &options.extra_lights, error)) return false;
-      options.lights_given = true;
-    } else if (arg == "--seed") {
-      if (!args.value(&text) || !parse_seed(text, &options.seed, error)) return false;
-      seed_given = true;
-    } else if (arg == "--attach") {
-      if (!args.value(&options.attach)) return false;
-    } else if (arg == "--timings") {
-      if (!args.value(&options.timings)) return false;
-    } else if (arg == "--edit") {
-      std::string text;
-      if (!args.value(&text)) return false;
-      const size_t colon = text.find(':');
-      ViewOptions::Edit edit;
-      if (colon == std::string::npos || !parse_count(text.substr(0, colon), &edit.frame) || edit.frame < 1 ||
-          text.find('=', colon) == std::string::npos)
-        return args.fail("--edit " + text + ": expected FRAME:EFFECT.PARAM=VALUE");
-      edit.assignment = text.substr(colon + 1);
-      options.edits.push_back(edit);
-    } else if (arg == "--frames") {
-      if (!args.value(&text)) return false;
-      if (!parse_count(text, &options.frames) || options.frames < 1 || options.frames > 1000000)
-        return args.fail("--frames " + text + ": expected a whole number from 1 to 1000000");
-    } else if (arg == "--exposure") {
-      if (!args.value(&text) || !parse_exposure(text, &options.tone.exposure_ev, error)) return false;
-      options.exposure_given = true;
-    } else if (arg == "--tone") {
-      if (!args.value(&text) || !parse_tone_curve(text, &options.tone.curve, error)) return false;
-      options.tone_given = true;
-    } else {
-      return args.unknown();
+};
+
+// Options without a value that set a switch.
+struct SwitchOption {
+  const char* name;
+  bool ViewOptions::*field;
+  bool value;
+};
+const SwitchOption kSwitchOptions[] = {
+    {"-h", &ViewOptions::help, true},           {"--help", &ViewOptions::help, true},
+    {"-v", &ViewOptions::verbose, true},        {"--verbose", &ViewOptions::verbose, true},
+    {"--no-watch", &ViewOptions::watch, false}, {"--hide-panels", &ViewOptions::hide_panels, true}};
+
+// Where the picture comes from; the inputs read from a file take its name as their value.
+struct InputOption {
+  const char* name;
+  ViewInput input;
+  std::string ViewOptions::*path;  // null for the built-in ones
+};
+const InputOption kInputOptions[] = {{"--demo", ViewInput::DemoScene, nullptr},
+                                     {"--demo-image", ViewInput::DemoImage, nullptr},
+                                     {"--input", ViewInput::Image, &ViewOptions::input_path},
+                                     {"--scene", ViewInput::ModelScene, &ViewOptions::scene_path}};
+
+// Options whose value is kept as given: a file, a folder, a name. The screenshots are PNG files.
+struct TextOption {
+  const char* name;
+  std::string ViewOptions::*field;
+  bool png;
+};
+const TextOption kTextOptions[] = {
+    {"--depth", &ViewOptions::depth_path, false},     {"--layer", &ViewOptions::layer, false},
+    {"--preset", &ViewOptions::preset, false},        {"--save-preset", &ViewOptions::save_preset, false},
+    {"--screenshot", &ViewOptions::screenshot, true}, {"--window-shot", &ViewOptions::window_shot, true},
+    {"--shots", &ViewOptions::shots_dir, false},      {"--attach", &ViewOptions::attach, false},
+    {"--timings", &ViewOptions::timings, false}};
+
+// Repeatable options, each value appended in order.
+struct ListOption {
+  const char* name;
+  std::vector<std::string> ViewOptions::*field;
+};
+const ListOption kListOptions[] = {{"--plugins", &ViewOptions::plugin_dirs}, {"--set", &ViewOptions::sets}};
+
+// --edit N:E.P=V.
+bool read_edit(const std::string& text, Parsed* parsed, std::string* error) {
+  const size_t colon = text.find(':');
+  ViewOptions::Edit edit;
+  if (colon == std::string::npos || !parse_count(text.substr(0, colon), &edit.frame) || edit.frame < 1 ||
+      text.find('=', colon) == std::string::npos) {
+    *error = "--edit " + text + ": expected FRAME:EFFECT.PARAM=VALUE";
+    return false;
+  }
+  edit.assignment = text.substr(colon + 1);
+  parsed->options.edits.push_back(edit);
+  return true;
+}
+
+bool read_frames(const std::string& text, Parsed* parsed, std::string* error) {
+  long long& frames = parsed->options.frames;
+  if (parse_count(text, &frames) && frames >= 1 && frames <= 1000000) return true;
+  *error = "--frames " + text + ": expected a whole number from 1 to 1000000";
+  return false;
+}
+
+// Options whose value is parsed: each keeps what it read, or returns false with *error.
+struct ValueOption {
+  const char* name;
+  bool (*read)(const std::string& text, Parsed* parsed, std::string* error);
+};
+const ValueOption kValueOptions[] = {
+    {"--chain",
+     [](const std::string& text, Parsed* parsed, std::string*) {
+       parsed->options.chain_given = true;
+       parsed->options.chain = split_list(text);
+       return true;
+     }},
+    {"--size",
+     [](const std::string& text, Parsed* parsed, std::string* error) {
+       ViewOptions& o = parsed->options;
+       if (!parse_frame_size("--size", text, &o.width, &o.height, error)) return false;
+       o.size_given = true;
+       return true;
+     }},
+    {"--window",
+     [](const std::string& text, Parsed* parsed, std::string* error) {
+       ViewOptions& o = parsed->options;
+       if (!parse_frame_size("--window", text, &o.window_width, &o.window_height, error)) return false;
+       o.window_given = true;
+       return true;
+     }},
+    {"--camera",
+     [](const std::string& text, Parsed* parsed, std::string* error) {
+       if (!parse_camera_options(text, &parsed->options.camera, error)) return false;
+       for (const auto& key : option_keys(text)) parsed->options.camera_keys.push_back(key);
+       return true;
+     }},
+    {"--lights",
+     [](const std::string& text, Parsed* parsed, std::string* error) {
+       if (!parse_light_count(text, &parsed->options.extra_lights, error)) return false;
+       parsed->options.lights_given = true;
+       return true;
+     }},
+    {"--seed",
+     [](const std::string& text, Parsed* parsed, std::string* error) {
+       if (!parse_seed(text, &parsed->options.seed, error)) return false;
+       parsed->seed_given = true;
+       return true;
+     }},
+    {"--edit", read_edit},
+    {"--frames", read_frames},
+    {"--exposure",
+     [](const std::string& text, Parsed* parsed, std::string* error) {
+       if (!parse_exposure(text, &parsed->options.tone.exposure_ev, error)) return false;
+       parsed->options.exposure_given = true;
+       return true;
+     }},
+    {"--tone", [](const std::string& text, Parsed* parsed, std::string* error) {
+       if (!parse_tone_curve(text, &parsed->options.tone.curve, error)) return false;
+       parsed->options.tone_given = true;
+       return true;
+     }}};
+
+// The argument in hand, looked up in the tables above: false with the reader's error when it is
+// unknown or its value is missing or wrong.
+bool read_option(ArgReader& args, Parsed* parsed, std::string* error) {
+  const std::string& arg = args.arg();
+  ViewOptions& options = parsed->options;
+  for (const SwitchOption& option : kSwitchOptions)
+    if (arg == option.name) return options.*option.field = option.value, true;
+  for (const InputOption& option : kInputOptions)
+    if (arg == option.name) {
+      if (option.path && !args.value(&(options.*option.path))) return false;
+      options.input = option.input;
+      ++parsed->inputs_given;
+      return true;
     }
-  }
-  if (options.help) {
-    *out = options;
-    return true;
-  }
-  if (inputs_given > 1) return args.fail("give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG");
-  if (!options.depth_path.empty() && options.input != ViewInput::Image) return args.fail("--depth goes with --input");
-  if (!options.layer.empty() && options.input != ViewInput::Image) return args.fail("--layer goes with --input");
-  if (options.size_given && options.input == ViewInput::Image)
-    return args.fail("--size applies to --demo and --demo-image (an input image has its own size)");
-  if ((options.lights_given || seed_given) && options.input != ViewInput::DemoScene &&
+  for (const TextOption& option : kTextOptions)
+    if (arg == option.name) {
+      std::string& value = options.*option.field;
+      if (!args.value(&value)) return false;
+      if (option.png && !ends_with(value, ".png"))
+        return args.fail(arg + " " + value + ": the file name must end in .png");
+      return true;
+    }
+  for (const ListOption& option : kListOptions)
+    if (arg == option.name) return args.value(&(options.*option.field));
+  for (const ValueOption& option : kValueOptions)
+    if (arg == option.name) {
+      std::string text;
+      return args.value(&text) && option.read(text, parsed, error);
+    }
+  return args.unknown();
+}
+
+// What is wrong with the options together: one that needs another, or two that exclude each
+// other; "" when nothing is.
+std::string conflict(const Parsed& parsed) {
+  const ViewOptions& options = parsed.options;
+  const bool image = options.input == ViewInput::Image;
+  if (parsed.inputs_given > 1) return "give at most one of --demo, --demo-image, --scene FILE.obj or --input IMG";
+  if (!options.depth_path.empty() && !image) return "--depth goes with --input";
+  if (!options.layer.empty() && !image) return "--layer goes with --input";
+  if (options.size_given && image) return "--size applies to --demo and --demo-image (an input image has its own size)";
+  if ((options.lights_given || parsed.seed_given) && options.input != ViewInput::DemoScene &&
       options.input != ViewInput::ModelScene)
-    return args.fail("--lights and --seed go with --demo or --scene");
-  if (options.size_given && !options.window_given) options.window_width = options.width, options.window_height = options.height;
+    return "--lights and --seed go with --demo or --scene";
   if ((!options.screenshot.empty() || !options.window_shot.empty()) && options.frames == 0)
-    return args.fail("--screenshot and --window-shot go with --frames N");
-  if (!options.attach.empty() && (inputs_given || options.size_given || !options.screenshot.empty()))
-    return args.fail("--attach shows no picture: leave out the input, --size and --screenshot");
+    return "--screenshot and --window-shot go with --frames N";
+  if (!options.attach.empty() && (parsed.inputs_given || options.size_given || !options.screenshot.empty()))
+    return "--attach shows no picture: leave out the input, --size and --screenshot";
   if ((!options.timings.empty() || !options.edits.empty()) && options.attach.empty())
-    return args.fail("--timings and --edit go with --attach");
-  if (!options.edits.empty() && options.frames == 0) return args.fail("--edit goes with --frames N");
+    return "--timings and --edit go with --attach";
+  if (!options.edits.empty() && options.frames == 0) return "--edit goes with --frames N";
+  return "";
+}
+
+}  // namespace
+
+bool parse_view_options(const std::vector<std::string>& list, ViewOptions* out, std::string* error) {
+  Parsed parsed;
+  ArgReader args(list, error);
+  while (args.next())
+    if (!read_option(args, &parsed, error)) return false;
+  ViewOptions& options = parsed.options;
+  if (!options.help) {
+    if (const std::string problem = conflict(parsed); !problem.empty()) return args.fail(problem);
+    // The window opens at the frame's size unless told otherwise.
+    if (options.size_given && !options.window_given)
+      options.window_width = options.width, options.window_height = options.height;
+  }
   *out = options;
   return true;
 }

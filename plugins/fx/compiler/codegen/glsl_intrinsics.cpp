@@ -37,6 +37,163 @@ std::string joined(const std::vector<std::string>& parts) {
   return text;
 }
 
+// A sampling result (a GLSL gvec4) as the FX call's type: the sampler's element type.
+std::string sampled(const std::string& call, const Expr& e) {
+  const Type& t = e.resolved;
+  if (t.is_scalar()) return "(" + call + ").x";
+  if (t.is_vector() && t.rows < 4)
+    return "(" + call + ")." + std::string("xyzw").substr(0, static_cast<std::size_t>(t.rows));
+  return call;
+}
+
+// One tex1D/2D/3D* call, one method a form: the operands written once, and the conversions
+// between FX's coordinates (v from the top) and GL's (v from the bottom) that the forms share.
+class TextureCall {
+ public:
+  TextureCall(GlslWriter& writer, const Expr& e)
+      : writer_(writer), e_(e), object_(e.operands[0]->resolved), d_(object_.dimension) {
+    for (const ExprPtr& operand : e.operands) a_.push_back(writer.expr(*operand));
+    const std::string dim = std::to_string(d_);
+    ivec_ = d_ == 1 ? "int" : "ivec" + dim;
+    vec_ = d_ == 1 ? "float" : "vec" + dim;
+    writer.helpers.insert("flip");
+  }
+
+  bool on_storage() const { return object_.base == BaseType::kStorage; }
+
+  // A storage takes only size, store and fetch.
+  std::string storage(const std::string& suffix, const std::string& name) {
+    const std::string& s = a_[0];
+    if (suffix == "size") return "imageSize(" + s + ")";
+    if (suffix == "store") {
+      const std::string value = stored_value();
+      return "imageStore(" + s + ", " + texel(a_[1], "imageSize(" + s + ").y") + ", " + value + ")";
+    }
+    if (suffix == "fetch") return sampled("imageLoad(" + s + ", " + texel(a_[1], "imageSize(" + s + ").y") + ")", e_);
+    return writer_.error(e_.location, name + "() does not take a storage"), "0";
+  }
+
+  std::string size() const {
+    return "textureSize(" + a_[0] + ", " + (a_.size() > 1 ? "int(" + a_[1] + ")" : "0") + ")";
+  }
+
+  // tex2D and tex2Doffset.
+  std::string sample() const {
+    const std::string& s = a_[0];
+    if (a_.size() < 3) return sampled("texture(" + s + ", " + uv(a_[1]) + ")", e_);
+    const std::string o = offset(2);
+    if (o.empty()) return sampled("texture(" + s + ", " + shifted(uv(a_[1]), 2, "0") + ")", e_);
+    return sampled("textureOffset(" + s + ", " + uv(a_[1]) + ", " + o + ")", e_);
+  }
+
+  // lod, lodoffset, bias and proj: the coordinate is a float4, xy(z) the position, w the level,
+  // bias or divisor.
+  std::string sample_by_w(const std::string& suffix) const {
+    const std::string& s = a_[0];
+    std::string c = "(" + a_[1] + ")";
+    std::string position = c + (d_ == 1 ? ".x" : d_ == 2 ? ".xy" : ".xyz");
+    if (suffix == "proj") return sampled("texture(" + s + ", " + uv(position + " / " + c + ".w") + ")", e_);
+    if (suffix == "bias") return sampled("texture(" + s + ", " + uv(position) + ", " + c + ".w)", e_);
+    if (a_.size() > 2) {
+      const std::string o = offset(2);
+      if (o.empty())
+        return sampled("textureLod(" + s + ", " + shifted(uv(position), 2, "int(" + c + ".w)") + ", " + c + ".w)", e_);
+      return sampled("textureLodOffset(" + s + ", " + uv(position) + ", " + c + ".w, " + o + ")", e_);
+    }
+    return sampled("textureLod(" + s + ", " + uv(position) + ", " + c + ".w)", e_);
+  }
+
+  // tex2Dfetch(s, int2 position [, int level]) or ReShade 4's tex2Dfetch(s, int4(x, y, 0, level)).
+  std::string fetch() const {
+    const std::string& s = a_[0];
+    const Type& c1 = e_.operands.size() > 1 ? e_.operands[1]->resolved : object_;
+    std::string position = a_[1], level = a_.size() > 2 ? "int(" + a_[2] + ")" : "0";
+    if (c1.components() == 4 && d_ < 4) {
+      position = "(" + a_[1] + ")" + (d_ == 1 ? ".x" : d_ == 2 ? ".xy" : ".xyz");
+      level = "int((" + a_[1] + ").w)";
+    }
+    return sampled(
+        "texelFetch(" + s + ", " + texel(position, "textureSize(" + s + ", " + level + ").y") + ", " + level + ")", e_);
+  }
+
+  std::string grad() const {
+    const std::string& s = a_[0];
+    auto gradient = [&](const std::string& g) { return d_ == 1 ? g : "pfx_flip_offset(" + vec_ + "(" + g + "))"; };
+    const std::string o = a_.size() > 4 ? offset(4) : "";
+    const std::string at = a_.size() > 4 && o.empty() ? shifted(uv(a_[1]), 4, "0") : uv(a_[1]);
+    std::string text = (o.empty() ? "textureGrad(" : "textureGradOffset(") + s + ", " + at + ", " + gradient(a_[2]) +
+                       ", " + gradient(a_[3]);
+    if (!o.empty()) text += ", " + o;
+    return sampled(text + ")", e_);
+  }
+
+  // gather, gatherR, gatherG, gatherB, gatherA: 2D only.
+  std::string gather(const std::string& suffix, const std::string& name) {
+    const std::string& s = a_[0];
+    if (d_ != 2) return writer_.error(e_.location, name + "() needs a 2D sampler"), "0";
+    char channel = suffix.size() > 6 ? suffix[6] : 'R';
+    int comp = channel == 'G' ? 1 : channel == 'B' ? 2 : channel == 'A' ? 3 : 0;
+    const std::string o = a_.size() > 2 ? offset(2) : "";
+    const std::string at = a_.size() > 2 && o.empty() ? shifted(uv(a_[1]), 2, "0") : uv(a_[1]);
+    std::string text = !o.empty()
+                           ? "textureGatherOffset(" + s + ", " + at + ", " + o + ", " + std::to_string(comp) + ")"
+                           : "textureGather(" + s + ", " + at + ", " + std::to_string(comp) + ")";
+    // GL gathers (i0,j1) (i1,j1) (i1,j0) (i0,j0) with j1 the upper row in GL, the lower in FX.
+    return "(" + text + ").xyzw.wzyx";
+  }
+
+ private:
+  // Coordinates in [0, 1] with v from the top -> GL's; texel offsets likewise.
+  std::string uv(const std::string& c) const { return d_ == 1 ? c : "pfx_flip(" + vec_ + "(" + c + "))"; }
+
+  // A texel offset, which GLSL takes only as a constant expression: folded here when the FX code
+  // makes it one (from literals, static consts, swizzles...), flipped as the rows are; "" when it
+  // is not constant, and HLSL's offset then moves the coordinate instead (shifted, below).
+  std::string offset(std::size_t operand) const {
+    const std::optional<ConstantValue> folded = evaluate_constant(*e_.operands[operand]);
+    if (!folded || folded->is_string || folded->components.empty()) return "";
+    std::vector<long long> o;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(d_); ++i)  // a scalar is splat
+      o.push_back(static_cast<long long>(folded->components[std::min(i, folded->components.size() - 1)]));
+    if (d_ == 1) return std::to_string(o[0]);
+    return ivec_ + "(" + std::to_string(o[0]) + ", " + std::to_string(-o[1]) +
+           (d_ == 3 ? ", " + std::to_string(o[2]) : std::string()) + ")";
+  }
+
+  // A GL coordinate moved by a texel offset that is not constant, in texels of `level`.
+  std::string shifted(const std::string& coordinate, std::size_t operand, const std::string& level) const {
+    const std::string size = "textureSize(" + a_[0] + ", " + level + ")";
+    if (d_ == 1) return "(" + coordinate + " + float(" + a_[operand] + ") / float(" + size + "))";
+    const std::string v = vec_ + "(" + a_[operand] + ")";
+    return "(" + coordinate + " + " + vec_ + "(" + v + ".x, -(" + v + ".y)" +
+           (d_ == 3 ? ", " + v + ".z" : std::string()) + ") / " + vec_ + "(" + size + "))";
+  }
+
+  // An integer position with its row counted from the top -> GL's, in an image `height` high.
+  std::string texel(const std::string& c, const std::string& height) const {
+    return d_ == 1 ? "int(" + c + ")" : "pfx_flip_texel(" + ivec_ + "(" + c + "), " + height + ")";
+  }
+
+  // tex2Dstore's value as the gvec4 imageStore takes: the storage's element type, missing
+  // channels 0 and alpha 1.
+  std::string stored_value() {
+    const Type& vt = e_.operands[2]->resolved;
+    const BaseType element = object_.element_base;
+    Type four = Type::vector(element == BaseType::kInt || element == BaseType::kUint ? element : BaseType::kFloat, 4);
+    if (vt.components() >= 4) return writer_.cast(a_[2], vt, four);
+    std::string padded = writer_.type(four) + "(" + writer_.cast(a_[2], vt, vt.with_base(four.base));
+    for (int i = vt.components(); i < 4; ++i) padded += i == 3 ? ", 1" : ", 0";
+    return padded + ")";
+  }
+
+  GlslWriter& writer_;
+  const Expr& e_;
+  const Type& object_;
+  int d_;
+  std::vector<std::string> a_;  // the operands in GLSL; a_[0] the sampler or storage
+  std::string ivec_, vec_;      // the integer and float vectors of the object's dimension
+};
+
 }  // namespace
 
 std::string GlslWriter::intrinsic(const Expr& e) {
@@ -127,124 +284,17 @@ std::string GlslWriter::intrinsic(const Expr& e) {
 
 // tex1D/2D/3D*: `name` is the intrinsic, operand 0 the sampler or storage.
 std::string GlslWriter::texture_call(const Expr& e, const std::string& name) {
-  const Type& object = e.operands[0]->resolved;
-  int d = object.dimension;
-  std::string suffix = name.substr(5);  // after "texND"
-  std::vector<std::string> a;
-  for (const ExprPtr& operand : e.operands) a.push_back(expr(*operand));
-  const std::string& s = a[0];
-  std::string dim = std::to_string(d);
-  std::string ivec = d == 1 ? "int" : "ivec" + dim;
-  std::string vec = d == 1 ? "float" : "vec" + dim;
-  helpers.insert("flip");
-  // Coordinates in [0, 1] with v from the top -> GL's; texel offsets likewise.
-  auto uv = [&](const std::string& c) { return d == 1 ? c : "pfx_flip(" + vec + "(" + c + "))"; };
-  // A texel offset, which GLSL takes only as a constant expression: folded here when the FX code
-  // makes it one (from literals, static consts, swizzles...), flipped as the rows are; "" when it
-  // is not constant, and HLSL's offset then moves the coordinate instead (shifted, below).
-  auto offset = [&](std::size_t operand) -> std::string {
-    const std::optional<ConstantValue> folded = evaluate_constant(*e.operands[operand]);
-    if (!folded || folded->is_string || folded->components.empty()) return "";
-    std::vector<long long> o;
-    for (std::size_t i = 0; i < static_cast<std::size_t>(d); ++i)  // a scalar is splat
-      o.push_back(static_cast<long long>(folded->components[std::min(i, folded->components.size() - 1)]));
-    if (d == 1) return std::to_string(o[0]);
-    return ivec + "(" + std::to_string(o[0]) + ", " + std::to_string(-o[1]) + (d == 3 ? ", " + std::to_string(o[2]) : std::string()) + ")";
-  };
-  // A GL coordinate moved by a texel offset that is not constant, in texels of `level`.
-  auto shifted = [&](const std::string& coordinate, std::size_t operand, const std::string& level) {
-    const std::string size = "textureSize(" + s + ", " + level + ")";
-    if (d == 1) return "(" + coordinate + " + float(" + a[operand] + ") / float(" + size + "))";
-    const std::string v = vec + "(" + a[operand] + ")";
-    return "(" + coordinate + " + " + vec + "(" + v + ".x, -(" + v + ".y)" + (d == 3 ? ", " + v + ".z" : std::string()) +
-           ") / " + vec + "(" + size + "))";
-  };
-  auto texel = [&](const std::string& c, const std::string& height) {
-    return d == 1 ? "int(" + c + ")" : "pfx_flip_texel(" + ivec + "(" + c + "), " + height + ")";
-  };
-  auto component = [&](const std::string& text, int count) {
-    std::string letters = std::string("xyzw").substr(0, static_cast<std::size_t>(count));
-    return "(" + text + ")." + letters;
-  };
-  const Type& c1 = e.operands.size() > 1 ? e.operands[1]->resolved : object;
-
-  if (object.base == BaseType::kStorage) {
-    if (suffix == "size") return "imageSize(" + s + ")";
-    if (suffix == "store") {
-      std::string value = a[2];
-      const Type& vt = e.operands[2]->resolved;
-      Type four = Type::vector(object.element_base == BaseType::kInt || object.element_base == BaseType::kUint ? object.element_base : BaseType::kFloat, 4);
-      if (vt.components() < 4) {
-        std::string padded = type(four) + "(" + cast(value, vt, vt.with_base(four.base));
-        for (int i = vt.components(); i < 4; ++i) padded += i == 3 ? ", 1" : ", 0";
-        value = padded + ")";
-      } else {
-        value = cast(value, vt, four);
-      }
-      return "imageStore(" + s + ", " + texel(a[1], "imageSize(" + s + ").y") + ", " + value + ")";
-    }
-    if (suffix == "fetch") return sampled("imageLoad(" + s + ", " + texel(a[1], "imageSize(" + s + ").y") + ")", e);
-    return error(e.location, name + "() does not take a storage"), "0";
-  }
-  if (suffix == "size") return "textureSize(" + s + ", " + (a.size() > 1 ? "int(" + a[1] + ")" : "0") + ")";
-  if (suffix == "" || suffix == "offset") {
-    if (a.size() < 3) return sampled("texture(" + s + ", " + uv(a[1]) + ")", e);
-    const std::string o = offset(2);
-    if (o.empty()) return sampled("texture(" + s + ", " + shifted(uv(a[1]), 2, "0") + ")", e);
-    return sampled("textureOffset(" + s + ", " + uv(a[1]) + ", " + o + ")", e);
-  }
-  if (suffix == "lod" || suffix == "lodoffset" || suffix == "bias" || suffix == "proj") {
-    // The coordinate is a float4: xy(z) the position, w the level, bias or divisor.
-    std::string c = "(" + a[1] + ")";
-    std::string position = c + (d == 1 ? ".x" : d == 2 ? ".xy" : ".xyz");
-    if (suffix == "proj") return sampled("texture(" + s + ", " + uv(position + " / " + c + ".w") + ")", e);
-    if (suffix == "bias") return sampled("texture(" + s + ", " + uv(position) + ", " + c + ".w)", e);
-    if (a.size() > 2) {
-      const std::string o = offset(2);
-      if (o.empty())
-        return sampled("textureLod(" + s + ", " + shifted(uv(position), 2, "int(" + c + ".w)") + ", " + c + ".w)", e);
-      return sampled("textureLodOffset(" + s + ", " + uv(position) + ", " + c + ".w, " + o + ")", e);
-    }
-    return sampled("textureLod(" + s + ", " + uv(position) + ", " + c + ".w)", e);
-  }
-  if (suffix == "fetch") {
-    // tex2Dfetch(s, int2 position [, int level]) or ReShade 4's tex2Dfetch(s, int4(x, y, 0, level)).
-    std::string position = a[1], level = a.size() > 2 ? "int(" + a[2] + ")" : "0";
-    if (c1.components() == 4 && d < 4) {
-      position = "(" + a[1] + ")" + (d == 1 ? ".x" : d == 2 ? ".xy" : ".xyz");
-      level = "int((" + a[1] + ").w)";
-    }
-    return sampled("texelFetch(" + s + ", " + texel(position, "textureSize(" + s + ", " + level + ").y") + ", " + level + ")", e);
-  }
-  if (suffix == "grad") {
-    auto gradient = [&](const std::string& g) { return d == 1 ? g : "pfx_flip_offset(" + vec + "(" + g + "))"; };
-    const std::string o = a.size() > 4 ? offset(4) : "";
-    const std::string at = a.size() > 4 && o.empty() ? shifted(uv(a[1]), 4, "0") : uv(a[1]);
-    std::string text = (o.empty() ? "textureGrad(" : "textureGradOffset(") + s + ", " + at + ", " + gradient(a[2]) + ", " + gradient(a[3]);
-    if (!o.empty()) text += ", " + o;
-    return sampled(text + ")", e);
-  }
-  if (suffix.compare(0, 6, "gather") == 0) {
-    if (d != 2) return error(e.location, name + "() needs a 2D sampler"), "0";
-    char channel = suffix.size() > 6 ? suffix[6] : 'R';
-    int comp = channel == 'G' ? 1 : channel == 'B' ? 2 : channel == 'A' ? 3 : 0;
-    const std::string o = a.size() > 2 ? offset(2) : "";
-    const std::string at = a.size() > 2 && o.empty() ? shifted(uv(a[1]), 2, "0") : uv(a[1]);
-    std::string text = !o.empty() ? "textureGatherOffset(" + s + ", " + at + ", " + o + ", " + std::to_string(comp) + ")"
-                                  : "textureGather(" + s + ", " + at + ", " + std::to_string(comp) + ")";
-    // GL gathers (i0,j1) (i1,j1) (i1,j0) (i0,j0) with j1 the upper row in GL, the lower in FX.
-    return component(text, 4) + ".wzyx";
-  }
+  TextureCall call(*this, e);
+  const std::string suffix = name.substr(5);  // after "texND"
+  if (call.on_storage()) return call.storage(suffix, name);
+  if (suffix == "size") return call.size();
+  if (suffix == "" || suffix == "offset") return call.sample();
+  if (suffix == "lod" || suffix == "lodoffset" || suffix == "bias" || suffix == "proj") return call.sample_by_w(suffix);
+  if (suffix == "fetch") return call.fetch();
+  if (suffix == "grad") return call.grad();
+  if (suffix.compare(0, 6, "gather") == 0) return call.gather(suffix, name);
   error(e.location, "the intrinsic '" + name + "' has no GLSL translation yet");
   return "0";
-}
-
-// A sampling result (a GLSL gvec4) as the FX call's type: the sampler's element type.
-std::string GlslWriter::sampled(const std::string& call, const Expr& e) {
-  const Type& t = e.resolved;
-  if (t.is_scalar()) return "(" + call + ").x";
-  if (t.is_vector() && t.rows < 4) return "(" + call + ")." + std::string("xyzw").substr(0, static_cast<std::size_t>(t.rows));
-  return call;
 }
 
 }  // namespace pfx::fx

@@ -56,7 +56,6 @@ class GlslWriter {
   std::string call(const Expr& e);
   std::string construct(const Expr& e);
   std::string texture_call(const Expr& e, const std::string& name);
-  std::string sampled(const std::string& call, const Expr& e);
 
   const EffectModel& model_;
   Diagnostics& diagnostics_;
