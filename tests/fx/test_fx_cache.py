@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The FX plugin's cache of compiled programs (docs/fx.md): a second start takes every program of an
 effect from the cache and gives the same picture; damaged cache files are ignored, rebuilt and
-written again; PFX_FX_CACHE=0 writes nothing.
+written again; the folder is held to 256 MiB, the programs used longest ago deleted first;
+PFX_FX_CACHE=0 writes nothing.
 
 usage: test_fx_cache.py PFX_RENDER FX_FILE PICTURE OUT_DIR
 """
@@ -54,13 +55,32 @@ def main():
     check(damaged == cold, "after damaged cache files the picture differs")
     hits, _ = run("rewritten")
     check(hits is not None and hits >= 1, "the damaged files were not written again (%r from the cache)" % hits)
+    # Over the bound: three old files of 100 MiB each (sparse: their size, not the disk's) and the
+    # effect's own, just used. The next store deletes the oldest until 3/4 of 256 MiB remain.
+    folder = os.path.join(cache, "pfx", "fx-programs")
+    own = files()
+    for i, age in enumerate((3000, 2000, 1000)):
+        path = os.path.join(folder, "old%d.bin" % i)
+        with open(path, "wb") as f:
+            f.truncate(100 << 20)
+        os.utime(path, (os.path.getmtime(own[0]) - age,) * 2)
+    for path in own:  # the effect's programs are stored again
+        os.remove(path)
+    run("bounded")
+    left = files()
+    total = sum(os.path.getsize(path) for path in left)
+    check(total <= 192 << 20, "the cache holds %d bytes past its bound: %s" % (total, left))
+    check(not os.path.exists(os.path.join(folder, "old0.bin")) and not os.path.exists(os.path.join(folder, "old1.bin")),
+          "the programs used longest ago were not the ones deleted: %s" % left)
+    check(os.path.exists(os.path.join(folder, "old2.bin")), "more than needed was deleted: %s" % left)
+    check(len([p for p in left if "old" not in p]) >= 1, "the program just stored was deleted: %s" % left)
     shutil.rmtree(cache)
     run("off", PFX_FX_CACHE="0")
     check(not files(), "PFX_FX_CACHE=0 wrote %s" % files())
     for f in failures:
         print("FAIL:", f)
     if not failures:
-        print("ok: cold, warm, damaged, rewritten, off")
+        print("ok: cold, warm, damaged, rewritten, bounded, off")
     return 1 if failures else 0
 
 

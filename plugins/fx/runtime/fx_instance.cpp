@@ -3,12 +3,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <regex>
 
 #include <pfx/cpp/gl_program.hpp>
 #include <pfx/cpp/srgb_glsl.hpp>
 
-#include "fx_program_cache.hpp"
 #include "fx_texture_files.hpp"
 
 namespace pfx_fx {
@@ -72,22 +70,6 @@ GLuint transfer_program(const char* main, std::string* error) {
   return pfx::gl::build_fullscreen_program(source.c_str(), error);
 }
 
-// The driver's "0:12(5): error" names the source string; the generated code's #line directives
-// made that the FX file's index, so the message can name the file.
-std::string with_file_names(const std::string& log, const pfx::fx::FileNames& names) {
-  std::string out;
-  std::regex location(R"((^|\n)(\d+):(\d+)\((\d+)\))");
-  std::size_t last = 0;
-  for (std::sregex_iterator it(log.begin(), log.end(), location), end; it != end; ++it) {
-    const std::smatch& m = *it;
-    out += log.substr(last, static_cast<std::size_t>(m.position(0)) - last);
-    std::size_t file = std::stoul(m[2].str());
-    std::string name = file < names.size() ? names.name(static_cast<std::uint32_t>(file)) : m[2].str();
-    out += m[1].str() + name + ":" + m[3].str() + ":" + m[4].str();
-    last = static_cast<std::size_t>(m.position(0) + m.length(0));
-  }
-  return out + log.substr(last);
-}
 
 void upload(GLuint program, GLint location, const pfx::fx::Type& type, const std::vector<double>& v) {
   if (location < 0 || v.empty()) return;
@@ -368,9 +350,7 @@ pfx_status FxInstance::set_definitions(const char* list) {
 }
 
 void FxInstance::release_gl() {
-  for (PassProgram& p : programs_)
-    if (p.program) glDeleteProgram(p.program);
-  programs_.clear();
+  programs_.release();
   for (GlTexture& t : textures_) delete_texture(t);
   textures_.clear();
   if (!samplers_.empty()) glDeleteSamplers(static_cast<GLsizei>(samplers_.size()), samplers_.data());
@@ -415,52 +395,15 @@ bool FxInstance::build_gl() {
     bool integer = s.texture >= 0 && pfx::fx::integer_class(model.textures[t].format) != 0;
     samplers_.push_back(create_sampler(s, levels, integer));
   }
-  const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
-  const ProgramCache cache;
-  cache_hits_ = 0;
-  for (std::size_t i = 0; i < generated.size(); ++i) {
-    const GeneratedPass& g = generated[i];
-    const PassInfo& pass = technique().passes[i];
-    PassProgram p;
-    std::string message;
-    const std::string key = cache.key({g.vertex, g.fragment, g.compute});
-    p.program = cache.load(key);
-    if (p.program) {
-      ++cache_hits_;
-    } else {
-      if (!g.compute.empty()) {
-        const char* source = g.compute.c_str();
-        const GLenum stage = GL_COMPUTE_SHADER;
-        p.program = pfx::gl::build_program(&stage, &source, 1, &message, cache.usable());
-      } else {
-        const char* sources[2] = {g.vertex.c_str(), g.fragment.c_str()};
-        const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-        p.program = pfx::gl::build_program(stages, sources, 2, &message, cache.usable());
-      }
-      if (p.program) cache.store(key, p.program);
-    }
-    if (!p.program) {
-      log(PFX_LOG_ERROR, "pass '" + pass_names_[i + 1] + "': the GL refused the generated GLSL (a compiler bug, please report it):\n" +
-                             with_file_names(message, compiled_->front->names));
-      return false;
-    }
-    for (int u : g.uniforms)
-      p.uniform_locations.push_back(glGetUniformLocation(p.program, model.global_names.at(model.uniforms[static_cast<std::size_t>(u)].decl).c_str()));
-    p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
-    // A pass that may leave pixels of the back buffer unwritten starts from a copy of it.
-    bool standard_vs = pass.vertex_shader && pass.vertex_shader->name == "PostProcessVS";
-    p.covers_target = standard_vs && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !g.may_discard && pass.vertex_count == 3 &&
-                      pass.topology == pfx::fx::Topology::kTriangleList && !pass.stencil.enable;
-    programs_.push_back(p);
-  }
   gl_current_ = true;
   return true;
 }
 
 const char* FxInstance::report_json() {
   char text[128];
-  std::snprintf(text, sizeof text, "\"compile_ms\": %.3f, \"gl_build_ms\": %.3f, \"programs_from_cache\": %d", compile_ms_,
-                gl_build_ms_, cache_hits_);
+  std::snprintf(text, sizeof text,
+                "\"compile_ms\": %.3f, \"gl_build_ms\": %.3f, \"programs_from_cache\": %d, \"uniforms_as_constants\": %d",
+                compile_ms_, gl_build_ms_ + programs_.build_ms(), programs_.cache_hits(), programs_.running().constant_count);
   report_ = text;
   return report_.c_str();
 }
@@ -473,8 +416,16 @@ pfx_status FxInstance::run_pass(const pfx_pass_context* context) {
     return PFX_GL_ERROR;
   }
   uint32_t index = context->pass_index;
-  if (index == 0) run_encode(*context);
-  else if (index + 1 == passes_.size()) run_decode(*context);
+  if (index == 0) {
+    run_encode(*context);
+    // After the uniforms took this frame's values: the programs the technique's passes run.
+    std::string error;
+    if (!programs_.choose(*compiled_, entry_.technique_index, uniforms_, &error)) {
+      log(PFX_LOG_ERROR, error);
+      release_gl();
+      return PFX_GL_ERROR;
+    }
+  } else if (index + 1 == passes_.size()) run_decode(*context);
   else run_fx_pass(static_cast<int>(index) - 1, *context);
   return PFX_OK;
 }
@@ -552,8 +503,8 @@ void FxInstance::bind_resources(const GeneratedPass& g, const PassProgram& p, in
 void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
   (void)context;
   const PassInfo& pass = technique().passes[static_cast<std::size_t>(index)];
-  const GeneratedPass& g = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)][static_cast<std::size_t>(index)];
-  const PassProgram& p = programs_[static_cast<std::size_t>(index)];
+  const GeneratedPass& g = programs_.running().generated[static_cast<std::size_t>(index)];
+  const PassProgram& p = programs_.running().programs[static_cast<std::size_t>(index)];
   const pfx::fx::EffectModel& model = compiled_->model;
   if (!g.compute.empty()) {
     bind_resources(g, p, compiled_height_);

@@ -21,6 +21,7 @@
 #include "fx_definitions.hpp"
 #include "fx_frame_params.hpp"
 #include "fx_gl_objects.hpp"
+#include "fx_programs.hpp"
 #include "fx_stencil.hpp"
 #include "fx_uniform_values.hpp"
 
@@ -41,13 +42,6 @@ class FxInstance {
   pfx_status set_definitions(const char* list);
 
  private:
-  struct PassProgram {
-    GLuint program = 0;
-    std::vector<GLint> uniform_locations;  // per GeneratedPass::uniforms entry
-    GLint target_height_location = -1;
-    bool covers_target = true;  // draws every pixel of the back buffer (no copy needed first)
-  };
-
   // The source compiled for a frame size and checked to hold the technique, or null with *error.
   std::unique_ptr<pfx::fx::CompiledEffect> compile_at(int width, int height, std::string* error);
   void adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled);  // its passes, for the next run
@@ -58,7 +52,7 @@ class FxInstance {
   // is logged and the last version that compiled keeps running.
   void watch(const pfx::fx::CompiledEffect& compiled);
   void reload_if_edited();
-  bool build_gl();                             // GL, for the compiled source
+  bool build_gl();  // GL textures and samplers, for the compiled source (programs_ builds the programs)
   void release_gl();
   void log(pfx_log_level level, const std::string& message) const;
   // Attaches `textures` as colour attachments 0..count-1 of the effect's framebuffer (the rest
@@ -90,7 +84,7 @@ class FxInstance {
   // GL side.
   bool gl_current_ = false;  // built for compiled_
   GLuint encode_program_ = 0, decode_program_ = 0, depth_program_ = 0, framebuffer_ = 0;
-  std::vector<PassProgram> programs_;
+  FxPrograms programs_;  // the technique's passes, live or with the uniforms as constants
   std::vector<GlTexture> textures_;  // per model texture (unused for the back buffer and depth)
   std::vector<GLuint> samplers_;
   GlTexture back_buffer_[2];
@@ -105,7 +99,6 @@ class FxInstance {
   bool told_no_depth_ = false;
   bool told_ignored_ = false;
   double compile_ms_ = 0, gl_build_ms_ = 0;
-  int cache_hits_ = 0;  // programs of the last GL build that came from the disk cache
   // A few stat calls each time: often enough that an edit shows within half a second, its
   // compile included, rare enough to cost nothing next to a frame.
   static constexpr int kWatchIntervalMs = 100;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
@@ -10,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <utility>
+#include <vector>
 
 namespace pfx_fx {
 namespace {
@@ -23,6 +26,33 @@ constexpr const char* kPluginVersion = "0.1.0";
 std::uint64_t fnv(const std::string& text, std::uint64_t hash) {
   for (unsigned char c : text) hash = (hash ^ c) * 0x100000001B3ull;
   return hash;
+}
+
+// The most the folder may hold. Specialised programs (fx_programs.hpp) add one set per distinct
+// set of values an effect settles on, so without a bound the folder would only grow; past it the
+// programs used longest ago go first, until three quarters of it remain.
+constexpr std::uintmax_t kMaxBytes = 256ull << 20;
+
+// Deletes the least recently used programs (a load touches its file) while the folder holds more
+// than kMaxBytes. Another process may be doing the same: a file already gone is passed over.
+void keep_within_bound(const std::string& folder) {
+  std::error_code ec;
+  std::vector<std::pair<fs::file_time_type, fs::path>> files;
+  std::uintmax_t total = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
+    if (entry.path().extension() != ".bin") continue;
+    const std::uintmax_t size = entry.file_size(ec);
+    if (ec) continue;
+    total += size;
+    files.emplace_back(entry.last_write_time(ec), entry.path());
+  }
+  if (total <= kMaxBytes) return;
+  std::sort(files.begin(), files.end());
+  for (const auto& file : files) {
+    if (total <= kMaxBytes / 4 * 3) break;
+    const std::uintmax_t size = fs::file_size(file.second, ec);
+    if (!ec && fs::remove(file.second, ec)) total -= size;
+  }
 }
 
 std::string gl_string(GLenum name) {
@@ -74,7 +104,11 @@ GLuint ProgramCache::load(const std::string& key) const {
   glGetProgramiv(program, GL_LINK_STATUS, &linked);
   while (glGetError() != GL_NO_ERROR) {  // a refused binary may raise an error; the pass must not
   }
-  if (linked) return program;
+  if (linked) {
+    std::error_code ec;
+    fs::last_write_time(folder_ + "/" + key + ".bin", fs::file_time_type::clock::now(), ec);  // used now
+    return program;
+  }
   glDeleteProgram(program);  // stale (another driver build): rebuilt and written again
   return 0;
 }
@@ -113,6 +147,7 @@ void ProgramCache::store(const std::string& key, GLuint program) const {
   }
   fs::rename(temporary, path, ec);  // complete files only, whoever reads at the same time
   if (ec) fs::remove(temporary, ec);
+  keep_within_bound(folder_);
 }
 
 }  // namespace pfx_fx

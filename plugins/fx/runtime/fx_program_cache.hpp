@@ -4,7 +4,8 @@
 // ~/.cache/pfx/fx-programs), named by a hash of the program's GLSL, the GL's vendor, renderer and
 // version, and this plugin's version. Files are written under a temporary name and renamed when
 // complete; one that is damaged (its checksum), stale (refused by the GL) or unreadable is ignored
-// and written again. PFX_FX_CACHE=0 turns the cache off. The GLSL itself is generated at every
+// and written again. The folder holds at most 256 MiB: past that, the programs used longest ago
+// are deleted. PFX_FX_CACHE=0 turns the cache off. The GLSL itself is generated at every
 // start: it costs a few milliseconds on the CPU.
 #include <string>
 #include <vector>

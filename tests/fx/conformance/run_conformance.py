@@ -19,6 +19,10 @@ The file says in its header comments how it is judged; every expected value come
   // expect: finite           the output (EXR) is finite everywhere and in [0, 1]
   // cell: N                  columns per check (default 4)
   // frames: N                render N frames of a sequence (the last is judged)
+
+Every file is rendered twice: with the uniforms that hold still compiled in as constants (the FX
+plugin's default) and with every uniform live (PFX_FX_SPECIALISE=0). The two pictures must be the
+same bytes: specialising a program must never change what it computes.
 """
 import os
 import re
@@ -81,31 +85,47 @@ def make_input(settings, folder):
     return path, pixels
 
 
-def main():
-    render, fx_file, folder = sys.argv[1:4]
-    settings = header(fx_file)
-    os.makedirs(folder, exist_ok=True)
-    input_path, input_pixels = make_input(settings, folder)
+def run_render(render, settings, input_path, technique, frames, prefix, env):
+    """Renders the input (a sequence of it with frames > 1) through the technique; the path of the
+    picture judged, or None after saying why pfx-render failed."""
     exr = settings["expect"] == "finite"
-    out_path = os.path.join(folder, "output.exr" if exr else "output.png")
-    env = dict(os.environ, PFX_FX_PATH=fx_file)
-    technique = "fx_" + re.sub(r"[^a-z0-9]+", "_", settings["technique"].lower()).strip("_")
+    out_path = prefix + (".exr" if exr else ".png")
     command = [render, "--input", input_path, "--chain", technique, "--out", out_path]
-    frames = int(settings["frames"])
     if frames > 1:
         # A sequence of the same picture: the effect sees frame indices 0 .. N-1.
-        pattern = os.path.join(folder, "seq.%04d" + os.path.splitext(input_path)[1])
+        pattern = os.path.join(os.path.dirname(prefix), "seq.%04d" + os.path.splitext(input_path)[1])
         for i in range(frames):
             shutil.copyfile(input_path, pattern % i)
-        out_pattern = os.path.join(folder, "out.%04d" + os.path.splitext(out_path)[1])
-        command = [render, "--input", pattern, "--frames", "0-%d" % (frames - 1), "--overwrite", "--chain", technique, "--out", out_pattern]
+        out_pattern = prefix + ".%04d" + os.path.splitext(out_path)[1]
+        command = [render, "--input", pattern, "--frames", "0-%d" % (frames - 1), "--overwrite", "--chain", technique,
+                   "--out", out_pattern]
         out_path = out_pattern % (frames - 1)
     result = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
     if result.returncode != 0:
         print(" ".join(command))
         print(result.stdout + result.stderr)
         print("FAIL: pfx-render exited with %d" % result.returncode)
+        return None
+    return out_path
+
+
+def main():
+    render, fx_file, folder = sys.argv[1:4]
+    settings = header(fx_file)
+    os.makedirs(folder, exist_ok=True)
+    input_path, input_pixels = make_input(settings, folder)
+    env = dict(os.environ, PFX_FX_PATH=fx_file)
+    technique = "fx_" + re.sub(r"[^a-z0-9]+", "_", settings["technique"].lower()).strip("_")
+    frames = int(settings["frames"])
+    out_path = run_render(render, settings, input_path, technique, frames, os.path.join(folder, "specialised"), env)
+    live_path = run_render(render, settings, input_path, technique, frames, os.path.join(folder, "live"),
+                           dict(env, PFX_FX_SPECIALISE="0"))
+    if not out_path or not live_path:
         return 1
+    with open(out_path, "rb") as a, open(live_path, "rb") as b:
+        if a.read() != b.read():
+            print("FAIL: the specialised programs' picture (%s) differs from the live ones' (%s)" % (out_path, live_path))
+            return 1
     if settings["expect"] == "finite":
         out = read(out_path, oiio.FLOAT)[..., :3]
         bad = ~np.isfinite(out) | (out < 0) | (out > 1)

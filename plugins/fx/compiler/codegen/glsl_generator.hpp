@@ -28,8 +28,8 @@ struct GeneratedPass {
   // model.storages[image_units[i]].
   std::vector<int> sampler_units;
   std::vector<int> image_units;
-  // Uniforms the program reads (indices into model.uniforms); each is a plain GLSL uniform named
-  // model.global_names[decl].
+  // Uniforms the program reads as live uniforms (indices into model.uniforms); each is a plain
+  // GLSL uniform named model.global_names[decl]. Those compiled in as constants are not here.
   std::vector<int> uniforms;
   // The pixel shader may leave a pixel unwritten (discard or clip): a pass rendering to the back
   // buffer must then start from its contents.
@@ -39,9 +39,21 @@ struct GeneratedPass {
   static constexpr const char* kTargetHeightUniform = "pfx_target_height";
 };
 
-// Generates the program of `pass`. Errors (what GLSL cannot express) go to `diagnostics` with the
-// FX location; the result is then incomplete.
+// Uniform values compiled into a program as constants, per model.uniforms index (the components
+// as the runtime holds them: a matrix row by row, arrays element by element); an empty entry, or
+// one whose value cannot be a constant (can_be_constant), keeps that uniform live. A program
+// specialised this way computes what the live one computes with those values, and the driver
+// folds the branches and loops they decide (ReShade's performance mode).
+using UniformConstants = std::vector<std::vector<double>>;
+
+// Whether a uniform of type `t` holding `values` can be compiled in as a constant: a number, bool
+// or array of them with every component finite (glsl_constants.cpp).
+bool can_be_constant(const Type& t, const std::vector<double>& values);
+
+// Generates the program of `pass`, with `constants` (when given) in place of those uniforms.
+// Errors (what GLSL cannot express) go to `diagnostics` with the FX location; the result is then
+// incomplete.
 GeneratedPass generate_pass(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass,
-                            Diagnostics& diagnostics);
+                            Diagnostics& diagnostics, const UniformConstants* constants = nullptr);
 
 }  // namespace pfx::fx

@@ -111,8 +111,9 @@ void collect(const Stmt& s, Uses& uses) {
 
 class ProgramBuilder {
  public:
-  ProgramBuilder(const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics)
-      : model_(model), pass_(pass), diagnostics_(diagnostics) {}
+  ProgramBuilder(const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics,
+                 const UniformConstants* constants)
+      : model_(model), pass_(pass), diagnostics_(diagnostics), constants_(constants) {}
 
   GeneratedPass build() {
     if (pass_.compute_shader) {
@@ -206,7 +207,13 @@ class ProgramBuilder {
     for (std::size_t index = 0; index < model_.uniforms.size(); ++index) {
       const VariableDecl* decl = model_.uniforms[index].decl;
       if (!globals.count(decl)) continue;
-      out += "uniform " + w.type(decl->resolved) + " " + model_.global_names.at(decl) + w.array_suffix(decl->resolved) + ";\n";
+      const std::string name = model_.global_names.at(decl) + w.array_suffix(decl->resolved);
+      const std::vector<double>* value = constants_ && index < constants_->size() ? &(*constants_)[index] : nullptr;
+      if (value && !value->empty() && can_be_constant(decl->resolved, *value)) {
+        out += "const " + w.type(decl->resolved) + " " + name + " = " + constant_initialiser(w, decl->resolved, *value) + ";\n";
+        continue;
+      }
+      out += "uniform " + w.type(decl->resolved) + " " + name + ";\n";
       result_.uniforms.push_back(static_cast<int>(index));
     }
     for (std::size_t i = 0; i < model_.samplers.size(); ++i) {
@@ -385,15 +392,17 @@ class ProgramBuilder {
   const EffectModel& model_;
   const PassInfo& pass_;
   Diagnostics& diagnostics_;
+  const UniformConstants* constants_;  // null: every uniform live
   std::map<std::string, BaseType> varyings_;
   GeneratedPass result_;
 };
 
 }  // namespace
 
-GeneratedPass generate_pass(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics) {
+GeneratedPass generate_pass(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics,
+                            const UniformConstants* constants) {
   (void)unit;  // the model points into it; the signature says what the result depends on
-  return ProgramBuilder(model, pass, diagnostics).build();
+  return ProgramBuilder(model, pass, diagnostics, constants).build();
 }
 
 }  // namespace pfx::fx

@@ -1,9 +1,11 @@
 #pragma once
 // The code generator's working parts, shared by its files: types and conversions
 // (glsl_types.cpp), expressions (glsl_expressions.cpp), intrinsics (glsl_intrinsics.cpp),
-// statements and functions (glsl_statements.cpp). glsl_program.cpp puts a program together.
+// statements and functions (glsl_statements.cpp), uniform values as constants
+// (glsl_constants.cpp). glsl_program.cpp puts a program together.
 #include <set>
 #include <string>
+#include <vector>
 
 #include "../diagnostics.hpp"
 #include "../model/effect_model.hpp"
@@ -64,5 +66,10 @@ class GlslWriter {
 
 // The GLSL helper functions a program needs, by the names GlslWriter::helpers holds.
 std::string prelude(const std::set<std::string>& helpers);
+
+// Uniform values as constants (glsl_constants.cpp; can_be_constant is in glsl_generator.hpp). The
+// initialiser of such a constant ("vec2(0.5, 1.0)"), each component as the runtime would
+// upload it.
+std::string constant_initialiser(const GlslWriter& w, const Type& t, const std::vector<double>& values);
 
 }  // namespace pfx::fx

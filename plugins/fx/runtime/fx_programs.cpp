@@ -1,0 +1,157 @@
+#include "fx_programs.hpp"
+
+#include <cstdlib>
+#include <cstring>
+#include <regex>
+
+#include <pfx/cpp/gl_program.hpp>
+
+#include "fx_program_cache.hpp"
+
+namespace pfx_fx {
+namespace {
+
+using pfx::fx::GeneratedPass;
+using pfx::fx::PassInfo;
+
+// The driver's "0:12(5): error" names the source string; the generated code's #line directives
+// made that the FX file's index, so the message can name the file.
+std::string with_file_names(const std::string& log, const pfx::fx::FileNames& names) {
+  std::string out;
+  std::regex location(R"((^|\n)(\d+):(\d+)\((\d+)\))");
+  std::size_t last = 0;
+  for (std::sregex_iterator it(log.begin(), log.end(), location), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    out += log.substr(last, static_cast<std::size_t>(m.position(0)) - last);
+    std::size_t file = std::stoul(m[2].str());
+    std::string name = file < names.size() ? names.name(static_cast<std::uint32_t>(file)) : m[2].str();
+    out += m[1].str() + name + ":" + m[3].str() + ":" + m[4].str();
+    last = static_cast<std::size_t>(m.position(0) + m.length(0));
+  }
+  return out + log.substr(last);
+}
+
+// A program from the cache, else built from its GLSL and stored there; 0 with *message.
+GLuint cached_program(const ProgramCache& cache, const GeneratedPass& g, std::string* message, int* cache_hits) {
+  const std::string key = cache.key({g.vertex, g.fragment, g.compute});
+  GLuint program = cache.load(key);
+  if (program) {
+    ++*cache_hits;
+    return program;
+  }
+  if (!g.compute.empty()) {
+    const char* source = g.compute.c_str();
+    const GLenum stage = GL_COMPUTE_SHADER;
+    program = pfx::gl::build_program(&stage, &source, 1, message, cache.usable());
+  } else {
+    const char* sources[2] = {g.vertex.c_str(), g.fragment.c_str()};
+    const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    program = pfx::gl::build_program(stages, sources, 2, message, cache.usable());
+  }
+  if (program) cache.store(key, program);
+  return program;
+}
+
+}  // namespace
+
+FxPrograms::FxPrograms() {
+  const char* setting = std::getenv("PFX_FX_SPECIALISE");
+  enabled_ = !(setting && std::strcmp(setting, "0") == 0);
+}
+
+void FxPrograms::release(ProgramSet& set) {
+  for (PassProgram& p : set.programs)
+    if (p.program) glDeleteProgram(p.program);
+  set = ProgramSet{};
+}
+
+void FxPrograms::release() {
+  release(live_);
+  release(specialised_);
+  running_ = &live_;
+  last_held_.clear();
+  first_frame_ = true;
+}
+
+pfx::fx::UniformConstants FxPrograms::held_values(const pfx::fx::EffectModel& model, const UniformValues& values) const {
+  pfx::fx::UniformConstants held(model.uniforms.size());
+  for (std::size_t i = 0; i < model.uniforms.size(); ++i)
+    if (model.uniforms[i].source.empty()) held[i] = values.of(static_cast<int>(i));
+  return held;
+}
+
+bool FxPrograms::choose(const pfx::fx::CompiledEffect& compiled, int technique, const UniformValues& values,
+                        std::string* error) {
+  const auto now = std::chrono::steady_clock::now();
+  pfx::fx::UniformConstants held = enabled_ ? held_values(compiled.model, values) : pfx::fx::UniformConstants{};
+  if (held != last_held_) {
+    last_held_ = held;
+    if (!first_frame_) last_change_ = now;
+  }
+  const bool settled = first_frame_ || std::chrono::duration<double>(now - last_change_).count() >= kSettleSeconds;
+  first_frame_ = false;
+  const bool wants_specialised = enabled_ && (settled || (specialised_.built && specialised_.constants == held));
+  ProgramSet& set = wants_specialised ? specialised_ : live_;
+  if (wants_specialised && set.built && set.constants != held) release(set);
+  if (!set.built) {
+    if (wants_specialised) set.constants = held;
+    if (!build(compiled, technique, set, error)) {
+      release(set);
+      return false;
+    }
+  }
+  running_ = &set;
+  return true;
+}
+
+bool FxPrograms::build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set, std::string* error) {
+  const auto start = std::chrono::steady_clock::now();
+  cache_hits_ = 0;
+  const pfx::fx::EffectModel& model = compiled.model;
+  const pfx::fx::TechniqueInfo& info = model.techniques[static_cast<std::size_t>(technique)];
+  const auto& live = compiled.passes[static_cast<std::size_t>(technique)];
+  set.generated.clear();
+  set.constant_count = 0;
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    if (set.constants.empty()) {
+      set.generated.push_back(live[i]);
+      continue;
+    }
+    // The same checked tree, written again with the values in place of the uniforms: what GLSL
+    // could not express there it cannot here, so no diagnostic is new.
+    pfx::fx::Diagnostics diagnostics(compiled.front->names);
+    set.generated.push_back(
+        pfx::fx::generate_pass(compiled.front->unit, model, info.passes[i], diagnostics, &set.constants));
+    if (diagnostics.has_errors()) return *error = "the specialised code did not generate:\n" + diagnostics.format_all(), false;
+  }
+  for (std::size_t i = 0; i < set.constants.size(); ++i)
+    set.constant_count += pfx::fx::can_be_constant(model.uniforms[i].decl->resolved, set.constants[i]) ? 1 : 0;
+  const ProgramCache cache;
+  for (std::size_t i = 0; i < set.generated.size(); ++i) {
+    const GeneratedPass& g = set.generated[i];
+    const PassInfo& pass = info.passes[i];
+    PassProgram p;
+    std::string message;
+    p.program = cached_program(cache, g, &message, &cache_hits_);
+    if (!p.program) {
+      const std::string name = pass.name.empty() ? "pass" + std::to_string(i) : pass.name;
+      *error = "pass '" + name + "': the GL refused the generated GLSL (a compiler bug, please report it):\n" +
+               with_file_names(message, compiled.front->names);
+      return false;
+    }
+    for (int u : g.uniforms)
+      p.uniform_locations.push_back(glGetUniformLocation(
+          p.program, model.global_names.at(model.uniforms[static_cast<std::size_t>(u)].decl).c_str()));
+    p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
+    // A pass that may leave pixels of the back buffer unwritten starts from a copy of it.
+    const bool standard_vs = pass.vertex_shader && pass.vertex_shader->name == "PostProcessVS";
+    p.covers_target = standard_vs && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !g.may_discard &&
+                      pass.vertex_count == 3 && pass.topology == pfx::fx::Topology::kTriangleList && !pass.stencil.enable;
+    set.programs.push_back(p);
+  }
+  set.built = true;
+  build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
+}  // namespace pfx_fx

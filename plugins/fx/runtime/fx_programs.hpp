@@ -1,0 +1,75 @@
+#pragma once
+// The GL programs of an FX technique's passes, in two sets: live, where every uniform is a GL
+// uniform set each frame, and specialised, where the uniforms no frame source fills (the user's
+// parameters and plain initial values) are compiled in as constants, so the driver folds the
+// branches and loops they decide (ReShade's performance mode, made automatic). Both compute the
+// same pictures: a constant holds the bits the uniform would.
+//
+// Which set runs: the specialised one whenever the values have held still for kSettleSeconds, and
+// from the first frame (a renderer, a video host or a farm job never changes them); the live one
+// while they move (a slider being dragged), so no frame waits for a compile per value. A set is
+// built the first time it is needed and kept; specialised programs go through the program cache
+// like live ones (their GLSL holds the values, so the cache is keyed by them). PFX_FX_SPECIALISE=0
+// keeps every uniform live.
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "effect_compiler.hpp"
+#include "fx_uniform_values.hpp"
+
+namespace pfx_fx {
+
+struct PassProgram {
+  GLuint program = 0;
+  std::vector<GLint> uniform_locations;  // per GeneratedPass::uniforms entry
+  GLint target_height_location = -1;
+  bool covers_target = true;  // draws every pixel of the back buffer (no copy needed first)
+};
+
+struct ProgramSet {
+  std::vector<pfx::fx::GeneratedPass> generated;  // per pass of the technique
+  std::vector<PassProgram> programs;
+  pfx::fx::UniformConstants constants;  // what was compiled in; empty for the live set
+  int constant_count = 0;               // uniforms compiled in as constants
+  bool built = false;
+};
+
+class FxPrograms {
+ public:
+  // How long values must hold still before the specialised programs are built for them.
+  static constexpr double kSettleSeconds = 0.5;
+
+  FxPrograms();
+  ~FxPrograms() = default;  // release() first, with the context current
+  // Deletes every program (a new compile of the source). GL current.
+  void release();
+
+  // The set this frame runs, chosen from the uniforms' values and built if it is not yet: false
+  // with *error when the GL refuses a program (the generated GLSL is wrong: a compiler bug).
+  bool choose(const pfx::fx::CompiledEffect& compiled, int technique, const UniformValues& values, std::string* error);
+  const ProgramSet& running() const { return *running_; }
+  // Of the last build: its time in milliseconds and how many of its programs came from the disk
+  // cache.
+  double build_ms() const { return build_ms_; }
+  int cache_hits() const { return cache_hits_; }
+
+ private:
+  // The values a specialised set would hold: each uniform without a frame source, else empty.
+  pfx::fx::UniformConstants held_values(const pfx::fx::EffectModel& model, const UniformValues& values) const;
+  bool build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set, std::string* error);
+  static void release(ProgramSet& set);
+
+  bool enabled_ = true;
+  ProgramSet live_, specialised_;
+  const ProgramSet* running_ = &live_;
+  pfx::fx::UniformConstants last_held_;
+  std::chrono::steady_clock::time_point last_change_{};
+  bool first_frame_ = true;
+  double build_ms_ = 0;
+  int cache_hits_ = 0;
+};
+
+}  // namespace pfx_fx
