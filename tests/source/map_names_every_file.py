@@ -7,7 +7,7 @@ What counts as named, so that the map cannot fall behind the code:
   slash (`parser/`) when its parent folder is named;
 - a file: its name, or its name without the extension, in backticks or bold (`fx_stencil` names
   fx_stencil.hpp and fx_stencil.cpp; `lexer.cpp` names lexer.hpp), a pattern that matches it
-  (`analyze_*`), or being a folder's CMakeLists.txt;
+  (`analyze_*`: three characters or more before the '*'), or being a folder's CMakeLists.txt;
 - everything under a folder the map describes as a whole: a folder in the first column of one of
   the map's tables ("Where each program lives"), whose row says what the folder is.
 
@@ -21,6 +21,9 @@ import subprocess
 import sys
 
 MARKED = re.compile(r"`([^`\n]+)`|\*\*([^*\n]+)\*\*")
+# A pattern that names files: a prefix of three characters or more before its '*' (`analyze_*`),
+# so that a '*' in code quoted on the page (`a * b`) names nothing.
+PATTERN = re.compile(r"^[A-Za-z0-9_]{3,}\*")
 TABLE_FIRST_CELL = re.compile(r"^\|\s*`([^`]+)`\s*\|", re.MULTILINE)
 
 
@@ -62,7 +65,7 @@ def file_named(path, names):
     stem = name.split(".")[0]
     if name == "CMakeLists.txt" or path in names or stem in {named.split(".")[0] for named in names}:
         return True
-    return any("*" in pattern and fnmatch.fnmatch(stem, pattern.split(".")[0]) for pattern in names)
+    return any(PATTERN.match(pattern) and fnmatch.fnmatch(stem, pattern.split(".")[0]) for pattern in names)
 
 
 def main():
