@@ -70,7 +70,6 @@ GLuint transfer_program(const char* main, std::string* error) {
   return pfx::gl::build_fullscreen_program(source.c_str(), error);
 }
 
-
 void upload(GLuint program, GLint location, const pfx::fx::Type& type, const std::vector<double>& v) {
   if (location < 0 || v.empty()) return;
   GLsizei count = 1;

@@ -64,9 +64,15 @@ bool can_be_constant(const Type& t, const std::vector<double>& values) {
   for (int size : t.array)
     if (size <= 0) return false;
   if (values.size() != component_count(t)) return false;
-  // A constant NaN or infinity would need a literal GLSL does not have.
-  for (double v : values)
+  // A constant NaN or infinity would need a literal GLSL does not have; an integer outside what
+  // its type holds would be converted differently here and in the upload, so it stays live.
+  const bool integer = t.shape != Shape::kMatrix && (t.base == BaseType::kInt || t.base == BaseType::kBool);
+  const bool unsigned_integer = t.shape != Shape::kMatrix && t.base == BaseType::kUint;
+  for (double v : values) {
     if (!std::isfinite(static_cast<float>(v))) return false;
+    if (integer && !(v > -2147483649.0 && v < 2147483648.0)) return false;
+    if (unsigned_integer && !(v > -2147483649.0 && v < 4294967296.0)) return false;
+  }
   return true;
 }
 
