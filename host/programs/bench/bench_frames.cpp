@@ -1,7 +1,12 @@
 #include "bench_frames.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include "demo_image.hpp"
+#include "display_transfer.hpp"
 #include "exr_io.hpp"
+#include "png_io.hpp"
 
 namespace pfx::bench {
 namespace {
@@ -16,21 +21,47 @@ bool read_same_size(const std::string& path, const pfx::app::Image& input, pfx::
   return true;
 }
 
+bool ends_with_png(const std::string& path) {
+  std::string end = path.size() >= 4 ? path.substr(path.size() - 4) : path;
+  std::transform(end.begin(), end.end(), end.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return end == ".png";
+}
+
+// The PNG as RGBA codes (an RGB file opaque), and those codes in linear light.
+bool read_display_frame(const std::string& path, BenchFrame* frame, std::string* error) {
+  pfx::app::DisplayImage image;
+  if (!pfx::app::read_png(path, &image, error)) return false;
+  if (image.channels == 3) {
+    std::vector<uint8_t> rgba(image.pixels.size() / 3 * 4, 255);
+    for (size_t i = 0; i < image.pixels.size() / 3; ++i) std::copy_n(&image.pixels[i * 3], 3, &rgba[i * 4]);
+    image.pixels = std::move(rgba);
+    image.channels = 4;
+  }
+  frame->image = pfx::app::decode_display_image(image, pfx::app::Transfer::SRGB);
+  frame->display = std::move(image);
+  return true;
+}
+
 }  // namespace
 
 bool make_bench_frames(const BenchOptions& options, std::vector<BenchFrame>* frames, std::string* error) {
   frames->clear();
   if (options.inputs.empty()) {
     for (const auto& [width, height] : options.sizes)
-      frames->push_back({"demo image", pfx::app::make_demo_image(width, height), {}, {}});
+      frames->push_back({"demo image", pfx::app::make_demo_image(width, height), {}, {}, {}});
     return true;
   }
   for (size_t i = 0; i < options.inputs.size(); ++i) {
     BenchFrame frame;
     frame.source = options.inputs[i];
-    pfx::app::ExrRequest request;
-    request.layer = options.layer;
-    if (!pfx::app::read_exr(options.inputs[i], &frame.image, error, request, nullptr)) return false;
+    if (ends_with_png(options.inputs[i])) {
+      if (!read_display_frame(options.inputs[i], &frame, error)) return false;
+      frame.source += " (8-bit, as hosts hand it over)";
+    } else {
+      pfx::app::ExrRequest request;
+      request.layer = options.layer;
+      if (!pfx::app::read_exr(options.inputs[i], &frame.image, error, request, nullptr)) return false;
+    }
     if (i < options.truths.size()) {
       pfx::app::Image truth;
       if (!read_same_size(options.truths[i], frame.image, &truth, error)) return false;

@@ -2,14 +2,16 @@
 
 #include <algorithm>
 
+#include "display_transfer.hpp"
 #include "frame_description.hpp"
 #include "image_texture.hpp"
 
 namespace pfx::bench {
 
-GlBenchFrame upload_gl_bench_frame(const BenchFrame& input, const pfx::app::CameraOptions& camera) {
+bool upload_gl_bench_frame(const BenchFrame& input, const pfx::app::CameraOptions& camera, GlBenchFrame* out,
+                           std::string* error) {
   const pfx::app::Image& image = input.image;
-  GlBenchFrame gl;
+  GlBenchFrame& gl = *out;
   const int width = gl.width = image.width, height = gl.height = image.height;
   gl.color = pfx::app::upload_color_texture(image);
   gl.depth = pfx::app::upload_depth_texture(image);
@@ -27,10 +29,28 @@ GlBenchFrame upload_gl_bench_frame(const BenchFrame& input, const pfx::app::Came
       PFX_DEPTH_LINEAR, pfx::app::make_camera(camera, width, height));
   gl.textures.color = gl.color;
   gl.textures.depth = gl.depth;
-  return gl;
+  if (input.display.pixels.empty()) return true;
+  gl.display = std::make_unique<pfx::gl::DisplayFrame>();
+  if (!gl.display->create(error)) return false;
+  gl.display->resize(width, height);
+  gl.display->decode_bytes(input.display.pixels.data(), pfx::app::Transfer::SRGB);
+  gl.textures.color = gl.display->color();
+  return true;
 }
 
-void release_gl_bench_frame(const GlBenchFrame& frame) {
+std::vector<float> GlBenchFrame::read_result() const {
+  if (!display) return pfx::app::flip_rows(pfx::app::download_color_texture(output, width, height).rgba, width, height, 4);
+  pfx::app::DisplayImage encoded;
+  encoded.width = width;
+  encoded.height = height;
+  encoded.channels = 4;
+  encoded.pixels.resize(static_cast<size_t>(width) * height * 4);
+  display->encode_bytes(display->output(), pfx::app::Transfer::SRGB, encoded.pixels.data());  // rows top first
+  return pfx::app::flip_rows(pfx::app::decode_display_image(encoded, pfx::app::Transfer::SRGB).rgba, width, height, 4);
+}
+
+void release_gl_bench_frame(GlBenchFrame& frame) {
+  frame.display.reset();
   pfx::app::delete_texture(frame.color);
   pfx::app::delete_texture(frame.depth);
   pfx::app::delete_texture(frame.output);

@@ -18,10 +18,6 @@
 namespace pfx::bench {
 namespace {
 
-std::vector<float> read_back(uint32_t texture, int w, int h) {
-  return pfx::app::flip_rows(pfx::app::download_color_texture(texture, w, h).rgba, w, h, 4);
-}
-
 // The unit and the chains are timed the same way; the results name how.
 pfx::host::Timing choose_timing(const BenchOptions& options, const std::string& renderer, BenchResults* results) {
   pfx::host::Timing timing = pfx::host::Timing::GPU_QUERIES;
@@ -68,7 +64,10 @@ class FrameBench {
     row.height = gl_.height;
     const std::string name = "row '" + suite_row.effect + " " + row.settings + "'";
     std::string message;
-    pfx::host::ParamStore params;
+    // An 8-bit frame holds nothing above 1.0: its rows start from the display-referred defaults, as
+    // in every host of such frames.
+    pfx::host::ParamStore params(gl_.eight_bit() ? pfx::host::DefaultSet::DISPLAY_REFERRED
+                                                 : pfx::host::DefaultSet::SCENE_REFERRED);
     if (!set_params(suite_row, &params, &message)) {
       results_.notes.push_back(name + " skipped: " + message);
       return;
@@ -119,7 +118,7 @@ class FrameBench {
       gl_.frame.frame_index = static_cast<uint64_t>(i);
       const double copy_ms = time_copy(copy_, gl_.color, gl_.output, gl_.width, gl_.height, timing_);
       if (i >= options_.warmup) copies.push_back(copy_ms);
-      if (!chain.render(gl_.frame, gl_.textures, gl_.output, message)) return false;
+      if (!chain.render(gl_.frame, gl_.textures, gl_.chain_output(), message)) return false;
       if (i < options_.warmup) continue;
       // The frame's own times: a benchmark may wait for them, as the copy pass's timing does.
       chain.wait_for_timings();
@@ -135,7 +134,7 @@ class FrameBench {
   // Against --truth, with the halo's width where --halo-mask gave the object.
   void measure_truth_error(BenchRow* row) const {
     if (gl_.truth_gl.empty()) return;
-    const std::vector<float> out = read_back(gl_.output, gl_.width, gl_.height);
+    const std::vector<float> out = gl_.read_result();
     row->error_truth = compare_rgb(out, gl_.truth_gl, &gl_.color_gl);
     if (!gl_.mask_gl.empty())
       row->halo_px = measure_halo(out, gl_.truth_gl, gl_.mask_gl, gl_.width, gl_.height, options_.halo_tolerance).width;
@@ -146,7 +145,7 @@ class FrameBench {
     const pfx::host::EffectInfo* info = registry_.find_effect(row->effect);
     const pfx_reference_factory* references = info ? info->plugin->references : nullptr;
     if (!references) return;
-    const std::vector<float> out = read_back(gl_.output, gl_.width, gl_.height);
+    const std::vector<float> out = gl_.read_result();
     for (pfx_reference_kind kind : {PFX_REFERENCE_MODEL, PFX_REFERENCE_IDEAL}) {
       if (!references->has_reference(row->effect.c_str(), kind)) continue;
       std::vector<float> expected(out.size());
@@ -200,7 +199,13 @@ BenchResults run_bench(const BenchOptions& options, const pfx::host::PluginRegis
   results.frames = options.frames;
   results.warmup = options.warmup;
   for (const BenchFrame& input : frames) {
-    GlBenchFrame gl = upload_gl_bench_frame(input, options.camera);
+    GlBenchFrame gl;
+    std::string error;
+    if (!upload_gl_bench_frame(input, options.camera, &gl, &error)) {
+      results.notes.push_back(input.source + " not measured: " + error);
+      release_gl_bench_frame(gl);
+      continue;
+    }
     const pfx::host::Timing timing = choose_timing(options, renderer, &results);
     {
       FrameBench bench(options, registry, timing, gl, results);

@@ -7,12 +7,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "bench_report.hpp"
 #include "error_metrics.hpp"
 #include "exr_io.hpp"
+#include "png_io.hpp"
 #include "suite.hpp"
 
 namespace fs = std::filesystem;
@@ -144,5 +147,43 @@ TEST_CASE("bench on input frames with a ground truth and a halo mask", "[bench]"
   CHECK(WEXITSTATUS(status) == 3);
   status = std::system((base + " --truth a.exr --truth b.exr > /dev/null 2>&1").c_str());
   CHECK(WEXITSTATUS(status) == 2);
+  fs::remove_all(dir);
+}
+
+// An 8-bit PNG is measured as every host of 8-bit frames runs the chain: its codes in 8-bit
+// textures, handed as they are to an effect that promises to only sample its colour and draw its
+// output (first_effect's tint: one pass, no target of pfx's own), converted to RGBA16F and back
+// around one that does not (minimal's gain), as docs/architecture.md says the chain does. The
+// same effects on an EXR frame run their own passes alone.
+TEST_CASE("bench on an 8-bit PNG runs the chain on the 8-bit frame as hosts hand it over", "[bench]") {
+  const fs::path dir = fs::temp_directory_path() / ("pfx-bench-png-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  pfx::app::DisplayImage png;
+  png.width = 24;
+  png.height = 16;
+  png.channels = 3;
+  for (int i = 0; i < png.width * png.height * 3; ++i) png.pixels.push_back(static_cast<uint8_t>(i * 7 % 256));
+  std::string error;
+  REQUIRE(pfx::app::write_png((dir / "frame.png").string(), png, &error));
+  auto passes_of = [&](const std::string& plugins, const std::string& effect, const std::string& set) {
+    const std::string command = std::string(PFX_BENCH) + " --frames 1 --warmup 0 --no-shift --plugins " + plugins +
+                                " --effects " + effect + " --set " + set + " --input " + (dir / "frame.png").string() +
+                                " --out " + (dir / "out").string() + " > /dev/null 2>&1";
+    const int status = std::system(command.c_str());
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 0);
+    std::ifstream in(dir / "out" / "bench.json");
+    const auto json = nlohmann::json::parse(in);
+    CHECK(json["units"][0]["source"] == (dir / "frame.png").string() + " (8-bit, as hosts hand it over)");
+    CHECK(json["units"][0]["width"] == 24);
+    std::vector<std::string> names;
+    REQUIRE(json["rows"].size() == 1);
+    for (const auto& pass : json["rows"][0]["passes"]) names.push_back(pass["pass"].get<std::string>());
+    return names;
+  };
+  CHECK(passes_of(PFX_TEST_PLUGIN_DIR "/first_effect", "tint", "tint.tint=1,0.5,0.5") ==
+        std::vector<std::string>{"tint"});
+  CHECK(passes_of(PFX_TEST_PLUGIN_DIR, "gain", "gain.gain=2") ==
+        std::vector<std::string>{"8-bit colour to RGBA16F", "gain", "RGBA16F to 8-bit output"});
   fs::remove_all(dir);
 }
