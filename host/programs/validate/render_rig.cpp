@@ -216,6 +216,13 @@ bool RenderRig::render_display(const pfx::app::DisplayImage& codes, const std::s
     in.release();
     out.release();
   }
+  // The second render gets a fresh instance: an effect may keep state from frame to frame (an FX
+  // effect's textures and counters do, as in ReShade), and each render must be its first frame.
+  if (rendered) {
+    const std::string effect_id = effect_->id;
+    remove_effect();
+    rendered = add_effect(effect_id);
+  }
   if (rendered) {
     textures.color = pfx::app::upload_color_texture(decoded);
     const uint32_t out = pfx::app::create_color_texture(w, h);

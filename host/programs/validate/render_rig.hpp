@@ -47,7 +47,8 @@ class RenderRig {
   bool render(const pfx::app::Image& input, const std::string& label, pfx::app::Image* output = nullptr);
 
   // A display frame (`codes`: 8-bit sRGB RGBA, row 0 at the top) rendered twice with the same
-  // values: handed to the chain as 8-bit textures (an sRGB view in and out, as the hosts of 8-bit
+  // values, each by a fresh instance of the effect (the rig's one effect, made again between
+  // them): handed to the chain as 8-bit textures (an sRGB view in and out, as the hosts of 8-bit
   // frames hand it), and decoded with the exact curve into RGBA16F, its result encoded back on the
   // CPU. Both results as codes (row 0 at the top); *own_passes counts the passes the chain ran
   // of its own in the 8-bit render (its conversions). False after reporting a failed render.

@@ -322,6 +322,11 @@ pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, 
   }
   out->passes = passes_.data();
   out->pass_count = static_cast<uint32_t>(passes_.size());
+  // The encode pass only samples "color" (texelFetch on the unit the host bound) and the decode
+  // pass only draws into the framebuffer the host bound; every other pass works on the effect's own
+  // textures. So a host of 8-bit frames hands its frame in and takes the result as they are, with
+  // no conversion to RGBA16F and back around the effect.
+  if (PFX_STRUCT_HAS(out, pfx_declaration, flags)) out->flags |= PFX_DECLARATION_SAMPLES_AND_DRAWS;
   return PFX_OK;
 }
 
