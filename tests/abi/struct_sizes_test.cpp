@@ -17,7 +17,7 @@ struct Sizes {
   size_t minimum, today;
 };
 
-// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.5).
+// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.6).
 const std::map<std::string, Sizes>& pinned() {
   static const std::map<std::string, Sizes> sizes = {
       {"pfx_entry", {64, 64}},          {"pfx_host", {48, 56}},

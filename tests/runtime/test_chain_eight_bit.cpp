@@ -15,123 +15,16 @@
 
 #include <glad/gl.h>
 
-#include "eight_bit_texture.hpp"
-#include "gl_test_support.hpp"
+#include "eight_bit_rig.hpp"
 
 namespace {
 
-double srgb_to_linear(double code) {
-  const double v = code / 255.0;
-  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-double linear_to_srgb_code(double linear) {
-  const double l = std::clamp(linear, 0.0, 1.0);
-  return 255.0 * (l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055);
-}
-
-// Every code in each colour channel, across a 64x12 frame (an odd mix per pixel), alpha varied.
-constexpr int kWidth = 64, kHeight = 12;
-std::vector<uint8_t> every_code() {
-  std::vector<uint8_t> bytes(size_t(kWidth) * kHeight * 4);
-  for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) {
-    bytes[i * 4 + 0] = uint8_t(i % 256);
-    bytes[i * 4 + 1] = uint8_t((i * 7 + 3) % 256);
-    bytes[i * 4 + 2] = uint8_t((i * 13 + 101) % 256);
-    bytes[i * 4 + 3] = uint8_t((i * 5) % 256);
-  }
-  return bytes;
-}
-
-struct Rig {
-  std::unique_ptr<pfx::host::PluginRegistry> registry;
-  pfx::host::ParamStore params;
-  std::unique_ptr<pfx::host::Chain> chain;
-  Rig() {
-    pfx::test::gl_context();
-    registry = pfx::test::make_registry();
-    std::string error;
-    REQUIRE(registry->load(PFX_TEST_MINIMAL_PLUGIN, &error));
-    REQUIRE(registry->load(PFX_TEST_FIRST_EFFECT_PLUGIN, &error));
-    REQUIRE(registry->load(PFX_TEST_PROBE_PLUGIN, &error));
-    chain = std::make_unique<pfx::host::Chain>(*registry, params);
-  }
-  void add(const std::string& effect, const std::string& assignment) {
-    std::string error;
-    INFO(error);
-    REQUIRE(chain->add(effect, &error));
-    if (!assignment.empty()) REQUIRE(params.set_assignment(assignment, &error));
-  }
-  // The frame through the chain, 8-bit in and out (sRGB views, or plain RGBA8 holding linear values).
-  // swap_red_blue: the colour texture is sampled through a swizzle that trades red and blue.
-  std::vector<uint8_t> render(const std::vector<uint8_t>& bytes, bool srgb, bool swap_red_blue = false) {
-    const auto transfer = srgb ? pfx::app::Transfer::SRGB : pfx::app::Transfer::LINEAR;
-    pfx::gl::EightBitTexture in, out;
-    in.create(kWidth, kHeight);
-    out.create(kWidth, kHeight);
-    in.upload_top_first(bytes.data(), kWidth, kHeight);
-    if (swap_red_blue) {
-      const GLint swizzle[4] = {GL_BLUE, GL_GREEN, GL_RED, GL_ALPHA};
-      glTextureParameteriv(in.as(transfer), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
-    }
-    pfx::host::FrameTextures textures;
-    textures.color = in.as(transfer);
-    std::string error;
-    const bool rendered = chain->render(pfx::test::make_frame(kWidth, kHeight), textures, out.as(transfer), &error);
-    std::vector<uint8_t> result(bytes.size());
-    out.read_top_first(result.data(), kWidth, kHeight);
-    in.release();
-    out.release();
-    INFO(error);
-    REQUIRE(rendered);
-    return result;
-  }
-  // The same, drawn into a framebuffer whose colour is a renderbuffer of `format`, told that it
-  // holds sRGB codes or not; false with *error when the chain refuses.
-  bool render_into_framebuffer(const std::vector<uint8_t>& bytes, bool srgb, GLenum format,
-                               std::vector<uint8_t>* result, std::string* error) {
-    const auto transfer = srgb ? pfx::app::Transfer::SRGB : pfx::app::Transfer::LINEAR;
-    pfx::gl::EightBitTexture in;
-    in.create(kWidth, kHeight);
-    in.upload_top_first(bytes.data(), kWidth, kHeight);
-    GLuint renderbuffer = 0, framebuffer = 0;
-    glCreateRenderbuffers(1, &renderbuffer);
-    glNamedRenderbufferStorage(renderbuffer, format, kWidth, kHeight);
-    glCreateFramebuffers(1, &framebuffer);
-    glNamedFramebufferRenderbuffer(framebuffer, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer);
-    pfx::host::FrameTextures textures;
-    textures.color = in.as(transfer);
-    pfx::host::FramebufferOutput output;
-    output.framebuffer = framebuffer;
-    output.srgb = srgb;
-    const bool rendered = chain->render(pfx::test::make_frame(kWidth, kHeight), textures, output, error);
-    // Read as the bits are (no conversion with GL_FRAMEBUFFER_SRGB off), bottom row first.
-    std::vector<uint8_t> bottom_first(bytes.size());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, bottom_first.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    result->resize(bytes.size());
-    const size_t row = size_t(kWidth) * 4;
-    for (int y = 0; y < kHeight; ++y)
-      std::copy_n(bottom_first.begin() + long(y * row), row, result->begin() + long((kHeight - 1 - y) * row));
-    glDeleteFramebuffers(1, &framebuffer);
-    glDeleteRenderbuffers(1, &renderbuffer);
-    in.release();
-    return rendered;
-  }
-  std::vector<uint8_t> render_into_framebuffer(const std::vector<uint8_t>& bytes, bool srgb) {
-    std::vector<uint8_t> result;
-    std::string error;
-    const bool rendered = render_into_framebuffer(bytes, srgb, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, &result, &error);
-    INFO(error);
-    REQUIRE(rendered);
-    return result;
-  }
-  std::vector<std::string> passes() const {
-    std::vector<std::string> names;
-    for (const auto& pass : chain->report().passes) names.push_back(pass.effect + ":" + pass.pass);
-    return names;
-  }
-};
+using pfx::test::EightBitRig;
+using pfx::test::every_code;
+using pfx::test::kHeight;
+using pfx::test::kWidth;
+using pfx::test::linear_to_srgb_code;
+using pfx::test::srgb_to_linear;
 
 // The worst distance, in codes, of `got` from each colour channel times its scale (decoded by the
 // transfer and encoded back); alpha kept.
@@ -156,7 +49,7 @@ double worst_codes(const std::vector<uint8_t>& in, const std::vector<uint8_t>& g
 
 TEST_CASE("an effect that promised to sample and draw runs on an 8-bit frame as it is, with no pass of the chain's",
           "[chain][eight_bit]") {
-  Rig rig;
+  EightBitRig rig;
   rig.add("tint", "tint.tint=0.5,0.25,2");
   const std::vector<uint8_t> in = every_code();
   for (const bool srgb : {true, false}) {
@@ -176,7 +69,7 @@ TEST_CASE("an effect that promised to sample and draw runs on an 8-bit frame as 
 
 TEST_CASE("an effect that did not promise gets RGBA16F: the chain converts the 8-bit frame on each side, timed as its own passes",
           "[chain][eight_bit]") {
-  Rig rig;
+  EightBitRig rig;
   rig.add("gain", "gain.gain=0.5");
   const std::vector<uint8_t> in = every_code();
   const std::vector<uint8_t> out = rig.render(in, true);
@@ -191,7 +84,7 @@ TEST_CASE("an effect that did not promise gets RGBA16F: the chain converts the 8
 TEST_CASE("in a chain of both, only the side whose effect did not promise is converted", "[chain][eight_bit]") {
   const std::vector<uint8_t> in = every_code();
   {
-    Rig rig;  // the promised tint first: the colour goes in as it is; gain's output is converted
+    EightBitRig rig;  // the promised tint first: the colour goes in as it is; gain's output is converted
     rig.add("tint", "tint.tint=0.5,0.5,0.5");
     rig.add("gain", "gain.gain=1.5");
     const std::vector<uint8_t> out = rig.render(in, true);
@@ -199,7 +92,7 @@ TEST_CASE("in a chain of both, only the side whose effect did not promise is con
     CHECK(worst_codes(in, out, 0.75, true) < 1.5);
   }
   {
-    Rig rig;  // gain first: its colour is converted; the promised tint draws the 8-bit output
+    EightBitRig rig;  // gain first: its colour is converted; the promised tint draws the 8-bit output
     rig.add("gain", "gain.gain=1.5");
     rig.add("tint", "tint.tint=0.5,0.5,0.5");
     const std::vector<uint8_t> out = rig.render(in, true);
@@ -209,7 +102,7 @@ TEST_CASE("in a chain of both, only the side whose effect did not promise is con
 }
 
 TEST_CASE("with no effect to run, an 8-bit frame is copied to an 8-bit output bit for bit", "[chain][eight_bit]") {
-  Rig rig;
+  EightBitRig rig;
   rig.add("tint", "tint.tint=1,1,1");  // white: declares no pass
   const std::vector<uint8_t> in = every_code();
   for (const bool srgb : {true, false}) {
@@ -220,7 +113,7 @@ TEST_CASE("with no effect to run, an 8-bit frame is copied to an 8-bit output bi
 
 TEST_CASE("with no effect to run, a colour the host swizzled is copied as it samples, not as it is stored",
           "[chain][eight_bit]") {
-  Rig rig;
+  EightBitRig rig;
   rig.add("tint", "tint.tint=1,1,1");
   const std::vector<uint8_t> in = every_code();
   std::vector<uint8_t> swapped = in;
@@ -234,7 +127,7 @@ TEST_CASE("with no effect to run, a colour the host swizzled is copied as it sam
 
 TEST_CASE("a framebuffer as the output gets the bytes an 8-bit texture gets, drawn by the effect itself",
           "[chain][eight_bit]") {
-  Rig rig;
+  EightBitRig rig;
   rig.add("tint", "tint.tint=0.5,0.25,2");
   const std::vector<uint8_t> in = every_code();
   for (const bool srgb : {true, false}) {
@@ -252,7 +145,7 @@ TEST_CASE("into a framebuffer, an effect that did not promise, or reads its outp
           "[chain][eight_bit]") {
   const std::vector<uint8_t> in = every_code();
   {
-    Rig rig;
+    EightBitRig rig;
     rig.add("gain", "gain.gain=0.5");
     const std::vector<uint8_t> out = rig.render_into_framebuffer(in, true);
     CHECK(rig.passes() ==
@@ -261,7 +154,7 @@ TEST_CASE("into a framebuffer, an effect that did not promise, or reads its outp
     CHECK(worst_codes(in, out, 0.5, true) < 1.5);
   }
   {
-    Rig rig;  // promised, but a framebuffer cannot be sampled: its output goes through RGBA16F
+    EightBitRig rig;  // promised, but a framebuffer cannot be sampled: its output goes through RGBA16F
     rig.add("readback", "");
     const std::vector<uint8_t> out = rig.render_into_framebuffer(in, true);
     CHECK(rig.passes() ==
@@ -272,7 +165,7 @@ TEST_CASE("into a framebuffer, an effect that did not promise, or reads its outp
 }
 
 TEST_CASE("into a framebuffer with no effect to run, the frame is copied bit for bit", "[chain][eight_bit]") {
-  Rig rig;
+  EightBitRig rig;
   rig.add("tint", "tint.tint=1,1,1");
   const std::vector<uint8_t> in = every_code();
   for (const bool srgb : {true, false}) {
@@ -282,7 +175,7 @@ TEST_CASE("into a framebuffer with no effect to run, the frame is copied bit for
 }
 
 TEST_CASE("a framebuffer said to hold sRGB codes that cannot encode them is refused", "[chain][eight_bit]") {
-  Rig rig;
+  EightBitRig rig;
   rig.add("tint", "tint.tint=0.5,0.25,2");
   std::vector<uint8_t> out;
   std::string error;

@@ -181,3 +181,79 @@ TEST_CASE("declarations are copied with sizes resolved against the frame", "[pla
   CHECK_FALSE(copy_declaration(raw, 8, 8, &copy, &error));
   CHECK(error == "target 'fixed' is 0x1, outside 1..16384");
 }
+
+namespace {
+
+// One pass from "color" to "output", with the promises `flags`.
+Declaration one_pass(uint32_t flags) {
+  Declaration d;
+  d.passes = {pass("main", "output", {"color"})};
+  d.flags = flags;
+  return d;
+}
+
+// The chain's conversion passes of a plan, in order.
+std::vector<Conversion> conversions(const FramePlan& plan) {
+  std::vector<Conversion> found;
+  for (const PlannedPass& p : plan.passes)
+    if (p.conversion != Conversion::NONE) found.push_back(p.conversion);
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("display-referred neighbours hand sRGB codes to each other in 8 bits, with no conversion between them",
+          "[plan][display_referred]") {
+  const Declaration fx = one_pass(PFX_DECLARATION_DISPLAY_REFERRED);
+  FramePlan plan;
+  std::string error;
+  REQUIRE(plan_frame({{"a", &fx}, {"b", &fx}, {"c", &fx}}, 64, 32, PFX_INPUT_COLOR, &plan, &error));
+  CHECK(conversions(plan).empty());
+  REQUIRE(plan.resources.size() == 2);
+  for (const PlannedResource& r : plan.resources) {
+    CHECK(r.format == PFX_FORMAT_RGBA8);
+    CHECK(r.display_codes);
+  }
+  for (const PlannedPass& p : plan.passes) CHECK(p.display_referred);
+  CHECK(plan.peak_target_bytes == uint64_t(2) * 64 * 32 * 4);  // half of RGBA16F's
+}
+
+TEST_CASE("beside a linear effect, codes are folded into its sampling and drawing only where it promised",
+          "[plan][display_referred]") {
+  const Declaration fx = one_pass(PFX_DECLARATION_DISPLAY_REFERRED);
+  const Declaration promised = one_pass(PFX_DECLARATION_SAMPLES_AND_DRAWS);
+  const Declaration plain = one_pass(0);
+  std::string error;
+  SECTION("a linear effect that promised reads and writes the codes itself") {
+    FramePlan plan;
+    REQUIRE(plan_frame({{"fx", &fx}, {"tint", &promised}, {"fx2", &fx}}, 8, 8, PFX_INPUT_COLOR, &plan, &error));
+    CHECK(conversions(plan).empty());
+    REQUIRE(plan.resources.size() == 2);
+    CHECK(plan.resources[0].display_codes);
+    CHECK(plan.resources[1].display_codes);
+    CHECK_FALSE(plan.passes[1].display_referred);
+  }
+  SECTION("one that did not gets RGBA16F through a conversion on each side") {
+    FramePlan plan;
+    REQUIRE(plan_frame({{"fx", &fx}, {"gain", &plain}, {"fx2", &fx}}, 8, 8, PFX_INPUT_COLOR, &plan, &error));
+    CHECK(conversions(plan) == std::vector<Conversion>{Conversion::TO_LINEAR, Conversion::TO_DISPLAY});
+    REQUIRE(plan.passes.size() == 5);
+    // fx writes codes; the conversion reads them and writes the RGBA16F colour gain reads.
+    const PlannedPass& to_linear = plan.passes[1];
+    CHECK(to_linear.inputs[0].resource == plan.passes[0].output.resource);
+    CHECK(plan.resources[to_linear.output.resource].format == PFX_FORMAT_RGBA16F);
+    CHECK(plan.passes[2].inputs[0].resource == to_linear.output.resource);
+    CHECK(plan.resources[plan.passes[2].output.resource].format == PFX_FORMAT_RGBA16F);
+    const PlannedPass& to_display = plan.passes[3];
+    CHECK(plan.resources[to_display.output.resource].display_codes);
+    CHECK(plan.passes[4].inputs[0].resource == to_display.output.resource);
+    CHECK(plan.passes[4].output.kind == ResourceRef::CHAIN_OUTPUT);
+  }
+  SECTION("two linear effects keep RGBA16F between them") {
+    FramePlan plan;
+    REQUIRE(plan_frame({{"tint", &promised}, {"gain", &plain}}, 8, 8, PFX_INPUT_COLOR, &plan, &error));
+    CHECK(conversions(plan).empty());
+    CHECK(plan.resources[0].format == PFX_FORMAT_RGBA16F);
+    CHECK_FALSE(plan.resources[0].display_codes);
+  }
+}

@@ -40,6 +40,24 @@ void main() {
 }
 )";
 
+// The same for a host of ABI 1.6 or later, to which the effect declares itself display-referred
+// (PFX_DECLARATION_DISPLAY_REFERRED): "color" and the output hold sRGB codes already, so the
+// picture only moves, with the frame's alpha.
+const char* kCopyMain = R"(
+layout(binding = 0) uniform sampler2D scene_color;
+layout(location = 0) out vec4 display;
+void main() { display = texelFetch(scene_color, ivec2(gl_FragCoord.xy), 0); }
+)";
+const char* kFinishMain = R"(
+layout(binding = 0) uniform sampler2D scene_color;
+layout(binding = 1) uniform sampler2D back_buffer;
+layout(location = 0) out vec4 color;
+void main() {
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  color = vec4(texelFetch(back_buffer, texel, 0).rgb, texelFetch(scene_color, texel, 0).a);
+}
+)";
+
 // pfx depth (window depth, reversed window depth, or metres) -> linear L in [0, 1] from the near to
 // the far plane -> the window depth d of a projection with near 1 and far F = 1000, which
 // GetLinearizedDepth turns back into L: d / (F - d (F - 1)) = L.
@@ -155,8 +173,10 @@ void FxInstance::log(pfx_log_level level, const std::string& message) const {
 bool FxInstance::create_gl() {
   if (!pfx::gl::load_gl_or_log(host_, "fx")) return false;
   std::string error;
-  encode_program_ = transfer_program(kEncodeMain, &error);
-  if (encode_program_) decode_program_ = transfer_program(kDecodeMain, &error);
+  // Codes in and out where the host can hand them (ABI 1.6), linear light otherwise.
+  display_referred_ = host_->abi_minor >= 6;
+  encode_program_ = transfer_program(display_referred_ ? kCopyMain : kEncodeMain, &error);
+  if (encode_program_) decode_program_ = transfer_program(display_referred_ ? kFinishMain : kDecodeMain, &error);
   if (decode_program_) depth_program_ = transfer_program(kDepthMain, &error);
   if (!depth_program_) {
     log(PFX_LOG_ERROR, "the colour transfer programs did not build: " + error);
@@ -193,6 +213,23 @@ std::unique_ptr<pfx::fx::CompiledEffect> FxInstance::compile_at(int width, int h
   return compiled;
 }
 
+bool FxInstance::can_sample_frame() const {
+  // Sampled as codes only: an sRGB sampler on the back buffer needs a view the host's texture
+  // may not allow.
+  const pfx::fx::EffectModel& model = compiled_->model;
+  for (const pfx::fx::SamplerInfo& s : model.samplers)
+    if (s.srgb && s.texture >= 0 && model.textures[static_cast<std::size_t>(s.texture)].semantic == pfx::fx::TextureSemantic::kColor)
+      return false;
+  // The first pass that writes the back buffer must write all of it: one that leaves pixels would
+  // start from a copy of the frame, and the effect promised only to sample it.
+  const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
+  for (std::size_t i = 0; i < technique().passes.size(); ++i) {
+    const PassInfo& pass = technique().passes[i];
+    if (!pass.compute_shader && pass.render_target_count == 0) return covers_back_buffer(pass, generated[i]);
+  }
+  return true;
+}
+
 void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
   compiled_ = std::move(compiled);
   gl_current_ = false;
@@ -204,12 +241,13 @@ void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
       int t = compiled_->model.samplers[static_cast<std::size_t>(s)].texture;
       needs_depth_ = needs_depth_ || (t >= 0 && compiled_->model.textures[static_cast<std::size_t>(t)].semantic == pfx::fx::TextureSemantic::kDepth);
     }
+  samples_frame_ = display_referred_ && can_sample_frame();
   // Names first: the descriptors point into these strings, which must not move afterwards.
   pass_names_.clear();
-  pass_names_.push_back("encode");
+  pass_names_.push_back(samples_frame_ ? "begin" : display_referred_ ? "copy in" : "encode");
   for (std::size_t i = 0; i < technique().passes.size(); ++i)
     pass_names_.push_back(technique().passes[i].name.empty() ? "pass" + std::to_string(i) : technique().passes[i].name);
-  pass_names_.push_back("decode");
+  pass_names_.push_back(display_referred_ ? "finish" : "decode");
   color_input_[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
   color_input_[1] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
   for (std::size_t i = 0; i < pass_names_.size(); ++i) {
@@ -222,11 +260,13 @@ void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
       p.inputs = color_input_;
       p.input_count = needs_depth_ ? 2 : 1;
     }
-    if (i + 1 == pass_names_.size()) {
-      p.output = PFX_OUTPUT_NAME;
-      p.inputs = color_input_;  // the frame's alpha, kept
+    if (i + 1 == pass_names_.size() || (samples_frame_ && i > 0)) {
+      // The frame's alpha, kept; and the picture itself, which the technique's passes sample until
+      // one of them writes the back buffer.
+      p.inputs = color_input_;
       p.input_count = 1;
     }
+    if (i + 1 == pass_names_.size()) p.output = PFX_OUTPUT_NAME;
     passes_.push_back(p);
   }
   uniforms_.reset(compiled_->model, entry_.params);
@@ -322,11 +362,12 @@ pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, 
   }
   out->passes = passes_.data();
   out->pass_count = static_cast<uint32_t>(passes_.size());
-  // The encode pass only samples "color" (texelFetch on the unit the host bound) and the decode
-  // pass only draws into the framebuffer the host bound; every other pass works on the effect's own
+  // The first pass and the technique's (samples_frame_) only sample "color", and the last only
+  // draws into the framebuffer the host bound; every other pass works on the effect's own
   // textures. So a host of 8-bit frames hands its frame in and takes the result as they are, with
-  // no conversion to RGBA16F and back around the effect.
-  if (PFX_STRUCT_HAS(out, pfx_declaration, flags)) out->flags |= PFX_DECLARATION_SAMPLES_AND_DRAWS;
+  // no conversion to RGBA16F and back around the effect; one of ABI 1.6 hands sRGB codes.
+  if (PFX_STRUCT_HAS(out, pfx_declaration, flags))
+    out->flags |= PFX_DECLARATION_SAMPLES_AND_DRAWS | (display_referred_ ? uint32_t{PFX_DECLARATION_DISPLAY_REFERRED} : 0u);
   return PFX_OK;
 }
 
@@ -445,6 +486,10 @@ void FxInstance::run_encode(const pfx_pass_context& context) {
   current_ = 0;
   draw_into(&back_buffer_[0].texture, 1, compiled_width_, compiled_height_);
   stencil_.clear(framebuffer_);  // the technique starts: zeros, as in ReShade
+  // sRGB codes from a host of ABI 1.6: the technique samples the frame's own texture until a pass
+  // writes the back buffer.
+  frame_color_ = samples_frame_ ? context.inputs[0].texture : 0;
+  if (samples_frame_) return;
   glUseProgram(encode_program_);  // unit 0: the frame's colour, bound by the host
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -472,7 +517,7 @@ void FxInstance::draw_into(const GLuint* textures, int count, int width, int hei
 
 void FxInstance::run_decode(const pfx_pass_context& context) {
   (void)context;  // the host bound the output, its viewport and the frame's colour on unit 0
-  glBindTextureUnit(1, back_buffer_[current_].texture);
+  glBindTextureUnit(1, frame_color_ ? frame_color_ : back_buffer_[current_].texture);
   glUseProgram(decode_program_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -481,6 +526,7 @@ GLuint FxInstance::texture_for_sampler(const pfx::fx::SamplerInfo& sampler) cons
   if (sampler.texture < 0) return 0;
   const pfx::fx::TextureInfo& info = compiled_->model.textures[static_cast<std::size_t>(sampler.texture)];
   if (info.semantic == pfx::fx::TextureSemantic::kDepth) return fx_depth_.texture;
+  if (info.semantic == pfx::fx::TextureSemantic::kColor && frame_color_) return frame_color_;
   const GlTexture& t = info.semantic == pfx::fx::TextureSemantic::kColor ? back_buffer_[current_] : textures_[static_cast<std::size_t>(sampler.texture)];
   return sampler.srgb && t.srgb_view ? t.srgb_view : t.texture;
 }
@@ -571,6 +617,7 @@ void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
   if (pass.srgb_write) glDisable(GL_FRAMEBUFFER_SRGB);
   if (pass.render_target_count == 0) {
     current_ = 1 - current_;
+    frame_color_ = 0;  // the picture is in the back buffer from now on
     return;
   }
   if (pass.generate_mipmaps)

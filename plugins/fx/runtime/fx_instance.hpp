@@ -4,6 +4,12 @@
 //   pass i   each pass of the technique, on the effect's own textures (kept from frame to frame,
 //            as FX effects expect) or the back buffer
 //   decode   the back buffer -> the effect's output, linear again
+// A host of ABI 1.6 or later hands the effect sRGB codes and takes them back
+// (PFX_DECLARATION_DISPLAY_REFERRED), and the chain converts only where a neighbour wants linear
+// light. Then nothing is encoded or decoded: the first pass ("begin") only gets the technique
+// ready, its passes sample the host's colour as the back buffer until one writes the back buffer
+// (or "copy in" copies it first, for a technique that cannot), and "finish" moves the picture to
+// the output with the frame's alpha.
 // The FX source is compiled again when the frame size changes (BUFFER_WIDTH and its kin are
 // constants of the source), when the file or one of its includes is edited and when the host sets
 // other preprocessor definitions, on the CPU in declare and into GL programs in the next run.
@@ -52,6 +58,10 @@ class FxInstance {
   // is logged and the last version that compiled keeps running.
   void watch(const pfx::fx::CompiledEffect& compiled);
   void reload_if_edited();
+  // Whether the compiled technique can start on the host's "color" as it is: a display-referred
+  // host hands sRGB codes, and the technique reads the back buffer only as plain samples until a
+  // pass writes all of it.
+  bool can_sample_frame() const;
   bool build_gl();  // GL textures and samplers, for the compiled source (programs_ builds the programs)
   void release_gl();
   void log(pfx_log_level level, const std::string& message) const;
@@ -90,6 +100,11 @@ class FxInstance {
   GlTexture back_buffer_[2];
   FxStencil stencil_;  // when a pass enables the stencil test
   int current_ = 0;  // which back buffer holds the picture
+  // The host's colour, while the picture is still there (samples_frame_): passes sample it as the
+  // back buffer until one writes the back buffer; 0 from then on.
+  GLuint frame_color_ = 0;
+  bool display_referred_ = false;  // the host (ABI 1.6+) hands and takes sRGB codes
+  bool samples_frame_ = false;     // ...and the technique starts on them as they are
   // FX's depth buffer: the frame's depth as standard window depth of a projection with its far
   // plane 1000 near planes away (what ReShade.fxh's GetLinearizedDepth reads with the settings
   // compile_options defines), made by depth_program_ from any pfx depth encoding. Without depth

@@ -143,15 +143,18 @@ bool FxPrograms::build(const pfx::fx::CompiledEffect& compiled, int technique, P
       p.uniform_locations.push_back(glGetUniformLocation(
           p.program, model.global_names.at(model.uniforms[static_cast<std::size_t>(u)].decl).c_str()));
     p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
-    // A pass that may leave pixels of the back buffer unwritten starts from a copy of it.
-    const bool standard_vs = pass.vertex_shader && pass.vertex_shader->name == "PostProcessVS";
-    p.covers_target = standard_vs && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !g.may_discard &&
-                      pass.vertex_count == 3 && pass.topology == pfx::fx::Topology::kTriangleList && !pass.stencil.enable;
+    p.covers_target = covers_back_buffer(pass, g);
     set.programs.push_back(p);
   }
   set.built = true;
   build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return true;
+}
+
+bool covers_back_buffer(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& generated) {
+  const bool standard_vs = pass.vertex_shader && pass.vertex_shader->name == "PostProcessVS";
+  return standard_vs && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !generated.may_discard &&
+         pass.vertex_count == 3 && pass.topology == pfx::fx::Topology::kTriangleList && !pass.stencil.enable;
 }
 
 }  // namespace pfx_fx

@@ -29,6 +29,11 @@ struct PassProgram {
   bool covers_target = true;  // draws every pixel of the back buffer (no copy needed first)
 };
 
+// Whether a pass that writes the back buffer writes every pixel of it, so it need not start from
+// a copy of the picture: the standard full-screen triangle, no blending, every channel, no discard,
+// no stencil test.
+bool covers_back_buffer(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& generated);
+
 struct ProgramSet {
   std::vector<pfx::fx::GeneratedPass> generated;  // per pass of the technique
   std::vector<PassProgram> programs;

@@ -18,14 +18,6 @@ GLADapiproc load_through_registry(void* user, const char* name) {
   return reinterpret_cast<GLADapiproc>(registry->gl_loader()(name));
 }
 
-// Whether a pass of the plan samples the chain's output (the last effect reading back what it drew).
-bool plan_reads_chain_output(const FramePlan& plan) {
-  for (const PlannedPass& pass : plan.passes)
-    for (const ResourceRef& input : pass.inputs)
-      if (input.kind == ResourceRef::CHAIN_OUTPUT) return true;
-  return false;
-}
-
 }  // namespace
 
 Chain::Chain(const PluginRegistry& registry, ParamStore& params) : registry_(registry), params_(params) {
@@ -373,30 +365,6 @@ bool Chain::render_into(const pfx_frame& frame, const FrameTextures& textures, c
     return false;
   }
   FrameResources resources{frame, textures, output, plan_, gl_->pool};
-  resources.color_bound = textures.color;
-  resources.output_bound = output.texture;
-  resources.output_to_framebuffer = output.to_framebuffer;
-  resources.output_eight_bit = output.to_framebuffer || is_eight_bit_texture(output.texture);
-  // Drawing into an sRGB texture encodes (a plain RGBA8 one ignores the switch); a framebuffer
-  // says which it holds.
-  resources.output_srgb_writes = output.to_framebuffer ? output.srgb : resources.output_eight_bit;
-  if (!active.empty()) {
-    // An 8-bit frame meets the first and the last effect as it is when they promised to only
-    // sample and draw it; otherwise through the chain's RGBA16F copy on that side. A framebuffer
-    // cannot be sampled: a last effect that reads its "output" back writes the copy too.
-    const auto promised = [&](int index) {
-      return (instances_[index]->declaration.flags & PFX_DECLARATION_SAMPLES_AND_DRAWS) != 0;
-    };
-    resources.widen_color = !promised(active.front()) && is_eight_bit_texture(textures.color);
-    if (resources.output_eight_bit &&
-        (!promised(active.back()) || (output.to_framebuffer && plan_reads_chain_output(plan_)))) {
-      resources.output_bound = gl_->conversion.wide_output(frame.width, frame.height);
-      resources.output_to_framebuffer = false;
-      resources.output_eight_bit = false;
-      resources.output_srgb_writes = false;
-      resources.narrow_output = true;
-    }
-  }
   const bool ran = execute(resources, active, error);
   report_.peak_target_bytes = plan_.peak_target_bytes + gl_->conversion.bytes();
   report_.unpooled_target_bytes = plan_.unpooled_target_bytes + gl_->conversion.bytes();

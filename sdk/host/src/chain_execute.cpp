@@ -1,6 +1,7 @@
 // Chain::execute: running a frame's plan. Each pass is bound (output, viewport, blend, inputs),
 // run between the pass hooks and the timer, and checked; then the timer and the effects report.
 #include "chain_internal.hpp"
+#include "frame_ends.hpp"
 #include "frame_timer.hpp"
 #include "pfx/host/gl_error.hpp"
 
@@ -61,6 +62,14 @@ bool copy_color_to_output(const FrameResources& resources, const GlLimits& limit
   return false;
 }
 
+// Whether a pass of the plan samples the chain's output (the last effect reading back what it drew).
+bool plan_reads_chain_output(const FramePlan& plan) {
+  for (const PlannedPass& pass : plan.passes)
+    for (const ResourceRef& input : pass.inputs)
+      if (input.kind == ResourceRef::CHAIN_OUTPUT) return true;
+  return false;
+}
+
 bool transform_feedback_running() {
   GLboolean active = GL_FALSE, paused = GL_FALSE;
   glGetBooleanv(GL_TRANSFORM_FEEDBACK_ACTIVE, &active);
@@ -85,6 +94,7 @@ class PassBinding {
   void bind_inputs(const PlannedPass& planned, const DeclaredPass& pass);
 
   const FrameResources& resources_;
+  const bool display_referred_;  // the effect reads and writes sRGB codes
   GLuint output_texture_ = 0, output_framebuffer_ = 0;
   uint32_t output_width_ = 0, output_height_ = 0;
   pfx_format output_format_ = PFX_FORMAT_RGBA16F;
@@ -94,7 +104,7 @@ class PassBinding {
 
 PassBinding::PassBinding(const FrameResources& resources, const PlannedPass& planned,
                          const DeclaredPass& pass)
-    : resources_(resources) {
+    : resources_(resources), display_referred_(planned.display_referred) {
   bind_output(planned, pass);
   if (pass.blend == PFX_BLEND_ADD) glEnable(GL_BLEND);
   else glDisable(GL_BLEND);
@@ -115,7 +125,8 @@ GLuint PassBinding::resolve(const ResourceRef& ref, uint32_t* width, uint32_t* h
     *width = r.width;
     *height = r.height;
     *format = r.format;
-    return resources_.pool.texture(r.slot);
+    // sRGB codes between effects: a linear effect samples them decoded.
+    return r.display_codes && !display_referred_ ? resources_.pool.srgb_view(r.slot) : resources_.pool.texture(r.slot);
   }
   *width = resources_.frame.width;
   *height = resources_.frame.height;
@@ -138,10 +149,14 @@ void PassBinding::bind_output(const PlannedPass& planned, const DeclaredPass& pa
   const bool chain_output = planned.output.kind == ResourceRef::CHAIN_OUTPUT;
   if (chain_output && resources_.output_to_framebuffer) output_framebuffer_ = resources_.output.framebuffer;
   else if (chain_output) output_framebuffer_ = resources_.pool.framebuffer_for(output_texture_);
-  else output_framebuffer_ = resources_.pool.framebuffer(resources_.plan.resources[planned.output.resource].slot);
+  const PlannedResource* pooled = chain_output ? nullptr : &resources_.plan.resources[planned.output.resource];
+  // sRGB codes between effects: a linear effect draws them encoded.
+  const bool encodes_codes = pooled && pooled->display_codes && !display_referred_;
+  if (encodes_codes) output_framebuffer_ = resources_.pool.srgb_framebuffer(pooled->slot);
+  else if (pooled) output_framebuffer_ = resources_.pool.framebuffer(pooled->slot);
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_);
   // Drawing into an sRGB output encodes; every other target is linear.
-  if (chain_output && resources_.output_srgb_writes) {
+  if ((chain_output && resources_.output_srgb_writes) || encodes_codes) {
     glEnable(GL_FRAMEBUFFER_SRGB);
     srgb_writes_ = true;
   }
@@ -191,34 +206,56 @@ bool Chain::execute(FrameResources& resources, const std::vector<int>& active, s
   // unless a GlStateGuard of the host saved it already and will put it back.
   GlStateScope state_scope(gl_->limits, guards_ > 0 ? GlStateScope::SET_ONLY : GlStateScope::SAVE);
   FrameTimer timer(timing_, gl_->timer, report_.frame);
-  const uint32_t width = resources.frame.width, height = resources.frame.height;
-  // The chain's own conversions are timed and listed as passes of "chain", so a report shows them.
-  const auto converted = [&](const char* pass, bool done) {
-    timer.end_pass("chain", pass);
-    if (done) report_.passes.push_back({"chain", pass, 0.0});
-    return done;
-  };
-  if (resources.widen_color) {
-    timer.start_pass();
-    if (!converted("8-bit colour to RGBA16F", gl_->conversion.widen_color(resources.textures.color, width, height,
-                                                                         &resources.color_bound, error)))
-      return false;
-  }
-  for (const PlannedPass& planned : plan_.passes)
-    if (!run_pass(resources, planned, *instances_[active[planned.effect]], timer, error)) return false;
-  if (resources.narrow_output) {
-    timer.start_pass();
-    const HostOutput& output = resources.output;
-    const bool drawn = output.to_framebuffer ? gl_->conversion.draw_into(resources.output_bound, output.framebuffer,
-                                                                         output.srgb, width, height, error)
-                                             : gl_->conversion.draw_copy(resources.output_bound, output.texture,
-                                                                         width, height, error);
-    if (!converted("RGBA16F to 8-bit output", drawn)) return false;
-  }
+  const Declaration& first = instances_[active.front()]->declaration;
+  const Declaration& last = instances_[active.back()]->declaration;
+  choose_frame_ends(first, last, plan_reads_chain_output(plan_), gl_->conversion, &resources);
+  const bool ran = run_frame(resources, active, timer, error);
+  release_frame_views(&resources);
+  if (!ran) return false;
   if (timing_ != Timing::OFF) last_timed_frame_ = report_.frame;
   if (timer.finish(&report_.passes, &times_)) report_.times = times_;
   collect_effect_reports(active);
   return true;
+}
+
+bool Chain::run_frame(FrameResources& resources, const std::vector<int>& active, FrameTimer& timer,
+                      std::string* error) {
+  // The chain's own steps are timed and listed as passes of "chain", so a report shows them.
+  std::string name;
+  if (resources.color_step != ColorStep::AS_IS) {
+    timer.start_pass();
+    if (!run_color_step(resources, gl_->conversion, &name, error)) return false;
+    chain_pass(timer, name);
+  }
+  for (const PlannedPass& planned : plan_.passes) {
+    if (planned.conversion == Conversion::NONE) {
+      if (!run_pass(resources, planned, *instances_[active[planned.effect]], timer, error)) return false;
+      continue;
+    }
+    timer.start_pass();
+    if (!run_conversion(resources, planned, error)) return false;
+    chain_pass(timer, planned.conversion == Conversion::TO_DISPLAY ? "linear to sRGB codes" : "sRGB codes to linear");
+  }
+  if (resources.output_step != OutputStep::AS_IS) {
+    timer.start_pass();
+    if (!run_output_step(resources, gl_->pool, gl_->conversion, &name, error)) return false;
+    chain_pass(timer, name);
+  }
+  return true;
+}
+
+void Chain::chain_pass(FrameTimer& timer, const std::string& name) {
+  timer.end_pass("chain", name);
+  report_.passes.push_back({"chain", name, 0.0});
+}
+
+bool Chain::run_conversion(const FrameResources& resources, const PlannedPass& planned, std::string* error) {
+  const PlannedResource& from = plan_.resources[planned.inputs[0].resource];
+  const PlannedResource& to = plan_.resources[planned.output.resource];
+  const Transfer transfer = planned.conversion == Conversion::TO_DISPLAY ? Transfer::ENCODE : Transfer::DECODE;
+  // Both raw: ENCODE writes codes itself, DECODE reads them.
+  return gl_->conversion.draw_into(resources.pool.texture(from.slot), resources.pool.framebuffer(to.slot), false,
+                                   to.width, to.height, error, transfer);
 }
 
 bool Chain::run_pass(const FrameResources& resources, const PlannedPass& planned, Instance& instance,

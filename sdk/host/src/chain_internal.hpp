@@ -44,6 +44,21 @@ struct HostOutput {
   bool srgb = false;  // the framebuffer holds sRGB codes
 };
 
+// How the host's colour reaches the first effect, and the last effect's result the host's output
+// (frame_ends.hpp): as they are, or through one step of the chain's.
+enum class ColorStep {
+  AS_IS,
+  WIDEN,       // 8-bit colour drawn into the chain's RGBA16F copy, for a linear effect
+  COPY_CODES,  // 8-bit sRGB colour copied as codes, for a display-referred effect (no view could be made)
+  ENCODE,      // linear colour encoded into codes, for a display-referred effect
+};
+enum class OutputStep {
+  AS_IS,
+  NARROW,      // the chain's RGBA16F result drawn into the host's 8-bit output
+  COPY_CODES,  // the chain's codes copied into the host's 8-bit sRGB output as they are
+  DECODE,      // the chain's codes decoded into the host's linear output
+};
+
 // The textures one render() runs over: the frame's inputs, the chain's output, the plan's pooled
 // targets.
 struct FrameResources {
@@ -53,14 +68,16 @@ struct FrameResources {
   const FramePlan& plan;
   GlPool& pool;
   // What the first effect's "color" and the last effect's "output" are bound to this frame: the
-  // host's texture or framebuffer, or the chain's RGBA16F copies where the host's are 8-bit and
-  // the effect at that end did not promise PFX_DECLARATION_SAMPLES_AND_DRAWS (frame_conversion.hpp).
+  // host's texture or framebuffer, a raw view of it, or the chain's copies (frame_ends.hpp).
   GLuint color_bound = 0, output_bound = 0;
   bool output_to_framebuffer = false;  // the last effect draws into output.framebuffer, not output_bound
   bool output_eight_bit = false;  // the output the last effect writes is 8-bit (PFX_FORMAT_RGBA8)
   bool output_srgb_writes = false;  // passes into it draw with GL_FRAMEBUFFER_SRGB
-  bool widen_color = false;       // color_bound is to be the chain's RGBA16F copy of the host's colour
-  bool narrow_output = false;     // output_bound is the chain's RGBA16F texture, drawn into the host's after
+  ColorStep color_step = ColorStep::AS_IS;
+  OutputStep output_step = OutputStep::AS_IS;
+  // Raw (GL_RGBA8) views of the host's sRGB textures, made for this frame and deleted after it: a
+  // kept view would hold on to the storage of a texture the host deleted.
+  GLuint color_view = 0, output_view = 0;
 };
 
 }  // namespace pfx::host

@@ -25,8 +25,9 @@ struct PlanContext {
 class EffectPlanner {
  public:
   // `color` is what the effect reads as "color": the frame's, or the previous effect's output.
+  // `codes_output`: an "output" between effects holds sRGB codes (RGBA8), not RGBA16F.
   EffectPlanner(const PlanContext& context, const PlanInput& effect, int effect_index, bool last_effect,
-                const ResourceRef& color);
+                const ResourceRef& color, bool codes_output);
   bool plan(std::string* error);
   // Where the effect wrote "output": the next effect's "color".
   const ResourceRef& output() const { return output_; }
@@ -51,6 +52,7 @@ class EffectPlanner {
   const Declaration& declaration_;
   int effect_index_;
   bool last_effect_;
+  bool codes_output_;
   ResourceRef color_;
   std::map<std::string, const DeclaredTarget*> declared_;
   std::map<std::string, int> written_;  // target name -> resource, from its first write on
@@ -59,12 +61,13 @@ class EffectPlanner {
 };
 
 EffectPlanner::EffectPlanner(const PlanContext& context, const PlanInput& effect, int effect_index, bool last_effect,
-                             const ResourceRef& color)
+                             const ResourceRef& color, bool codes_output)
     : context_(context),
       effect_(effect),
       declaration_(*effect.declaration),
       effect_index_(effect_index),
       last_effect_(last_effect),
+      codes_output_(codes_output),
       color_(color) {
   for (const auto& target : declaration_.targets) declared_[target.name] = &target;
 }
@@ -99,6 +102,7 @@ bool EffectPlanner::plan_pass(int pass_index, std::string* error) {
   PlannedPass planned;
   planned.effect = effect_index_;
   planned.pass = pass_index;
+  planned.display_referred = declaration_.display_referred();
   for (const auto& input : pass.inputs) {
     ResourceRef ref;
     if (!resolve_input(pass, input, &ref, error)) return false;
@@ -147,9 +151,11 @@ bool EffectPlanner::resolve_output(const DeclaredPass& pass, int global_pass, Re
     if (*first_write) {
       // The last effect writes the chain's output texture; the others an intermediate the next reads.
       output_.kind = last_effect_ ? ResourceRef::CHAIN_OUTPUT : ResourceRef::POOLED;
-      if (!last_effect_)
-        output_.resource = add_resource(PFX_OUTPUT_NAME, PFX_FORMAT_RGBA16F, context_.frame_width,
-                                        context_.frame_height, global_pass);
+      if (!last_effect_) {
+        output_.resource = add_resource(PFX_OUTPUT_NAME, codes_output_ ? PFX_FORMAT_RGBA8 : PFX_FORMAT_RGBA16F,
+                                        context_.frame_width, context_.frame_height, global_pass);
+        context_.plan->resources[output_.resource].display_codes = codes_output_;
+      }
       output_written_ = true;
     }
     *ref = output_;
@@ -228,6 +234,49 @@ void assign_pool_slots(FramePlan* plan) {
   for (const auto& slot : plan->slots) plan->peak_target_bytes += slot.bytes();
 }
 
+// Whether the "output" between `writer` and `reader` holds sRGB codes: a display-referred writer
+// writes them; a linear writer does when the reader wants them and the writer can draw into an sRGB
+// view (the encoding folded into its draw).
+bool output_holds_codes(const Declaration& writer, const Declaration& reader) {
+  return writer.display_referred() || (reader.display_referred() && writer.samples_and_draws());
+}
+
+// The conversion between two neighbours that output_holds_codes could not fold: a linear reader
+// that cannot sample codes, or a linear writer that could not draw them.
+Conversion conversion_between(const Declaration& writer, const Declaration& reader) {
+  if (writer.display_referred() && !reader.display_referred() && !reader.samples_and_draws())
+    return Conversion::TO_LINEAR;
+  if (!writer.display_referred() && reader.display_referred() && !writer.samples_and_draws())
+    return Conversion::TO_DISPLAY;
+  return Conversion::NONE;
+}
+
+// A conversion pass of the chain from `color` into a new intermediate of the other encoding, which
+// effect `reader` then reads as "color".
+ResourceRef plan_conversion(Conversion conversion, int reader, const ResourceRef& color, const PlanContext& context) {
+  FramePlan& plan = *context.plan;
+  const int global_pass = static_cast<int>(plan.passes.size());
+  plan.resources[color.resource].last_pass = global_pass;  // `color` is an "output" between effects
+  PlannedResource r;
+  r.effect = reader;
+  r.name = conversion == Conversion::TO_DISPLAY ? "color as sRGB codes" : "color as linear light";
+  r.format = conversion == Conversion::TO_DISPLAY ? PFX_FORMAT_RGBA8 : PFX_FORMAT_RGBA16F;
+  r.display_codes = conversion == Conversion::TO_DISPLAY;
+  r.width = context.frame_width;
+  r.height = context.frame_height;
+  r.first_pass = r.last_pass = global_pass;
+  plan.resources.push_back(r);
+  PlannedPass pass;
+  pass.effect = reader;
+  pass.pass = -1;
+  pass.conversion = conversion;
+  pass.inputs.push_back(color);
+  pass.output.kind = ResourceRef::POOLED;
+  pass.output.resource = static_cast<int>(plan.resources.size()) - 1;
+  plan.passes.push_back(pass);
+  return pass.output;
+}
+
 }  // namespace
 
 bool plan_frame(const std::vector<PlanInput>& effects, uint32_t frame_width, uint32_t frame_height,
@@ -240,7 +289,12 @@ bool plan_frame(const std::vector<PlanInput>& effects, uint32_t frame_width, uin
   color.kind = ResourceRef::FRAME_INPUT;
   color.frame_input = PFX_INPUT_NAME_COLOR;
   for (size_t e = 0; e < effects.size(); ++e) {
-    EffectPlanner effect(context, effects[e], static_cast<int>(e), e + 1 == effects.size(), color);
+    const bool last = e + 1 == effects.size();
+    const Conversion conversion =
+        e == 0 ? Conversion::NONE : conversion_between(*effects[e - 1].declaration, *effects[e].declaration);
+    if (conversion != Conversion::NONE) color = plan_conversion(conversion, static_cast<int>(e), color, context);
+    const bool codes_output = !last && output_holds_codes(*effects[e].declaration, *effects[e + 1].declaration);
+    EffectPlanner effect(context, effects[e], static_cast<int>(e), last, color, codes_output);
     if (!effect.plan(error)) return false;
     color = effect.output();
   }

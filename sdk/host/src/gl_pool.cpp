@@ -32,10 +32,20 @@ GlPool::Slot GlPool::make_slot(const PoolSlot& shape) {
                      static_cast<GLsizei>(shape.height));
   glCreateFramebuffers(1, &slot.framebuffer);
   glNamedFramebufferTexture(slot.framebuffer, GL_COLOR_ATTACHMENT0, slot.texture, 0);
+  if (shape.format == PFX_FORMAT_RGBA8) {
+    glGenTextures(1, &slot.srgb_view);  // a view takes a name that is not yet a texture
+    glTextureView(slot.srgb_view, GL_TEXTURE_2D, slot.texture, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
+    glCreateFramebuffers(1, &slot.srgb_framebuffer);
+    glNamedFramebufferTexture(slot.srgb_framebuffer, GL_COLOR_ATTACHMENT0, slot.srgb_view, 0);
+  }
   return slot;
 }
 
 void GlPool::free_slot(Slot& slot) {
+  if (slot.srgb_view) {
+    glDeleteFramebuffers(1, &slot.srgb_framebuffer);
+    glDeleteTextures(1, &slot.srgb_view);
+  }
   glDeleteFramebuffers(1, &slot.framebuffer);
   glDeleteTextures(1, &slot.texture);
   slot = Slot{};

@@ -26,6 +26,11 @@ class GlPool {
   void match(const std::vector<PoolSlot>& slots);
   GLuint texture(int slot) const { return slots_[slot].texture; }
   GLuint framebuffer(int slot) const { return slots_[slot].framebuffer; }
+  // An RGBA8 slot read as sRGB (sampling decodes) and a framebuffer drawing into it that way
+  // (with GL_FRAMEBUFFER_SRGB, drawing encodes): how a linear effect meets an "output" of sRGB
+  // codes between effects. 0 for other formats.
+  GLuint srgb_view(int slot) const { return slots_[slot].srgb_view; }
+  GLuint srgb_framebuffer(int slot) const { return slots_[slot].srgb_framebuffer; }
   // A framebuffer around a texture the pool does not own (the chain's output); cached.
   GLuint framebuffer_for(GLuint texture);
   GLuint sampler(pfx_filter filter, pfx_wrap wrap);
@@ -35,6 +40,7 @@ class GlPool {
   struct Slot {
     PoolSlot shape;
     GLuint texture = 0, framebuffer = 0;
+    GLuint srgb_view = 0, srgb_framebuffer = 0;
   };
   static Slot make_slot(const PoolSlot& shape);
   static void free_slot(Slot& slot);

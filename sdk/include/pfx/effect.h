@@ -20,7 +20,7 @@ extern "C" {
 /* ---- Frame inputs, provided by the host by name ------------------------------------------------ */
 
 /* Texture names a pass may read, besides the effect's own targets. */
-#define PFX_INPUT_NAME_COLOR "color"       /* HDR linear scene colour, RGBA16F (see SAMPLES_AND_DRAWS) */
+#define PFX_INPUT_NAME_COLOR "color"       /* HDR linear scene colour, RGBA16F (see the promises below) */
 #define PFX_INPUT_NAME_DEPTH "depth"       /* R32F or a depth texture; see pfx_depth_encoding */
 #define PFX_INPUT_NAME_NORMAL "normal"     /* world-space unit normal in RGB */
 #define PFX_INPUT_NAME_ALBEDO "albedo"     /* linear base colour in RGB */
@@ -198,6 +198,19 @@ typedef struct pfx_declaration {
  * may be 0, the default framebuffer, which the pass draws into as bound. Without the promise the
  * host converts such a frame to RGBA16F before the effect and back after it. */
 enum { PFX_DECLARATION_SAMPLES_AND_DRAWS = 1u << 0 };
+
+/* DISPLAY_REFERRED (since 1.6; makes the promise of SAMPLES_AND_DRAWS too, and the host reads it so
+ * whether or not that bit is set): the passes want "color" and write "output" display-referred, as
+ * sRGB codes in [0, 1], the values an 8-bit display frame holds (a ReShade FX effect's back buffer),
+ * not linear light. The host binds both as 8-bit textures read and written raw: "color" samples as
+ * code / 255, and what a pass draws into "output" is stored as it is (no GL_FRAMEBUFFER_SRGB;
+ * context->output_format PFX_FORMAT_RGBA8; output_texture 0 where the host bound a framebuffer of
+ * its own). The pass may also sample "color" on units it binds itself, as long as it only samples
+ * it. The chain converts only where a neighbour (or the host's frame) holds linear light, and folds
+ * that into sampling an sRGB view or drawing into one where the neighbour promised
+ * SAMPLES_AND_DRAWS; a run of display-referred effects over an 8-bit frame converts nothing. A host
+ * older than 1.6 ignores the bit and hands linear light: check pfx_host.abi_minor >= 6 first. */
+enum { PFX_DECLARATION_DISPLAY_REFERRED = 1u << 1 };
 
 /* One texture a pass reads, as bound by the host. */
 typedef struct pfx_bound_texture {

@@ -180,6 +180,11 @@ class PFX_HOST_API Chain {
   bool declare_all(const pfx_frame& frame, std::vector<int>* active, std::string* error);
   bool update_plan(const pfx_frame& frame, const std::vector<int>& active, std::string* error);
   bool execute(FrameResources& resources, const std::vector<int>& active, std::string* error);
+  // The frame's passes in order: the chain's steps at either end (frame_ends), the effects' passes
+  // and the conversions the plan put between effects, each timed and reported.
+  bool run_frame(FrameResources& resources, const std::vector<int>& active, FrameTimer& timer, std::string* error);
+  bool run_conversion(const FrameResources& resources, const PlannedPass& planned, std::string* error);
+  void chain_pass(FrameTimer& timer, const std::string& name);
   // One planned pass: bind its output and inputs, run it (timed), check what it left.
   bool run_pass(const FrameResources& resources, const PlannedPass& planned, Instance& instance,
                 FrameTimer& timer, std::string* error);

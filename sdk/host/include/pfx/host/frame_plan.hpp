@@ -40,6 +40,12 @@ struct Declaration {
   std::vector<DeclaredPass> passes;
   uint32_t inputs = 0;
   uint32_t flags = 0;  // PFX_DECLARATION_* promises
+  // The passes read and write sRGB codes (PFX_DECLARATION_DISPLAY_REFERRED).
+  bool display_referred() const { return (flags & PFX_DECLARATION_DISPLAY_REFERRED) != 0; }
+  // "color" and "output" may be 8-bit textures: promised, or implied by display_referred().
+  bool samples_and_draws() const {
+    return (flags & (PFX_DECLARATION_SAMPLES_AND_DRAWS | PFX_DECLARATION_DISPLAY_REFERRED)) != 0;
+  }
 };
 
 // Copies and resolves a plugin's declaration; false with *error naming the problem (bad sizes,
@@ -60,9 +66,17 @@ struct ResourceRef {
   int resource = -1;        // POOLED: index into FramePlan::resources
 };
 
+// Where two neighbouring effects want the frame in different encodings (one display-referred,
+// PFX_DECLARATION_DISPLAY_REFERRED, the other linear light) and the linear one did not promise
+// PFX_DECLARATION_SAMPLES_AND_DRAWS, the chain converts with a pass of its own: its one input is
+// the earlier effect's "output", its output the later effect's "color".
+enum class Conversion { NONE, TO_DISPLAY, TO_LINEAR };
+
 struct PlannedPass {
-  int effect = 0;  // index into the effects given to plan_frame
-  int pass = 0;    // index into that effect's declared passes
+  int effect = 0;  // index into the effects given to plan_frame; for a conversion, the effect it feeds
+  int pass = 0;    // index into that effect's declared passes; -1 for a conversion
+  Conversion conversion = Conversion::NONE;
+  bool display_referred = false;  // the effect's passes read and write sRGB codes
   ResourceRef output;
   std::vector<ResourceRef> inputs;
 };
@@ -73,6 +87,10 @@ struct PlannedResource {
   std::string name;
   pfx_format format = PFX_FORMAT_RGBA16F;
   uint32_t width = 0, height = 0;
+  // An "output" between effects that holds sRGB codes (PFX_FORMAT_RGBA8): display-referred
+  // passes read and write it raw, linear ones through its sRGB view (sampling decodes, drawing
+  // encodes).
+  bool display_codes = false;
   int first_pass = 0, last_pass = 0;  // global pass indices, inclusive
   int slot = -1;                      // index into FramePlan::slots
 };
@@ -98,8 +116,10 @@ struct PlanInput {
 
 // Plans a chain of effects over a frame of the given size with the given PFX_INPUT_* bits.
 // Effect k reads "color" from effect k-1's "output" (the frame's colour for k = 0); the last
-// effect's "output" is the chain's output texture. False with *error naming effect, pass and
-// input when something is missing or inconsistent.
+// effect's "output" is the chain's output texture. Between two effects the "output" is RGBA16F
+// linear light, or 8-bit sRGB codes where either neighbour is display-referred, with a conversion
+// pass where the other cannot sample or draw those itself. False with *error naming effect, pass
+// and input when something is missing or inconsistent.
 PFX_HOST_API bool plan_frame(const std::vector<PlanInput>& effects, uint32_t frame_width, uint32_t frame_height,
                              uint32_t available_inputs, FramePlan* plan, std::string* error);
 

@@ -1,0 +1,141 @@
+// Display-referred effects (PFX_DECLARATION_DISPLAY_REFERRED) in a chain: the FX plugin running a
+// ReShade effect written here, which inverts the sRGB codes it is handed (255 - code, exact in
+// float), beside the example plugins' linear effects. Over an 8-bit sRGB frame a run of them
+// converts nothing; where a neighbour or the frame holds linear light, the chain converts once at
+// that boundary, folded into sampling or drawing when the neighbour promised
+// PFX_DECLARATION_SAMPLES_AND_DRAWS and a pass of "chain" otherwise. Expectations are the codes
+// the inversion and the sRGB curves give, computed here.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "eight_bit_rig.hpp"
+
+namespace fs = std::filesystem;
+using pfx::test::EightBitRig;
+using pfx::test::every_code;
+using pfx::test::linear_to_srgb_code;
+using pfx::test::srgb_to_linear;
+
+namespace {
+
+// Point sampling, so each pixel reads its own texel; the alpha it writes is scratch (the frame's
+// alpha comes back out, as FX's back buffer alpha never reaches a display).
+const char* const kInvertFx = R"(#include "ReShade.fxh"
+sampler Point { Texture = ReShade::BackBufferTex; MagFilter = POINT; MinFilter = POINT; };
+float4 Invert(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target {
+  float4 c = tex2D(Point, uv);
+  return float4(1.0 - c.rgb, c.a * 0.5);
+}
+technique Invert { pass { VertexShader = PostProcessVS; PixelShader = Invert; } }
+)";
+
+// The FX plugin reads PFX_FX_PATH at its first use: one folder for the whole test program.
+std::string fx_plugin_with_invert() {
+  static const fs::path folder = [] {
+    fs::path f = fs::temp_directory_path() / ("pfx-display-referred-test-" + std::to_string(::getpid()));
+    fs::create_directories(f);
+    std::ofstream(f / "Invert.fx") << kInvertFx;
+    ::setenv("PFX_FX_PATH", f.c_str(), 1);
+    return f;
+  }();
+  return std::string(PFX_PLUGIN_OUTPUT_DIR) + "/pfx_fx.so";
+}
+
+std::vector<std::string> chain_passes(const EightBitRig& rig) {
+  std::vector<std::string> names;
+  for (const std::string& name : rig.passes())
+    if (name.rfind("chain:", 0) == 0) names.push_back(name);
+  return names;
+}
+
+// The worst distance in codes between `got` and `expected(code, channel)` over the colour
+// channels; alpha must be the frame's, exactly.
+template <class Expected>
+double worst_codes(const std::vector<uint8_t>& in, const std::vector<uint8_t>& got, Expected expected) {
+  double worst = 0;
+  for (size_t i = 0; i < in.size(); ++i) {
+    if (i % 4 == 3) {
+      REQUIRE(got[i] == in[i]);
+      continue;
+    }
+    worst = std::max(worst, std::abs(got[i] - expected(double(in[i]))));
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("display-referred effects run on an 8-bit sRGB frame as it is: no pass of the chain's, codes exact",
+          "[chain][eight_bit][display_referred]") {
+  EightBitRig rig(fx_plugin_with_invert());
+  rig.add("fx_invert", "");
+  const std::vector<uint8_t> in = every_code();
+  const std::vector<uint8_t> once = rig.render(in, true);
+  CHECK(chain_passes(rig).empty());
+  CHECK(worst_codes(in, once, [](double code) { return 255.0 - code; }) == 0);
+  // The effect reads the host's texture itself: its first pass draws nothing, its last moves the
+  // picture out with the frame's alpha.
+  CHECK(rig.passes() == std::vector<std::string>{"fx_invert:begin", "fx_invert:pass0", "fx_invert:finish"});
+  CHECK(rig.chain->report().peak_target_bytes == 0);
+
+  rig.add("fx_invert", "");  // a second instance: the two hand codes to each other in 8 bits
+  CHECK(rig.render(in, true) == in);
+  CHECK(chain_passes(rig).empty());
+  CHECK(rig.chain->report().peak_target_bytes == uint64_t(pfx::test::kWidth) * pfx::test::kHeight * 4);
+}
+
+TEST_CASE("into a framebuffer of sRGB codes, a display-referred effect draws its codes as they are",
+          "[chain][eight_bit][display_referred]") {
+  EightBitRig rig(fx_plugin_with_invert());
+  rig.add("fx_invert", "");
+  const std::vector<uint8_t> in = every_code();
+  CHECK(rig.render_into_framebuffer(in, true) == rig.render(in, true));
+  CHECK(chain_passes(rig).empty());
+}
+
+TEST_CASE("where the frame holds linear light, the chain encodes it for a display-referred effect and decodes after",
+          "[chain][eight_bit][display_referred]") {
+  EightBitRig rig(fx_plugin_with_invert());
+  rig.add("fx_invert", "");
+  const std::vector<uint8_t> in = every_code();
+  const std::vector<uint8_t> out = rig.render(in, false);  // plain RGBA8 holding linear values
+  CHECK(chain_passes(rig) == std::vector<std::string>{"chain:colour to sRGB codes", "chain:sRGB codes to output"});
+  const auto expected = [](double linear_code) {
+    const double code = std::round(linear_to_srgb_code(linear_code / 255.0));
+    return 255.0 * srgb_to_linear(255.0 - code);
+  };
+  CHECK(worst_codes(in, out, expected) < 1.0);
+}
+
+TEST_CASE("beside a linear effect, the boundary is folded where it promised to sample and draw, a chain pass where not",
+          "[chain][eight_bit][display_referred]") {
+  const std::vector<uint8_t> in = every_code();
+  // invert, halve the light, invert: what each boundary hands on is an 8-bit code either way.
+  const auto expected = [](double code) {
+    const double halved = std::round(linear_to_srgb_code(srgb_to_linear(255.0 - code) * 0.5));
+    return 255.0 - halved;
+  };
+  {
+    EightBitRig rig(fx_plugin_with_invert());
+    rig.add("fx_invert", "");
+    rig.add("tint", "tint.tint=0.5,0.5,0.5");  // promised: samples the codes decoded, draws them encoded
+    rig.add("fx_invert", "");
+    const std::vector<uint8_t> out = rig.render(in, true);
+    CHECK(chain_passes(rig).empty());
+    CHECK(worst_codes(in, out, expected) < 1.5);
+  }
+  {
+    EightBitRig rig(fx_plugin_with_invert());
+    rig.add("fx_invert", "");
+    rig.add("gain", "gain.gain=0.5");  // did not promise: RGBA16F on both of its sides
+    rig.add("fx_invert", "");
+    const std::vector<uint8_t> out = rig.render(in, true);
+    CHECK(chain_passes(rig) == std::vector<std::string>{"chain:sRGB codes to linear", "chain:linear to sRGB codes"});
+    CHECK(worst_codes(in, out, expected) < 1.5);
+  }
+}
