@@ -34,12 +34,40 @@ float4 Invert(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target {
 technique Invert { pass { VertexShader = PostProcessVS; PixelShader = Invert; } }
 )";
 
+// The same, then a pass that samples the back buffer into a texture of its own (as effects that
+// keep the last frame do): the inversion cannot draw into the host's output, which is never
+// sampled, so a last pass moves the picture out.
+const char* const kInvertThenKeepFx = R"(#include "ReShade.fxh"
+sampler Point { Texture = ReShade::BackBufferTex; MagFilter = POINT; MinFilter = POINT; };
+texture Kept { Width = BUFFER_WIDTH; Height = BUFFER_HEIGHT; Format = RGBA8; };
+float4 Invert(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target {
+  float4 c = tex2D(Point, uv);
+  return float4(1.0 - c.rgb, c.a * 0.5);
+}
+float4 Keep(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target { return tex2D(Point, uv); }
+technique InvertThenKeep {
+  pass { VertexShader = PostProcessVS; PixelShader = Invert; }
+  pass { VertexShader = PostProcessVS; PixelShader = Keep; RenderTarget = Kept; }
+}
+)";
+
+// The back buffer read through an sRGB sampler and written with sRGB writes: linear light in the
+// shader, the codes unchanged. Neither can use the host's raw texture, so the picture is copied in
+// and out.
+const char* const kThroughLinearFx = R"(#include "ReShade.fxh"
+sampler Linear { Texture = ReShade::BackBufferTex; MagFilter = POINT; MinFilter = POINT; SRGBTexture = true; };
+float4 Through(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target { return tex2D(Linear, uv); }
+technique ThroughLinear { pass { VertexShader = PostProcessVS; PixelShader = Through; SRGBWriteEnable = true; } }
+)";
+
 // The FX plugin reads PFX_FX_PATH at its first use: one folder for the whole test program.
 std::string fx_plugin_with_invert() {
   static const fs::path folder = [] {
     fs::path f = fs::temp_directory_path() / ("pfx-display-referred-test-" + std::to_string(::getpid()));
     fs::create_directories(f);
     std::ofstream(f / "Invert.fx") << kInvertFx;
+    std::ofstream(f / "InvertThenKeep.fx") << kInvertThenKeepFx;
+    std::ofstream(f / "ThroughLinear.fx") << kThroughLinearFx;
     ::setenv("PFX_FX_PATH", f.c_str(), 1);
     return f;
   }();
@@ -78,9 +106,9 @@ TEST_CASE("display-referred effects run on an 8-bit sRGB frame as it is: no pass
   const std::vector<uint8_t> once = rig.render(in, true);
   CHECK(chain_passes(rig).empty());
   CHECK(worst_codes(in, once, [](double code) { return 255.0 - code; }) == 0);
-  // The effect reads the host's texture itself: its first pass draws nothing, its last moves the
-  // picture out with the frame's alpha.
-  CHECK(rig.passes() == std::vector<std::string>{"fx_invert:begin", "fx_invert:pass0", "fx_invert:finish"});
+  // The effect reads the host's texture and draws into the host's output itself: its first pass
+  // draws nothing, and the technique's one pass is the whole cost.
+  CHECK(rig.passes() == std::vector<std::string>{"fx_invert:begin", "fx_invert:pass0"});
   CHECK(rig.chain->report().peak_target_bytes == 0);
 
   rig.add("fx_invert", "");  // a second instance: the two hand codes to each other in 8 bits
@@ -137,5 +165,28 @@ TEST_CASE("beside a linear effect, the boundary is folded where it promised to s
     const std::vector<uint8_t> out = rig.render(in, true);
     CHECK(chain_passes(rig) == std::vector<std::string>{"chain:sRGB codes to linear", "chain:linear to sRGB codes"});
     CHECK(worst_codes(in, out, expected) < 1.5);
+  }
+}
+
+TEST_CASE("a technique that cannot end in the host's output, or start on its frame, moves the picture itself",
+          "[chain][eight_bit][display_referred]") {
+  const std::vector<uint8_t> in = every_code();
+  {
+    EightBitRig rig(fx_plugin_with_invert());
+    rig.add("fx_invertthenkeep", "");
+    const std::vector<uint8_t> out = rig.render(in, true);
+    CHECK(rig.passes() == std::vector<std::string>{"fx_invertthenkeep:begin", "fx_invertthenkeep:pass0",
+                                                   "fx_invertthenkeep:pass1", "fx_invertthenkeep:finish"});
+    CHECK(worst_codes(in, out, [](double code) { return 255.0 - code; }) == 0);
+  }
+  {
+    EightBitRig rig(fx_plugin_with_invert());
+    rig.add("fx_throughlinear", "");
+    const std::vector<uint8_t> out = rig.render(in, true);
+    CHECK(rig.passes() == std::vector<std::string>{"fx_throughlinear:copy in", "fx_throughlinear:pass0",
+                                                   "fx_throughlinear:finish"});
+    CHECK(chain_passes(rig).empty());
+    // The GPU's sRGB decode and encode: within a code on llvmpipe, exact on GPUs.
+    CHECK(worst_codes(in, out, [](double code) { return code; }) < 1.5);
   }
 }

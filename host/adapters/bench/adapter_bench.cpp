@@ -50,11 +50,13 @@ struct Options {
   std::vector<std::string> vkbasalt_fx;  // FX files for vkBasalt; rows of their own when given
   std::string reshade_include;           // vkBasalt's reshadeIncludePath ("" for pfx's headers)
   std::string reshade_textures;          // vkBasalt's reshadeTexturePath ("" for each file's folder)
+  std::vector<std::string> pfx_chains;   // chains for pfx's layer beside vkBasalt's rows
 };
 
 const char* const kUsage =
     "usage: pfx-adapter-bench [--size WxH] [--frames SHORT,LONG] [--runs N] [--json FILE] [--vulkan]\n"
     "                         [--vkbasalt-fx FILE.fx]... [--reshade-include DIR] [--reshade-textures DIR]\n"
+    "                         [--pfx-chain CHAIN]...\n"
     "\n"
     "What the video-host adapters (ffmpeg, GStreamer) or the Vulkan layer cost, in the real hosts: each\n"
     "row runs SHORT and LONG frames (default 8,32), the time of one more frame is the difference of the\n"
@@ -70,6 +72,9 @@ const char* const kUsage =
     "  --reshade-include DIR  vkBasalt's reshadeIncludePath: a folder with ReShade.fxh (default: pfx's\n"
     "                         own headers, PLUGINS/fx/include)\n"
     "  --reshade-textures DIR vkBasalt's reshadeTexturePath (default: each FX file's folder)\n"
+    "  --pfx-chain CHAIN      (repeatable; with --vkbasalt-fx) also vkcube through pfx's Vulkan layer\n"
+    "                         running CHAIN (\"fx_lumasharpen\"), its FX effects found in the FX files'\n"
+    "                         folders: the same application and effect both ways in one run\n"
     "  --json FILE            also write the rows as JSON\n";
 
 double median(std::vector<double> values) {
@@ -133,6 +138,8 @@ bool parse(int argc, char** argv, Options* options) {
       options->reshade_include = fs::absolute(argv[++i]).string();
     } else if (arg == "--reshade-textures" && has_value) {
       options->reshade_textures = fs::absolute(argv[++i]).string();
+    } else if (arg == "--pfx-chain" && has_value) {
+      options->pfx_chains.push_back(argv[++i]);
     } else {
       return false;
     }
@@ -166,6 +173,13 @@ std::vector<Row> vulkan_rows(const fs::path& scratch, const Options& options) {
                       "DISABLE_PFX_VULKAN=1 ENABLE_VKBASALT=1 VKBASALT_CONFIG_FILE=" + config.string(), alone});
       rows.back().fx_file = true;
     }
+    // pfx's layer finds the effects where vkBasalt found the files.
+    std::string folders;
+    for (const std::string& file : options.vkbasalt_fx)
+      folders += (folders.empty() ? "" : ":") + fs::path(file).parent_path().string();
+    for (const std::string& chain : options.pfx_chains)
+      rows.push_back({"vkcube", "pfx layer chain=" + chain,
+                      "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=" + chain + " PFX_FX_PATH=" + folders, alone});
     return rows;
   }
   return {

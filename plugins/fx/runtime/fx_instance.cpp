@@ -213,23 +213,6 @@ std::unique_ptr<pfx::fx::CompiledEffect> FxInstance::compile_at(int width, int h
   return compiled;
 }
 
-bool FxInstance::can_sample_frame() const {
-  // Sampled as codes only: an sRGB sampler on the back buffer needs a view the host's texture
-  // may not allow.
-  const pfx::fx::EffectModel& model = compiled_->model;
-  for (const pfx::fx::SamplerInfo& s : model.samplers)
-    if (s.srgb && s.texture >= 0 && model.textures[static_cast<std::size_t>(s.texture)].semantic == pfx::fx::TextureSemantic::kColor)
-      return false;
-  // The first pass that writes the back buffer must write all of it: one that leaves pixels would
-  // start from a copy of the frame, and the effect promised only to sample it.
-  const auto& generated = compiled_->passes[static_cast<std::size_t>(entry_.technique_index)];
-  for (std::size_t i = 0; i < technique().passes.size(); ++i) {
-    const PassInfo& pass = technique().passes[i];
-    if (!pass.compute_shader && pass.render_target_count == 0) return covers_back_buffer(pass, generated[i]);
-  }
-  return true;
-}
-
 void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
   compiled_ = std::move(compiled);
   gl_current_ = false;
@@ -241,13 +224,22 @@ void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
       int t = compiled_->model.samplers[static_cast<std::size_t>(s)].texture;
       needs_depth_ = needs_depth_ || (t >= 0 && compiled_->model.textures[static_cast<std::size_t>(t)].semantic == pfx::fx::TextureSemantic::kDepth);
     }
-  samples_frame_ = display_referred_ && can_sample_frame();
+  layout_ = plan_pass_layout(*compiled_, entry_.technique_index, display_referred_);
+  programs_.set_output_pass(layout_.output_pass);
+  declare_passes();
+  uniforms_.reset(compiled_->model, entry_.params);
+  frame_params_.reset(compiled_->model, entry_.params, compiled_width_, compiled_height_);
+}
+
+void FxInstance::declare_passes() {
+  const bool moves_out = layout_.output_pass < 0;  // a last pass of pfx's moves the picture out
   // Names first: the descriptors point into these strings, which must not move afterwards.
   pass_names_.clear();
-  pass_names_.push_back(samples_frame_ ? "begin" : display_referred_ ? "copy in" : "encode");
+  pass_names_.push_back(layout_.samples_frame ? "begin" : layout_.display_referred ? "copy in" : "encode");
   for (std::size_t i = 0; i < technique().passes.size(); ++i)
     pass_names_.push_back(technique().passes[i].name.empty() ? "pass" + std::to_string(i) : technique().passes[i].name);
-  pass_names_.push_back(display_referred_ ? "finish" : "decode");
+  if (moves_out) pass_names_.push_back(layout_.display_referred ? "finish" : "decode");
+  const std::size_t output = moves_out ? pass_names_.size() - 1 : static_cast<std::size_t>(layout_.output_pass) + 1;
   color_input_[0] = {PFX_INPUT_NAME_COLOR, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
   color_input_[1] = {PFX_INPUT_NAME_DEPTH, PFX_FILTER_NEAREST, PFX_WRAP_CLAMP_TO_EDGE};
   for (std::size_t i = 0; i < pass_names_.size(); ++i) {
@@ -256,21 +248,19 @@ void FxInstance::adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled) {
     p.name = pass_names_[i].c_str();
     p.kind = PFX_PASS_CUSTOM;
     p.user_tag = static_cast<uint32_t>(i);
+    // The pass that writes "output" reads the frame's alpha; the technique's passes sample the
+    // picture in the frame until one of them writes the back buffer.
+    if (i == output || (layout_.samples_frame && i > 0)) {
+      p.inputs = color_input_;
+      p.input_count = 1;
+    }
     if (i == 0) {
       p.inputs = color_input_;
       p.input_count = needs_depth_ ? 2 : 1;
     }
-    if (i + 1 == pass_names_.size() || (samples_frame_ && i > 0)) {
-      // The frame's alpha, kept; and the picture itself, which the technique's passes sample until
-      // one of them writes the back buffer.
-      p.inputs = color_input_;
-      p.input_count = 1;
-    }
-    if (i + 1 == pass_names_.size()) p.output = PFX_OUTPUT_NAME;
+    if (i == output) p.output = PFX_OUTPUT_NAME;
     passes_.push_back(p);
   }
-  uniforms_.reset(compiled_->model, entry_.params);
-  frame_params_.reset(compiled_->model, entry_.params, compiled_width_, compiled_height_);
 }
 
 bool FxInstance::compile_source(int width, int height) {
@@ -325,10 +315,11 @@ void FxInstance::reload_if_edited() {
                            "\nThe last version that compiled keeps running.");
     return;
   }
-  // The host planned this frame's passes at the last declare: a version with as many passes runs
-  // from this frame on, one with another number waits for the next declare.
+  // The host planned this frame's passes at the last declare: a version declaring the same passes
+  // runs from this frame on, one declaring others waits for the next declare.
   std::size_t passes = compiled->model.techniques[static_cast<std::size_t>(entry_.technique_index)].passes.size();
-  if (passes + 2 != passes_.size()) {
+  const FxPassLayout layout = plan_pass_layout(*compiled, entry_.technique_index, display_referred_);
+  if (layout != layout_ || layout.declared_passes(passes) != passes_.size()) {
     pending_ = std::move(compiled);
     log(PFX_LOG_INFO, "reloaded " + entry_.file + "; its new passes run from the next resize or parameter change");
     return;
@@ -470,8 +461,11 @@ pfx_status FxInstance::run_pass(const pfx_pass_context* context) {
       release_gl();
       return PFX_GL_ERROR;
     }
-  } else if (index + 1 == passes_.size()) run_decode(*context);
-  else run_fx_pass(static_cast<int>(index) - 1, *context);
+  } else if (index + 1 == passes_.size() && layout_.output_pass < 0) {
+    run_decode(*context);
+  } else {
+    run_fx_pass(static_cast<int>(index) - 1, *context);
+  }
   return PFX_OK;
 }
 
@@ -488,8 +482,8 @@ void FxInstance::run_encode(const pfx_pass_context& context) {
   stencil_.clear(framebuffer_);  // the technique starts: zeros, as in ReShade
   // sRGB codes from a host of ABI 1.6: the technique samples the frame's own texture until a pass
   // writes the back buffer.
-  frame_color_ = samples_frame_ ? context.inputs[0].texture : 0;
-  if (samples_frame_) return;
+  frame_color_ = layout_.samples_frame ? context.inputs[0].texture : 0;
+  if (layout_.samples_frame) return;
   glUseProgram(encode_program_);  // unit 0: the frame's colour, bound by the host
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -568,6 +562,7 @@ void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
       }
     return;
   }
+  if (index == layout_.output_pass) return draw_output(pass, g, p, context);
   SavedTargets saved;
   int count = std::max(1, pass.render_target_count);
   int width = compiled_width_, height = compiled_height_;
@@ -625,6 +620,19 @@ void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
       const GlTexture& t = textures_[static_cast<std::size_t>(pass.render_targets[i])];
       if (t.levels > 1) glGenerateTextureMipmap(t.texture);
     }
+}
+
+void FxInstance::draw_output(const PassInfo& pass, const GeneratedPass& g, const PassProgram& p,
+                             const pfx_pass_context& context) {
+  // Into what the host bound, at the frame's size: the pass writes every pixel with no blending,
+  // stencil or sRGB writes (fx_pass_layout), so none of the back buffer's state applies.
+  bind_resources(g, p, compiled_height_);
+  const auto alpha_unit = static_cast<GLuint>(g.sampler_units.size());
+  glBindTextureUnit(alpha_unit, context.inputs[0].texture);  // "color", as declared
+  glBindSampler(alpha_unit, 0);                              // texelFetch: no filtering
+  glUseProgram(p.program);
+  glDrawArrays(gl_topology(pass.topology), 0, pass.vertex_count);
+  frame_color_ = 0;
 }
 
 }  // namespace pfx_fx

@@ -6,10 +6,10 @@
 //   decode   the back buffer -> the effect's output, linear again
 // A host of ABI 1.6 or later hands the effect sRGB codes and takes them back
 // (PFX_DECLARATION_DISPLAY_REFERRED), and the chain converts only where a neighbour wants linear
-// light. Then nothing is encoded or decoded: the first pass ("begin") only gets the technique
-// ready, its passes sample the host's colour as the back buffer until one writes the back buffer
-// (or "copy in" copies it first, for a technique that cannot), and "finish" moves the picture to
-// the output with the frame's alpha.
+// light. Then nothing is encoded or decoded (fx_pass_layout.hpp): the first pass ("begin") only
+// gets the technique ready, its passes sample the host's colour as the back buffer until one
+// writes the back buffer, and the last of those draws into the output with the frame's alpha. A
+// technique that cannot has "copy in" first or "finish" last, which only move the picture.
 // The FX source is compiled again when the frame size changes (BUFFER_WIDTH and its kin are
 // constants of the source), when the file or one of its includes is edited and when the host sets
 // other preprocessor definitions, on the CPU in declare and into GL programs in the next run.
@@ -26,6 +26,7 @@
 #include "fx_catalog.hpp"
 #include "fx_definitions.hpp"
 #include "fx_frame_params.hpp"
+#include "fx_pass_layout.hpp"
 #include "fx_gl_objects.hpp"
 #include "fx_programs.hpp"
 #include "fx_stencil.hpp"
@@ -58,10 +59,8 @@ class FxInstance {
   // is logged and the last version that compiled keeps running.
   void watch(const pfx::fx::CompiledEffect& compiled);
   void reload_if_edited();
-  // Whether the compiled technique can start on the host's "color" as it is: a display-referred
-  // host hands sRGB codes, and the technique reads the back buffer only as plain samples until a
-  // pass writes all of it.
-  bool can_sample_frame() const;
+  // The descriptors of passes_ for layout_ and the compiled technique.
+  void declare_passes();
   bool build_gl();  // GL textures and samplers, for the compiled source (programs_ builds the programs)
   void release_gl();
   void log(pfx_log_level level, const std::string& message) const;
@@ -72,6 +71,9 @@ class FxInstance {
   void convert_depth(const pfx_pass_context& context);
   void run_decode(const pfx_pass_context& context);
   void run_fx_pass(int index, const pfx_pass_context& context);
+  // The technique's output pass (layout_.output_pass), drawn into the host's output.
+  void draw_output(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& g, const PassProgram& p,
+                   const pfx_pass_context& context);
   void bind_resources(const pfx::fx::GeneratedPass& generated, const PassProgram& program, int target_height);
   GLuint texture_for_sampler(const pfx::fx::SamplerInfo& sampler) const;
   const pfx::fx::TechniqueInfo& technique() const;
@@ -104,7 +106,7 @@ class FxInstance {
   // back buffer until one writes the back buffer; 0 from then on.
   GLuint frame_color_ = 0;
   bool display_referred_ = false;  // the host (ABI 1.6+) hands and takes sRGB codes
-  bool samples_frame_ = false;     // ...and the technique starts on them as they are
+  FxPassLayout layout_;            // how the technique's passes are declared
   // FX's depth buffer: the frame's depth as standard window depth of a projection with its far
   // plane 1000 near planes away (what ReShade.fxh's GetLinearizedDepth reads with the settings
   // compile_options defines), made by depth_program_ from any pfx depth encoding. Without depth

@@ -6,6 +6,7 @@
 
 #include <pfx/cpp/gl_program.hpp>
 
+#include "fx_pass_layout.hpp"
 #include "fx_program_cache.hpp"
 
 namespace pfx_fx {
@@ -123,6 +124,10 @@ bool FxPrograms::build(const pfx::fx::CompiledEffect& compiled, int technique, P
     set.generated.push_back(
         pfx::fx::generate_pass(compiled.front->unit, model, info.passes[i], diagnostics, &set.constants));
     if (diagnostics.has_errors()) return *error = "the specialised code did not generate:\n" + diagnostics.format_all(), false;
+  }
+  if (output_pass_ >= 0) {
+    GeneratedPass& g = set.generated[static_cast<std::size_t>(output_pass_)];
+    g.fragment = with_frame_alpha(g.fragment, g.sampler_units.size());
   }
   for (std::size_t i = 0; i < set.constants.size(); ++i)
     set.constant_count += pfx::fx::can_be_constant(model.uniforms[i].decl->resolved, set.constants[i]) ? 1 : 0;

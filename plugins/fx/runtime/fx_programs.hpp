@@ -56,6 +56,9 @@ class FxPrograms {
   // with *error when the GL refuses a program (the generated GLSL is wrong: a compiler bug).
   bool choose(const pfx::fx::CompiledEffect& compiled, int technique, const UniformValues& values, std::string* error);
   const ProgramSet& running() const { return *running_; }
+  // The technique pass that draws into the host's output with the frame's alpha (fx_pass_layout),
+  // or -1; its programs read that alpha on the unit after its samplers. Set before the next build.
+  void set_output_pass(int pass) { output_pass_ = pass; }
   // Of the last build: its time in milliseconds and how many of its programs came from the disk
   // cache.
   double build_ms() const { return build_ms_; }
@@ -68,6 +71,7 @@ class FxPrograms {
   static void release(ProgramSet& set);
 
   bool enabled_ = true;
+  int output_pass_ = -1;
   ProgramSet live_, specialised_;
   const ProgramSet* running_ = &live_;
   pfx::fx::UniformConstants last_held_;
