@@ -386,6 +386,7 @@ pfx_status FxInstance::set_definitions(const char* list) {
 }
 
 void FxInstance::release_gl() {
+  leave_frame();
   programs_.release();
   for (GlTexture& t : textures_) delete_texture(t);
   textures_.clear();
@@ -482,8 +483,17 @@ void FxInstance::run_encode(const pfx_pass_context& context) {
   stencil_.clear(framebuffer_);  // the technique starts: zeros, as in ReShade
   // sRGB codes from a host of ABI 1.6: the technique samples the frame's own texture until a pass
   // writes the back buffer.
-  frame_color_ = layout_.samples_frame ? context.inputs[0].texture : 0;
-  if (layout_.samples_frame) return;
+  leave_frame();
+  if (layout_.samples_frame) {
+    frame_color_ = context.inputs[0].texture;
+    // The host's textures for a display-referred effect have immutable storage (pfx/effect.h): an
+    // sRGB view of the frame decodes for the samplers that ask for it.
+    if (layout_.srgb_frame_view) {
+      glGenTextures(1, &frame_color_srgb_);
+      glTextureView(frame_color_srgb_, GL_TEXTURE_2D, frame_color_, GL_SRGB8_ALPHA8, 0, 1, 0, 1);
+    }
+    return;
+  }
   glUseProgram(encode_program_);  // unit 0: the frame's colour, bound by the host
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -512,6 +522,7 @@ void FxInstance::draw_into(const GLuint* textures, int count, int width, int hei
 void FxInstance::run_decode(const pfx_pass_context& context) {
   (void)context;  // the host bound the output, its viewport and the frame's colour on unit 0
   glBindTextureUnit(1, frame_color_ ? frame_color_ : back_buffer_[current_].texture);
+  leave_frame();
   glUseProgram(decode_program_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -520,7 +531,8 @@ GLuint FxInstance::texture_for_sampler(const pfx::fx::SamplerInfo& sampler) cons
   if (sampler.texture < 0) return 0;
   const pfx::fx::TextureInfo& info = compiled_->model.textures[static_cast<std::size_t>(sampler.texture)];
   if (info.semantic == pfx::fx::TextureSemantic::kDepth) return fx_depth_.texture;
-  if (info.semantic == pfx::fx::TextureSemantic::kColor && frame_color_) return frame_color_;
+  if (info.semantic == pfx::fx::TextureSemantic::kColor && frame_color_)
+    return sampler.srgb && frame_color_srgb_ ? frame_color_srgb_ : frame_color_;
   const GlTexture& t = info.semantic == pfx::fx::TextureSemantic::kColor ? back_buffer_[current_] : textures_[static_cast<std::size_t>(sampler.texture)];
   return sampler.srgb && t.srgb_view ? t.srgb_view : t.texture;
 }
@@ -612,7 +624,7 @@ void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
   if (pass.srgb_write) glDisable(GL_FRAMEBUFFER_SRGB);
   if (pass.render_target_count == 0) {
     current_ = 1 - current_;
-    frame_color_ = 0;  // the picture is in the back buffer from now on
+    leave_frame();  // the picture is in the back buffer from now on
     return;
   }
   if (pass.generate_mipmaps)
@@ -632,7 +644,13 @@ void FxInstance::draw_output(const PassInfo& pass, const GeneratedPass& g, const
   glBindSampler(alpha_unit, 0);                              // texelFetch: no filtering
   glUseProgram(p.program);
   glDrawArrays(gl_topology(pass.topology), 0, pass.vertex_count);
+  leave_frame();
+}
+
+void FxInstance::leave_frame() {
   frame_color_ = 0;
+  if (frame_color_srgb_) glDeleteTextures(1, &frame_color_srgb_);
+  frame_color_srgb_ = 0;
 }
 
 }  // namespace pfx_fx

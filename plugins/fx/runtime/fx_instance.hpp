@@ -105,6 +105,8 @@ class FxInstance {
   // The host's colour, while the picture is still there (samples_frame_): passes sample it as the
   // back buffer until one writes the back buffer; 0 from then on.
   GLuint frame_color_ = 0;
+  GLuint frame_color_srgb_ = 0;  // an sRGB view of it, for layout_.srgb_frame_view
+  void leave_frame();            // the frame is no longer sampled: forget it, delete the view
   bool display_referred_ = false;  // the host (ABI 1.6+) hands and takes sRGB codes
   FxPassLayout layout_;            // how the technique's passes are declared
   // FX's depth buffer: the frame's depth as standard window depth of a projection with its far

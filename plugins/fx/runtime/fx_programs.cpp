@@ -127,7 +127,7 @@ bool FxPrograms::build(const pfx::fx::CompiledEffect& compiled, int technique, P
   }
   if (output_pass_ >= 0) {
     GeneratedPass& g = set.generated[static_cast<std::size_t>(output_pass_)];
-    g.fragment = with_frame_alpha(g.fragment, g.sampler_units.size());
+    g.fragment = with_frame_alpha(g.fragment, g.sampler_units.size(), info.passes[static_cast<std::size_t>(output_pass_)].srgb_write);
   }
   for (std::size_t i = 0; i < set.constants.size(); ++i)
     set.constant_count += pfx::fx::can_be_constant(model.uniforms[i].decl->resolved, set.constants[i]) ? 1 : 0;

@@ -206,10 +206,12 @@ enum { PFX_DECLARATION_SAMPLES_AND_DRAWS = 1u << 0 };
  * code / 255, and what a pass draws into "output" is stored as it is (no GL_FRAMEBUFFER_SRGB;
  * context->output_format PFX_FORMAT_RGBA8; output_texture 0 where the host bound a framebuffer of
  * its own). The pass may also sample "color" on units it binds itself, as long as it only samples
- * it. The chain converts only where a neighbour (or the host's frame) holds linear light, and folds
- * that into sampling an sRGB view or drawing into one where the neighbour promised
- * SAMPLES_AND_DRAWS; a run of display-referred effects over an 8-bit frame converts nothing. A host
- * older than 1.6 ignores the bit and hands linear light: check pfx_host.abi_minor >= 6 first. */
+ * it; "color" and a texture "output" have immutable storage, so it may make views of them (an
+ * sRGB view samples decoded). The chain converts only where a neighbour (or the host's frame)
+ * holds linear light, and folds that into sampling an sRGB view or drawing into one where the
+ * neighbour promised SAMPLES_AND_DRAWS; a run of display-referred effects over an 8-bit frame
+ * converts nothing. A host older than 1.6 ignores the bit and hands linear light: check
+ * pfx_host.abi_minor >= 6 first. */
 enum { PFX_DECLARATION_DISPLAY_REFERRED = 1u << 1 };
 
 /* One texture a pass reads, as bound by the host. */

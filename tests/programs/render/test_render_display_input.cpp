@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -186,4 +187,51 @@ TEST_CASE("options that do not fit an 8-bit input, or its absence, are usage err
   Result r = pfx_render("--input " + scratch / "broken.png" + " --json");
   CHECK(r.exit_code == 3);
   CHECK(r.err.find(scratch / "broken.png") != std::string::npos);
+}
+
+namespace {
+
+// A ReShade effect that inverts the sRGB codes it is handed: 255 - code, exact in float.
+const char* const kInvertFx = R"(#include "ReShade.fxh"
+sampler Point { Texture = ReShade::BackBufferTex; MagFilter = POINT; MinFilter = POINT; };
+float4 Invert(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target { return float4(1.0 - tex2D(Point, uv).rgb, 1.0); }
+technique Invert { pass { VertexShader = PostProcessVS; PixelShader = Invert; } }
+)";
+
+// The passes of a --json report that are the chain's own conversions.
+std::vector<std::string> chain_passes(const std::string& report) {
+  std::vector<std::string> names;
+  const nlohmann::json parsed = nlohmann::json::parse(report);
+  for (const auto& pass : parsed["passes"])
+    if (pass["effect"] == "chain") names.push_back(pass["pass"]);
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("a chain of FX effects over an 8-bit input converts nothing, and over an EXR once at each end",
+          "[render][display][fx]") {
+  Scratch scratch;
+  std::ofstream(scratch / "Invert.fx") << kInvertFx;
+  ::setenv("PFX_FX_PATH", scratch.dir.c_str(), 1);  // the FX plugin's folders, for the child
+  const DisplayImage input = every_code(4);
+  const std::string in = write(scratch, "codes.png", input);
+  Result r = bloom_render("--input " + in + " --chain fx_invert,fx_invert --out " + scratch / "twice.png" + " --json");
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(chain_passes(r.out).empty());
+  CHECK(nlohmann::json::parse(r.out)["passes"].size() == 4);  // each: begin, and its one pass
+  CHECK(read(scratch / "twice.png").pixels == input.pixels);  // inverted twice, code for code
+
+  pfx::app::Image linear;
+  linear.width = 16;
+  linear.height = 4;
+  for (int i = 0; i < 64; ++i)
+    for (const float v : {0.1f * (i % 11), 0.5f, 2.0f, 1.0f}) linear.rgba.push_back(v);
+  std::string error;
+  REQUIRE(pfx::app::write_exr(scratch / "linear.exr", linear, pfx::app::ExrPixelType::Half, &error));
+  r = bloom_render("--input " + scratch / "linear.exr" + " --chain fx_invert,fx_invert --out " + scratch / "out.exr" + " --json");
+  REQUIRE(r.exit_code == 0);
+  CHECK(chain_passes(r.out) == std::vector<std::string>{"colour to sRGB codes", "sRGB codes to output"});
+  ::unsetenv("PFX_FX_PATH");
 }
