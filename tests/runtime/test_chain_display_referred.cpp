@@ -7,6 +7,7 @@
 // the inversion and the sRGB curves give, computed here.
 #include <catch2/catch.hpp>
 
+#include <dlfcn.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -188,4 +189,55 @@ TEST_CASE("a technique that cannot end in the host's output moves the picture it
     // The GPU's sRGB decode and the shader's encode: within a code on llvmpipe.
     CHECK(worst_codes(in, out, [](double code) { return code; }) < 1.5);
   }
+}
+
+namespace {
+
+void log_nowhere(void*, pfx_log_level, const char*) {}
+pfx_gl_proc context_proc(void*, const char* name) { return pfx::app::HeadlessContext::get_proc_address(nullptr, name); }
+
+// The names of the passes the FX effect declares to a host of ABI 1.`minor`, and its promises.
+std::vector<std::string> declared_to_host_of(uint32_t minor, uint32_t* flags) {
+  pfx_host host{};
+  host.struct_size = sizeof host;
+  host.abi_major = PFX_ABI_MAJOR;
+  host.abi_minor = minor;
+  host.host_name = "test host";
+  host.log = log_nowhere;
+  host.get_proc_address = context_proc;
+  void* library = dlopen(fx_plugin_with_invert().c_str(), RTLD_NOW | RTLD_LOCAL);
+  REQUIRE(library);
+  const pfx_entry* entry = reinterpret_cast<pfx_get_entry_fn>(dlsym(library, PFX_ENTRY_SYMBOL))();
+  REQUIRE(entry->init(&host) == PFX_OK);
+  auto effects = static_cast<const pfx_effect_factory*>(entry->get_factory(PFX_EFFECTS_FACTORY_ID));
+  const pfx_effect_desc* invert = nullptr;
+  for (uint32_t i = 0; i < effects->effect_count(); ++i)
+    if (std::string(effects->get_effect(i)->id) == "fx_invert") invert = effects->get_effect(i);
+  REQUIRE(invert);
+  void* instance = nullptr;
+  REQUIRE(invert->create(&host, &instance) == PFX_OK);
+  const pfx_frame frame = pfx::test::make_frame(8, 8);
+  std::vector<pfx_value> values(invert->param_count + 1);  // never empty: data() is then no array
+  pfx_declaration declaration{};
+  declaration.struct_size = sizeof declaration;
+  REQUIRE(invert->declare(instance, &frame, values.data(), &declaration) == PFX_OK);
+  std::vector<std::string> names;
+  for (uint32_t i = 0; i < declaration.pass_count; ++i) names.push_back(declaration.passes[i].name);
+  *flags = declaration.flags;
+  invert->destroy(instance);
+  entry->deinit();
+  dlclose(library);
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("to a host older than ABI 1.6 the FX effect works in linear light and converts by itself",
+          "[chain][display_referred][abi]") {
+  pfx::test::gl_context();
+  uint32_t flags = 0;
+  CHECK(declared_to_host_of(5, &flags) == std::vector<std::string>{"encode", "pass0", "decode"});
+  CHECK(flags == PFX_DECLARATION_SAMPLES_AND_DRAWS);
+  CHECK(declared_to_host_of(6, &flags) == std::vector<std::string>{"begin", "pass0"});
+  CHECK(flags == (PFX_DECLARATION_SAMPLES_AND_DRAWS | PFX_DECLARATION_DISPLAY_REFERRED));
 }
