@@ -549,9 +549,12 @@ void FxInstance::bind_resources(const GeneratedPass& g, const PassProgram& p, in
     const GlTexture& t = textures_[static_cast<std::size_t>(s.texture)];
     glBindImageTexture(static_cast<GLuint>(unit), t.texture, s.mip_level, t.target == GL_TEXTURE_3D ? GL_TRUE : GL_FALSE, 0, GL_READ_WRITE, t.internal);
   }
+  p.uploaded.resize(g.uniforms.size());
   for (std::size_t k = 0; k < g.uniforms.size(); ++k) {
-    const pfx::fx::UniformInfo& u = model.uniforms[static_cast<std::size_t>(g.uniforms[k])];
-    upload(p.program, p.uniform_locations[k], u.type, uniforms_.of(g.uniforms[k]));
+    const std::vector<double>& value = uniforms_.of(g.uniforms[k]);
+    if (value == p.uploaded[k]) continue;  // the program holds it already
+    upload(p.program, p.uniform_locations[k], model.uniforms[static_cast<std::size_t>(g.uniforms[k])].type, value);
+    p.uploaded[k] = value;
   }
   if (p.target_height_location >= 0) glProgramUniform1f(p.program, p.target_height_location, static_cast<float>(target_height));
 }
