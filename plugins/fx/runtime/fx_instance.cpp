@@ -639,8 +639,9 @@ void FxInstance::run_fx_pass(int index, const pfx_pass_context& context) {
 
 void FxInstance::draw_output(const PassInfo& pass, const GeneratedPass& g, const PassProgram& p,
                              const pfx_pass_context& context) {
-  // Into what the host bound, at the frame's size: the pass writes every pixel with no blending,
-  // stencil or sRGB writes (fx_pass_layout), so none of the back buffer's state applies.
+  // Into what the host bound, at the frame's size: the pass writes every pixel with no blending or
+  // stencil, and its program encodes an sRGB write itself (fx_pass_layout), so none of the back
+  // buffer's state applies.
   bind_resources(g, p, compiled_height_);
   const auto alpha_unit = static_cast<GLuint>(g.sampler_units.size());
   glBindTextureUnit(alpha_unit, context.inputs[0].texture);  // "color", as declared
