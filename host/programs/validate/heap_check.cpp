@@ -4,6 +4,7 @@
 #include <malloc.h>
 
 #include <cstdlib>
+#include <vector>
 
 #include "render_rig.hpp"
 #include "synthetic_inputs.hpp"
@@ -55,25 +56,28 @@ void check_heap_growth(const std::string& path, const std::string& effect_id, Ch
   const HeapCycles& cycles = kHeapCycles;
   for (int i = 0; i < cycles.warm_up; ++i)
     if (!cycle()) return;
-  const std::int64_t before = heap_bytes_in_use();
-  for (int i = 0; i < cycles.measured; ++i)
-    if (!cycle()) return;
-  const std::int64_t growth = heap_bytes_in_use() - before;
-  report.fact("heap_growth_bytes", std::to_string(growth));
-  if (growth <= cycles.bound_bytes) return;
-  // A leak grows the heap by as much again over the next cycles; the driver's caches (llvmpipe's
-  // threads keep per-scene memory in their own arenas, more of it on a loaded machine) do not.
-  const std::int64_t again_before = heap_bytes_in_use();
-  for (int i = 0; i < cycles.measured; ++i)
-    if (!cycle()) return;
-  const std::int64_t again = heap_bytes_in_use() - again_before;
-  if (again > cycles.bound_bytes)
-    report.problem("the heap grew by " + std::to_string(growth) + " bytes over " + std::to_string(cycles.measured) +
-                   " cycles of create, a 16x9 frame and destroy (" + std::to_string(growth / cycles.measured) +
-                   " bytes per cycle, after " + std::to_string(cycles.warm_up) + " to warm up), and by " +
-                   std::to_string(again) + " over as many more: more than the bound of " +
-                   std::to_string(cycles.bound_bytes) + " bytes each time; the plugin keeps memory it allocated for "
-                   "an instance");
+  // A leak grows the heap by as much in every batch of cycles; the driver's caches (llvmpipe's
+  // threads keep per-scene memory in their own arenas, more of it on a loaded machine) fill, then
+  // hand blocks of about 100 KB back and forth. So the check fails only when every batch grew.
+  std::vector<std::int64_t> growths;
+  for (int batch = 0; batch < cycles.batches; ++batch) {
+    const std::int64_t before = heap_bytes_in_use();
+    for (int i = 0; i < cycles.measured; ++i)
+      if (!cycle()) return;
+    growths.push_back(heap_bytes_in_use() - before);
+    if (batch == 0) report.fact("heap_growth_bytes", std::to_string(growths.front()));
+    if (growths.back() <= cycles.bound_bytes) return;
+  }
+  std::string later;
+  for (std::size_t i = 1; i < growths.size(); ++i)
+    later += (i == 1 ? "" : i + 1 == growths.size() ? " and " : ", ") + std::to_string(growths[i]);
+  report.problem("the heap grew by " + std::to_string(growths.front()) + " bytes over " +
+                 std::to_string(cycles.measured) + " cycles of create, a 16x9 frame and destroy (" +
+                 std::to_string(growths.front() / cycles.measured) + " bytes per cycle, after " +
+                 std::to_string(cycles.warm_up) + " to warm up), and by " + later + " over as many in each of " +
+                 std::to_string(growths.size() - 1) + " batches after them: more than the bound of " +
+                 std::to_string(cycles.bound_bytes) + " bytes every time; the plugin keeps memory it allocated "
+                 "for an instance");
 }
 
 }  // namespace pfx::validate
