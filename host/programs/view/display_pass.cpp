@@ -17,6 +17,7 @@ layout(binding = 0) uniform sampler2D u_image;
 layout(location = 0) uniform float u_scale;    // 2^exposure
 layout(location = 1) uniform int u_curve;
 layout(location = 2) uniform vec4 u_viewport;  // x, y, width, height in window pixels
+layout(location = 3) uniform bool u_codes;     // the texture holds display codes: shown as they are
 layout(location = 0) out vec4 o_color;
 
 float curve(float x) {
@@ -36,6 +37,10 @@ float srgb(float x) {
 void main() {
   vec2 uv = (gl_FragCoord.xy - u_viewport.xy) / u_viewport.zw;
   vec3 c = texture(u_image, uv).rgb;
+  if (u_codes) {
+    o_color = vec4(c, 1.0);
+    return;
+  }
   if (any(isnan(c))) {
     o_color = vec4(1.0, 0.0, 1.0, 1.0);
     return;
@@ -84,6 +89,15 @@ DisplayPass::~DisplayPass() {
 
 void DisplayPass::draw(uint32_t texture, const Viewport& viewport, int window_width, int window_height,
                        const ToneMapSettings& tone) const {
+  draw_texture(texture, viewport, window_width, window_height, tone, false);
+}
+
+void DisplayPass::draw_codes(uint32_t texture, const Viewport& viewport, int window_width, int window_height) const {
+  draw_texture(texture, viewport, window_width, window_height, ToneMapSettings{}, true);
+}
+
+void DisplayPass::draw_texture(uint32_t texture, const Viewport& viewport, int window_width, int window_height,
+                               const ToneMapSettings& tone, bool codes) const {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, window_width, window_height);
   glDisable(GL_BLEND);
@@ -96,6 +110,7 @@ void DisplayPass::draw(uint32_t texture, const Viewport& viewport, int window_wi
   glProgramUniform1f(program_, 0, static_cast<float>(std::exp2(tone.exposure_ev)));
   glProgramUniform1i(program_, 1, static_cast<int>(tone.curve));
   glProgramUniform4f(program_, 2, float(viewport.x), float(viewport.y), float(viewport.width), float(viewport.height));
+  glProgramUniform1i(program_, 3, codes ? 1 : 0);
   glUseProgram(program_);
   glBindTextureUnit(0, texture);
   glBindSampler(0, sampler_);

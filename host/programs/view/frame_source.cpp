@@ -1,6 +1,8 @@
 #include "frame_source.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "camera_settings.hpp"
 #include "demo_image.hpp"
@@ -28,25 +30,25 @@ CameraOptions lens_of(const Camera& camera) {
   return lens;
 }
 
-// --input: an EXR as pfx-render reads it, or a PNG (8-bit, display-referred) decoded to linear
-// light with the exact sRGB curve, as pfx-render decodes one (its --transfer default).
-bool read_image_input(const ViewOptions& options, Image* image, InputReport* report, std::string* error) {
-  if (!is_display_input(options.input_path)) {
-    InputFiles files;
-    files.input = options.input_path;
-    files.layer = options.layer;
-    files.depth = options.depth_path;
-    return read_input_image(files, image, report, error);
+// --input IMG.exr, as pfx-render reads it.
+bool read_exr_input(const ViewOptions& options, Image* image, InputReport* report, std::string* error) {
+  InputFiles files;
+  files.input = options.input_path;
+  files.layer = options.layer;
+  files.depth = options.depth_path;
+  return read_input_image(files, image, report, error);
+}
+
+// A PNG's pixels as RGBA: a file without alpha is opaque, as in pfx-render.
+std::vector<uint8_t> rgba_of(const DisplayImage& image) {
+  if (image.channels == 4) return image.pixels;
+  const size_t count = size_t(image.width) * image.height;
+  std::vector<uint8_t> rgba(count * 4);
+  for (size_t i = 0; i < count; ++i) {
+    std::copy_n(&image.pixels[i * 3], 3, &rgba[i * 4]);
+    rgba[i * 4 + 3] = 255;
   }
-  if (!options.depth_path.empty() || !options.layer.empty()) {
-    *error = options.input_path + ": --depth and --layer go with an EXR input, not a PNG";
-    return false;
-  }
-  DisplayImage encoded;
-  if (!read_png(options.input_path, &encoded, error)) return false;
-  *image = decode_display_image(encoded, Transfer::SRGB);
-  report->color = std::string(encoded.channels == 4 ? "R, G, B, A" : "R, G, B") + " (8-bit, decoded as srgb)";
-  return true;
+  return rgba;
 }
 
 }  // namespace
@@ -81,10 +83,15 @@ std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, con
     self->camera_.position = glm::dvec3(0.0);
     self->camera_.target = glm::dvec3(0.0, 0.0, -1.0);
     apply_camera_keys(CameraOptions{}, {"fovy", "near", "far"}, &self->camera_);
-    if (options.input == ViewInput::Image) {
+    if (options.input == ViewInput::Image && is_display_input(options.input_path)) {
+      if (!self->load_codes(options, error)) {
+        *bad_input = true;
+        return nullptr;
+      }
+    } else if (options.input == ViewInput::Image) {
       Image image;
       InputReport report;
-      if (!read_image_input(options, &image, &report, error)) {
+      if (!read_exr_input(options, &image, &report, error)) {
         *bad_input = true;
         return nullptr;
       }
@@ -100,7 +107,27 @@ std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, con
   return self;
 }
 
-FrameSource::~FrameSource() { release_image(); }
+FrameSource::~FrameSource() {
+  release_image();
+  codes_.release();
+}
+
+bool FrameSource::load_codes(const ViewOptions& options, std::string* error) {
+  if (!options.depth_path.empty() || !options.layer.empty()) {
+    *error = options.input_path + ": --depth and --layer go with an EXR input, not a PNG";
+    return false;
+  }
+  DisplayImage encoded;
+  if (!read_png(options.input_path, &encoded, error)) return false;
+  codes_.create(encoded.width, encoded.height);
+  codes_.upload_top_first(rgba_of(encoded).data(), encoded.width, encoded.height);
+  width_ = encoded.width;
+  height_ = encoded.height;
+  channels_ = encoded.channels;
+  description_ = options.input_path + " " + std::to_string(width_) + "x" + std::to_string(height_) + " (" +
+                 (channels_ == 4 ? "R, G, B, A" : "R, G, B") + ", 8-bit sRGB)";
+  return true;
+}
 
 void FrameSource::upload_image(const Image& image) {
   release_image();
@@ -152,7 +179,7 @@ pfx_frame FrameSource::frame(double time_seconds, uint64_t frame_index) const {
 pfx::host::FrameTextures FrameSource::textures() const {
   if (renderer_) return renderer_->textures();
   pfx::host::FrameTextures textures;
-  textures.color = color_;
+  textures.color = codes_.texture ? codes_.srgb_view : color_;
   textures.depth = depth_;
   return textures;
 }

@@ -1,6 +1,8 @@
 // What the viewer shows, as the chain's frame inputs: the G-buffer of the demo scene or of a model
 // imported through the importer plugins (rendered again when the camera or the size changes), the
-// procedural demo image (made again when the size changes) or an EXR image (its own size, always).
+// procedural demo image (made again when the size changes) or an image (its own size, always): an
+// EXR in linear light, or a PNG kept as its 8-bit sRGB codes, as pfx-render and every host of
+// 8-bit frames keep one, so an all-FX chain reads and writes the codes and nothing converts them.
 #pragma once
 
 #include <memory>
@@ -8,6 +10,7 @@
 
 #include <pfx/host/chain.hpp>
 
+#include "eight_bit_texture.hpp"
 #include "gbuffer.hpp"
 #include "image.hpp"
 #include "scene.hpp"
@@ -44,6 +47,10 @@ class FrameSource {
   int height() const { return height_; }
   pfx_frame frame(double time_seconds, uint64_t frame_index) const;
   pfx::host::FrameTextures textures() const;
+  // An 8-bit picture: the frame's colour is an sRGB view of its codes, and the chain's result
+  // belongs in 8-bit sRGB codes too. channels(): 3 or 4, what the file held.
+  bool display_referred() const { return codes_.texture != 0; }
+  int channels() const { return channels_; }
   // One line for the UI: "demo scene (400 lights)", "IMG.exr 640x480 with depth"...
   const std::string& description() const { return description_; }
 
@@ -51,6 +58,7 @@ class FrameSource {
   FrameSource() = default;
   void upload_image(const Image& image);
   void release_image();
+  bool load_codes(const ViewOptions& options, std::string* error);
 
   ViewInput kind_ = ViewInput::DemoScene;
   Scene scene_;
@@ -59,6 +67,8 @@ class FrameSource {
   bool rendered_once_ = false;
   bool has_depth_ = false;
   uint32_t color_ = 0, depth_ = 0;
+  gl::EightBitTexture codes_;
+  int channels_ = 4;
   int width_ = 0, height_ = 0;
   std::string description_;
   std::vector<std::string> warnings_;

@@ -125,9 +125,11 @@ int run(const ViewOptions& options) {
       if (!have_frame) session->info("ready: " + session->source().description());
       have_frame = true;
     }
-    display.draw(session->output_texture(),
-                 fit_viewport(session->output_width(), session->output_height(), window_width, window_height),
-                 window_width, window_height, session->tone());
+    const Viewport shown = fit_viewport(session->output_width(), session->output_height(), window_width, window_height);
+    if (session->output().codes())
+      display.draw_codes(session->output().shown(), shown, window_width, window_height);
+    else
+      display.draw(session->output().shown(), shown, window_width, window_height, session->tone());
     window->draw_ui();
     if (ui.screenshot || screenshot_signalled()) session->take_screenshot();
     ui.screenshot = false;

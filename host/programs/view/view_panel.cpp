@@ -44,6 +44,18 @@ void draw_camera(ViewerSession& session, UiState& ui) {
   }
 }
 
+void draw_tone(ToneMapSettings& tone) {
+  const double ev_min = -10, ev_max = 10;
+  ImGui::SliderScalar("exposure", ImGuiDataType_Double, &tone.exposure_ev, &ev_min, &ev_max, "%.2f EV");
+  if (ImGui::BeginCombo("tone curve", tone_curve_name(tone.curve))) {
+    for (const auto& name : tone_curve_names()) {
+      ToneCurve curve;
+      if (parse_tone_curve(name, &curve, nullptr) && ImGui::Selectable(name.c_str(), curve == tone.curve)) tone.curve = curve;
+    }
+    ImGui::EndCombo();
+  }
+}
+
 }  // namespace
 
 void draw_messages(const ViewerSession& session) {
@@ -65,16 +77,11 @@ void draw_view_panel(ViewerSession& session, UiState& ui) {
   ImGui::Text("%s, frame %dx%d", session.source().description().c_str(), session.output_width(), session.output_height());
 
   if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ToneMapSettings& tone = session.tone();
-    const double ev_min = -10, ev_max = 10;
-    ImGui::SliderScalar("exposure", ImGuiDataType_Double, &tone.exposure_ev, &ev_min, &ev_max, "%.2f EV");
-    if (ImGui::BeginCombo("tone curve", tone_curve_name(tone.curve))) {
-      for (const auto& name : tone_curve_names()) {
-        ToneCurve curve;
-        if (parse_tone_curve(name, &curve, nullptr) && ImGui::Selectable(name.c_str(), curve == tone.curve)) tone.curve = curve;
-      }
-      ImGui::EndCombo();
-    }
+    if (session.output().codes())
+      ImGui::TextWrapped("an 8-bit picture: shown and saved as the chain's 8-bit result, as pfx-render writes it "
+                         "from a PNG (exposure and the tone curve are for HDR frames)");
+    else
+      draw_tone(session.tone());
   }
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) draw_camera(session, ui);
   if (ImGui::CollapsingHeader("Preset and screenshots", ImGuiTreeNodeFlags_DefaultOpen)) {

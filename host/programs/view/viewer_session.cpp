@@ -14,10 +14,12 @@
 #include "chain_builder.hpp"
 #include "default_chain.hpp"
 #include "exit_codes.hpp"
+#include "exr_io.hpp"
 #include "frame_files.hpp"
 #include "display_transfer.hpp"
 #include "image_texture.hpp"
 #include "plugin_directory.hpp"
+#include "png_io.hpp"
 #include "timing_choice.hpp"
 
 namespace pfx::app {
@@ -43,6 +45,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
   std::unique_ptr<ViewerSession> self(new ViewerSession);
   ViewerSession* session = self.get();
   self->renderer_ = renderer;
+  self->verbose_ = options.verbose;
   // Plugin messages go to stderr as usual; warnings and errors are also shown in the window.
   auto to_stderr = pfx::host::stderr_log_sink(options.verbose ? PFX_LOG_DEBUG : PFX_LOG_INFO);
   auto sink = [session, to_stderr](pfx_log_level level, const std::string& source, const std::string& message) {
@@ -119,8 +122,7 @@ std::unique_ptr<ViewerSession> ViewerSession::create(const ViewOptions& options,
 
 ViewerSession::~ViewerSession() {
   // GL objects before the chain and the registry (the context is still current).
-  delete_texture(output_);
-  delete_texture(spare_);
+  output_.reset();
   source_.reset();
   chain_.reset();
 }
@@ -159,24 +161,18 @@ bool ViewerSession::render(int width, int height, double time_seconds, bool forc
   const Clock::time_point start = Clock::now();
   source_->prepare(width, height, force_scene);
   const int w = source_->width(), h = source_->height();
-  if (w != output_width_ || h != output_height_) {
-    delete_texture(output_);
-    delete_texture(spare_);
-    output_ = create_color_texture(w, h);
-    spare_ = create_color_texture(w, h);
-    output_width_ = w;
-    output_height_ = h;
-  }
-  // Into the spare texture, swapped in on success: a failing frame leaves the last good one shown.
+  output_->resize(w, h, source_->display_referred());
+  // Into the target, shown on success: a failing frame leaves the last good one shown.
   std::string message;
-  bool ok = chain_->render(source_->frame(time_seconds, frame_index_++), source_->textures(), spare_, &message);
+  bool ok = chain_->render(source_->frame(time_seconds, frame_index_++), source_->textures(), output_->target(), &message);
   last_render_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   if (!ok) {
     if (message != render_error_) error("frame failed: " + message);
     render_error_ = message;
     return false;
   }
-  std::swap(output_, spare_);
+  output_->swap();
+  log_passes();
   render_error_.clear();
   return true;
 }
@@ -307,11 +303,26 @@ void ViewerSession::load_preset(const std::string& path) {
 }
 
 bool ViewerSession::write_frame(const std::string& png_path, std::string* error) {
-  if (!output_) {
+  if (!output_->has_frame()) {
     *error = "no frame has been rendered yet";
     return false;
   }
-  return write_frame_pair(download_color_texture(output_, output_width_, output_height_), png_path, tone_, error);
+  // An 8-bit picture's result is written as pfx-render writes it from the same PNG: its codes,
+  // with the file's channels, not tone-mapped; the EXR beside it holds them decoded.
+  if (output_->codes())
+    return write_png(png_path, output_->encoded(source_->channels()), error) &&
+           write_exr(exr_beside(png_path), output_->linear(), ExrPixelType::Half, error);
+  return write_frame_pair(output_->linear(), png_path, tone_, error);
+}
+
+void ViewerSession::log_passes() {
+  // With -v, the passes of each new plan, so where a frame's work goes (and that an all-FX chain
+  // over an 8-bit picture converts nothing) can be read without the window.
+  std::string passes;
+  for (const auto& pass : chain_->report().passes) passes += (passes.empty() ? "" : ", ") + pass.effect + "/" + pass.pass;
+  if (passes == logged_passes_) return;
+  logged_passes_ = passes;
+  if (verbose_) info("passes: " + passes);
 }
 
 void ViewerSession::take_screenshot() {

@@ -16,6 +16,7 @@
 #include "preset.hpp"
 #include "tonemap.hpp"
 #include "view_options.hpp"
+#include "view_output.hpp"
 
 namespace pfx::app {
 
@@ -51,9 +52,10 @@ class ViewerSession {
   // Renders the inputs and runs the chain. On failure the error is kept (render_error()) and
   // shown, and the last good output stays on screen.
   bool render(int width, int height, double time_seconds, bool force_scene);
-  uint32_t output_texture() const { return output_; }
-  int output_width() const { return output_width_; }
-  int output_height() const { return output_height_; }
+  // The frame on screen: linear light, or for an 8-bit picture its codes (output().codes()).
+  const ViewOutput& output() const { return *output_; }
+  int output_width() const { return output_->width(); }
+  int output_height() const { return output_->height(); }
   const std::string& render_error() const { return render_error_; }
   double last_render_ms() const { return last_render_ms_; }
 
@@ -90,6 +92,7 @@ class ViewerSession {
   ViewerSession() = default;
   bool build_chain(const std::vector<PresetEffect>& effects, std::string* error);
   void remember(Message message);
+  void log_passes();
   // The files the chain's effects were made from (an FX effect's .fx), for sources_.
   std::vector<std::string> chain_source_files() const;
 
@@ -112,9 +115,10 @@ class ViewerSession {
   // program (an editor); "" for none.
   std::string watched_preset_;
   FileWatch preset_watch_;
-  uint32_t output_ = 0, spare_ = 0;
+  std::unique_ptr<ViewOutput> output_ = std::make_unique<ViewOutput>();
   uint64_t frame_index_ = 0;
-  int output_width_ = 0, output_height_ = 0;
+  bool verbose_ = false;
+  std::string logged_passes_;
   std::string render_error_;
   double last_render_ms_ = 0;
   std::string preset_path_, shots_dir_;

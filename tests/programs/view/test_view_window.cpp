@@ -231,3 +231,68 @@ TEST_CASE("the window shows what the screenshot holds: the display shader tone-m
     CHECK(d.mean <= kPngMeanDifference);
   }
 }
+
+TEST_CASE("an 8-bit picture stays 8-bit through an all-FX chain in the viewer: no conversion pass, the grade's codes, "
+          "pfx-render's bytes, and the window shows them",
+          "[view][window][fx]") {
+  Scratch scratch;
+  // Every code in red and green, alpha moving too; blue dark, where a decode and encode again on
+  // the GPU would drift most.
+  pfx::app::DisplayImage picture;
+  picture.width = 256;
+  picture.height = 6;
+  picture.channels = 4;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x)
+      for (int v : {x, 255 - x, x % 16, 255 - y * 40}) picture.pixels.push_back(uint8_t(v));
+  std::string error;
+  REQUIRE(pfx::app::write_png(scratch / "codes.png", picture, &error));
+  const std::string fx_path = std::string("PFX_FX_PATH=") + PFX_FX_TEST_SHADERS;
+  const std::vector<std::string> look = {"--chain", "fx_grade,fx_grade", "--set", "fx_grade#1.gain=1.3", "--set",
+                                         "fx_grade#2.gain=0.9"};
+  std::vector<std::string> view = {"/usr/bin/env", fx_path, PFX_VIEW, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input",
+                                   scratch / "codes.png", "--window", "256x6", "--hide-panels", "--frames", "2",
+                                   "--screenshot", scratch / "view.png", "--window-shot", scratch / "window.png", "-v"};
+  view.insert(view.end(), look.begin(), look.end());
+  const pfx::test::RunResult shown = run_program(view);
+  require_ok(shown);
+
+  // The plan: each effect's own passes and nothing of the chain's (no conversion to linear light).
+  const size_t at = shown.output.find("pfx-view: passes: ");
+  REQUIRE(at != std::string::npos);
+  const std::string passes = shown.output.substr(at, shown.output.find('\n', at) - at);
+  INFO(passes);
+  CHECK(passes.find("fx_grade/") != std::string::npos);
+  CHECK(passes.find("chain/") == std::string::npos);
+
+  // The grade in sRGB codes, as ReShade runs it: each instance multiplies and rounds to a code.
+  pfx::app::DisplayImage result;
+  REQUIRE(pfx::app::read_png(scratch / "view.png", &result, &error));
+  REQUIRE(result.channels == 4);
+  int worst = 0;
+  for (size_t i = 0; i < picture.pixels.size(); ++i) {
+    int expected = picture.pixels[i];
+    if (i % 4 != 3) {
+      expected = std::min(255, int(std::lround(expected * 1.3)));
+      expected = int(std::lround(expected * 0.9));
+    }
+    worst = std::max(worst, std::abs(int(result.pixels[i]) - expected));
+  }
+  CHECK(worst <= 1);  // a product landing on a half code may round either way
+
+  // pfx-render gives the same bytes from the same PNG, and the window shows them as they are.
+  std::vector<std::string> render = {"/usr/bin/env", fx_path, PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR,
+                                     "--input", scratch / "codes.png", "--out", scratch / "render.png"};
+  render.insert(render.end(), look.begin(), look.end());
+  require_ok(run_program(render));
+  CHECK(compare_png(scratch / "view.png", scratch / "render.png").max == 0);
+  pfx::app::DisplayImage window;
+  REQUIRE(pfx::app::read_png(scratch / "window.png", &window, &error));
+  REQUIRE(window.channels == 3);
+  REQUIRE(window.pixels.size() == result.pixels.size() / 4 * 3);
+  int window_worst = 0;
+  for (size_t p = 0; p < window.pixels.size() / 3; ++p)
+    for (int c = 0; c < 3; ++c)
+      window_worst = std::max(window_worst, std::abs(int(window.pixels[p * 3 + c]) - int(result.pixels[p * 4 + c])));
+  CHECK(window_worst == 0);
+}
