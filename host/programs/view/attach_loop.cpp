@@ -63,12 +63,7 @@ int run_attached(const ViewOptions& options) {
     session->poll_plugins(now);
     timings.poll(now);
     ++frame;
-    for (const auto& edit : options.edits) {
-      if (edit.frame != frame) continue;
-      std::string error;
-      if (session->params().set_assignment(edit.assignment, &error)) session->info("edited " + edit.assignment);
-      else session->error("--edit " + error);
-    }
+    session->apply_edits(options.edits, frame);
     window->begin_ui_frame();
     draw_chain_panel(*session);
     draw_parameters_panel(*session, ui);

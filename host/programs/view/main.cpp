@@ -3,6 +3,7 @@
 // reload of rebuilt plugins, screenshots and presets. --frames N makes it a scripted renderer.
 #include <algorithm>
 #include <chrono>
+#include <thread>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -81,7 +82,7 @@ int run(const ViewOptions& options) {
     camera_settings.fly_metres_per_second = std::max(0.5, 0.15 * double(glm::length(scene->bounds_max - scene->bounds_min)));
   const bool scripted = options.frames > 0;
   const double start = glfwGetTime();
-  double last = start;
+  double last = start, last_scripted = start;
   uint64_t shown_stamp = 0;
   bool have_frame = false;
   long long frames_done = 0, frames_shown = 0;
@@ -116,6 +117,16 @@ int run(const ViewOptions& options) {
     }
     draw_error_overlay(*session);
 
+    if (scripted) {
+      // A scripted frame starts no sooner than 1/60 s after the one before, as a display at 60 Hz
+      // shows them: what an effect does after a while of wall time (FX programs specialised for
+      // values that held still for half a second) has happened 30 frames later at the latest.
+      const double due = last_scripted + 1.0 / 60.0;
+      if (frames_done > 0 && glfwGetTime() < due)
+        std::this_thread::sleep_for(std::chrono::duration<double>(due - glfwGetTime()));
+      last_scripted = glfwGetTime();
+      session->apply_edits(options.edits, frames_done + 1);
+    }
     const uint64_t stamp = session->state_stamp(width, height);
     if (scripted || ui.continuous || !have_frame || stamp != shown_stamp) {
       const double time = scripted ? double(frames_done) / 60.0 : now - start;

@@ -65,7 +65,9 @@ std::string view_usage() {
       "  --tone NAME          tone curve: linear (default), reinhard, aces\n"
       "\n"
       "scripted use (tests, documentation)\n"
-      "  --frames N           render N frames, write the files below, exit\n"
+      "  --frames N           render N frames, 60 a second at most (the effects' clock runs at 60 a\n"
+      "                       second), write the files below, exit\n"
+      "  --edit N:E.P=V       at frame N (1 is the first) set E.P as its widget would (repeatable)\n"
       "  --screenshot FILE.png  the last frame as pfx-render would write it: FILE.png (tone-mapped)\n"
       "                       and FILE.exr (half, scene-linear) beside it\n"
       "  --window-shot FILE.png the whole window, panels included, as shown\n"
@@ -77,7 +79,7 @@ std::string view_usage() {
       "                       injected library watches (values start at the display-referred\n"
       "                       defaults); --preset names the file \"save\" and \"load\" use\n"
       "  --timings FILE       the per-pass times the injected library writes, shown in a panel\n"
-      "  --edit N:E.P=V       scripted (--frames): at frame N set E.P as its widget would (repeatable)\n"
+
       "\n"
       "signals: SIGUSR1 takes a screenshot as F12 does; SIGINT and SIGTERM close the window cleanly.\n"
       "exit codes: 0 ok, 1 internal error (no window or no OpenGL 4.5 context), 2 usage, 3 bad input\n"
@@ -263,8 +265,7 @@ std::string conflict(const Parsed& parsed) {
     return "--screenshot and --window-shot go with --frames N";
   if (!options.attach.empty() && (parsed.inputs_given || options.size_given || !options.screenshot.empty()))
     return "--attach shows no picture: leave out the input, --size and --screenshot";
-  if ((!options.timings.empty() || !options.edits.empty()) && options.attach.empty())
-    return "--timings and --edit go with --attach";
+  if (!options.timings.empty() && options.attach.empty()) return "--timings goes with --attach";
   if (!options.edits.empty() && options.frames == 0) return "--edit goes with --frames N";
   return "";
 }

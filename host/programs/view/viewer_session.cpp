@@ -316,13 +316,29 @@ bool ViewerSession::write_frame(const std::string& png_path, std::string* error)
 }
 
 void ViewerSession::log_passes() {
-  // With -v, the passes of each new plan, so where a frame's work goes (and that an all-FX chain
-  // over an 8-bit picture converts nothing) can be read without the window.
+  // With -v, the passes of each new plan and each effect's report when it changes, so where a
+  // frame's work goes (that an all-FX chain over an 8-bit picture converts nothing, when FX
+  // programs hold values as constants) can be read without the window.
+  if (!verbose_) return;
+  const pfx::host::FrameReport& report = chain_->report();
   std::string passes;
-  for (const auto& pass : chain_->report().passes) passes += (passes.empty() ? "" : ", ") + pass.effect + "/" + pass.pass;
-  if (passes == logged_passes_) return;
+  for (const auto& pass : report.passes) passes += (passes.empty() ? "" : ", ") + pass.effect + "/" + pass.pass;
+  if (passes != logged_passes_) info("passes: " + passes);
   logged_passes_ = passes;
-  if (verbose_) info("passes: " + passes);
+  for (const auto& [instance, figures] : report.effect_reports) {
+    std::string& logged = logged_reports_[instance];
+    if (figures != logged) info("report of " + instance + ": " + figures);
+    logged = figures;
+  }
+}
+
+void ViewerSession::apply_edits(const std::vector<ViewOptions::Edit>& edits, long long frame) {
+  for (const auto& edit : edits) {
+    if (edit.frame != frame) continue;
+    std::string message;
+    if (params_.set_assignment(edit.assignment, &message)) info("edited " + edit.assignment);
+    else error("--edit " + message);
+  }
 }
 
 void ViewerSession::take_screenshot() {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -58,6 +59,9 @@ class ViewerSession {
   int output_height() const { return output_->height(); }
   const std::string& render_error() const { return render_error_; }
   double last_render_ms() const { return last_render_ms_; }
+
+  // --edit: the assignments due at this frame (1 for the first), made as their widgets make them.
+  void apply_edits(const std::vector<ViewOptions::Edit>& edits, long long frame);
 
   // Hot reload: polls the plugin files and reloads those rebuilt (keeping parameter values); the
   // files the chain's effects were made from (FX files): an edit of one changes state_stamp for
@@ -119,6 +123,7 @@ class ViewerSession {
   uint64_t frame_index_ = 0;
   bool verbose_ = false;
   std::string logged_passes_;
+  std::map<std::string, std::string> logged_reports_;
   std::string render_error_;
   double last_render_ms_ = 0;
   std::string preset_path_, shots_dir_;

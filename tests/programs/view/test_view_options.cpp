@@ -73,8 +73,13 @@ TEST_CASE("pfx-view --attach: the panel of an injected chain, scripted edits, an
   CHECK(options.edits[1].assignment == "bloom#2.tint=1,0.5,0");
   CHECK(usage_error({"--attach", "s.json", "--demo-image"}) ==
         "--attach shows no picture: leave out the input, --size and --screenshot");
-  CHECK(usage_error({"--timings", "t.json"}) == "--timings and --edit go with --attach");
+  CHECK(usage_error({"--timings", "t.json"}) == "--timings goes with --attach");
   CHECK(usage_error({"--attach", "s.json", "--edit", "3:bloom.strength=2"}) == "--edit goes with --frames N");
+  CHECK(usage_error({"--demo-image", "--edit", "3:bloom.strength=2"}) == "--edit goes with --frames N");
+  // A scripted viewer takes edits too: a value that moves mid-run.
+  pfx::app::ViewOptions viewer;
+  REQUIRE(pfx::app::parse_view_options({"--demo-image", "--frames", "9", "--edit", "3:bloom.strength=2"}, &viewer, &error));
+  CHECK(viewer.edits.size() == 1);
   CHECK(usage_error({"--attach", "s.json", "--frames", "5", "--edit", "bloom.strength=2"}) ==
         "--edit bloom.strength=2: expected FRAME:EFFECT.PARAM=VALUE");
   CHECK(usage_error({"--attach", "s.json", "--frames", "5", "--edit", "0:bloom.strength=2"}) ==

@@ -23,6 +23,37 @@ using pfx::test::run_program;
 
 namespace {
 
+// A PNG of every code in red and green, alpha moving too, blue dark (where a decode and encode
+// again on the GPU would drift most), 256x6; written to `path` and returned.
+pfx::app::DisplayImage every_code(const std::string& path) {
+  pfx::app::DisplayImage picture;
+  picture.width = 256;
+  picture.height = 6;
+  picture.channels = 4;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x)
+      for (int v : {x, 255 - x, x % 16, 255 - y * 40}) picture.pixels.push_back(uint8_t(v));
+  std::string error;
+  REQUIRE(pfx::app::write_png(path, picture, &error));
+  return picture;
+}
+
+// The largest difference of `result` (RGBA) from Grade.fx's multiply applied to the codes of
+// `picture` once per gain, rounding to a code after each, alpha kept: computed here, on the CPU.
+int worst_against_gains(const pfx::app::DisplayImage& picture, const pfx::app::DisplayImage& result,
+                        const std::vector<double>& gains) {
+  REQUIRE(result.channels == 4);
+  REQUIRE(result.pixels.size() == picture.pixels.size());
+  int worst = 0;
+  for (size_t i = 0; i < picture.pixels.size(); ++i) {
+    int expected = picture.pixels[i];
+    if (i % 4 != 3)
+      for (double gain : gains) expected = std::min(255, int(std::lround(expected * gain)));
+    worst = std::max(worst, std::abs(int(result.pixels[i]) - expected));
+  }
+  return worst;
+}
+
 // The same 8-bit result, give or take one code value for a GL that rounds differently in a window
 // than headless; on average well under a tenth of a code value. (On llvmpipe both are bit-identical.)
 constexpr int kPngMaxDifference = 1;
@@ -236,17 +267,8 @@ TEST_CASE("an 8-bit picture stays 8-bit through an all-FX chain in the viewer: n
           "pfx-render's bytes, and the window shows them",
           "[view][window][fx]") {
   Scratch scratch;
-  // Every code in red and green, alpha moving too; blue dark, where a decode and encode again on
-  // the GPU would drift most.
-  pfx::app::DisplayImage picture;
-  picture.width = 256;
-  picture.height = 6;
-  picture.channels = 4;
-  for (int y = 0; y < picture.height; ++y)
-    for (int x = 0; x < picture.width; ++x)
-      for (int v : {x, 255 - x, x % 16, 255 - y * 40}) picture.pixels.push_back(uint8_t(v));
+  const pfx::app::DisplayImage picture = every_code(scratch / "codes.png");
   std::string error;
-  REQUIRE(pfx::app::write_png(scratch / "codes.png", picture, &error));
   const std::string fx_path = std::string("PFX_FX_PATH=") + PFX_FX_TEST_SHADERS;
   const std::vector<std::string> look = {"--chain", "fx_grade,fx_grade", "--set", "fx_grade#1.gain=1.3", "--set",
                                          "fx_grade#2.gain=0.9"};
@@ -268,17 +290,7 @@ TEST_CASE("an 8-bit picture stays 8-bit through an all-FX chain in the viewer: n
   // The grade in sRGB codes, as ReShade runs it: each instance multiplies and rounds to a code.
   pfx::app::DisplayImage result;
   REQUIRE(pfx::app::read_png(scratch / "view.png", &result, &error));
-  REQUIRE(result.channels == 4);
-  int worst = 0;
-  for (size_t i = 0; i < picture.pixels.size(); ++i) {
-    int expected = picture.pixels[i];
-    if (i % 4 != 3) {
-      expected = std::min(255, int(std::lround(expected * 1.3)));
-      expected = int(std::lround(expected * 0.9));
-    }
-    worst = std::max(worst, std::abs(int(result.pixels[i]) - expected));
-  }
-  CHECK(worst <= 1);  // a product landing on a half code may round either way
+  CHECK(worst_against_gains(picture, result, {1.3, 0.9}) <= 1);  // a product on a half code rounds either way
 
   // pfx-render gives the same bytes from the same PNG, and the window shows them as they are.
   std::vector<std::string> render = {"/usr/bin/env", fx_path, PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR,
@@ -295,4 +307,48 @@ TEST_CASE("an 8-bit picture stays 8-bit through an all-FX chain in the viewer: n
     for (int c = 0; c < 3; ++c)
       window_worst = std::max(window_worst, std::abs(int(window.pixels[p * 3 + c]) - int(result.pixels[p * 4 + c])));
   CHECK(window_worst == 0);
+}
+
+TEST_CASE("a value edited mid-run in the viewer gives the new picture at once from live uniforms, then the same "
+          "pixels from programs that hold it as a constant",
+          "[view][window][fx]") {
+  Scratch scratch;
+  const pfx::app::DisplayImage picture = every_code(scratch / "codes.png");
+  const std::string fx_path = std::string("PFX_FX_PATH=") + PFX_FX_TEST_SHADERS;
+  // The frame of the edit itself runs live programs (the value has only just moved); 44 frames
+  // later, at least 0.73 s on, the programs hold it as a constant (it settles after 0.5 s).
+  auto view = [&](const std::string& frames, const std::string& shot) {
+    const pfx::test::RunResult r = run_program(
+        {"/usr/bin/env", fx_path, PFX_VIEW, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", scratch / "codes.png",
+         "--chain", "fx_grade", "--window", "256x6", "--hide-panels", "--frames", frames, "--edit",
+         "2:fx_grade.gain=1.3", "--screenshot", scratch / shot, "-v"});
+    require_ok(r);
+    return r.output;
+  };
+  // The value of "uniforms_as_constants" in each report of fx_grade the viewer printed, in order.
+  auto constants = [](const std::string& log) {
+    std::vector<int> counts;
+    const std::string key = "\"uniforms_as_constants\": ";
+    for (size_t at = log.find(key); at != std::string::npos; at = log.find(key, at + 1))
+      counts.push_back(std::atoi(log.c_str() + at + key.size()));
+    return counts;
+  };
+  const std::string live_log = view("2", "live.png"), settled_log = view("45", "settled.png");
+  INFO(live_log);
+  INFO(settled_log);
+  // Grade's four parameters are constants from the first frame, none at the edit, all again later.
+  CHECK(constants(live_log) == std::vector<int>{4, 0});
+  CHECK(constants(settled_log) == std::vector<int>{4, 0, 4});
+
+  std::string error;
+  pfx::app::DisplayImage live, settled;
+  REQUIRE(pfx::app::read_png(scratch / "live.png", &live, &error));
+  REQUIRE(pfx::app::read_png(scratch / "settled.png", &settled, &error));
+  CHECK(worst_against_gains(picture, live, {1.3}) <= 1);
+  CHECK(compare_png(scratch / "live.png", scratch / "settled.png").max == 0);
+  // pfx-render, given the value from the start, runs the same constants: the same bytes.
+  require_ok(run_program({"/usr/bin/env", fx_path, PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input",
+                          scratch / "codes.png", "--chain", "fx_grade", "--set", "fx_grade.gain=1.3", "--out",
+                          scratch / "render.png"}));
+  CHECK(compare_png(scratch / "settled.png", scratch / "render.png").max == 0);
 }
