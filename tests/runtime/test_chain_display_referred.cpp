@@ -61,6 +61,31 @@ float4 Through(float4 p : SV_Position, float2 uv : TEXCOORD) : SV_Target { retur
 technique ThroughLinear { pass { VertexShader = PostProcessVS; PixelShader = Through; SRGBWriteEnable = true; } }
 )";
 
+// The inversion drawn by vertex shaders of the effect's own that wrap PostProcessVS, as SMAA's do:
+// one only adds an output (an offset the pixel shader reads), so the triangle covers the target
+// as PostProcessVS's does; the other then moves the position (the triangle shrinks to the middle
+// of the picture), so the pixels it leaves must keep the picture.
+const char* const kWrappedFx = R"(#include "ReShade.fxh"
+sampler Point { Texture = ReShade::BackBufferTex; MagFilter = POINT; MinFilter = POINT; };
+void AddsOffsetVS(in uint id : SV_VertexID, out float4 position : SV_Position, out float2 uv : TEXCOORD0,
+                  out float4 offset : TEXCOORD1) {
+  PostProcessVS(id, position, uv);
+  offset = float4(uv, uv) * 0.0;
+}
+void ShrinksVS(in uint id : SV_VertexID, out float4 position : SV_Position, out float2 uv : TEXCOORD0,
+               out float4 offset : TEXCOORD1) {
+  PostProcessVS(id, position, uv);
+  offset = 0.0;
+  position.xy *= 0.5;
+}
+float4 Invert(float4 p : SV_Position, float2 uv : TEXCOORD0, float4 offset : TEXCOORD1) : SV_Target {
+  float4 c = tex2D(Point, uv + offset.xy);
+  return float4(1.0 - c.rgb, c.a * 0.5);
+}
+technique AddsOffset { pass { VertexShader = AddsOffsetVS; PixelShader = Invert; } }
+technique Shrinks { pass { VertexShader = ShrinksVS; PixelShader = Invert; } }
+)";
+
 // The FX plugin reads PFX_FX_PATH at its first use: one folder for the whole test program.
 std::string fx_plugin_with_invert() {
   static const fs::path folder = [] {
@@ -69,6 +94,7 @@ std::string fx_plugin_with_invert() {
     std::ofstream(f / "Invert.fx") << kInvertFx;
     std::ofstream(f / "InvertThenKeep.fx") << kInvertThenKeepFx;
     std::ofstream(f / "ThroughLinear.fx") << kThroughLinearFx;
+    std::ofstream(f / "Wrapped.fx") << kWrappedFx;
     ::setenv("PFX_FX_PATH", f.c_str(), 1);
     return f;
   }();
@@ -240,4 +266,33 @@ TEST_CASE("to a host older than ABI 1.6 the FX effect works in linear light and 
   CHECK(flags == PFX_DECLARATION_SAMPLES_AND_DRAWS);
   CHECK(declared_to_host_of(6, &flags) == std::vector<std::string>{"begin", "pass0"});
   CHECK(flags == (PFX_DECLARATION_SAMPLES_AND_DRAWS | PFX_DECLARATION_DISPLAY_REFERRED));
+}
+
+TEST_CASE("a vertex shader that wraps PostProcessVS covers the frame as PostProcessVS does, one that moves the "
+          "position keeps the picture around its triangle",
+          "[chain][eight_bit][display_referred]") {
+  const std::vector<uint8_t> in = every_code();
+  {
+    EightBitRig rig(fx_plugin_with_invert());
+    rig.add("fx_addsoffset", "");
+    const std::vector<uint8_t> out = rig.render(in, true);
+    CHECK(rig.passes() == std::vector<std::string>{"fx_addsoffset:begin", "fx_addsoffset:pass0"});
+    CHECK(worst_codes(in, out, [](double code) { return 255.0 - code; }) == 0);
+  }
+  {
+    EightBitRig rig(fx_plugin_with_invert());
+    rig.add("fx_shrinks", "");
+    const std::vector<uint8_t> out = rig.render(in, true);
+    CHECK(rig.passes() == std::vector<std::string>{"fx_shrinks:copy in", "fx_shrinks:pass0", "fx_shrinks:finish"});
+    // The triangle, shrunk about the centre, covers the middle of the picture (drawn from the
+    // picture stretched twice over); the corners keep the picture, every channel.
+    const int w = pfx::test::kWidth, h = pfx::test::kHeight;
+    const auto at = [&](int x, int y, int c) { return size_t((y * w + x) * 4 + c); };
+    CHECK(out[at(w / 2, h / 2, 0)] != in[at(w / 2, h / 2, 0)]);
+    for (int c = 0; c < 4; ++c) {
+      CHECK(out[at(0, 0, c)] == in[at(0, 0, c)]);
+      CHECK(out[at(w - 1, h - 1, c)] == in[at(w - 1, h - 1, c)]);
+      CHECK(out[at(w - 1, 0, c)] == in[at(w - 1, 0, c)]);
+    }
+  }
 }

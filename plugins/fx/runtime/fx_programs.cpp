@@ -6,6 +6,7 @@
 
 #include <pfx/cpp/gl_program.hpp>
 
+#include "fx_full_screen_vs.hpp"
 #include "fx_pass_layout.hpp"
 #include "fx_program_cache.hpp"
 
@@ -157,8 +158,7 @@ bool FxPrograms::build(const pfx::fx::CompiledEffect& compiled, int technique, P
 }
 
 bool covers_back_buffer(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& generated) {
-  const bool standard_vs = pass.vertex_shader && pass.vertex_shader->name == "PostProcessVS";
-  return standard_vs && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !generated.may_discard &&
+  return draws_full_screen_triangle(pass.vertex_shader) && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !generated.may_discard &&
          pass.vertex_count == 3 && pass.topology == pfx::fx::Topology::kTriangleList && !pass.stencil.enable;
 }
 

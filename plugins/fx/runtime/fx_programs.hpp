@@ -33,8 +33,8 @@ struct PassProgram {
 };
 
 // Whether a pass that writes the back buffer writes every pixel of it, so it need not start from
-// a copy of the picture: the standard full-screen triangle, no blending, every channel, no discard,
-// no stencil test.
+// a copy of the picture: the standard full-screen triangle (fx_full_screen_vs.hpp), no blending,
+// every channel, no discard, no stencil test.
 bool covers_back_buffer(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& generated);
 
 struct ProgramSet {
