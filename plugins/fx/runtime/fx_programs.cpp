@@ -33,25 +33,27 @@ std::string with_file_names(const std::string& log, const pfx::fx::FileNames& na
   return out + log.substr(last);
 }
 
-// A program from the cache, else built from its GLSL and stored there; 0 with *message.
-GLuint cached_program(const ProgramCache& cache, const GeneratedPass& g, std::string* message, int* cache_hits) {
-  const std::string key = cache.key({g.vertex, g.fragment, g.compute});
-  GLuint program = cache.load(key);
-  if (program) {
+// A program from the cache (its key left empty: nothing to store), else its GLSL handed to the
+// driver to compile and link (the key kept, to store it under once it has linked).
+GLuint start_cached_program(const ProgramCache& cache, const GeneratedPass& g, std::string* key, int* cache_hits) {
+  *key = cache.key({g.vertex, g.fragment, g.compute});
+  if (GLuint program = cache.load(*key)) {
     ++*cache_hits;
+    key->clear();
     return program;
   }
   if (!g.compute.empty()) {
     const char* source = g.compute.c_str();
     const GLenum stage = GL_COMPUTE_SHADER;
-    program = pfx::gl::build_program(&stage, &source, 1, message, cache.usable());
-  } else {
-    const char* sources[2] = {g.vertex.c_str(), g.fragment.c_str()};
-    const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-    program = pfx::gl::build_program(stages, sources, 2, message, cache.usable());
+    return pfx::gl::start_program(&stage, &source, 1, cache.usable());
   }
-  if (program) cache.store(key, program);
-  return program;
+  const char* sources[2] = {g.vertex.c_str(), g.fragment.c_str()};
+  const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+  return pfx::gl::start_program(stages, sources, 2, cache.usable());
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -70,6 +72,7 @@ void FxPrograms::release(ProgramSet& set) {
 void FxPrograms::release() {
   release(live_);
   release(specialised_);
+  release(pending_);
   running_ = &live_;
   last_held_.clear();
   first_frame_ = true;
@@ -90,29 +93,50 @@ bool FxPrograms::choose(const pfx::fx::CompiledEffect& compiled, int technique, 
     last_held_ = held;
     if (!first_frame_) last_change_ = now;
   }
-  const bool settled = first_frame_ || std::chrono::duration<double>(now - last_change_).count() >= kSettleSeconds;
+  const bool first_frame = first_frame_;
+  const bool settled = first_frame || std::chrono::duration<double>(now - last_change_).count() >= kSettleSeconds;
   first_frame_ = false;
-  const bool wants_specialised = enabled_ && (settled || (specialised_.built && specialised_.constants == held));
-  ProgramSet& set = wants_specialised ? specialised_ : live_;
-  if (wants_specialised && set.built && set.constants != held) release(set);
-  if (!set.built) {
-    if (wants_specialised) set.constants = held;
-    if (!build(compiled, technique, set, error)) {
-      release(set);
-      return false;
+  if (parallel_compile_ < 0) parallel_compile_ = pfx::gl::has_parallel_compile() ? 1 : 0;
+
+  // A set compiling in the background for values that have moved on is no use.
+  if (pending_.started && pending_.constants != held) release(pending_);
+  const bool have_specialised = specialised_.built && specialised_.constants == held;
+  bool wants_specialised = enabled_ && (settled || have_specialised);
+  if (wants_specialised && !have_specialised) {
+    if (parallel_compile_ && live_.built && !first_frame) {
+      // Off the frame path: the driver compiles while the live programs keep running, and the set
+      // takes over the frame it is ready (this one, where the driver compiled as it was asked).
+      pending_.constants = held;
+      if (!pending_.started && !start_build(compiled, technique, pending_, error)) return release(pending_), false;
+      wants_specialised = ready(pending_);
+      if (wants_specialised) {
+        if (!finish_build(compiled, technique, pending_, error)) return release(pending_), false;
+        release(specialised_);
+        specialised_ = std::move(pending_);
+        pending_ = ProgramSet{};
+      }
+    } else {
+      // Nothing else to run yet (the first frame), or a driver that compiles only when asked.
+      release(specialised_);
+      specialised_.constants = held;
     }
   }
+  ProgramSet& set = wants_specialised ? specialised_ : live_;
+  if (!set.built && !(start_build(compiled, technique, set, error) && finish_build(compiled, technique, set, error)))
+    return release(set), false;
   running_ = &set;
   return true;
 }
 
-bool FxPrograms::build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set, std::string* error) {
+bool FxPrograms::start_build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set,
+                             std::string* error) {
   const auto start = std::chrono::steady_clock::now();
   cache_hits_ = 0;
   const pfx::fx::EffectModel& model = compiled.model;
   const pfx::fx::TechniqueInfo& info = model.techniques[static_cast<std::size_t>(technique)];
   const auto& live = compiled.passes[static_cast<std::size_t>(technique)];
   set.generated.clear();
+  set.programs.clear();
   set.constant_count = 0;
   for (std::size_t i = 0; i < live.size(); ++i) {
     if (set.constants.empty()) {
@@ -133,27 +157,52 @@ bool FxPrograms::build(const pfx::fx::CompiledEffect& compiled, int technique, P
   for (std::size_t i = 0; i < set.constants.size(); ++i)
     set.constant_count += pfx::fx::can_be_constant(model.uniforms[i].decl->resolved, set.constants[i]) ? 1 : 0;
   const ProgramCache cache;
-  for (std::size_t i = 0; i < set.generated.size(); ++i) {
+  for (const GeneratedPass& g : set.generated) {
+    PassProgram p;
+    p.program = start_cached_program(cache, g, &p.cache_key, &cache_hits_);
+    set.programs.push_back(std::move(p));
+  }
+  set.started = true;
+  build_ms_ = ms_since(start);
+  return true;
+}
+
+bool FxPrograms::ready(const ProgramSet& set) {
+  for (const PassProgram& p : set.programs)
+    if (!p.cache_key.empty() && !pfx::gl::program_ready(p.program)) return false;
+  return true;
+}
+
+bool FxPrograms::finish_build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set,
+                              std::string* error) {
+  const auto start = std::chrono::steady_clock::now();
+  const pfx::fx::EffectModel& model = compiled.model;
+  const pfx::fx::TechniqueInfo& info = model.techniques[static_cast<std::size_t>(technique)];
+  const ProgramCache cache;
+  for (std::size_t i = 0; i < set.programs.size(); ++i) {
+    PassProgram& p = set.programs[i];
     const GeneratedPass& g = set.generated[i];
     const PassInfo& pass = info.passes[i];
-    PassProgram p;
-    std::string message;
-    p.program = cached_program(cache, g, &message, &cache_hits_);
-    if (!p.program) {
-      const std::string name = pass.name.empty() ? "pass" + std::to_string(i) : pass.name;
-      *error = "pass '" + name + "': the GL refused the generated GLSL (a compiler bug, please report it):\n" +
-               with_file_names(message, compiled.front->names);
-      return false;
+    if (!p.cache_key.empty()) {
+      std::string message;
+      p.program = pfx::gl::finish_program(p.program, &message);
+      if (!p.program) {
+        const std::string name = pass.name.empty() ? "pass" + std::to_string(i) : pass.name;
+        *error = "pass '" + name + "': the GL refused the generated GLSL (a compiler bug, please report it):\n" +
+                 with_file_names(message, compiled.front->names);
+        return false;
+      }
+      cache.store(p.cache_key, p.program);
+      p.cache_key.clear();
     }
     for (int u : g.uniforms)
       p.uniform_locations.push_back(glGetUniformLocation(
           p.program, model.global_names.at(model.uniforms[static_cast<std::size_t>(u)].decl).c_str()));
     p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
     p.covers_target = covers_back_buffer(pass, g);
-    set.programs.push_back(p);
   }
   set.built = true;
-  build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  build_ms_ += ms_since(start);
   return true;
 }
 

@@ -7,8 +7,10 @@
 //
 // Which set runs: the specialised one whenever the values have held still for kSettleSeconds, and
 // from the first frame (a renderer, a video host or a farm job never changes them); the live one
-// while they move (a slider being dragged), so no frame waits for a compile per value. A set is
-// built the first time it is needed and kept; specialised programs go through the program cache
+// while they move (a slider being dragged), so no frame waits for a compile per value. Where the
+// driver compiles in the background (KHR_parallel_shader_compile), a specialised set for settled
+// values is compiled there while the live one keeps running, and takes over the frame it is
+// ready, so no frame waits for it either. A set is built the first time it is needed and kept; specialised programs go through the program cache
 // like live ones (their GLSL holds the values, so the cache is keyed by them). PFX_FX_SPECIALISE=0
 // keeps every uniform live.
 #include <chrono>
@@ -30,6 +32,9 @@ struct PassProgram {
   mutable std::vector<std::vector<double>> uploaded;
   GLint target_height_location = -1;
   bool covers_target = true;  // draws every pixel of the back buffer (no copy needed first)
+  // While the driver compiles it: the program cache's key to store it under once it has linked;
+  // empty once stored, or when it came from the cache.
+  std::string cache_key;
 };
 
 // Whether a pass that writes the back buffer writes every pixel of it, so it need not start from
@@ -42,7 +47,8 @@ struct ProgramSet {
   std::vector<PassProgram> programs;
   pfx::fx::UniformConstants constants;  // what was compiled in; empty for the live set
   int constant_count = 0;               // uniforms compiled in as constants
-  bool built = false;
+  bool started = false;                 // programs handed to the driver
+  bool built = false;                   // and linked, with their uniforms found: ready to run
 };
 
 class FxPrograms {
@@ -70,12 +76,19 @@ class FxPrograms {
  private:
   // The values a specialised set would hold: each uniform without a frame source, else empty.
   pfx::fx::UniformConstants held_values(const pfx::fx::EffectModel& model, const UniformValues& values) const;
-  bool build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set, std::string* error);
+  // A set is built in two halves: its GLSL generated and handed to the driver (or its programs
+  // loaded from the cache), then, once ready() (at once unless the driver compiles on threads of
+  // its own), checked, stored in the cache and its uniforms found.
+  bool start_build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set, std::string* error);
+  static bool ready(const ProgramSet& set);
+  bool finish_build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set, std::string* error);
   static void release(ProgramSet& set);
 
   bool enabled_ = true;
   int output_pass_ = -1;
-  ProgramSet live_, specialised_;
+  // pending_: a specialised set the driver compiles while live_ runs (KHR_parallel_shader_compile).
+  ProgramSet live_, specialised_, pending_;
+  int parallel_compile_ = -1;  // whether the GL offers it; -1 until asked (with the context current)
   const ProgramSet* running_ = &live_;
   pfx::fx::UniformConstants last_held_;
   std::chrono::steady_clock::time_point last_change_{};

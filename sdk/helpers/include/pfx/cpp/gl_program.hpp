@@ -39,33 +39,72 @@ inline bool load_gl_or_log(const pfx_host* host, const char* who) {
   return false;
 }
 
-// Compiles and links one shader per stage. Returns 0 and the compiler's or linker's message in
-// *error on failure. `retrievable`: the program's binary may be read back afterwards
-// (glGetProgramBinary), for a cache of compiled programs.
-inline GLuint build_program(const GLenum* stages, const char* const* sources, int count, std::string* error,
-                            bool retrievable = false) {
-  char info[2048] = "";
+// The first half of build_program: compiles and links without asking how it went, so a driver
+// that compiles on threads of its own (KHR_parallel_shader_compile) keeps the caller waiting for
+// nothing; program_ready() says when finish_program() will not wait. `retrievable`: the program's
+// binary may be read back afterwards (glGetProgramBinary), for a cache of compiled programs.
+inline GLuint start_program(const GLenum* stages, const char* const* sources, int count, bool retrievable = false) {
   GLuint program = glCreateProgram();
   if (retrievable) glProgramParameteri(program, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
-  GLint ok = 1;
-  for (int i = 0; i < count && ok; ++i) {
+  for (int i = 0; i < count; ++i) {
     GLuint shader = glCreateShader(stages[i]);
     glShaderSource(shader, 1, &sources[i], nullptr);
     glCompileShader(shader);
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) glGetShaderInfoLog(shader, sizeof info, nullptr, info);
     glAttachShader(program, shader);
-    glDeleteShader(shader);  // only flagged: the program keeps it alive
+    glDeleteShader(shader);  // only flagged: the program keeps it alive, and finish_program reads its log
   }
-  if (ok) {
-    glLinkProgram(program);
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) glGetProgramInfoLog(program, sizeof info, nullptr, info);
+  glLinkProgram(program);
+  return program;
+}
+
+// Whether the GL offers KHR_parallel_shader_compile (or its ARB twin), whose query
+// program_ready() needs: compiling in the background is then the driver's to do.
+inline bool has_parallel_compile() {
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i) {
+    const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+    if (name && (std::string(name) == "GL_KHR_parallel_shader_compile" || std::string(name) == "GL_ARB_parallel_shader_compile"))
+      return true;
   }
+  return false;
+}
+
+// Whether the driver has finished compiling and linking `program`, without waiting for it
+// (GL_COMPLETION_STATUS_KHR; only where has_parallel_compile()).
+inline bool program_ready(GLuint program) {
+  constexpr GLenum kCompletionStatus = 0x91B1;  // GL_COMPLETION_STATUS_KHR, as GL_COMPLETION_STATUS_ARB
+  GLint done = GL_TRUE;
+  glGetProgramiv(program, kCompletionStatus, &done);
+  return done == GL_TRUE;
+}
+
+// The second half: the program when it linked; else 0, the program deleted, and the compiler's
+// message for the first shader that failed (or the linker's) in *error.
+inline GLuint finish_program(GLuint program, std::string* error) {
+  char info[2048] = "";
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (ok) return program;
+  GLuint shaders[8] = {};
+  GLsizei count = 0;
+  glGetAttachedShaders(program, 8, &count, shaders);
+  for (GLsizei i = 0; i < count && !info[0]; ++i) {
+    GLint compiled = 1;
+    glGetShaderiv(shaders[i], GL_COMPILE_STATUS, &compiled);
+    if (!compiled) glGetShaderInfoLog(shaders[i], sizeof info, nullptr, info);
+  }
+  if (!info[0]) glGetProgramInfoLog(program, sizeof info, nullptr, info);
   if (error) *error = info;
   glDeleteProgram(program);
   return 0;
+}
+
+// Compiles and links one shader per stage. Returns 0 and the compiler's or linker's message in
+// *error on failure. `retrievable` as for start_program.
+inline GLuint build_program(const GLenum* stages, const char* const* sources, int count, std::string* error,
+                            bool retrievable = false) {
+  return finish_program(start_program(stages, sources, count, retrievable), error);
 }
 
 // Links the full-screen vertex shader with fragment_source.
