@@ -1,8 +1,8 @@
 // Draws the chain's HDR output into the window: exposure, tone curve and sRGB encoding in a
 // shader that follows host/lib/image/tonemap.hpp's rules (NaN pixels magenta, +inf white, negative
 // black); or, for an 8-bit picture, the chain's sRGB codes as they are (pfx-render writes them so
-// from a PNG: exposure and tone do not apply). Scaled to fit the window with the frame's aspect kept (nearest pixel: inf and NaN must
-// not spread to neighbours through filter weights of zero).
+// from a PNG: exposure and tone do not apply). Scaled to fit the window with the frame's aspect
+// kept (nearest pixel: inf and NaN must not spread to neighbours through filter weights of zero).
 #pragma once
 
 #include <cstdint>

@@ -3,10 +3,10 @@
 // reload of rebuilt plugins, screenshots and presets. --frames N makes it a scripted renderer.
 #include <algorithm>
 #include <chrono>
-#include <thread>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <glm/geometric.hpp>

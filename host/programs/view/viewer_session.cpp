@@ -172,7 +172,7 @@ bool ViewerSession::render(int width, int height, double time_seconds, bool forc
     return false;
   }
   output_->swap();
-  log_passes();
+  log_plan_and_reports();
   render_error_.clear();
   return true;
 }
@@ -315,7 +315,7 @@ bool ViewerSession::write_frame(const std::string& png_path, std::string* error)
   return write_frame_pair(output_->linear(), png_path, tone_, error);
 }
 
-void ViewerSession::log_passes() {
+void ViewerSession::log_plan_and_reports() {
   // With -v, the passes of each new plan and each effect's report when it changes, so where a
   // frame's work goes (that an all-FX chain over an 8-bit picture converts nothing, when FX
   // programs hold values as constants) can be read without the window.

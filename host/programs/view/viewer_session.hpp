@@ -96,7 +96,7 @@ class ViewerSession {
   ViewerSession() = default;
   bool build_chain(const std::vector<PresetEffect>& effects, std::string* error);
   void remember(Message message);
-  void log_passes();
+  void log_plan_and_reports();
   // The files the chain's effects were made from (an FX effect's .fx), for sources_.
   std::vector<std::string> chain_source_files() const;
 
