@@ -62,6 +62,25 @@ void update_camera(ViewerSession& session, UiState& ui, const CameraInputSetting
   ui.reset_camera = ui.frame_camera = false;
 }
 
+// A scripted frame starts no sooner than 1/60 s after the one before, as a display at 60 Hz shows
+// them: what an effect does after a while of wall time (FX programs specialised for values that
+// held still for half a second) has happened 30 frames later at the latest.
+void wait_for_next_scripted_frame(double* last_start) {
+  const double due = *last_start + 1.0 / 60.0;
+  if (glfwGetTime() < due) std::this_thread::sleep_for(std::chrono::duration<double>(due - glfwGetTime()));
+  *last_start = glfwGetTime();
+}
+
+// The frame on screen, fitted to the window: linear light through exposure and tone, or an 8-bit
+// picture's codes as they are.
+void show_output(const DisplayPass& display, ViewerSession& session, int window_width, int window_height) {
+  const Viewport shown = fit_viewport(session.output_width(), session.output_height(), window_width, window_height);
+  if (session.output().codes())
+    display.draw_codes(session.output().shown(), shown, window_width, window_height);
+  else
+    display.draw(session.output().shown(), shown, window_width, window_height, session.tone());
+}
+
 int run(const ViewOptions& options) {
   install_viewer_signal_handlers();
   std::string message;
@@ -118,13 +137,7 @@ int run(const ViewOptions& options) {
     draw_error_overlay(*session);
 
     if (scripted) {
-      // A scripted frame starts no sooner than 1/60 s after the one before, as a display at 60 Hz
-      // shows them: what an effect does after a while of wall time (FX programs specialised for
-      // values that held still for half a second) has happened 30 frames later at the latest.
-      const double due = last_scripted + 1.0 / 60.0;
-      if (frames_done > 0 && glfwGetTime() < due)
-        std::this_thread::sleep_for(std::chrono::duration<double>(due - glfwGetTime()));
-      last_scripted = glfwGetTime();
+      if (frames_done > 0) wait_for_next_scripted_frame(&last_scripted);
       session->apply_edits(options.edits, frames_done + 1);
     }
     const uint64_t stamp = session->state_stamp(width, height);
@@ -136,11 +149,7 @@ int run(const ViewOptions& options) {
       if (!have_frame) session->info("ready: " + session->source().description());
       have_frame = true;
     }
-    const Viewport shown = fit_viewport(session->output_width(), session->output_height(), window_width, window_height);
-    if (session->output().codes())
-      display.draw_codes(session->output().shown(), shown, window_width, window_height);
-    else
-      display.draw(session->output().shown(), shown, window_width, window_height, session->tone());
+    show_output(display, *session, window_width, window_height);
     window->draw_ui();
     if (ui.screenshot || screenshot_signalled()) session->take_screenshot();
     ui.screenshot = false;
