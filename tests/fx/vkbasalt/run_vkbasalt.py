@@ -25,7 +25,7 @@ import vkbasalt_oracle as oracle  # noqa: E402
 # The conformance files that vkBasalt 0.3.2.8 compiles and runs on lavapipe. Each is one ctest test.
 SUBSET = ["alpha.fx", "conversions.fx", "identity.fx", "invert.fx", "nonfinite.fx", "operators.fx", "samplers.fx",
           "size_1x1.fx", "reshade_language.fx", "size_constants.fx", "offsets_and_labels.fx",
-          "exists_and_widening.fx"]
+          "exists_and_widening.fx", "integer_wrap.fx"]
 
 # The others, each with what vkBasalt 0.3.2.8 says or does on it (its own log, tried one by one).
 LEFT_OUT = {

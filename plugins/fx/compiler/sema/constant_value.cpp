@@ -1,6 +1,7 @@
 #include "constant_value.hpp"
 
 #include <cmath>
+#include <cstdint>
 
 namespace pfx::fx {
 namespace {
@@ -15,6 +16,37 @@ Value scalar(double v) {
 
 bool integral(const Expr& e) { return e.resolved.is_integral(); }
 
+// An integer as HLSL's 32-bit integers hold it: modulo 2^32, into [0, 2^32) for uint and
+// [-2^31, 2^31) for int (0u - 1u is 0xFFFFFFFF, 0x7FFFFFFF + 1 is INT_MIN). Other types as they are.
+double wrap32(double v, BaseType base) {
+  if ((base != BaseType::kInt && base != BaseType::kUint) || !std::isfinite(v)) return v;
+  const std::int64_t whole = static_cast<std::int64_t>(std::fmod(v, 4294967296.0));
+  const std::uint32_t bits = static_cast<std::uint32_t>(whole);
+  return base == BaseType::kUint ? static_cast<double>(bits) : static_cast<double>(static_cast<std::int32_t>(bits));
+}
+
+// x op y on 32-bit integers (both exact in a double), wrapping as the GPU does; shifts use the
+// low five bits of the count, as HLSL's do. Division and remainder truncate toward zero.
+std::optional<double> integer_op(Punct op, double x, double y, BaseType base) {
+  const std::int64_t a = static_cast<std::int64_t>(x), b = static_cast<std::int64_t>(y);
+  const std::uint64_t ua = static_cast<std::uint64_t>(a), ub = static_cast<std::uint64_t>(b);
+  std::uint64_t r = 0;
+  switch (op) {
+    case Punct::kPlus: r = ua + ub; break;
+    case Punct::kMinus: r = ua - ub; break;
+    case Punct::kStar: r = ua * ub; break;
+    case Punct::kShiftLeft: r = ua << (b & 31); break;
+    case Punct::kShiftRight:
+      r = base == BaseType::kUint ? (ua & 0xFFFFFFFFu) >> (b & 31) : static_cast<std::uint64_t>(a >> (b & 31));
+      break;
+    case Punct::kAmp: r = ua & ub; break;
+    case Punct::kPipe: r = ua | ub; break;
+    case Punct::kCaret: r = ua ^ ub; break;
+    default: return std::nullopt;
+  }
+  return wrap32(static_cast<double>(static_cast<std::int64_t>(r & 0xFFFFFFFFu)), base);
+}
+
 Value evaluate(const Expr& e, int depth);
 
 // Elementwise a op b; a one-component side is splat over the other.
@@ -24,10 +56,18 @@ Value combine(const Expr& e, const ConstantValue& a, const ConstantValue& b) {
   if (a.components.size() != n && a.components.size() != 1) return std::nullopt;
   if (b.components.size() != n && b.components.size() != 1) return std::nullopt;
   bool integers = integral(e) || (integral(*e.operands[0]) && integral(*e.operands[1]));
+  // The result's integer type, where the analysis gave one (an unchecked annotation has none).
+  const BaseType wraps = integral(e) ? e.resolved.base : BaseType::kFloat;
   ConstantValue out;
   for (std::size_t i = 0; i < n; ++i) {
     double x = a.components[a.components.size() == 1 ? 0 : i];
     double y = b.components[b.components.size() == 1 ? 0 : i];
+    if (wraps != BaseType::kFloat) {
+      if (std::optional<double> r = integer_op(e.op, x, y, wraps)) {
+        out.components.push_back(*r);
+        continue;
+      }
+    }
     double r = 0;
     switch (e.op) {
       case Punct::kPlus: r = x + y; break;
@@ -35,7 +75,7 @@ Value combine(const Expr& e, const ConstantValue& a, const ConstantValue& b) {
       case Punct::kStar: r = x * y; break;
       case Punct::kSlash:
         if (integers && y == 0) return std::nullopt;
-        r = integers ? std::trunc(x / y) : x / y;
+        r = wrap32(integers ? std::trunc(x / y) : x / y, wraps);  // INT_MIN / -1 wraps to INT_MIN
         break;
       case Punct::kPercent:
         if (y == 0) return std::nullopt;
@@ -61,8 +101,9 @@ Value combine(const Expr& e, const ConstantValue& a, const ConstantValue& b) {
   return out;
 }
 
-// The components of a conversion to `to` (splat, truncation, integer rounding toward zero).
-Value convert(const ConstantValue& v, const Type& to) {
+// The components of a conversion to `to` (splat, truncation, integer rounding toward zero; from
+// integers, an integer type wraps at 32 bits: uint(-2) is 0xFFFFFFFE).
+Value convert(const ConstantValue& v, const Type& to, bool from_integers) {
   if (v.is_string) return v;
   ConstantValue out = v;
   int wanted = to.is_numeric() ? to.components() : static_cast<int>(v.components.size());
@@ -71,7 +112,7 @@ Value convert(const ConstantValue& v, const Type& to) {
     else if (static_cast<int>(out.components.size()) > wanted) out.components.resize(static_cast<std::size_t>(wanted));
   }
   if (to.base == BaseType::kInt || to.base == BaseType::kUint)
-    for (double& c : out.components) c = std::trunc(c);
+    for (double& c : out.components) c = from_integers ? wrap32(std::trunc(c), to.base) : std::trunc(c);
   if (to.base == BaseType::kBool)
     for (double& c : out.components) c = c != 0 ? 1 : 0;
   return out;
@@ -104,10 +145,11 @@ Value evaluate(const Expr& e, int depth) {
     case ExprKind::kUnary: {
       Value v = evaluate(*e.operands[0], depth + 1);
       if (!v || v->is_string) return std::nullopt;
+      const BaseType wraps = integral(e) ? e.resolved.base : BaseType::kFloat;
       for (double& c : v->components) {
-        if (e.op == Punct::kMinus) c = -c;
+        if (e.op == Punct::kMinus) c = wrap32(-c, wraps);
         else if (e.op == Punct::kBang) c = c == 0 ? 1 : 0;
-        else if (e.op == Punct::kTilde) c = static_cast<double>(~static_cast<long long>(c));
+        else if (e.op == Punct::kTilde) c = wrap32(static_cast<double>(~static_cast<long long>(c)), wraps);
         else if (e.op != Punct::kPlus) return std::nullopt;
       }
       return v;
@@ -128,19 +170,22 @@ Value evaluate(const Expr& e, int depth) {
       if (!v) return std::nullopt;
       Type to = e.resolved.is_numeric() ? e.resolved : Type::vector(e.type.base, e.type.rows);
       if (e.type.shape == Shape::kMatrix && !e.resolved.is_numeric()) to = Type::matrix(e.type.base, e.type.rows, e.type.columns);
-      return convert(*v, to);
+      bool from_integers = true;
+      for (const ExprPtr& operand : e.operands) from_integers = from_integers && integral(*operand);
+      return convert(*v, to, from_integers);
     }
     case ExprKind::kInitList: return evaluate_list(e, depth);
     case ExprKind::kCast: {
       Value v = evaluate(*e.operands[0], depth + 1);
       if (!v) return std::nullopt;
-      return e.resolved.is_numeric() ? convert(*v, e.resolved) : v;
+      return e.resolved.is_numeric() ? convert(*v, e.resolved, integral(*e.operands[0])) : v;
     }
     case ExprKind::kName: {
       if (!e.variable || !(e.variable->qualifiers & kQualConst) || !e.variable->initializer) return std::nullopt;
       // As the variable holds it: `static const int2 Size = 256;` is (256, 256).
       Value v = evaluate(*e.variable->initializer, depth + 1);
-      if (v && e.variable->resolved.is_numeric()) return convert(*v, e.variable->resolved);
+      if (v && e.variable->resolved.is_numeric())
+        return convert(*v, e.variable->resolved, integral(*e.variable->initializer));
       return v;
     }
     case ExprKind::kMember: {
