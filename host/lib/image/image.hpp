@@ -44,6 +44,28 @@ struct DisplayImage {
     return pixels.size() ==
            static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * channels;
   }
+
+  // The pixels as RGBA: a picture without alpha is opaque (what a video tool hands a filter).
+  std::vector<std::uint8_t> rgba_pixels() const {
+    if (channels == 4) return pixels;
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    std::vector<std::uint8_t> rgba(count * 4);
+    for (std::size_t i = 0; i < count; ++i) {
+      for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = pixels[i * 3 + c];
+      rgba[i * 4 + 3] = 255;
+    }
+    return rgba;
+  }
+
+  // An RGBA picture becomes RGB, its alpha left out.
+  void drop_alpha() {
+    if (channels != 4) return;
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    for (std::size_t i = 0; i < count; ++i)
+      for (int c = 0; c < 3; ++c) pixels[i * 3 + c] = pixels[i * 4 + c];
+    pixels.resize(count * 3);
+    channels = 3;
+  }
 };
 
 }  // namespace pfx::app

@@ -1,6 +1,5 @@
 #include "display_input.hpp"
 
-#include <algorithm>
 #include <vector>
 
 #include "png_io.hpp"
@@ -18,21 +17,10 @@ bool DisplayInput::load(const std::string& path, Transfer transfer, long long ma
   DisplayImage image;
   if (!read_png(path, &image, error, max_pixels)) return false;
   channels_ = image.channels;
-  std::vector<uint8_t> rgba;
-  const std::vector<uint8_t>* pixels = &image.pixels;
-  if (image.channels == 3) {
-    // A file without alpha is opaque: what a video tool hands a filter for it.
-    const size_t count = static_cast<size_t>(image.width) * image.height;
-    rgba.resize(count * 4);
-    for (size_t i = 0; i < count; ++i) {
-      std::copy_n(&image.pixels[i * 3], 3, &rgba[i * 4]);
-      rgba[i * 4 + 3] = 255;
-    }
-    pixels = &rgba;
-  }
+  const std::vector<uint8_t> rgba = image.rgba_pixels();
   frame_.resize(image.width, image.height);
-  if (linear_result_) frame_.decode_bytes_exact(pixels->data(), transfer);
-  else frame_.decode_bytes(pixels->data(), transfer);
+  if (linear_result_) frame_.decode_bytes_exact(rgba.data(), transfer);
+  else frame_.decode_bytes(rgba.data(), transfer);
   description_ = std::string(image.channels == 4 ? "R, G, B, A" : "R, G, B") + " (8-bit, decoded as " +
                  transfer_name(transfer) + ")";
   return true;
@@ -45,12 +33,7 @@ DisplayImage DisplayInput::encode_output(Transfer transfer) {
   encoded.channels = 4;
   encoded.pixels.resize(static_cast<size_t>(encoded.width) * encoded.height * 4);
   frame_.encode_bytes(frame_.output(), transfer, encoded.pixels.data());
-  if (channels_ == 3) {
-    const size_t count = static_cast<size_t>(encoded.width) * encoded.height;
-    for (size_t i = 0; i < count; ++i) std::copy_n(&encoded.pixels[i * 4], 3, &encoded.pixels[i * 3]);
-    encoded.pixels.resize(count * 3);
-    encoded.channels = 3;
-  }
+  if (channels_ == 3) encoded.drop_alpha();
   return encoded;
 }
 

@@ -39,18 +39,6 @@ bool read_exr_input(const ViewOptions& options, Image* image, InputReport* repor
   return read_input_image(files, image, report, error);
 }
 
-// A PNG's pixels as RGBA: a file without alpha is opaque, as in pfx-render.
-std::vector<uint8_t> rgba_of(const DisplayImage& image) {
-  if (image.channels == 4) return image.pixels;
-  const size_t count = size_t(image.width) * image.height;
-  std::vector<uint8_t> rgba(count * 4);
-  for (size_t i = 0; i < count; ++i) {
-    std::copy_n(&image.pixels[i * 3], 3, &rgba[i * 4]);
-    rgba[i * 4 + 3] = 255;
-  }
-  return rgba;
-}
-
 }  // namespace
 
 std::unique_ptr<FrameSource> FrameSource::create(const ViewOptions& options, const pfx::host::PluginRegistry& registry,
@@ -120,7 +108,7 @@ bool FrameSource::load_codes(const ViewOptions& options, std::string* error) {
   DisplayImage encoded;
   if (!read_png(options.input_path, &encoded, error)) return false;
   codes_.create(encoded.width, encoded.height);
-  codes_.upload_top_first(rgba_of(encoded).data(), encoded.width, encoded.height);
+  codes_.upload_top_first(encoded.rgba_pixels().data(), encoded.width, encoded.height);
   width_ = encoded.width;
   height_ = encoded.height;
   channels_ = encoded.channels;

@@ -1,6 +1,5 @@
 #include "view_output.hpp"
 
-#include <algorithm>
 #include <vector>
 
 #include "display_transfer.hpp"
@@ -49,12 +48,7 @@ DisplayImage ViewOutput::encoded(int channels) const {
   image.channels = 4;
   image.pixels.resize(size_t(width_) * height_ * 4);
   eight_bit_[front_].read_top_first(image.pixels.data(), width_, height_);
-  if (channels == 3) {
-    const size_t count = size_t(width_) * height_;
-    for (size_t i = 0; i < count; ++i) std::copy_n(&image.pixels[i * 4], 3, &image.pixels[i * 3]);
-    image.pixels.resize(count * 3);
-    image.channels = 3;
-  }
+  if (channels == 3) image.drop_alpha();
   return image;
 }
 
