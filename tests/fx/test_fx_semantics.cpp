@@ -3,7 +3,9 @@
 // from HLSL's rules.
 #include <catch2/catch.hpp>
 
+#include "codegen/glsl_generator.hpp"
 #include "fx_test_support.hpp"
+#include "model/effect_model.hpp"
 
 using pfx::fx::test::compile_text;
 using pfx::fx::test::errors_of;
@@ -242,4 +244,35 @@ TEST_CASE("texture, sampler, storage and pass states are checked by name and val
   std::string threads = "void CS() {} technique T { pass { ComputeShader = CS<2000, 1>; } }";
   CHECK(errors_of(threads) == "main.fx:1:" + std::to_string(threads.find("2000") + 1) +
                                   ": error: thread group size must be a constant from 1 to 1024\n");
+}
+
+namespace {
+
+// What building the effect's model and generating each pass's GLSL report for `source`.
+std::string generation_errors(const std::string& source) {
+  auto result = compile_text(source);
+  if (!result->ok()) return result->diagnostics.format_all();
+  pfx::fx::EffectModel model = pfx::fx::build_effect_model(result->unit, result->diagnostics);
+  for (const auto& technique : model.techniques)
+    for (const auto& pass : technique.passes) pfx::fx::generate_pass(result->unit, model, pass, result->diagnostics);
+  return result->diagnostics.format_all();
+}
+
+const char* kPass = "\nfloat4 VS(uint id : SV_VertexID) : SV_Position { return 0; }\n"
+                    "technique T { pass { VertexShader = VS; PixelShader = PS; } }\n";
+
+}  // namespace
+
+TEST_CASE("a function's static may start only from globals and literals, as it starts before any call", "[fx][sema]") {
+  CHECK(generation_errors("float Next(float x) { static float n = x; n += 1; return n; }\n"
+                          "float4 PS() : SV_Target { return Next(1); }" + std::string(kPass)) ==
+        "main.fx:1:36: error: the initialiser of the static 'n' uses 'x', a local of the function; a static starts before "
+        "any call, so it may use only globals and literals\n");
+  CHECK(generation_errors("static const float K = 2;\nfloat Next() { static float n = K * 2; n += 1; return n; }\n"
+                          "float4 PS() : SV_Target { return Next(); }" + std::string(kPass)) == "");
+}
+
+TEST_CASE("intrinsics of an integer matrix other than all and any are refused by name", "[fx][sema]") {
+  CHECK(generation_errors("float4 PS() : SV_Target { int2x2 m = int2x2(1, 2, 3, 4); return any(m) ? transpose(m)._m01 : 0; }" +
+                          std::string(kPass)) == "main.fx:1:74: error: transpose() of an integer or bool matrix is not supported\n");
 }

@@ -93,6 +93,10 @@ void upload(GLuint program, GLint location, const pfx::fx::Type& type, const std
   GLsizei count = 1;
   for (int size : type.array) count *= size;
   int n = type.components();
+  if (type.shape == pfx::fx::Shape::kMatrix && !type.is_floating()) {
+    count *= type.rows;  // an integer or bool matrix is an array of its rows in GLSL
+    n = type.columns;
+  }
   if (type.is_floating() || type.base == pfx::fx::BaseType::kFloat) {
     std::vector<float> f(v.begin(), v.end());
     if (type.shape == pfx::fx::Shape::kMatrix) {

@@ -32,15 +32,26 @@ LEFT_OUT = {
     "back_buffer.fx": "tex2Dfetch with an int2 coordinate: vkBasalt's FX compiler knows only the int4 form",
     "blending.fx": "tex2Dfetch with an int2 coordinate",
     "compute.fx": "compute passes and storage textures: vkBasalt has none (storage2D is a syntax error there)",
+    "function_statics.fx": "vkBasalt's FX compiler treats a function's static as an ordinary local that starts "
+                           "again at every call (checks 0-2, 4 and 5 fail there); pfx keeps HLSL's meaning",
     "formats.fx": "the formats R16, R32I and others, and typed samplers (sampler2D<int>): unknown to vkBasalt",
     "initializer_assignments.fx": "vkBasalt's FX compiler fails an assertion (add_constant_index_access: "
                                   "type.is_numeric() && !type.is_scalar()) and vkcube aborts",
+    "integer_matrices.fx": "vkBasalt's SPIR-V generator fails an assertion (emit_load: op.from.is_integral()) and "
+                           "vkcube aborts",
     "intrinsics_bits.fx": "countbits and the other bit intrinsics: unknown to vkBasalt",
     "intrinsics_math.fx": "fmod: unknown to vkBasalt's FX compiler",
+    "matrix_comparisons.fx": "vkBasalt's SPIR-V generator fails an assertion (emit_load: op.from.is_integral()) and "
+                             "vkcube aborts",
+    "matrix_swizzle_stores.fx": "storing to a matrix swizzle: vkBasalt's SPIR-V generator fails an assertion "
+                                "(emit_store) and vkcube aborts",
     "matrices.fx": "vkBasalt's SPIR-V generator fails an assertion (emit_load: op.from.is_integral()) and vkcube aborts",
     "mips.fx": "tex2Dfetch with an int2 coordinate, and the GenerateMipMaps pass state: unknown to vkBasalt",
     "namespaced_constants.fx": "a static const computed from a uniform: vkBasalt's SPIR-V generator fails an assertion "
                                "(add_instruction: is_in_function() && is_in_block()) and vkcube aborts",
+    "out_arguments.fx": "an out argument of another type than its parameter: vkBasalt's SPIR-V generator fails an "
+                        "assertion (emit_store) and vkcube aborts; with a matrix element as the argument, creating "
+                        "the pipeline fails (VK_ERROR_UNKNOWN)",
     "persistence.fx": "tex2Dfetch with an int2 coordinate (and vkBasalt keeps a texture per swapchain image)",
     "preprocessor.fx": "BUFFER_COLOR_BIT_DEPTH: not defined by vkBasalt",
     "render_targets.fx": "tex2Dfetch with an int2 coordinate, and `return` after `discard` (an error there: unreachable code)",

@@ -13,7 +13,7 @@ namespace pfx::fx {
 namespace {
 
 // One component as the runtime uploads it: a float rounded to single precision, an int or a uint
-// truncated, a bool from the int it would be uploaded as.
+// truncated, a bool from the int it would be uploaded as (`matrix`: of a float matrix).
 std::string component(BaseType base, bool matrix, double value) {
   char text[48];
   if (matrix || (base != BaseType::kInt && base != BaseType::kUint && base != BaseType::kBool)) {
@@ -43,6 +43,11 @@ std::string value_of(const GlslWriter& w, const Type& t, const std::vector<doubl
     for (int i = 0; i < t.array.front(); ++i) text += (i ? ", " : "") + value_of(w, element, values, next);
     return text + ")";
   }
+  if (held_as_rows(t)) {  // an array of rows of its own base type
+    std::string text = w.type(t) + "(";
+    for (int r = 0; r < t.rows; ++r) text += (r ? ", " : "") + value_of(w, row_of(t), values, next);
+    return text + ")";
+  }
   const bool matrix = t.shape == Shape::kMatrix;
   std::string text;
   for (int c = 0; c < t.components(); ++c) text += (c ? ", " : "") + component(t.base, matrix, values[(*next)++]);
@@ -66,8 +71,9 @@ bool can_be_constant(const Type& t, const std::vector<double>& values) {
   if (values.size() != component_count(t)) return false;
   // A constant NaN or infinity would need a literal GLSL does not have; an integer outside what
   // its type holds would be converted differently here and in the upload, so it stays live.
-  const bool integer = t.shape != Shape::kMatrix && (t.base == BaseType::kInt || t.base == BaseType::kBool);
-  const bool unsigned_integer = t.shape != Shape::kMatrix && t.base == BaseType::kUint;
+  const bool float_matrix = t.shape == Shape::kMatrix && !held_as_rows(t);
+  const bool integer = !float_matrix && (t.base == BaseType::kInt || t.base == BaseType::kBool);
+  const bool unsigned_integer = !float_matrix && t.base == BaseType::kUint;
   for (double v : values) {
     if (!std::isfinite(static_cast<float>(v))) return false;
     if (integer && !(v > -2147483649.0 && v < 2147483648.0)) return false;

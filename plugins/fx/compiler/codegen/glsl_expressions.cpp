@@ -48,7 +48,31 @@ std::string apply(Punct op, const std::string& a, const std::string& b, const Ty
   return "(" + a + " " + punct_spelling(op) + " " + b + ")";
 }
 
+// `m._m00_m11`: GLSL has no swizzles of matrices, so such a target is written element by element.
+bool is_matrix_swizzle(const Expr& e) {
+  return e.kind == ExprKind::kMember && e.swizzle.size() > 1 && e.operands[0]->resolved.is_matrix();
+}
+
+std::string element(const std::string& matrix, int index) {
+  return matrix + "[" + std::to_string(index / 4) + "][" + std::to_string(index % 4) + "]";
+}
+
 }  // namespace
+
+std::string GlslWriter::temporary(const Type& t) {
+  std::string name = "t_" + std::to_string(temporary_count_++);
+  temporary_declarations_ += type(t) + " " + name + array_suffix(t) + ";\n";
+  return name;
+}
+
+std::string GlslWriter::take_temporaries(int indent) {
+  std::string out, pad(static_cast<std::size_t>(indent) * 2, ' ');
+  std::size_t start = 0;
+  for (std::size_t end; (end = temporary_declarations_.find('\n', start)) != std::string::npos; start = end + 1)
+    out += pad + temporary_declarations_.substr(start, end + 1 - start);
+  temporary_declarations_.clear();
+  return out;
+}
 
 std::string GlslWriter::name_of(const VariableDecl& v) const {
   auto it = model_.global_names.find(&v);
@@ -112,29 +136,48 @@ std::string GlslWriter::expr(const Expr& e) {
 std::string GlslWriter::unary(const Expr& e) {
   const Expr& operand = *e.operands[0];
   std::string x = expr(operand);
+  bool steps = e.kind == ExprKind::kPostfix || e.op == Punct::kPlusPlus || e.op == Punct::kMinusMinus;
+  if (steps && held_as_rows(operand.resolved)) return error(e.location, "++ and -- of an integer matrix are not supported"), x;
   if (e.kind == ExprKind::kPostfix) return "(" + x + punct_spelling(e.op) + ")";
   if (e.op == Punct::kBang) {
     Type as_bool = operand.resolved.with_base(BaseType::kBool);
     std::string b = cast(x, operand.resolved, as_bool);
+    if (as_bool.is_matrix()) return by_rows(as_bool, as_bool, b, "", [](auto& row, auto&) { return "not(" + row + ")"; });
     return as_bool.is_vector() ? "not(" + b + ")" : "(!" + b + ")";
   }
-  if (e.op == Punct::kPlusPlus || e.op == Punct::kMinusMinus) return "(" + std::string(punct_spelling(e.op)) + x + ")";
+  if (steps) return "(" + std::string(punct_spelling(e.op)) + x + ")";
   // -b and ~b of a bool compute on int, as HLSL does.
-  return "(" + std::string(punct_spelling(e.op)) + cast(x, operand.resolved, e.resolved) + ")";
+  std::string op = punct_spelling(e.op), value = cast(x, operand.resolved, e.resolved);
+  if (held_as_rows(e.resolved)) return by_rows(e.resolved, e.resolved, value, "", [&](auto& row, auto&) { return "(" + op + row + ")"; });
+  return "(" + op + value + ")";
 }
 
 std::string GlslWriter::binary(const Expr& e) {
   const Type& t = e.operands[0]->resolved;
   std::string a = expr(*e.operands[0]), b = expr(*e.operands[1]);
   if (const char* f = comparison_function(e.op)) {
-    if (t.is_matrix()) return error(e.location, "comparing matrices is not supported"), "false";
+    // Comparing matrices gives a bool matrix, held as rows.
+    if (t.is_matrix()) return by_rows(t, e.resolved, a, b, [&](auto& x, auto& y) { return std::string(f) + "(" + x + ", " + y + ")"; });
     if (t.is_vector()) return std::string(f) + "(" + a + ", " + b + ")";
   }
-  if ((e.op == Punct::kAmpAmp || e.op == Punct::kPipePipe) && t.is_vector()) {
+  if ((e.op == Punct::kAmpAmp || e.op == Punct::kPipePipe) && (t.is_vector() || t.is_matrix())) {
     helpers.insert("logic");
-    return std::string(e.op == Punct::kAmpAmp ? "pfx_and(" : "pfx_or(") + a + ", " + b + ")";
+    std::string f = e.op == Punct::kAmpAmp ? "pfx_and(" : "pfx_or(";
+    if (t.is_vector()) return f + a + ", " + b + ")";
+    return by_rows(e.resolved, e.resolved, cast(a, t, e.resolved), cast(b, t, e.resolved), [&](auto& x, auto& y) { return f + x + ", " + y + ")"; });
   }
+  if (held_as_rows(t)) return by_rows(t, e.resolved, a, b, [&](auto& x, auto& y) { return apply(e.op, x, y, row_of(t), helpers); });
   return apply(e.op, a, b, t, helpers);
+}
+
+// `target = value`, where the target may be a matrix swizzle: the value is held once and its
+// components written to the elements the swizzle names, and the expression's value is the value.
+std::string GlslWriter::store(const Expr& target, const std::string& value) {
+  if (!is_matrix_swizzle(target)) return "(" + expr(target) + " = " + value + ")";
+  std::string held = temporary(target.resolved), matrix = expr(*target.operands[0]);
+  std::string text = "(" + held + " = " + value;
+  for (std::size_t i = 0; i < target.swizzle.size(); ++i) text += ", " + element(matrix, target.swizzle[i]) + " = " + held + "[" + std::to_string(i) + "]";
+  return text + ", " + held + ")";
 }
 
 std::string GlslWriter::assignment(const Expr& e) {
@@ -142,6 +185,12 @@ std::string GlslWriter::assignment(const Expr& e) {
   std::string value = expr(*e.operands[1]);
   const Type& t = e.operands[0]->resolved;
   Punct base = compound_base(e.op);
+  if (is_matrix_swizzle(*e.operands[0])) {
+    if (e.op == Punct::kAssign) return store(*e.operands[0], value);
+    return store(*e.operands[0], apply(base, target, value, t, helpers));
+  }
+  if (base != Punct::kNone && held_as_rows(t))
+    return "(" + target + " = " + by_rows(t, t, target, value, [&](auto& x, auto& y) { return apply(base, x, y, row_of(t), helpers); }) + ")";
   bool rewrite = (base == Punct::kStar && t.is_matrix()) || (base == Punct::kPercent && (t.is_floating() || t.base == BaseType::kInt));
   if (rewrite) return "(" + target + " = " + apply(base, target, value, t, helpers) + ")";
   return "(" + target + " " + punct_spelling(e.op) + " " + value + ")";
@@ -158,7 +207,7 @@ std::string GlslWriter::member(const Expr& e) {
   }
   if (t.is_matrix()) {
     std::vector<std::string> parts;
-    for (int index : e.swizzle) parts.push_back(x + "[" + std::to_string(index / 4) + "][" + std::to_string(index % 4) + "]");
+    for (int index : e.swizzle) parts.push_back(element(x, index));
     if (parts.size() == 1) return parts[0];
     std::string text = type(e.resolved) + "(";
     for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? ", " : "") + parts[i];
@@ -174,19 +223,43 @@ std::string GlslWriter::call(const Expr& e) {
   if (!e.function) return error(e.location, "call to unknown function '" + e.text + "'"), "0";
   auto it = model_.function_names.find(e.function);
   std::string text = (it != model_.function_names.end() ? it->second : glsl_safe("F_" + e.text)) + "(";
+  // An out or inout argument of another type than its parameter (or one GLSL cannot write to, a
+  // matrix swizzle) goes through a temporary of the parameter's type: converted in before the
+  // call, converted back and stored after it, as HLSL does.
+  std::string before, after;
   std::size_t i = 0;
-  for (; i < e.operands.size(); ++i) text += (i ? ", " : "") + expr(*e.operands[i]);
+  for (; i < e.operands.size(); ++i) {
+    const Expr& argument = *e.operands[i];
+    const VariableDecl& p = e.function->parameters[i];
+    std::string value;
+    if ((p.qualifiers & kQualOut) && (!(argument.resolved == p.resolved) || is_matrix_swizzle(argument))) {
+      value = temporary(p.resolved);
+      if (p.qualifiers & kQualIn) before += value + " = " + cast(expr(argument), argument.resolved, p.resolved) + ", ";
+      after += ", " + store(argument, cast(value, p.resolved, argument.resolved));
+    } else {
+      value = expr(argument);
+    }
+    text += (i ? ", " : "") + value;
+  }
   // Parameters left out take their default values.
   for (; i < e.function->parameters.size(); ++i) {
     const VariableDecl& p = e.function->parameters[i];
     if (p.initializer) text += (i ? ", " : "") + cast(expr(*p.initializer), p.initializer->resolved, p.resolved);
   }
-  return text + ")";
+  text += ")";
+  if (before.empty() && after.empty()) return text;
+  if (e.resolved.is_void()) return "(" + before + text + after + ")";
+  std::string result = temporary(e.resolved);
+  return "(" + before + result + " = " + text + after + ", " + result + ")";
 }
 
 std::string GlslWriter::construct(const Expr& e) {
   const Type& t = e.resolved;
   if (e.operands.size() == 1 && e.operands[0]->resolved.is_scalar()) return splat(expr(*e.operands[0]), t);
+  // A matrix held as rows, or made from one, is regrouped from its arguments' components.
+  bool rows = held_as_rows(t);
+  for (const ExprPtr& argument : e.operands) rows = rows || (t.is_matrix() && held_as_rows(argument->resolved));
+  if (rows) return init_list(e, t);
   std::string text = type(t) + "(";
   for (std::size_t i = 0; i < e.operands.size(); ++i) {
     const Expr& argument = *e.operands[i];
@@ -250,6 +323,14 @@ std::string GlslWriter::init_list(const Expr& list, const Type& target) {
     }
     std::string text = type(t) + "(";
     Type scalar = Type::scalar(t.base);
+    if (held_as_rows(t)) {
+      for (int r = 0; r < t.rows; ++r) {
+        text += (r ? ", " : "") + type(row_of(t)) + "(";
+        for (int c = 0; c < t.columns; ++c) text += (c ? ", " : "") + type(scalar) + "(" + component() + ")";
+        text += ")";
+      }
+      return text + ")";
+    }
     for (int i = 0; i < t.components(); ++i) text += (i ? ", " : "") + type(scalar) + "(" + component() + ")";
     return text + ")";
   };

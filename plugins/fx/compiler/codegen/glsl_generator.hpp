@@ -6,13 +6,17 @@
 // How HLSL's meaning is kept (docs/fx.md has the user's view):
 //  - Matrices: HLSL floatRxC is stored as GLSL matRxC (R columns of C rows), so GLSL's m[i] is
 //    HLSL's row i, constructors take their arguments in the same order, and mul() becomes a GLSL
-//    product with its operands swapped.
+//    product with its operands swapped. GLSL's matrices hold floats only, so an int, uint or bool
+//    matrix is an array of its rows, and operators and conversions on it go row by row.
 //  - Rows: FX texture coordinates start at the top of the picture, GL's textures at the bottom.
 //    Every texture keeps GL's convention and the generated code flips v (and texel rows, gather
 //    order, SV_Position's y and ddy's sign) where FX code meets GL.
 //  - Operators and intrinsics whose HLSL meaning differs from GLSL's (fmod, %, integer division
 //    and remainder, frac, lerp, vector comparisons and logic, component-wise matrix '*') are
 //    written out with HLSL's meaning.
+//  - What HLSL writes back (an out argument of another type, a matrix swizzle assigned to) goes
+//    through temporaries the function declares at its top; a function's statics are the
+//    program's, started in main().
 #include <string>
 #include <vector>
 

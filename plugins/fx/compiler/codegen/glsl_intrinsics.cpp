@@ -201,6 +201,9 @@ std::string GlslWriter::intrinsic(const Expr& e) {
   std::vector<std::string> a;
   for (const ExprPtr& operand : e.operands) a.push_back(expr(*operand));
   auto type_of = [&](std::size_t i) -> const Type& { return e.operands[i]->resolved; };
+  for (const ExprPtr& operand : e.operands)
+    if (held_as_rows(operand->resolved) && name != "all" && name != "any")
+      return error(e.location, name + "() of an integer or bool matrix is not supported"), "0";
   auto it = renamed().find(name);
   if (it != renamed().end()) return it->second + "(" + joined(a) + ")";
 
@@ -237,12 +240,7 @@ std::string GlslWriter::intrinsic(const Expr& e) {
   if (name == "mad") return "(" + a[0] + " * " + a[1] + " + " + a[2] + ")";
   if (name == "sign") return cast("sign(" + a[0] + ")", type_of(0), e.resolved);
   if (name == "isfinite") return helpers.insert("isfinite"), "pfx_isfinite(" + a[0] + ")";
-  if (name == "all" || name == "any") {
-    const Type& t = type_of(0);
-    if (t.is_scalar()) return cast(a[0], t, Type::scalar(BaseType::kBool));
-    if (t.is_matrix()) return error(e.location, name + "() of a matrix is not supported"), "false";
-    return name + "(" + cast(a[0], t, t.with_base(BaseType::kBool)) + ")";
-  }
+  if (name == "all" || name == "any") return all_or_any(name, type_of(0), a[0]);
   if (name == "countbits" || name == "firstbithigh" || name == "firstbitlow") {
     std::string f = name == "countbits" ? "bitCount" : name == "firstbithigh" ? "findMSB" : "findLSB";
     return cast(f + "(" + a[0] + ")", type_of(0).with_base(BaseType::kInt), e.resolved);
@@ -280,6 +278,17 @@ std::string GlslWriter::intrinsic(const Expr& e) {
   if (name == "groupMemoryBarrier" || name == "GroupMemoryBarrier") return "groupMemoryBarrier()";
   error(e.location, "the intrinsic '" + name + "' has no GLSL translation yet");
   return "0";
+}
+
+// all() and any() of a scalar, vector or matrix: true when every, or some, component is not zero.
+std::string GlslWriter::all_or_any(const std::string& name, const Type& t, const std::string& value) {
+  if (t.is_scalar()) return cast(value, t, Type::scalar(BaseType::kBool));
+  if (t.is_vector()) return name + "(" + cast(value, t, t.with_base(BaseType::kBool)) + ")";
+  std::string m = temporary(t), zero = type(row_of(t)) + "(0)";  // a matrix row by row
+  std::string text = "(" + m + " = " + value + ", ";
+  for (int r = 0; r < t.rows; ++r)
+    text += (r ? (name == "all" ? " && " : " || ") : "") + name + "(notEqual(" + m + "[" + std::to_string(r) + "], " + zero + "))";
+  return text + ")";
 }
 
 // tex1D/2D/3D*: `name` is the intrinsic, operand 0 the sampler or storage.

@@ -372,6 +372,8 @@ class ProgramBuilder {
     std::string call = (name != model_.function_names.end() ? name->second : f.name) + "(" + arguments + ")";
     out += f.resolved.is_void() ? "  " + call + ";\n" : "  " + w.type(f.resolved) + " r = " + call + ";\n";
     for (const Slot& s : entry_slots(f, false)) out += sink(w, which, s);
+    // Temporaries the statics' initialisers needed come first.
+    out.insert(out.find("void main() {\n") + 14, w.take_temporaries(1));
     return out + "}\n";
   }
 

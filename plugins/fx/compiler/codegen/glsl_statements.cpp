@@ -45,7 +45,8 @@ void GlslWriter::statement(const Stmt& s, int indent, std::string& out) {
     case StmtKind::kEmpty: out += p + ";\n"; return;
     case StmtKind::kExpression: out += p + expr(*s.expression) + ";\n"; return;
     case StmtKind::kDeclaration:
-      for (const VariableDecl& v : s.variables) declaration(v, indent, out);
+      for (const VariableDecl& v : s.variables)
+        if (!model_.global_names.count(&v)) declaration(v, indent, out);  // a function's statics are the program's
       return;
     case StmtKind::kBlock:
       out += p + "{\n";
@@ -120,7 +121,12 @@ void GlslWriter::function(const FunctionDecl& f, std::string& out) {
     return;
   }
   out += "\n";
-  statement(*f.body, 0, out);
+  std::string body;
+  statement(*f.body, 0, body);
+  // The temporaries its expressions needed, declared first in the body's block.
+  std::size_t open = body.find("{\n");
+  if (open != std::string::npos) body.insert(open + 2, take_temporaries(1));
+  out += body;
 }
 
 }  // namespace pfx::fx

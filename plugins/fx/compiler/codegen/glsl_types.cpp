@@ -28,6 +28,10 @@ const char* object_prefix(BaseType element) {
 
 }  // namespace
 
+bool held_as_rows(const Type& t) {
+  return t.is_matrix() && (t.base == BaseType::kInt || t.base == BaseType::kUint || t.base == BaseType::kBool);
+}
+
 std::string GlslWriter::type(const Type& t) const {
   switch (t.base) {
     case BaseType::kVoid: return "void";
@@ -43,6 +47,7 @@ std::string GlslWriter::type(const Type& t) const {
   }
   if (t.shape == Shape::kScalar) return scalar_name(t.base);
   if (t.shape == Shape::kVector) return vector_prefix(t.base) + std::to_string(t.rows);
+  if (held_as_rows(t)) return vector_prefix(t.base) + std::to_string(t.columns) + "[" + std::to_string(t.rows) + "]";
   // HLSL floatRxC is GLSL matRxC: R columns (HLSL's rows) of C components.
   return t.rows == t.columns ? "mat" + std::to_string(t.rows) : "mat" + std::to_string(t.rows) + "x" + std::to_string(t.columns);
 }
@@ -58,6 +63,11 @@ std::string GlslWriter::full_type(const Type& t) const { return type(t) + array_
 std::string GlslWriter::splat(const std::string& scalar, const Type& to) {
   if (to.is_scalar()) return type(to) + "(" + scalar + ")";
   if (to.is_vector()) return type(to) + "(" + scalar + ")";
+  if (held_as_rows(to)) {
+    std::string text = type(to) + "(";
+    for (int r = 0; r < to.rows; ++r) text += (r ? ", " : "") + type(row_of(to)) + "(" + scalar + ")";
+    return text + ")";
+  }
   // GLSL's mat(x) puts x on the diagonal only; HLSL's (float2x2)x fills every component.
   std::string text = type(to) + "(";
   for (int i = 0; i < to.components(); ++i) text += (i ? ", float(" : "float(") + scalar + ")";
@@ -72,6 +82,20 @@ std::string GlslWriter::cast(const std::string& text, const Type& from, const Ty
     std::string first = from.is_matrix() ? "(" + text + ")[0][0]" : "(" + text + ").x";
     return from.base == to.base ? first : type(to) + "(" + first + ")";
   }
+  if (to.is_matrix() && (held_as_rows(from) || held_as_rows(to))) {
+    // Row by row from a copy: the upper-left part of a matrix, or a vector's components in order.
+    std::string held = temporary(from), out = "(" + held + " = " + text + ", " + type(to) + "(";
+    for (int r = 0; r < to.rows; ++r) {
+      if (from.is_matrix()) {
+        out += (r ? ", " : "") + type(row_of(to)) + "(" + held + "[" + std::to_string(r) + "])";
+        continue;
+      }
+      out += (r ? ", " : "") + type(row_of(to)) + "(";
+      for (int c = 0; c < to.columns; ++c) out += (c ? ", " : "") + held + "[" + std::to_string(r * to.columns + c) + "]";
+      out += ")";
+    }
+    return out + "))";
+  }
   if (to.is_matrix()) {
     if (from.is_matrix()) return type(to) + "(" + text + ")";  // the upper-left part, as in HLSL
     // A vector of as many components fills the matrix row by row; GLSL reads it column by column,
@@ -84,6 +108,17 @@ std::string GlslWriter::cast(const std::string& text, const Type& from, const Ty
     return type(to) + "(" + type(Type::vector(to.base, from.components())) + "(" + parts + "))";
   }
   return type(to) + "(" + text + ")";  // GLSL truncates a longer vector and converts the base
+}
+
+std::string GlslWriter::by_rows(const Type& t, const Type& result, const std::string& a, const std::string& b,
+                                const std::function<std::string(const std::string&, const std::string&)>& row) {
+  std::string x = temporary(t), y = b.empty() ? std::string() : temporary(t);
+  std::string text = "(" + x + " = " + a + ", " + (y.empty() ? std::string() : y + " = " + b + ", ") + type(result) + "(";
+  for (int r = 0; r < t.rows; ++r) {
+    std::string i = "[" + std::to_string(r) + "]";
+    text += (r ? ", " : "") + row(x + i, y.empty() ? y : y + i);
+  }
+  return text + "))";
 }
 
 }  // namespace pfx::fx

@@ -3,6 +3,7 @@
 // (glsl_types.cpp), expressions (glsl_expressions.cpp), intrinsics (glsl_intrinsics.cpp),
 // statements and functions (glsl_statements.cpp), uniform values as constants
 // (glsl_constants.cpp). glsl_program.cpp puts a program together.
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -13,6 +14,12 @@
 namespace pfx::fx {
 
 enum class Stage { kVertex, kPixel, kCompute };
+
+// GLSL's matrices hold floats only, so an int, uint or bool matrix is an array of its rows
+// ("ivec3[2]" for int2x3): indexing and element access read and write it as HLSL does, and
+// operators and conversions go row by row (glsl_types.cpp, glsl_expressions.cpp).
+bool held_as_rows(const Type& t);
+inline Type row_of(const Type& matrix) { return Type::vector(matrix.base, matrix.columns); }
 
 class GlslWriter {
  public:
@@ -27,12 +34,24 @@ class GlslWriter {
   std::string cast(const std::string& text, const Type& from, const Type& to);
   // A constructor call for `to` from a scalar repeated ("vec3(x)", a matrix filled with it).
   std::string splat(const std::string& scalar, const Type& to);
+  // A matrix of type `result` computed row by row from matrices `a` and `b` of type `t`, each
+  // held once (`row` gives a row of the result from a row of each); `b` may be empty for an
+  // operator of one operand.
+  std::string by_rows(const Type& t, const Type& result, const std::string& a, const std::string& b,
+                      const std::function<std::string(const std::string&, const std::string&)>& row);
 
   // Expressions (glsl_expressions.cpp).
   std::string expr(const Expr& e);
   std::string init_list(const Expr& list, const Type& target);
   std::string name_of(const VariableDecl& variable) const;
   std::string literal(const Expr& e);
+
+  // A variable of type `t` for a value the code must hold while it uses it more than once or
+  // writes it back (an argument converted in and out, a matrix swizzle being stored to). The
+  // enclosing function declares it at its top: take_temporaries() gives those declarations and
+  // forgets them.
+  std::string temporary(const Type& t);
+  std::string take_temporaries(int indent);
 
   // Intrinsics (glsl_intrinsics.cpp).
   std::string intrinsic(const Expr& e);
@@ -54,14 +73,18 @@ class GlslWriter {
   std::string binary(const Expr& e);
   std::string unary(const Expr& e);
   std::string assignment(const Expr& e);
+  std::string store(const Expr& target, const std::string& value);
   std::string member(const Expr& e);
   std::string call(const Expr& e);
   std::string construct(const Expr& e);
   std::string texture_call(const Expr& e, const std::string& name);
+  std::string all_or_any(const std::string& name, const Type& t, const std::string& value);
 
   const EffectModel& model_;
   Diagnostics& diagnostics_;
   Stage stage_;
+  std::string temporary_declarations_;
+  int temporary_count_ = 0;
 };
 
 // The GLSL helper functions a program needs, by the names GlslWriter::helpers holds.

@@ -144,6 +144,7 @@ class ModelBuilder {
           auto it = function_names_.find(qualified);
           if (it == function_names_.end()) it = function_names_.emplace(qualified, unique(glsl_safe("F_" + qualified))).first;
           m_.function_names[f] = it->second;
+          if (f->body) function_statics(*f->body, qualified + "_");
           break;
         }
         case DeclKind::kVariables:
@@ -191,6 +192,33 @@ class ModelBuilder {
     if (v.qualifiers & kQualGroupShared) return m_.shared_globals.push_back(&v);
     if (v.qualifiers & kQualStatic) return m_.static_globals.push_back(&v);
     uniform(v, qualified);
+  }
+
+  // A function's `static` variable keeps its value from one call to the next (a `static const`
+  // cannot change, so it stays a local): it becomes a static of the program, named after the
+  // function and started with the others, so its initialiser may use only globals and constants.
+  void function_statics(const Stmt& s, const std::string& prefix) {
+    if (s.kind == StmtKind::kDeclaration)
+      for (const VariableDecl& v : s.variables) {
+        if (!(v.qualifiers & kQualStatic) || (v.qualifiers & kQualConst)) continue;
+        if (const VariableDecl* local = v.initializer ? first_local(*v.initializer) : nullptr)
+          diagnostics_.error(v.location, "the initialiser of the static '" + v.name + "' uses '" + local->name +
+                                             "', a local of the function; a static starts before any call, so it may use only globals and literals");
+        m_.global_names[&v] = unique(glsl_safe("G_" + prefix + v.name));
+        m_.static_globals.push_back(&v);
+      }
+    for (const Stmt* child : {s.init.get(), s.body.get(), s.else_body.get()})
+      if (child) function_statics(*child, prefix);
+    for (const StmtPtr& child : s.statements) function_statics(*child, prefix);
+    for (const SwitchCase& c : s.cases)
+      for (const StmtPtr& child : c.body) function_statics(*child, prefix);
+  }
+
+  const VariableDecl* first_local(const Expr& e) const {
+    if (e.variable && !m_.global_names.count(e.variable)) return e.variable;
+    for (const ExprPtr& operand : e.operands)
+      if (const VariableDecl* local = first_local(*operand)) return local;
+    return nullptr;
   }
 
   void texture(const VariableDecl& v, const std::string& qualified) {
