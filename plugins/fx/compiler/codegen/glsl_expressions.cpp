@@ -255,7 +255,7 @@ std::string GlslWriter::call(const Expr& e) {
 
 std::string GlslWriter::construct(const Expr& e) {
   const Type& t = e.resolved;
-  if (e.operands.size() == 1 && e.operands[0]->resolved.is_scalar()) return splat(expr(*e.operands[0]), t);
+  if (e.operands.size() == 1 && e.operands[0]->resolved.is_scalar()) return cast(expr(*e.operands[0]), e.operands[0]->resolved, t);
   // A matrix held as rows, or made from one, is regrouped from its arguments' components.
   bool rows = held_as_rows(t);
   for (const ExprPtr& argument : e.operands) rows = rows || (t.is_matrix() && held_as_rows(argument->resolved));
@@ -264,6 +264,8 @@ std::string GlslWriter::construct(const Expr& e) {
   for (std::size_t i = 0; i < e.operands.size(); ++i) {
     const Expr& argument = *e.operands[i];
     std::string value = expr(argument);
+    if (argument.resolved.is_floating() && !argument.resolved.is_matrix() && (t.base == BaseType::kInt || t.base == BaseType::kUint))
+      value = cast(value, argument.resolved, argument.resolved.with_base(t.base));  // HLSL's saturating conversion
     // GLSL takes a matrix argument only in a matrix constructor; elsewhere spell out its rows.
     if (argument.resolved.is_matrix() && !t.is_matrix()) {
       std::string rows;
@@ -293,15 +295,17 @@ std::string GlslWriter::init_list(const Expr& list, const Type& target) {
   collect(list);
   std::size_t leaf = 0;
   int offset = 0;  // components of leaves[leaf] already used
-  auto component = [&]() -> std::string {
-    if (leaf >= leaves.size()) return "0";
+  // The next component as a `base` scalar.
+  auto component = [&](BaseType base) -> std::string {
+    if (leaf >= leaves.size()) return type(Type::scalar(base)) + "(0)";
     const Leaf& l = leaves[leaf];
     std::string text;
     if (l.type.is_scalar()) text = l.text;
     else if (l.type.is_matrix()) text = "(" + l.text + ")[" + std::to_string(offset / l.type.columns) + "][" + std::to_string(offset % l.type.columns) + "]";
     else text = "(" + l.text + ")[" + std::to_string(offset) + "]";
+    Type from = Type::scalar(l.type.base);
     if (++offset >= std::max(1, l.type.components())) ++leaf, offset = 0;
-    return text;
+    return cast(text, from, Type::scalar(base));
   };
   std::function<std::string(const Type&)> build = [&](const Type& t) -> std::string {
     if (t.is_array()) {
@@ -322,16 +326,15 @@ std::string GlslWriter::init_list(const Expr& list, const Type& target) {
       return cast(l.text, l.type, t);
     }
     std::string text = type(t) + "(";
-    Type scalar = Type::scalar(t.base);
     if (held_as_rows(t)) {
       for (int r = 0; r < t.rows; ++r) {
         text += (r ? ", " : "") + type(row_of(t)) + "(";
-        for (int c = 0; c < t.columns; ++c) text += (c ? ", " : "") + type(scalar) + "(" + component() + ")";
+        for (int c = 0; c < t.columns; ++c) text += (c ? ", " : "") + component(t.base);
         text += ")";
       }
       return text + ")";
     }
-    for (int i = 0; i < t.components(); ++i) text += (i ? ", " : "") + type(scalar) + "(" + component() + ")";
+    for (int i = 0; i < t.components(); ++i) text += (i ? ", " : "") + component(t.base);
     return text + ")";
   };
   return build(target);

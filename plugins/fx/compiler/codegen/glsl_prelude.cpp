@@ -68,6 +68,20 @@ std::string prelude(const std::set<std::string>& helpers) {
            "uvec3 pfx_f32tof16(vec3 x) { return uvec3(pfx_f32tof16(x.xy), pfx_f32tof16(x.z)); }\n"
            "uvec4 pfx_f32tof16(vec4 x) { return uvec4(pfx_f32tof16(x.xy), pfx_f32tof16(x.zw)); }\n";
   }
+  // HLSL's float to int and uint (ftoi, ftou): toward zero, saturated at the type's range, NaN
+  // to 0 (every comparison with NaN is false). GLSL leaves a value out of range undefined.
+  if (wants("ftoi")) {
+    out += "int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }\n";
+    out += each("$I pfx_ftoi($T x) { return mix(mix(mix($I(0), $I(-2147483647 - 1), lessThan(x, $T(0.0))), $I(x), "
+                "greaterThan(x, $T(-2147483648.0))), $I(2147483647), greaterThanEqual(x, $T(2147483648.0))); }\n",
+                {"vec2", "vec3", "vec4"}, kBools, {"ivec2", "ivec3", "ivec4"});
+  }
+  if (wants("ftou")) {
+    out += "uint pfx_ftou(float x) { return x >= 4294967296.0 ? 4294967295u : x > 0.0 ? uint(x) : 0u; }\n";
+    out += each("$I pfx_ftou($T x) { return mix(mix($I(0u), $I(x), greaterThan(x, $T(0.0))), $I(4294967295u), "
+                "greaterThanEqual(x, $T(4294967296.0))); }\n",
+                {"vec2", "vec3", "vec4"}, kBools, {"uvec2", "uvec3", "uvec4"});
+  }
   // HLSL's frexp gives the exponent as a float.
   if (wants("frexp")) out += each("$T pfx_frexp($T x, out $T e) { $I i; $T m = frexp(x, i); e = $T(i); return m; }\n", kFloats, kBools, kInts);
   return out;

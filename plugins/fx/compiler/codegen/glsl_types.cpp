@@ -77,6 +77,14 @@ std::string GlslWriter::splat(const std::string& scalar, const Type& to) {
 std::string GlslWriter::cast(const std::string& text, const Type& from, const Type& to) {
   if (from == to) return text;
   if (!from.is_numeric() || !to.is_numeric()) return text;  // structs and arrays convert only to themselves
+  if (from.is_floating() && (to.base == BaseType::kInt || to.base == BaseType::kUint)) {
+    // To an integer of the same shape first, as HLSL converts (pfx_ftoi and pfx_ftou in the prelude).
+    std::string helper = to.base == BaseType::kInt ? "pfx_ftoi" : "pfx_ftou";
+    helpers.insert(helper.substr(4));
+    Type integral = from.with_base(to.base);
+    if (from.is_matrix()) return cast(by_rows(from, integral, text, "", [&](auto& row, auto&) { return helper + "(" + row + ")"; }), integral, to);
+    return cast(helper + "(" + text + ")", integral, to);
+  }
   if (from.is_scalar()) return splat(text, to);
   if (to.is_scalar()) {
     std::string first = from.is_matrix() ? "(" + text + ")[0][0]" : "(" + text + ").x";

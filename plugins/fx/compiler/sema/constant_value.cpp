@@ -1,5 +1,6 @@
 #include "constant_value.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -101,8 +102,17 @@ Value combine(const Expr& e, const ConstantValue& a, const ConstantValue& b) {
   return out;
 }
 
+// A float as HLSL converts it to an int or uint (ftoi, ftou): toward zero, saturated at the type's
+// range, NaN to 0.
+double float_to_integer(double v, BaseType base) {
+  if (std::isnan(v)) return 0;
+  const double low = base == BaseType::kUint ? 0.0 : -2147483648.0, high = base == BaseType::kUint ? 4294967295.0 : 2147483647.0;
+  return std::min(high, std::max(low, std::trunc(v)));
+}
+
 // The components of a conversion to `to` (splat, truncation, integer rounding toward zero; from
-// integers, an integer type wraps at 32 bits: uint(-2) is 0xFFFFFFFE).
+// integers, an integer type wraps at 32 bits: uint(-2) is 0xFFFFFFFE; from floats, it saturates:
+// uint(-2.0) is 0).
 Value convert(const ConstantValue& v, const Type& to, bool from_integers) {
   if (v.is_string) return v;
   ConstantValue out = v;
@@ -112,7 +122,7 @@ Value convert(const ConstantValue& v, const Type& to, bool from_integers) {
     else if (static_cast<int>(out.components.size()) > wanted) out.components.resize(static_cast<std::size_t>(wanted));
   }
   if (to.base == BaseType::kInt || to.base == BaseType::kUint)
-    for (double& c : out.components) c = from_integers ? wrap32(std::trunc(c), to.base) : std::trunc(c);
+    for (double& c : out.components) c = from_integers ? wrap32(std::trunc(c), to.base) : float_to_integer(c, to.base);
   if (to.base == BaseType::kBool)
     for (double& c : out.components) c = c != 0 ? 1 : 0;
   return out;
