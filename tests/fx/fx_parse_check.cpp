@@ -1,7 +1,7 @@
-// A developer's tool, not a test: runs the FX front end over the files named on the command line
-// (include folders with -I) and prints each file's diagnostics and a count of those that parse;
-// --glsl also generates every pass of every technique and prints the GLSL.
-// Used by hand on shader collections that must not be committed here.
+// A developer's tool: runs the FX front end over the files named on the command line (include
+// folders with -I) and prints each file's diagnostics and a count of those that parse; --glsl
+// also generates every pass of every technique and prints the GLSL. Used by hand on shader
+// collections that must not be committed here, and by the golden tests (golden/check_golden.py).
 #include <cstdio>
 #include <string>
 #include <vector>
