@@ -276,3 +276,17 @@ TEST_CASE("intrinsics of an integer matrix other than all and any are refused by
   CHECK(generation_errors("float4 PS() : SV_Target { int2x2 m = int2x2(1, 2, 3, 4); return any(m) ? transpose(m)._m01 : 0; }" +
                           std::string(kPass)) == "main.fx:1:74: error: transpose() of an integer or bool matrix is not supported\n");
 }
+
+TEST_CASE("the table of intrinsics spells every id and each name once", "[fx][sema]") {
+  using pfx::fx::Intrinsic;
+  for (int id = 1; id < static_cast<int>(Intrinsic::kCount); ++id)
+    CHECK_FALSE(pfx::fx::intrinsic_name(static_cast<Intrinsic>(id)).empty());
+  for (const pfx::fx::IntrinsicInfo& row : pfx::fx::intrinsic_table()) {
+    CHECK(pfx::fx::find_intrinsic(row.name) == &row);  // a name spelled twice would find the first row only
+    CHECK(row.min_arguments <= row.max_arguments);
+  }
+  CHECK(pfx::fx::find_intrinsic("tex3Dlodoffset")->id == Intrinsic::kTexSampleLodOffset);
+  CHECK(pfx::fx::find_intrinsic("AllMemoryBarrier")->id == Intrinsic::kMemoryBarrier);
+  CHECK(pfx::fx::intrinsic_name(Intrinsic::kTexSample) == "tex2D");
+  CHECK(pfx::fx::find_intrinsic("tex4D") == nullptr);
+}

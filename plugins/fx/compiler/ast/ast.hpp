@@ -8,6 +8,7 @@
 #include "../literals.hpp"
 #include "../source_location.hpp"
 #include "../token.hpp"
+#include "intrinsic.hpp"
 #include "semantic_type.hpp"
 #include "type_syntax.hpp"
 
@@ -65,7 +66,7 @@ struct Expr {
   Type resolved;                                  // the expression's type
   const VariableDecl* variable = nullptr;  // kName naming a variable
   const FunctionDecl* function = nullptr;  // kCall of a user function
-  std::string intrinsic;                          // kCall of an intrinsic (its name)
+  Intrinsic intrinsic = Intrinsic::kNone;         // kCall of an intrinsic (e.text spells it)
   std::vector<int> swizzle;                       // kMember swizzle: component indices (matrix: row * 4 + column)
   bool implicit = false;                          // kCast inserted by analysis (an implicit conversion)
   bool lvalue = false;

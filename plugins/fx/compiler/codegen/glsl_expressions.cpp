@@ -219,7 +219,7 @@ std::string GlslWriter::member(const Expr& e) {
 }
 
 std::string GlslWriter::call(const Expr& e) {
-  if (!e.intrinsic.empty()) return intrinsic(e);
+  if (e.intrinsic != Intrinsic::kNone) return intrinsic(e);
   if (!e.function) return error(e.location, "call to unknown function '" + e.text + "'"), "0";
   auto it = model_.function_names.find(e.function);
   std::string text = (it != model_.function_names.end() ? it->second : glsl_safe("F_" + e.text)) + "(";

@@ -12,23 +12,37 @@
 namespace pfx::fx {
 namespace {
 
-// Intrinsics that are one GLSL function of the same arguments.
-const std::map<std::string, std::string>& renamed() {
-  static const std::map<std::string, std::string> names = {
-      {"abs", "abs"},         {"acos", "acos"},       {"asin", "asin"},         {"atan", "atan"},
-      {"ceil", "ceil"},       {"clamp", "clamp"},     {"cos", "cos"},           {"cosh", "cosh"},
-      {"cross", "cross"},     {"degrees", "degrees"}, {"determinant", "determinant"}, {"distance", "distance"},
-      {"dot", "dot"},         {"exp", "exp"},         {"exp2", "exp2"},         {"floor", "floor"},
-      {"fwidth", "fwidth"},   {"isinf", "isinf"},     {"isnan", "isnan"},
-      {"length", "length"},   {"log", "log"},         {"log2", "log2"},         {"max", "max"},
-      {"min", "min"},         {"normalize", "normalize"}, {"pow", "pow"},       {"radians", "radians"},
-      {"reflect", "reflect"}, {"sin", "sin"},           {"sinh", "sinh"},
-      {"smoothstep", "smoothstep"}, {"sqrt", "sqrt"}, {"step", "step"},         {"tan", "tan"},
-      {"tanh", "tanh"},       {"transpose", "transpose"}, {"trunc", "trunc"},   {"frac", "fract"},
-      {"lerp", "mix"},        {"rsqrt", "inversesqrt"}, {"atan2", "atan"},      {"round", "roundEven"},
-      {"ddx", "dFdx"},        {"ddx_coarse", "dFdxCoarse"}, {"ddx_fine", "dFdxFine"},
-      {"reversebits", "bitfieldReverse"}, {"faceforward", "faceforward"}, {"modf", "modf"}};
-  return names;
+using I = Intrinsic;
+
+// The GLSL function of the same arguments and meaning, or null.
+const char* same_in_glsl(Intrinsic id) {
+  switch (id) {
+    case I::kAbs: return "abs";                 case I::kAcos: return "acos";
+    case I::kAsin: return "asin";               case I::kAtan: return "atan";
+    case I::kCeil: return "ceil";               case I::kClamp: return "clamp";
+    case I::kCos: return "cos";                 case I::kCosh: return "cosh";
+    case I::kCross: return "cross";             case I::kDegrees: return "degrees";
+    case I::kDeterminant: return "determinant"; case I::kDistance: return "distance";
+    case I::kDot: return "dot";                 case I::kExp: return "exp";
+    case I::kExp2: return "exp2";               case I::kFloor: return "floor";
+    case I::kFwidth: return "fwidth";           case I::kIsinf: return "isinf";
+    case I::kIsnan: return "isnan";             case I::kLength: return "length";
+    case I::kLog: return "log";                 case I::kLog2: return "log2";
+    case I::kMax: return "max";                 case I::kMin: return "min";
+    case I::kNormalize: return "normalize";     case I::kPow: return "pow";
+    case I::kRadians: return "radians";         case I::kReflect: return "reflect";
+    case I::kSin: return "sin";                 case I::kSinh: return "sinh";
+    case I::kSmoothstep: return "smoothstep";   case I::kSqrt: return "sqrt";
+    case I::kStep: return "step";               case I::kTan: return "tan";
+    case I::kTanh: return "tanh";               case I::kTranspose: return "transpose";
+    case I::kTrunc: return "trunc";             case I::kFrac: return "fract";
+    case I::kLerp: return "mix";                case I::kRsqrt: return "inversesqrt";
+    case I::kAtan2: return "atan";              case I::kRound: return "roundEven";
+    case I::kDdx: return "dFdx";                case I::kDdxCoarse: return "dFdxCoarse";
+    case I::kDdxFine: return "dFdxFine";        case I::kReversebits: return "bitfieldReverse";
+    case I::kFaceforward: return "faceforward"; case I::kModf: return "modf";
+    default: return nullptr;
+  }
 }
 
 std::string joined(const std::vector<std::string>& parts) {
@@ -62,15 +76,15 @@ class TextureCall {
   bool on_storage() const { return object_.base == BaseType::kStorage; }
 
   // A storage takes only size, store and fetch.
-  std::string storage(const std::string& suffix, const std::string& name) {
+  std::string storage() {
     const std::string& s = a_[0];
-    if (suffix == "size") return "imageSize(" + s + ")";
-    if (suffix == "store") {
+    if (e_.intrinsic == I::kTexSize) return "imageSize(" + s + ")";
+    if (e_.intrinsic == I::kTexStore) {
       const std::string value = stored_value();
       return "imageStore(" + s + ", " + texel(a_[1], "imageSize(" + s + ").y") + ", " + value + ")";
     }
-    if (suffix == "fetch") return sampled("imageLoad(" + s + ", " + texel(a_[1], "imageSize(" + s + ").y") + ")", e_);
-    return writer_.error(e_.location, name + "() does not take a storage"), "0";
+    if (e_.intrinsic == I::kTexFetch) return sampled("imageLoad(" + s + ", " + texel(a_[1], "imageSize(" + s + ").y") + ")", e_);
+    return writer_.error(e_.location, e_.text + "() does not take a storage"), "0";
   }
 
   std::string size() const {
@@ -88,12 +102,12 @@ class TextureCall {
 
   // lod, lodoffset, bias and proj: the coordinate is a float4, xy(z) the position, w the level,
   // bias or divisor.
-  std::string sample_by_w(const std::string& suffix) const {
+  std::string sample_by_w() const {
     const std::string& s = a_[0];
     std::string c = "(" + a_[1] + ")";
     std::string position = c + (d_ == 1 ? ".x" : d_ == 2 ? ".xy" : ".xyz");
-    if (suffix == "proj") return sampled("texture(" + s + ", " + uv(position + " / " + c + ".w") + ")", e_);
-    if (suffix == "bias") return sampled("texture(" + s + ", " + uv(position) + ", " + c + ".w)", e_);
+    if (e_.intrinsic == I::kTexSampleProj) return sampled("texture(" + s + ", " + uv(position + " / " + c + ".w") + ")", e_);
+    if (e_.intrinsic == I::kTexSampleBias) return sampled("texture(" + s + ", " + uv(position) + ", " + c + ".w)", e_);
     if (a_.size() > 2) {
       const std::string o = offset(2);
       if (o.empty())
@@ -128,11 +142,11 @@ class TextureCall {
   }
 
   // gather, gatherR, gatherG, gatherB, gatherA: 2D only.
-  std::string gather(const std::string& suffix, const std::string& name) {
+  std::string gather() {
     const std::string& s = a_[0];
-    if (d_ != 2) return writer_.error(e_.location, name + "() needs a 2D sampler"), "0";
-    char channel = suffix.size() > 6 ? suffix[6] : 'R';
-    int comp = channel == 'G' ? 1 : channel == 'B' ? 2 : channel == 'A' ? 3 : 0;
+    if (d_ != 2) return writer_.error(e_.location, e_.text + "() needs a 2D sampler"), "0";
+    const Intrinsic id = e_.intrinsic;
+    int comp = id == I::kTexGatherG ? 1 : id == I::kTexGatherB ? 2 : id == I::kTexGatherA ? 3 : 0;
     const std::string o = a_.size() > 2 ? offset(2) : "";
     const std::string at = a_.size() > 2 && o.empty() ? shifted(uv(a_[1]), 2, "0") : uv(a_[1]);
     std::string text = !o.empty()
@@ -197,87 +211,134 @@ class TextureCall {
 }  // namespace
 
 std::string GlslWriter::intrinsic(const Expr& e) {
-  const std::string& name = e.intrinsic;
+  const Intrinsic id = e.intrinsic;
+  for (const ExprPtr& operand : e.operands)
+    if (held_as_rows(operand->resolved) && id != I::kAll && id != I::kAny)
+      return error(e.location, e.text + "() of an integer or bool matrix is not supported"), "0";
+  if (const char* same = same_in_glsl(id)) {
+    std::vector<std::string> a;
+    for (const ExprPtr& operand : e.operands) a.push_back(expr(*operand));
+    return std::string(same) + "(" + joined(a) + ")";
+  }
+  switch (id) {
+    case I::kTexSample: case I::kTexSampleOffset: case I::kTexSampleLod: case I::kTexSampleLodOffset:
+    case I::kTexSampleBias: case I::kTexSampleProj: case I::kTexSampleGrad: case I::kTexFetch: case I::kTexSize:
+    case I::kTexStore: case I::kTexGather: case I::kTexGatherR: case I::kTexGatherG: case I::kTexGatherB:
+    case I::kTexGatherA:
+      return texture_call(e);
+    case I::kAtomicAdd: case I::kAtomicAnd: case I::kAtomicOr: case I::kAtomicXor: case I::kAtomicMin:
+    case I::kAtomicMax: case I::kAtomicExchange: case I::kAtomicCompareExchange:
+      return atomic(e);
+    case I::kAbs: case I::kAcos: case I::kAsin: case I::kAtan: case I::kCeil: case I::kClamp: case I::kCos:
+    case I::kCosh: case I::kCross: case I::kDegrees: case I::kDeterminant: case I::kDistance: case I::kDot:
+    case I::kExp: case I::kExp2: case I::kFloor: case I::kFwidth: case I::kIsinf: case I::kIsnan: case I::kLength:
+    case I::kLog: case I::kLog2: case I::kMax: case I::kMin: case I::kNormalize: case I::kPow: case I::kRadians:
+    case I::kReflect: case I::kSin: case I::kSinh: case I::kSmoothstep: case I::kSqrt: case I::kStep: case I::kTan:
+    case I::kTanh: case I::kTranspose: case I::kTrunc: case I::kFrac: case I::kLerp: case I::kRsqrt: case I::kAtan2:
+    case I::kRound: case I::kDdx: case I::kDdxCoarse: case I::kDdxFine: case I::kReversebits: case I::kFaceforward:
+    case I::kModf:
+      break;  // same_in_glsl, above
+    case I::kDdy: case I::kDdyCoarse: case I::kDdyFine: case I::kLdexp: case I::kRefract: case I::kSaturate: case I::kRcp:
+    case I::kLog10: case I::kFmod: case I::kMad: case I::kSign: case I::kIsfinite: case I::kAll: case I::kAny:
+    case I::kCountbits: case I::kFirstbithigh: case I::kFirstbitlow: case I::kAsfloat: case I::kAsint: case I::kAsuint:
+    case I::kF16tof32: case I::kF32tof16: case I::kFrexp: case I::kSincos: case I::kMul: case I::kClip: case I::kBarrier:
+    case I::kGroupMemoryBarrierWithGroupSync: case I::kMemoryBarrier: case I::kGroupMemoryBarrier:
+      return with_hlsl_meaning(e);
+    case I::kNone: case I::kCount:
+      break;
+  }  // no default: an intrinsic added to the table without a case here does not compile (-Wswitch)
+  error(e.location, "the intrinsic '" + e.text + "' has no GLSL translation yet");
+  return "0";
+}
+
+// Intrinsics whose HLSL meaning GLSL spells otherwise.
+std::string GlslWriter::with_hlsl_meaning(const Expr& e) {
   std::vector<std::string> a;
   for (const ExprPtr& operand : e.operands) a.push_back(expr(*operand));
   auto type_of = [&](std::size_t i) -> const Type& { return e.operands[i]->resolved; };
-  for (const ExprPtr& operand : e.operands)
-    if (held_as_rows(operand->resolved) && name != "all" && name != "any")
-      return error(e.location, name + "() of an integer or bool matrix is not supported"), "0";
-  auto it = renamed().find(name);
-  if (it != renamed().end()) return it->second + "(" + joined(a) + ")";
-
-  if (name.compare(0, 3, "tex") == 0 && name.size() > 4 && (name[3] == '1' || name[3] == '2' || name[3] == '3'))
-    return texture_call(e, name);
-  if (name.compare(0, 6, "atomic") == 0) {
-    static const std::map<std::string, std::string> atomics = {
-        {"atomicAdd", "Add"}, {"atomicAnd", "And"}, {"atomicOr", "Or"}, {"atomicXor", "Xor"},
-        {"atomicMin", "Min"}, {"atomicMax", "Max"}, {"atomicExchange", "Exchange"}, {"atomicCompareExchange", "CompSwap"}};
-    const std::string& op = atomics.at(name);
-    if (type_of(0).base == BaseType::kStorage) {
-      helpers.insert("flip");
-      std::string coordinate = type_of(0).dimension == 1 ? "int(" + a[1] + ")"
-                                                           : "pfx_flip_texel(ivec" + std::to_string(type_of(0).dimension) + "(" + a[1] +
-                                                                 "), imageSize(" + a[0] + ").y)";
-      std::vector<std::string> rest(a.begin() + 2, a.end());
-      return "imageAtomic" + op + "(" + a[0] + ", " + coordinate + ", " + joined(rest) + ")";
-    }
-    return "atomic" + op + "(" + joined(a) + ")";
-  }
-  if (name == "ddy" || name == "ddy_coarse" || name == "ddy_fine") {
+  switch (e.intrinsic) {
     // FX's y grows downwards, GL's upwards.
-    std::string f = name == "ddy" ? "dFdy" : name == "ddy_coarse" ? "dFdyCoarse" : "dFdyFine";
-    return "(-" + f + "(" + a[0] + "))";
-  }
-  // HLSL's ldexp takes a float exponent; GLSL's an int one.
-  if (name == "ldexp") return "(" + a[0] + " * exp2(" + a[1] + "))";
-  // refract's index of refraction is a scalar, whatever width the analysis gave it.
-  if (name == "refract") return "refract(" + a[0] + ", " + a[1] + ", " + cast(a[2], type_of(2), Type::scalar(BaseType::kFloat)) + ")";
-  if (name == "saturate") return "clamp(" + a[0] + ", 0.0, 1.0)";
-  if (name == "rcp") return "(" + cast("1.0", Type::scalar(BaseType::kFloat), e.resolved) + " / " + a[0] + ")";
-  if (name == "log10") return "(log2(" + a[0] + ") * 0.301029995663981)";
-  if (name == "fmod") return helpers.insert("fmod"), "pfx_fmod(" + a[0] + ", " + a[1] + ")";
-  if (name == "mad") return "(" + a[0] + " * " + a[1] + " + " + a[2] + ")";
-  if (name == "sign") return cast("sign(" + a[0] + ")", type_of(0), e.resolved);
-  if (name == "isfinite") return helpers.insert("isfinite"), "pfx_isfinite(" + a[0] + ")";
-  if (name == "all" || name == "any") return all_or_any(name, type_of(0), a[0]);
-  if (name == "countbits" || name == "firstbithigh" || name == "firstbitlow") {
-    std::string f = name == "countbits" ? "bitCount" : name == "firstbithigh" ? "findMSB" : "findLSB";
-    return cast(f + "(" + a[0] + ")", type_of(0).with_base(BaseType::kInt), e.resolved);
-  }
-  if (name == "asfloat" || name == "asint" || name == "asuint") {
-    BaseType from = type_of(0).base;
-    if (name == "asfloat") {
-      if (from == BaseType::kFloat) return a[0];
-      return (from == BaseType::kUint ? "uintBitsToFloat(" : "intBitsToFloat(") + a[0] + ")";
+    case I::kDdy: return "(-dFdy(" + a[0] + "))";
+    case I::kDdyCoarse: return "(-dFdyCoarse(" + a[0] + "))";
+    case I::kDdyFine: return "(-dFdyFine(" + a[0] + "))";
+    // HLSL's ldexp takes a float exponent; GLSL's an int one.
+    case I::kLdexp: return "(" + a[0] + " * exp2(" + a[1] + "))";
+    // refract's index of refraction is a scalar, whatever width the analysis gave it.
+    case I::kRefract: return "refract(" + a[0] + ", " + a[1] + ", " + cast(a[2], type_of(2), Type::scalar(BaseType::kFloat)) + ")";
+    case I::kSaturate: return "clamp(" + a[0] + ", 0.0, 1.0)";
+    case I::kRcp: return "(" + cast("1.0", Type::scalar(BaseType::kFloat), e.resolved) + " / " + a[0] + ")";
+    case I::kLog10: return "(log2(" + a[0] + ") * 0.301029995663981)";
+    case I::kFmod: return helpers.insert("fmod"), "pfx_fmod(" + a[0] + ", " + a[1] + ")";
+    case I::kMad: return "(" + a[0] + " * " + a[1] + " + " + a[2] + ")";
+    case I::kSign: return cast("sign(" + a[0] + ")", type_of(0), e.resolved);
+    case I::kIsfinite: return helpers.insert("isfinite"), "pfx_isfinite(" + a[0] + ")";
+    case I::kAll: return all_or_any("all", type_of(0), a[0]);
+    case I::kAny: return all_or_any("any", type_of(0), a[0]);
+    case I::kCountbits: return cast("bitCount(" + a[0] + ")", type_of(0).with_base(BaseType::kInt), e.resolved);
+    case I::kFirstbithigh: return cast("findMSB(" + a[0] + ")", type_of(0).with_base(BaseType::kInt), e.resolved);
+    case I::kFirstbitlow: return cast("findLSB(" + a[0] + ")", type_of(0).with_base(BaseType::kInt), e.resolved);
+    case I::kAsfloat: case I::kAsint: case I::kAsuint: return reinterpreted(e, a[0]);
+    case I::kF16tof32: return helpers.insert("half"), "pfx_f16tof32(" + a[0] + ")";
+    case I::kF32tof16: return helpers.insert("half"), "pfx_f32tof16(" + a[0] + ")";
+    case I::kFrexp: return helpers.insert("frexp"), "pfx_frexp(" + a[0] + ", " + a[1] + ")";
+    case I::kSincos: return "(" + a[1] + " = sin(" + a[0] + "), " + a[2] + " = cos(" + a[0] + "))";
+    case I::kMul: {
+      const Type& x = type_of(0);
+      const Type& y = type_of(1);
+      if (x.is_scalar() || y.is_scalar()) return "(" + a[0] + " * " + a[1] + ")";
+      if (x.is_vector() && y.is_vector()) return "dot(" + a[0] + ", " + a[1] + ")";
+      return "(" + a[1] + " * " + a[0] + ")";  // see the matrix storage in glsl_generator.hpp
     }
-    if (from == BaseType::kFloat || from == BaseType::kHalf || from == BaseType::kDouble)
-      return (name == "asint" ? "floatBitsToInt(" : "floatBitsToUint(") + a[0] + ")";
-    return cast(a[0], type_of(0), e.resolved);  // int <-> uint keeps the bits
+    case I::kClip:
+      if (stage_ != Stage::kPixel) return error(e.location, "clip() is only allowed in a pixel shader"), "0";
+      uses_discard = true;
+      helpers.insert("clip");
+      return "pfx_clip(" + a[0] + ")";
+    case I::kBarrier: return "(memoryBarrierShared(), barrier())";
+    case I::kGroupMemoryBarrierWithGroupSync: return "(groupMemoryBarrier(), barrier())";
+    case I::kMemoryBarrier: return "memoryBarrier()";
+    case I::kGroupMemoryBarrier: return "groupMemoryBarrier()";
+    default: break;
   }
-  if (name == "f16tof32") return helpers.insert("half"), "pfx_f16tof32(" + a[0] + ")";
-  if (name == "f32tof16") return helpers.insert("half"), "pfx_f32tof16(" + a[0] + ")";
-  if (name == "frexp") return helpers.insert("frexp"), "pfx_frexp(" + a[0] + ", " + a[1] + ")";
-  if (name == "sincos") return "(" + a[1] + " = sin(" + a[0] + "), " + a[2] + " = cos(" + a[0] + "))";
-  if (name == "mul") {
-    const Type& x = type_of(0);
-    const Type& y = type_of(1);
-    if (x.is_scalar() || y.is_scalar()) return "(" + a[0] + " * " + a[1] + ")";
-    if (x.is_vector() && y.is_vector()) return "dot(" + a[0] + ", " + a[1] + ")";
-    return "(" + a[1] + " * " + a[0] + ")";  // see the matrix storage in glsl_generator.hpp
-  }
-  if (name == "clip") {
-    if (stage_ != Stage::kPixel) return error(e.location, "clip() is only allowed in a pixel shader"), "0";
-    uses_discard = true;
-    helpers.insert("clip");
-    return "pfx_clip(" + a[0] + ")";
-  }
-  if (name == "barrier") return "(memoryBarrierShared(), barrier())";
-  if (name == "GroupMemoryBarrierWithGroupSync") return "(groupMemoryBarrier(), barrier())";
-  if (name == "memoryBarrier" || name == "AllMemoryBarrier") return "memoryBarrier()";
-  if (name == "groupMemoryBarrier" || name == "GroupMemoryBarrier") return "groupMemoryBarrier()";
-  error(e.location, "the intrinsic '" + name + "' has no GLSL translation yet");
+  error(e.location, "the intrinsic '" + e.text + "' has no GLSL translation yet");
   return "0";
+}
+
+// asfloat, asint and asuint: the same bits as another type.
+std::string GlslWriter::reinterpreted(const Expr& e, const std::string& value) {
+  const Type& from = e.operands[0]->resolved;
+  if (e.intrinsic == I::kAsfloat) {
+    if (from.base == BaseType::kFloat) return value;
+    return (from.base == BaseType::kUint ? "uintBitsToFloat(" : "intBitsToFloat(") + value + ")";
+  }
+  if (from.base == BaseType::kFloat || from.base == BaseType::kHalf || from.base == BaseType::kDouble)
+    return (e.intrinsic == I::kAsint ? "floatBitsToInt(" : "floatBitsToUint(") + value + ")";
+  return cast(value, from, e.resolved);  // int <-> uint keeps the bits
+}
+
+// atomic*: on a storage's texel (its row counted from the top) or on a variable.
+std::string GlslWriter::atomic(const Expr& e) {
+  std::vector<std::string> a;
+  for (const ExprPtr& operand : e.operands) a.push_back(expr(*operand));
+  std::string op;
+  switch (e.intrinsic) {
+    case I::kAtomicAdd: op = "Add"; break;
+    case I::kAtomicAnd: op = "And"; break;
+    case I::kAtomicOr: op = "Or"; break;
+    case I::kAtomicXor: op = "Xor"; break;
+    case I::kAtomicMin: op = "Min"; break;
+    case I::kAtomicMax: op = "Max"; break;
+    case I::kAtomicExchange: op = "Exchange"; break;
+    default: op = "CompSwap"; break;
+  }
+  const Type& object = e.operands[0]->resolved;
+  if (object.base != BaseType::kStorage) return "atomic" + op + "(" + joined(a) + ")";
+  helpers.insert("flip");
+  std::string coordinate = object.dimension == 1 ? "int(" + a[1] + ")"
+                                                 : "pfx_flip_texel(ivec" + std::to_string(object.dimension) + "(" + a[1] +
+                                                       "), imageSize(" + a[0] + ").y)";
+  std::vector<std::string> rest(a.begin() + 2, a.end());
+  return "imageAtomic" + op + "(" + a[0] + ", " + coordinate + ", " + joined(rest) + ")";
 }
 
 // all() and any() of a scalar, vector or matrix: true when every, or some, component is not zero.
@@ -291,18 +352,20 @@ std::string GlslWriter::all_or_any(const std::string& name, const Type& t, const
   return text + ")";
 }
 
-// tex1D/2D/3D*: `name` is the intrinsic, operand 0 the sampler or storage.
-std::string GlslWriter::texture_call(const Expr& e, const std::string& name) {
+// tex1D/2D/3D*: operand 0 the sampler or storage.
+std::string GlslWriter::texture_call(const Expr& e) {
   TextureCall call(*this, e);
-  const std::string suffix = name.substr(5);  // after "texND"
-  if (call.on_storage()) return call.storage(suffix, name);
-  if (suffix == "size") return call.size();
-  if (suffix == "" || suffix == "offset") return call.sample();
-  if (suffix == "lod" || suffix == "lodoffset" || suffix == "bias" || suffix == "proj") return call.sample_by_w(suffix);
-  if (suffix == "fetch") return call.fetch();
-  if (suffix == "grad") return call.grad();
-  if (suffix.compare(0, 6, "gather") == 0) return call.gather(suffix, name);
-  error(e.location, "the intrinsic '" + name + "' has no GLSL translation yet");
+  if (call.on_storage()) return call.storage();
+  switch (e.intrinsic) {
+    case I::kTexSize: return call.size();
+    case I::kTexSample: case I::kTexSampleOffset: return call.sample();
+    case I::kTexSampleLod: case I::kTexSampleLodOffset: case I::kTexSampleBias: case I::kTexSampleProj: return call.sample_by_w();
+    case I::kTexFetch: return call.fetch();
+    case I::kTexSampleGrad: return call.grad();
+    case I::kTexGather: case I::kTexGatherR: case I::kTexGatherG: case I::kTexGatherB: case I::kTexGatherA: return call.gather();
+    default: break;
+  }
+  error(e.location, "the intrinsic '" + e.text + "' has no GLSL translation yet");
   return "0";
 }
 

@@ -77,7 +77,10 @@ class GlslWriter {
   std::string member(const Expr& e);
   std::string call(const Expr& e);
   std::string construct(const Expr& e);
-  std::string texture_call(const Expr& e, const std::string& name);
+  std::string texture_call(const Expr& e);
+  std::string with_hlsl_meaning(const Expr& e);
+  std::string reinterpreted(const Expr& e, const std::string& value);
+  std::string atomic(const Expr& e);
   std::string all_or_any(const std::string& name, const Type& t, const std::string& value);
 
   const EffectModel& model_;

@@ -47,7 +47,7 @@ void Analyzer::check_call(Expr& e) {
   std::string qualified;
   const std::vector<FunctionDecl*>* overloads = find_functions(e.text, &qualified);
   if (overloads && check_user_call(e, *overloads, qualified)) return;
-  if (is_intrinsic(e.text)) return check_intrinsic_call(e);
+  if (find_intrinsic(e.text)) return check_intrinsic_call(e);
   if (overloads)
     return diagnostics_.error(e.location, "no overload of '" + e.text + "' takes " + argument_list(e.operands));
   if (find_variable(e.text)) return diagnostics_.error(e.location, "'" + e.text + "' is not a function");
@@ -90,7 +90,7 @@ void Analyzer::check_intrinsic_call(Expr& e) {
     if (typing.writes[i]) require_lvalue(*e.operands[i], ("pass to '" + e.text + "' as an out argument").c_str());
     else if (!typing.parameters[i].is_void()) convert(e.operands[i], typing.parameters[i], "argument " + std::to_string(i + 1) + " of '" + e.text + "'");
   }
-  e.intrinsic = e.text;
+  e.intrinsic = typing.id;
   e.resolved = typing.result;
 }
 

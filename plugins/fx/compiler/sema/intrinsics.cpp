@@ -1,89 +1,11 @@
 #include "intrinsics.hpp"
 
-#include <map>
-
 #include "conversions.hpp"
 
 namespace pfx::fx {
 namespace {
 
-enum class Rule {
-  kFloatWise,    // float result, shape of the widest argument (sin, lerp, pow, saturate ...)
-  kNumberWise,   // like kFloatWise but integers stay integers (abs, min, max, clamp, mad)
-  kBoolWise,     // isnan, isinf: bool with the argument's shape
-  kIntWise,      // sign: int with the argument's shape
-  kUintWise,     // countbits, reversebits, firstbit*: uint with the argument's shape
-  kAsFloat, kAsInt, kAsUint,  // reinterpretation, same shape
-  kHalfToFloat, kFloatToHalf,
-  kScalarFloat,  // dot, length, distance, determinant
-  kCross, kTranspose, kMul, kAllAny,
-  kSinCos, kOutSecond,  // sincos(x, out s, out c); modf/frexp(x, out i)
-  kVoid,         // clip, barriers
-  kSample,       // tex*D*: the sampler's element type
-  kSize,         // tex*Dsize: int of the object's dimension
-  kGather,       // tex2Dgather*: four of the element's base
-  kStore,        // tex*Dstore: void
-  kAtomic,       // atomic*: int (or the storage's element base)
-};
-
-struct Entry {
-  Rule rule;
-  int min_arguments;
-  int max_arguments;
-};
-
-const std::map<std::string, Entry>& table() {
-  static const std::map<std::string, Entry> entries = [] {
-    std::map<std::string, Entry> t;
-    for (const char* n : {"acos", "asin", "atan", "cos", "cosh", "sin", "sinh", "tan", "tanh", "exp", "exp2", "log",
-                          "log2", "log10", "sqrt", "rsqrt", "rcp", "ceil", "floor", "frac", "round", "trunc",
-                          "saturate", "degrees", "radians", "ddx", "ddy", "ddx_coarse", "ddy_coarse", "ddx_fine",
-                          "ddy_fine", "fwidth", "normalize"})
-      t[n] = {Rule::kFloatWise, 1, 1};
-    for (const char* n : {"pow", "atan2", "fmod", "step", "ldexp", "reflect"}) t[n] = {Rule::kFloatWise, 2, 2};
-    for (const char* n : {"lerp", "smoothstep", "refract", "faceforward"}) t[n] = {Rule::kFloatWise, 3, 3};
-    t["abs"] = {Rule::kNumberWise, 1, 1};
-    t["min"] = t["max"] = {Rule::kNumberWise, 2, 2};
-    t["clamp"] = t["mad"] = {Rule::kNumberWise, 3, 3};
-    t["isnan"] = t["isinf"] = t["isfinite"] = {Rule::kBoolWise, 1, 1};
-    t["sign"] = {Rule::kIntWise, 1, 1};
-    for (const char* n : {"countbits", "reversebits", "firstbithigh", "firstbitlow"}) t[n] = {Rule::kUintWise, 1, 1};
-    t["asfloat"] = {Rule::kAsFloat, 1, 1};
-    t["asint"] = {Rule::kAsInt, 1, 1};
-    t["asuint"] = {Rule::kAsUint, 1, 1};
-    t["f16tof32"] = {Rule::kHalfToFloat, 1, 1};
-    t["f32tof16"] = {Rule::kFloatToHalf, 1, 1};
-    t["dot"] = t["distance"] = {Rule::kScalarFloat, 2, 2};
-    t["length"] = t["determinant"] = {Rule::kScalarFloat, 1, 1};
-    t["cross"] = {Rule::kCross, 2, 2};
-    t["transpose"] = {Rule::kTranspose, 1, 1};
-    t["mul"] = {Rule::kMul, 2, 2};
-    t["all"] = t["any"] = {Rule::kAllAny, 1, 1};
-    t["sincos"] = {Rule::kSinCos, 3, 3};
-    t["modf"] = t["frexp"] = {Rule::kOutSecond, 2, 2};
-    t["clip"] = {Rule::kVoid, 1, 1};
-    for (const char* n : {"barrier", "memoryBarrier", "groupMemoryBarrier", "GroupMemoryBarrierWithGroupSync",
-                          "AllMemoryBarrier", "GroupMemoryBarrier"})
-      t[n] = {Rule::kVoid, 0, 0};
-    for (const char* d : {"1D", "2D", "3D"}) {
-      std::string p = std::string("tex") + d;
-      t[p] = {Rule::kSample, 2, 3};
-      t[p + "lod"] = t[p + "bias"] = {Rule::kSample, 2, 3};
-      t[p + "fetch"] = {Rule::kSample, 2, 3};
-      t[p + "grad"] = {Rule::kSample, 4, 5};
-      t[p + "proj"] = {Rule::kSample, 2, 3};
-      t[p + "offset"] = t[p + "lodoffset"] = {Rule::kSample, 3, 3};
-      t[p + "size"] = {Rule::kSize, 1, 2};
-      t[p + "store"] = {Rule::kStore, 3, 3};
-    }
-    for (const char* g : {"", "R", "G", "B", "A"}) t[std::string("tex2Dgather") + g] = {Rule::kGather, 2, 3};
-    for (const char* a : {"atomicAdd", "atomicAnd", "atomicOr", "atomicXor", "atomicMin", "atomicMax", "atomicExchange"})
-      t[a] = {Rule::kAtomic, 2, 3};
-    t["atomicCompareExchange"] = {Rule::kAtomic, 3, 4};
-    return t;
-  }();
-  return entries;
-}
+using Rule = IntrinsicRule;
 
 BaseType floating(BaseType base) { return base == BaseType::kHalf || base == BaseType::kDouble ? base : BaseType::kFloat; }
 
@@ -116,13 +38,12 @@ Type mul_result(const Type& a, const Type& b, bool& ok) {
 
 }  // namespace
 
-bool is_intrinsic(const std::string& name) { return table().count(name) > 0; }
-
 bool type_intrinsic(const std::string& name, const std::vector<Type>& arguments, IntrinsicTyping& typing,
                     std::string& error) {
-  auto it = table().find(name);
-  if (it == table().end()) return error = "unknown intrinsic '" + name + "'", false;
-  const Entry& entry = it->second;
+  const IntrinsicInfo* found = find_intrinsic(name);
+  if (!found) return error = "unknown intrinsic '" + name + "'", false;
+  const IntrinsicInfo& entry = *found;
+  typing.id = entry.id;
   int count = static_cast<int>(arguments.size());
   if (count < entry.min_arguments || count > entry.max_arguments) {
     error = "'" + name + "' takes " + std::to_string(entry.min_arguments) +
@@ -158,7 +79,7 @@ bool type_intrinsic(const std::string& name, const std::vector<Type>& arguments,
     case Rule::kScalarFloat:
       if (!widest(arguments, w, error)) return false;
       typing.result = Type::scalar(floating(w.base));
-      if (name != "determinant") typing.parameters.assign(arguments.size(), w.with_base(floating(w.base)));
+      if (entry.id != Intrinsic::kDeterminant) typing.parameters.assign(arguments.size(), w.with_base(floating(w.base)));
       return true;
     case Rule::kCross:
       typing.result = Type::vector(BaseType::kFloat, 3);

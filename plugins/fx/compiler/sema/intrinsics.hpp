@@ -1,17 +1,17 @@
 #pragma once
-// The intrinsic functions FX shaders call (HLSL's and ReShade's), with the type each returns for
-// given argument types. What each one computes is the code generator's concern; here a call is
-// checked for its argument count and kinds, and typed.
+// Typing a call of an intrinsic (ast/intrinsic.hpp has the table): its argument count and kinds
+// are checked, and its result and parameter types given. What each one computes is the back
+// ends' concern.
 #include <string>
 #include <vector>
 
+#include "../ast/intrinsic.hpp"
 #include "../ast/semantic_type.hpp"
 
 namespace pfx::fx {
 
-bool is_intrinsic(const std::string& name);
-
 struct IntrinsicTyping {
+  Intrinsic id = Intrinsic::kNone;
   Type result;
   // The type each argument converts to (the same length as the call's arguments); an argument
   // left as void keeps its own type (objects, out parameters).
