@@ -195,9 +195,7 @@ bool FxPrograms::finish_build(const pfx::fx::CompiledEffect& compiled, int techn
       cache.store(p.cache_key, p.program);
       p.cache_key.clear();
     }
-    for (int u : g.uniforms)
-      p.uniform_locations.push_back(glGetUniformLocation(
-          p.program, model.global_names.at(model.uniforms[static_cast<std::size_t>(u)].decl).c_str()));
+    for (int u : g.uniforms) p.uniform_locations.push_back(glGetUniformLocation(p.program, g.uniform_names.at(u).c_str()));
     p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
     p.covers_target = covers_back_buffer(pass, g);
   }

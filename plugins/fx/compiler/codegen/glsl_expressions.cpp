@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <functional>
 
-#include "../model/glsl_identifiers.hpp"
+#include "glsl_identifiers.hpp"
 #include "glsl_writer.hpp"
 
 namespace pfx::fx {
@@ -75,8 +75,7 @@ std::string GlslWriter::take_temporaries(int indent) {
 }
 
 std::string GlslWriter::name_of(const VariableDecl& v) const {
-  auto it = model_.global_names.find(&v);
-  if (it != model_.global_names.end()) return it->second;
+  if (const std::string* global = names_.of(&v)) return *global;
   return glsl_safe("l_" + v.name);
 }
 
@@ -221,8 +220,8 @@ std::string GlslWriter::member(const Expr& e) {
 std::string GlslWriter::call(const Expr& e) {
   if (e.intrinsic != Intrinsic::kNone) return intrinsic(e);
   if (!e.function) return error(e.location, "call to unknown function '" + e.text + "'"), "0";
-  auto it = model_.function_names.find(e.function);
-  std::string text = (it != model_.function_names.end() ? it->second : glsl_safe("F_" + e.text)) + "(";
+  const std::string* name = names_.of(e.function);
+  std::string text = (name ? *name : glsl_safe("F_" + e.text)) + "(";
   // An out or inout argument of another type than its parameter (or one GLSL cannot write to, a
   // matrix swizzle) goes through a temporary of the parameter's type: converted in before the
   // call, converted back and stored after it, as HLSL does.

@@ -17,6 +17,7 @@
 //  - What HLSL writes back (an out argument of another type, a matrix swizzle assigned to) goes
 //    through temporaries the function declares at its top; a function's statics are the
 //    program's, started in main().
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,9 +33,10 @@ struct GeneratedPass {
   // model.storages[image_units[i]].
   std::vector<int> sampler_units;
   std::vector<int> image_units;
-  // Uniforms the program reads as live uniforms (indices into model.uniforms); each is a plain
-  // GLSL uniform named model.global_names[decl]. Those compiled in as constants are not here.
+  // Uniforms the program reads as live uniforms (indices into model.uniforms), each a plain GLSL
+  // uniform named uniform_names[index]. Those compiled in as constants are not here.
   std::vector<int> uniforms;
+  std::map<int, std::string> uniform_names;
   // The pixel shader may leave a pixel unwritten (discard or clip): a pass rendering to the back
   // buffer must then start from its contents.
   bool may_discard = false;

@@ -6,7 +6,7 @@
 #include <functional>
 #include <map>
 
-#include "../model/glsl_identifiers.hpp"
+#include "glsl_identifiers.hpp"
 #include "glsl_generator.hpp"
 #include "glsl_writer.hpp"
 
@@ -113,7 +113,7 @@ class ProgramBuilder {
  public:
   ProgramBuilder(const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics,
                  const UniformConstants* constants)
-      : model_(model), pass_(pass), diagnostics_(diagnostics), constants_(constants) {}
+      : model_(model), names_(model), pass_(pass), diagnostics_(diagnostics), constants_(constants) {}
 
   GeneratedPass build() {
     if (pass_.compute_shader) {
@@ -134,11 +134,11 @@ class ProgramBuilder {
   // The definition of a function the tree may name by its prototype.
   const FunctionDecl* definition(const FunctionDecl* f) const {
     if (f->body) return f;
-    auto name = model_.function_names.find(f);
+    const std::string* name = names_.of(f);
     for (const FunctionDecl* candidate : model_.functions) {
       if (!candidate->body || candidate->parameters.size() != f->parameters.size()) continue;
-      auto other = model_.function_names.find(candidate);
-      if (other == model_.function_names.end() || name == model_.function_names.end() || other->second != name->second) continue;
+      const std::string* other = names_.of(candidate);
+      if (!other || !name || *other != *name) continue;
       bool same = true;
       for (std::size_t i = 0; i < f->parameters.size(); ++i) same = same && f->parameters[i].resolved == candidate->parameters[i].resolved;
       if (same) return candidate;
@@ -166,12 +166,12 @@ class ProgramBuilder {
       }
       for (const FunctionDecl* called : uses.functions) pending.push_back(definition(called));
       for (const VariableDecl* v : uses.variables)
-        if (model_.global_names.count(v) && globals.insert(v).second) pending_globals.push_back(v);
+        if (model_.globals.count(v) && globals.insert(v).second) pending_globals.push_back(v);
     }
   }
 
   std::string stage(Stage which, const FunctionDecl& entry) {
-    GlslWriter w(model_, diagnostics_, which);
+    GlslWriter w(model_, names_, diagnostics_, which);
     std::set<const FunctionDecl*> reached;
     std::set<const VariableDecl*> globals;
     reach(&entry, reached, globals);
@@ -186,7 +186,7 @@ class ProgramBuilder {
       out += "layout(local_size_x = " + std::to_string(pass_.thread_group[0]) + ", local_size_y = " + std::to_string(pass_.thread_group[1]) +
              ", local_size_z = " + std::to_string(pass_.thread_group[2]) + ") in;\n";
     for (const StructDecl* s : model_.structs) {
-      out += "struct " + model_.struct_names.at(s) + " {\n";
+      out += "struct " + *names_.of(s) + " {\n";
       for (const VariableDecl& field : s->fields)
         out += "  " + w.type(field.resolved) + " " + glsl_safe("m_" + field.name) + w.array_suffix(field.resolved) + ";\n";
       out += "};\n";
@@ -207,7 +207,7 @@ class ProgramBuilder {
     for (std::size_t index = 0; index < model_.uniforms.size(); ++index) {
       const VariableDecl* decl = model_.uniforms[index].decl;
       if (!globals.count(decl)) continue;
-      const std::string name = model_.global_names.at(decl) + w.array_suffix(decl->resolved);
+      const std::string name = names_.global(decl) + w.array_suffix(decl->resolved);
       const std::vector<double>* value = constants_ && index < constants_->size() ? &(*constants_)[index] : nullptr;
       if (value && !value->empty() && can_be_constant(decl->resolved, *value)) {
         out += "const " + w.type(decl->resolved) + " " + name + " = " + constant_initialiser(w, decl->resolved, *value) + ";\n";
@@ -215,12 +215,13 @@ class ProgramBuilder {
       }
       out += "uniform " + w.type(decl->resolved) + " " + name + ";\n";
       result_.uniforms.push_back(static_cast<int>(index));
+      result_.uniform_names[static_cast<int>(index)] = names_.global(decl);
     }
     for (std::size_t i = 0; i < model_.samplers.size(); ++i) {
       const SamplerInfo& s = model_.samplers[i];
       if (!globals.count(s.decl)) continue;
       out += "layout(binding = " + std::to_string(unit(result_.sampler_units, static_cast<int>(i))) + ") uniform " + w.type(s.decl->resolved) +
-             " " + model_.global_names.at(s.decl) + ";\n";
+             " " + names_.global(s.decl) + ";\n";
     }
     for (std::size_t i = 0; i < model_.storages.size(); ++i) {
       const StorageInfo& s = model_.storages[i];
@@ -229,15 +230,15 @@ class ProgramBuilder {
       Type image = s.decl->resolved;
       image.element_base = integer_class(t.format) == 1 ? BaseType::kInt : integer_class(t.format) == 2 ? BaseType::kUint : BaseType::kFloat;
       out += "layout(binding = " + std::to_string(unit(result_.image_units, static_cast<int>(i))) + ", " + glsl_image_format(t.format) +
-             ") uniform coherent " + w.type(image) + " " + model_.global_names.at(s.decl) + ";\n";
+             ") uniform coherent " + w.type(image) + " " + names_.global(s.decl) + ";\n";
     }
     for (const VariableDecl* v : model_.shared_globals)
       if (globals.count(v)) {
         if (which != Stage::kCompute) diagnostics_.error(v->location, "groupshared '" + v->name + "' is only allowed in a compute shader");
-        out += "shared " + w.type(v->resolved) + " " + model_.global_names.at(v) + w.array_suffix(v->resolved) + ";\n";
+        out += "shared " + w.type(v->resolved) + " " + names_.global(v) + w.array_suffix(v->resolved) + ";\n";
       }
     for (const VariableDecl* v : model_.static_globals)
-      if (globals.count(v)) out += w.type(v->resolved) + " " + model_.global_names.at(v) + w.array_suffix(v->resolved) + ";\n";
+      if (globals.count(v)) out += w.type(v->resolved) + " " + names_.global(v) + w.array_suffix(v->resolved) + ";\n";
     return out;
   }
 
@@ -359,7 +360,7 @@ class ProgramBuilder {
       std::string value;
       if (v->initializer) value = v->initializer->kind == ExprKind::kInitList ? w.init_list(*v->initializer, v->resolved) : w.expr(*v->initializer);
       else value = zero(w, v->resolved);
-      out += "  " + model_.global_names.at(v) + " = " + value + ";\n";
+      out += "  " + names_.global(v) + " = " + value + ";\n";
     }
     std::string arguments;
     for (std::size_t i = 0; i < f.parameters.size(); ++i) {
@@ -368,8 +369,8 @@ class ProgramBuilder {
       arguments += (i ? ", " : "") + std::string("p") + std::to_string(i);
     }
     for (const Slot& s : entry_slots(f, true)) out += "  " + s.access + " = " + source(w, which, s) + ";\n";
-    auto name = model_.function_names.find(&f);
-    std::string call = (name != model_.function_names.end() ? name->second : f.name) + "(" + arguments + ")";
+    const std::string* name = names_.of(&f);
+    std::string call = (name ? *name : f.name) + "(" + arguments + ")";
     out += f.resolved.is_void() ? "  " + call + ";\n" : "  " + w.type(f.resolved) + " r = " + call + ";\n";
     for (const Slot& s : entry_slots(f, false)) out += sink(w, which, s);
     // Temporaries the statics' initialisers needed come first.
@@ -392,6 +393,7 @@ class ProgramBuilder {
   }
 
   const EffectModel& model_;
+  const GlslNames names_;
   const PassInfo& pass_;
   Diagnostics& diagnostics_;
   const UniformConstants* constants_;  // null: every uniform live

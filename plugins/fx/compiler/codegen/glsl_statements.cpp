@@ -46,7 +46,7 @@ void GlslWriter::statement(const Stmt& s, int indent, std::string& out) {
     case StmtKind::kExpression: out += p + expr(*s.expression) + ";\n"; return;
     case StmtKind::kDeclaration:
       for (const VariableDecl& v : s.variables)
-        if (!model_.global_names.count(&v)) declaration(v, indent, out);  // a function's statics are the program's
+        if (!model_.globals.count(&v)) declaration(v, indent, out);  // a function's statics are the program's
       return;
     case StmtKind::kBlock:
       out += p + "{\n";
@@ -107,8 +107,8 @@ void GlslWriter::statement(const Stmt& s, int indent, std::string& out) {
 
 void GlslWriter::function(const FunctionDecl& f, std::string& out) {
   line_directive(f.location, out);
-  auto it = model_.function_names.find(&f);
-  out += type(f.resolved) + " " + (it != model_.function_names.end() ? it->second : f.name) + "(";
+  const std::string* name = names_.of(&f);
+  out += type(f.resolved) + " " + (name ? *name : f.name) + "(";
   for (std::size_t i = 0; i < f.parameters.size(); ++i) {
     const VariableDecl& p = f.parameters[i];
     bool in = (p.qualifiers & kQualIn) != 0, o = (p.qualifiers & kQualOut) != 0;

@@ -36,8 +36,8 @@ std::string GlslWriter::type(const Type& t) const {
   switch (t.base) {
     case BaseType::kVoid: return "void";
     case BaseType::kStruct: {
-      auto it = t.structure ? model_.struct_names.find(t.structure) : model_.struct_names.end();
-      return it != model_.struct_names.end() ? it->second : "void";
+      const std::string* name = t.structure ? names_.of(t.structure) : nullptr;
+      return name ? *name : "void";
     }
     case BaseType::kSampler: return std::string(object_prefix(t.element_base)) + "sampler" + std::to_string(t.dimension) + "D";
     case BaseType::kStorage: return std::string(object_prefix(t.element_base)) + "image" + std::to_string(t.dimension) + "D";

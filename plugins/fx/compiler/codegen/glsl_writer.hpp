@@ -10,6 +10,7 @@
 
 #include "../diagnostics.hpp"
 #include "../model/effect_model.hpp"
+#include "glsl_names.hpp"
 
 namespace pfx::fx {
 
@@ -23,8 +24,8 @@ inline Type row_of(const Type& matrix) { return Type::vector(matrix.base, matrix
 
 class GlslWriter {
  public:
-  GlslWriter(const EffectModel& model, Diagnostics& diagnostics, Stage stage)
-      : model_(model), diagnostics_(diagnostics), stage_(stage) {}
+  GlslWriter(const EffectModel& model, const GlslNames& names, Diagnostics& diagnostics, Stage stage)
+      : model_(model), names_(names), diagnostics_(diagnostics), stage_(stage) {}
 
   // Types (glsl_types.cpp). `type` has no array dimensions; `full_type` adds them ("float[3]").
   std::string type(const Type& t) const;
@@ -67,6 +68,7 @@ class GlslWriter {
   bool uses_discard = false;
   Stage stage() const { return stage_; }
   const EffectModel& model() const { return model_; }
+  const GlslNames& names() const { return names_; }
   void error(SourceLocation where, const std::string& message) { diagnostics_.error(where, message); }
 
  private:
@@ -84,6 +86,7 @@ class GlslWriter {
   std::string all_or_any(const std::string& name, const Type& t, const std::string& value);
 
   const EffectModel& model_;
+  const GlslNames& names_;
   Diagnostics& diagnostics_;
   Stage stage_;
   std::string temporary_declarations_;

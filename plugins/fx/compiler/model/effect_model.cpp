@@ -4,7 +4,6 @@
 #include <set>
 
 #include "../sema/constant_eval.hpp"
-#include "glsl_identifiers.hpp"
 
 namespace pfx::fx {
 namespace {
@@ -134,16 +133,13 @@ class ModelBuilder {
         case DeclKind::kNamespace: walk(d->members, prefix + d->namespace_name + "::"); break;
         case DeclKind::kStruct:
           m_.structs.push_back(d->structure.get());
-          m_.struct_names[d->structure.get()] = unique(glsl_safe("S_" + prefix + d->structure->name));
+          m_.declared.push_back({nullptr, d->structure.get(), nullptr, prefix + d->structure->name});
           break;
         case DeclKind::kFunction: {
           const FunctionDecl* f = d->function.get();
           m_.functions.push_back(f);
-          // Overloads and prototypes share a name: GLSL resolves overloads by parameter types too.
           std::string qualified = prefix + f->name;
-          auto it = function_names_.find(qualified);
-          if (it == function_names_.end()) it = function_names_.emplace(qualified, unique(glsl_safe("F_" + qualified))).first;
-          m_.function_names[f] = it->second;
+          m_.declared.push_back({nullptr, nullptr, f, qualified});
           if (f->body) function_statics(*f->body, qualified + "_");
           break;
         }
@@ -162,16 +158,11 @@ class ModelBuilder {
   }
 
  private:
-  std::string unique(std::string name) {
-    std::string candidate = name;
-    for (int n = 2; !used_.insert(candidate).second; ++n) candidate = name + "_" + std::to_string(n);
-    return candidate;
-  }
-
   void variable(const VariableDecl& v, const std::string& prefix) {
     std::string qualified = prefix + v.name;
     const Type& t = v.resolved;
-    m_.global_names[&v] = unique(glsl_safe("G_" + qualified));
+    m_.declared.push_back({&v, nullptr, nullptr, qualified});
+    m_.globals.insert(&v);
     if (t.is_array() && t.base >= BaseType::kTexture) {
       diagnostics_.error(v.location, "arrays of textures, samplers or storages are not supported");
       return;
@@ -196,7 +187,7 @@ class ModelBuilder {
 
   // A function's `static` variable keeps its value from one call to the next (a `static const`
   // cannot change, so it stays a local): it becomes a static of the program, named after the
-  // function and started with the others, so its initialiser may use only globals and constants.
+  // function (prefix) and started with the others, so its initialiser may use only globals and constants.
   void function_statics(const Stmt& s, const std::string& prefix) {
     if (s.kind == StmtKind::kDeclaration)
       for (const VariableDecl& v : s.variables) {
@@ -204,7 +195,8 @@ class ModelBuilder {
         if (const VariableDecl* local = v.initializer ? first_local(*v.initializer) : nullptr)
           diagnostics_.error(v.location, "the initialiser of the static '" + v.name + "' uses '" + local->name +
                                              "', a local of the function; a static starts before any call, so it may use only globals and literals");
-        m_.global_names[&v] = unique(glsl_safe("G_" + prefix + v.name));
+        m_.declared.push_back({&v, nullptr, nullptr, prefix + v.name});
+        m_.globals.insert(&v);
         m_.static_globals.push_back(&v);
       }
     for (const Stmt* child : {s.init.get(), s.body.get(), s.else_body.get()})
@@ -215,7 +207,7 @@ class ModelBuilder {
   }
 
   const VariableDecl* first_local(const Expr& e) const {
-    if (e.variable && !m_.global_names.count(e.variable)) return e.variable;
+    if (e.variable && !m_.globals.count(e.variable)) return e.variable;
     for (const ExprPtr& operand : e.operands)
       if (const VariableDecl* local = first_local(*operand)) return local;
     return nullptr;
@@ -400,8 +392,6 @@ class ModelBuilder {
 
   EffectModel& m_;
   Diagnostics& diagnostics_;
-  std::set<std::string> used_;
-  std::map<std::string, std::string> function_names_;
   std::vector<std::pair<const VariableDecl*, int>> samplers_pending_, storages_pending_;
   std::vector<const TechniqueDecl*> techniques_;
 };

@@ -4,6 +4,7 @@
 // uniforms with their annotations and initial values, techniques with the states of each pass,
 // and the GLSL-safe name of every global, struct and function. No GL here.
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -125,10 +126,18 @@ struct EffectModel {
   std::vector<TechniqueInfo> techniques;
 
   std::map<const VariableDecl*, int> texture_of, sampler_of, storage_of, uniform_of;
-  // GLSL names: every global variable, struct and function, unique and clear of GLSL's words.
-  std::map<const VariableDecl*, std::string> global_names;
-  std::map<const StructDecl*, std::string> struct_names;
-  std::map<const FunctionDecl*, std::string> function_names;
+  // Every global variable (a function's statics among them), struct and function with its FX
+  // name qualified by its namespaces ("ReShade::BackBuffer"; a function's static "Function_name"),
+  // in the order the file declares them; overloads and prototypes share a name. Back ends make
+  // their own identifiers from these (codegen/glsl_names for GLSL).
+  struct Declared {
+    const VariableDecl* variable = nullptr;
+    const StructDecl* structure = nullptr;
+    const FunctionDecl* function = nullptr;
+    std::string qualified;
+  };
+  std::vector<Declared> declared;
+  std::set<const VariableDecl*> globals;  // every global variable, a function's statics too
   std::vector<const StructDecl*> structs;          // in source order
   std::vector<const FunctionDecl*> functions;      // in source order (prototypes too)
   std::vector<const VariableDecl*> static_globals;  // static variables and constants, in source order
