@@ -1,6 +1,6 @@
 // A developer's tool: runs the FX front end over the files named on the command line (include
 // folders with -I) and prints each file's diagnostics and a count of those that parse; --glsl
-// also generates every pass of every technique and prints the GLSL. Used by hand on shader
+// also generates every pass of every technique and prints the GLSL (--vulkan: its Vulkan dialect). Used by hand on shader
 // collections that must not be committed here, and by the golden tests (golden/check_golden.py).
 #include <cstdio>
 #include <string>
@@ -14,10 +14,12 @@ int main(int argc, char** argv) {
   pfx::fx::FrontEndOptions options;
   std::vector<std::string> files;
   bool dump = false, glsl = false;
+  pfx::fx::GlslDialect dialect = pfx::fx::GlslDialect::kOpenGL;
   for (int i = 1; i < argc; ++i) {
     std::string argument = argv[i];
     if (argument == "--dump") dump = true;
     else if (argument == "--glsl") glsl = true;
+    else if (argument == "--vulkan") dialect = pfx::fx::GlslDialect::kVulkan;
     else if (argument.rfind("-I", 0) == 0) options.preprocessor.include_folders.push_back(argument.substr(2));
     else files.push_back(argument);
   }
@@ -28,7 +30,7 @@ int main(int argc, char** argv) {
       pfx::fx::EffectModel model = pfx::fx::build_effect_model(result->unit, result->diagnostics);
       for (const auto& technique : model.techniques)
         for (const auto& pass : technique.passes) {
-          pfx::fx::GeneratedPass generated = pfx::fx::generate_pass(result->unit, model, pass, result->diagnostics);
+          pfx::fx::GeneratedPass generated = pfx::fx::generate_pass(result->unit, model, pass, result->diagnostics, nullptr, dialect);
           std::printf("// technique %s pass %s\n%s%s%s", technique.name.c_str(), pass.name.c_str(), generated.vertex.c_str(),
                       generated.fragment.c_str(), generated.compute.c_str());
         }

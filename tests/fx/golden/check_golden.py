@@ -6,7 +6,8 @@ usage: check_golden.py FX_PARSE_CHECK [--update] [FILE.fx ...]
 
 For each conformance file (every file of tests/fx/conformance when none is named), runs
 `FX_PARSE_CHECK --glsl` over it and compares what it prints (every pass of every technique, with
-live uniforms) with tests/fx/golden/NAME.glsl. A difference fails with a unified diff: a change
+live uniforms) with tests/fx/golden/NAME.glsl, and the same in the Vulkan dialect (the GLSL that
+becomes SPIR-V: `--glsl --vulkan`) with NAME.vulkan.glsl. A difference fails with a unified diff: a change
 to the code generator shows up as a diff of its output, to be read before it is accepted.
 
 --stale fails when a golden file has no conformance file. --update writes the files instead (and removes those of conformance files that are gone): run it
@@ -25,10 +26,14 @@ CONFORMANCE = os.path.join(HERE, "..", "conformance")
 INCLUDE = os.path.join(HERE, "..", "..", "..", "plugins", "fx", "include")
 
 
-def generated(tool, fx):
+# The kinds of output kept: the golden file's suffix and the tool's options.
+KINDS = [(".glsl", ["--glsl"]), (".vulkan.glsl", ["--glsl", "--vulkan"])]
+
+
+def generated(tool, fx, options):
     # Run from the conformance folder with the file's bare name, so the output names no path of
     # this machine.
-    result = subprocess.run([tool, "--glsl", "-I" + os.path.abspath(INCLUDE), os.path.basename(fx)],
+    result = subprocess.run([tool] + options + ["-I" + os.path.abspath(INCLUDE), os.path.basename(fx)],
                             cwd=os.path.dirname(os.path.abspath(fx)), capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit("FAIL: %s exited with %d: %s" % (tool, result.returncode, result.stderr))
@@ -43,19 +48,19 @@ def main(argv):
     update = "--update" in argv[2:]
     named = [a for a in argv[2:] if a not in ("--update", "--stale")]
     files = named or sorted(glob.glob(os.path.join(CONFORMANCE, "*.fx")))
-    wanted = {os.path.splitext(os.path.basename(f))[0] for f in files}
-    stale = [g for g in sorted(glob.glob(os.path.join(HERE, "*.glsl"))) if os.path.splitext(os.path.basename(g))[0] not in wanted]
+    wanted = {os.path.splitext(os.path.basename(f))[0] + suffix for f in files for suffix, _ in KINDS}
+    stale = [g for g in sorted(glob.glob(os.path.join(HERE, "*.glsl"))) if os.path.basename(g) not in wanted]
     if "--stale" in argv[2:]:
         if stale:
             print("FAIL: golden files without a conformance file: %s (run %s %s --update)" % (stale, argv[0], tool))
             return 1
-        print("ok: every one of %d golden files has its conformance file" % len(files))
+        print("ok: every golden file has its conformance file (%d files)" % len(files))
         return 0
     failed = []
-    for fx in files:
-        name = os.path.splitext(os.path.basename(fx))[0]
-        golden = os.path.join(HERE, name + ".glsl")
-        text = generated(tool, fx)
+    for fx, (suffix, options) in [(f, k) for f in files for k in KINDS]:
+        name = os.path.splitext(os.path.basename(fx))[0] + suffix
+        golden = os.path.join(HERE, name)
+        text = generated(tool, fx, options)
         if update:
             with open(golden + ".tmp", "w") as f:
                 f.write(text)
@@ -77,11 +82,11 @@ def main(argv):
         for path in stale:
             os.remove(path)
     if update:
-        print("ok: wrote the GLSL of %d files into %s" % (len(files), HERE))
+        print("ok: wrote the GLSL of %d files, both dialects, into %s" % (len(files), HERE))
         return 0
     if failed:
         return 1
-    print("ok: the GLSL of %d files is as kept in %s" % (len(files), HERE))
+    print("ok: the GLSL of %d files, both dialects, is as kept in %s" % (len(files), HERE))
     return 0
 
 

@@ -41,9 +41,19 @@ struct GeneratedPass {
   // buffer must then start from its contents.
   bool may_discard = false;
   // Interface: the generated program reads the height of its render target from this uniform to
-  // flip SV_Position (absent from programs that do not use it).
+  // flip SV_Position (absent from programs that do not use it, and from the Vulkan dialect).
   static constexpr const char* kTargetHeightUniform = "pfx_target_height";
 };
+
+// The GLSL the generator writes: 4.50 for the GL runtime, or Vulkan GLSL 4.50 (the
+// GL_KHR_vulkan_glsl rules) for SPIR-V (spirv_module.hpp). A Vulkan image keeps its top row first
+// and a Vulkan framebuffer's origin is its top-left, as FX's are, so the row flips of the GL
+// dialect fall away there, and the vertex position's y is negated (Vulkan's clip space points y
+// down). Uniforms live in one std140 block and samplers and storages take the bindings below.
+enum class GlslDialect { kOpenGL, kVulkan };
+constexpr int kVulkanUniformBinding = 0;        // descriptor set 0
+constexpr int kVulkanFirstSamplerBinding = 1;   // + the sampler's unit (GeneratedPass::sampler_units)
+constexpr int kVulkanFirstStorageBinding = 17;  // + the storage's unit; at most 16 samplers a pass
 
 // Uniform values compiled into a program as constants, per model.uniforms index (the components
 // as the runtime holds them: a matrix row by row, arrays element by element); an empty entry, or
@@ -60,6 +70,7 @@ bool can_be_constant(const Type& t, const std::vector<double>& values);
 // Errors (what GLSL cannot express) go to `diagnostics` with the FX location; the result is then
 // incomplete.
 GeneratedPass generate_pass(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass,
-                            Diagnostics& diagnostics, const UniformConstants* constants = nullptr);
+                            Diagnostics& diagnostics, const UniformConstants* constants = nullptr,
+                            GlslDialect dialect = GlslDialect::kOpenGL);
 
 }  // namespace pfx::fx

@@ -152,8 +152,9 @@ class TextureCall {
     std::string text = !o.empty()
                            ? "textureGatherOffset(" + s + ", " + at + ", " + o + ", " + std::to_string(comp) + ")"
                            : "textureGather(" + s + ", " + at + ", " + std::to_string(comp) + ")";
-    // GL gathers (i0,j1) (i1,j1) (i1,j0) (i0,j0) with j1 the upper row in GL, the lower in FX.
-    return "(" + text + ").xyzw.wzyx";
+    // GL gathers (i0,j1) (i1,j1) (i1,j0) (i0,j0) with j1 the upper row in GL, the lower in FX
+    // (and in Vulkan, whose rows run as FX's).
+    return writer_.vulkan() ? text : "(" + text + ").xyzw.wzyx";
   }
 
  private:
@@ -170,7 +171,7 @@ class TextureCall {
     for (std::size_t i = 0; i < static_cast<std::size_t>(d_); ++i)  // a scalar is splat
       o.push_back(static_cast<long long>(folded->components[std::min(i, folded->components.size() - 1)]));
     if (d_ == 1) return std::to_string(o[0]);
-    return ivec_ + "(" + std::to_string(o[0]) + ", " + std::to_string(-o[1]) +
+    return ivec_ + "(" + std::to_string(o[0]) + ", " + std::to_string(writer_.vulkan() ? o[1] : -o[1]) +
            (d_ == 3 ? ", " + std::to_string(o[2]) : std::string()) + ")";
   }
 
@@ -179,7 +180,7 @@ class TextureCall {
     const std::string size = "textureSize(" + a_[0] + ", " + level + ")";
     if (d_ == 1) return "(" + coordinate + " + float(" + a_[operand] + ") / float(" + size + "))";
     const std::string v = vec_ + "(" + a_[operand] + ")";
-    return "(" + coordinate + " + " + vec_ + "(" + v + ".x, -(" + v + ".y)" +
+    return "(" + coordinate + " + " + vec_ + "(" + v + ".x, " + (writer_.vulkan() ? "" : "-") + "(" + v + ".y)" +
            (d_ == 3 ? ", " + v + ".z" : std::string()) + ") / " + vec_ + "(" + size + "))";
   }
 
@@ -257,10 +258,10 @@ std::string GlslWriter::with_hlsl_meaning(const Expr& e) {
   for (const ExprPtr& operand : e.operands) a.push_back(expr(*operand));
   auto type_of = [&](std::size_t i) -> const Type& { return e.operands[i]->resolved; };
   switch (e.intrinsic) {
-    // FX's y grows downwards, GL's upwards.
-    case I::kDdy: return "(-dFdy(" + a[0] + "))";
-    case I::kDdyCoarse: return "(-dFdyCoarse(" + a[0] + "))";
-    case I::kDdyFine: return "(-dFdyFine(" + a[0] + "))";
+    // FX's y grows downwards, GL's upwards (Vulkan's downwards).
+    case I::kDdy: return "(" + std::string(vulkan() ? "" : "-") + "dFdy(" + a[0] + "))";
+    case I::kDdyCoarse: return "(" + std::string(vulkan() ? "" : "-") + "dFdyCoarse(" + a[0] + "))";
+    case I::kDdyFine: return "(" + std::string(vulkan() ? "" : "-") + "dFdyFine(" + a[0] + "))";
     // HLSL's ldexp takes a float exponent; GLSL's an int one.
     case I::kLdexp: return "(" + a[0] + " * exp2(" + a[1] + "))";
     // refract's index of refraction is a scalar, whatever width the analysis gave it.

@@ -30,10 +30,18 @@ const std::initializer_list<const char*> kInts = {"int", "ivec2", "ivec3", "ivec
 
 }  // namespace
 
-std::string prelude(const std::set<std::string>& helpers) {
+std::string prelude(const std::set<std::string>& helpers, GlslDialect dialect) {
   std::string out;
   auto wants = [&](const char* name) { return helpers.count(name) > 0; };
-  if (wants("flip")) {
+  if (wants("flip") && dialect == GlslDialect::kVulkan) {
+    // Vulkan's rows run as FX's: the same calls, which the compiler folds away.
+    out += "vec2 pfx_flip(vec2 c) { return c; }\n"
+           "vec3 pfx_flip(vec3 c) { return c; }\n"
+           "ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }\n"
+           "ivec3 pfx_flip_texel(ivec3 c, int h) { return c; }\n"
+           "vec2 pfx_flip_offset(vec2 o) { return o; }\n"
+           "vec3 pfx_flip_offset(vec3 o) { return o; }\n";
+  } else if (wants("flip")) {
     // Texture rows: GL counts from the bottom, FX from the top.
     out += "vec2 pfx_flip(vec2 c) { return vec2(c.x, 1.0 - c.y); }\n"
            "vec3 pfx_flip(vec3 c) { return vec3(c.x, 1.0 - c.y, c.z); }\n"

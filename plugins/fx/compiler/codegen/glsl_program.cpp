@@ -112,8 +112,8 @@ void collect(const Stmt& s, Uses& uses) {
 class ProgramBuilder {
  public:
   ProgramBuilder(const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics,
-                 const UniformConstants* constants)
-      : model_(model), names_(model), pass_(pass), diagnostics_(diagnostics), constants_(constants) {}
+                 const UniformConstants* constants, GlslDialect dialect)
+      : model_(model), names_(model), pass_(pass), diagnostics_(diagnostics), constants_(constants), dialect_(dialect) {}
 
   GeneratedPass build() {
     if (pass_.compute_shader) {
@@ -171,7 +171,7 @@ class ProgramBuilder {
   }
 
   std::string stage(Stage which, const FunctionDecl& entry) {
-    GlslWriter w(model_, names_, diagnostics_, which);
+    GlslWriter w(model_, names_, diagnostics_, which, dialect_);
     std::set<const FunctionDecl*> reached;
     std::set<const VariableDecl*> globals;
     reach(&entry, reached, globals);
@@ -193,7 +193,7 @@ class ProgramBuilder {
     }
     out += declarations(w, which, globals);
     out += interface(which);
-    out += prelude(w.helpers);
+    out += prelude(w.helpers, dialect_);
     out += functions;
     out += main;
     if (which == Stage::kPixel) result_.may_discard = result_.may_discard || w.uses_discard;
@@ -201,7 +201,7 @@ class ProgramBuilder {
   }
 
   std::string declarations(GlslWriter& w, Stage which, const std::set<const VariableDecl*>& globals) {
-    std::string out;
+    std::string out, block;  // block: Vulkan's uniforms, which live in a uniform block
     // In the model's order, never a pointer's: the same source gives the same GLSL on every run
     // (the program cache's key).
     for (std::size_t index = 0; index < model_.uniforms.size(); ++index) {
@@ -213,14 +213,15 @@ class ProgramBuilder {
         out += "const " + w.type(decl->resolved) + " " + name + " = " + constant_initialiser(w, decl->resolved, *value) + ";\n";
         continue;
       }
-      out += "uniform " + w.type(decl->resolved) + " " + name + ";\n";
+      if (w.vulkan()) block += "  " + w.type(decl->resolved) + " " + name + ";\n";
+      else out += "uniform " + w.type(decl->resolved) + " " + name + ";\n";
       result_.uniforms.push_back(static_cast<int>(index));
       result_.uniform_names[static_cast<int>(index)] = names_.global(decl);
     }
     for (std::size_t i = 0; i < model_.samplers.size(); ++i) {
       const SamplerInfo& s = model_.samplers[i];
       if (!globals.count(s.decl)) continue;
-      out += "layout(binding = " + std::to_string(unit(result_.sampler_units, static_cast<int>(i))) + ") uniform " + w.type(s.decl->resolved) +
+      out += binding(unit(result_.sampler_units, static_cast<int>(i)), kVulkanFirstSamplerBinding) + ") uniform " + w.type(s.decl->resolved) +
              " " + names_.global(s.decl) + ";\n";
     }
     for (std::size_t i = 0; i < model_.storages.size(); ++i) {
@@ -229,7 +230,7 @@ class ProgramBuilder {
       const TextureInfo& t = model_.textures[static_cast<std::size_t>(s.texture)];
       Type image = s.decl->resolved;
       image.element_base = integer_class(t.format) == 1 ? BaseType::kInt : integer_class(t.format) == 2 ? BaseType::kUint : BaseType::kFloat;
-      out += "layout(binding = " + std::to_string(unit(result_.image_units, static_cast<int>(i))) + ", " + glsl_image_format(t.format) +
+      out += binding(unit(result_.image_units, static_cast<int>(i)), kVulkanFirstStorageBinding) + ", " + glsl_image_format(t.format) +
              ") uniform coherent " + w.type(image) + " " + names_.global(s.decl) + ";\n";
     }
     for (const VariableDecl* v : model_.shared_globals)
@@ -239,7 +240,15 @@ class ProgramBuilder {
       }
     for (const VariableDecl* v : model_.static_globals)
       if (globals.count(v)) out += w.type(v->resolved) + " " + names_.global(v) + w.array_suffix(v->resolved) + ";\n";
+    if (!block.empty())
+      out += "layout(set = 0, binding = " + std::to_string(kVulkanUniformBinding) + ", std140) uniform pfx_uniforms {\n" + block + "};\n";
     return out;
+  }
+
+  // "layout(binding = N" for the GL unit; in Vulkan, set 0 and the unit after `first`.
+  std::string binding(int unit, int first) const {
+    if (dialect_ == GlslDialect::kVulkan) return "layout(set = 0, binding = " + std::to_string(first + unit);
+    return "layout(binding = " + std::to_string(unit);
   }
 
   static int unit(std::vector<int>& units, int index) {
@@ -272,7 +281,7 @@ class ProgramBuilder {
                " pfx_v_" + semantic + ";\n";
       }
     if (which == Stage::kPixel) {
-      out += std::string("uniform float ") + GeneratedPass::kTargetHeightUniform + ";\n";
+      if (dialect_ == GlslDialect::kOpenGL) out += std::string("uniform float ") + GeneratedPass::kTargetHeightUniform + ";\n";
       int targets = std::max(1, pass_.render_target_count);
       for (int i = 0; i < targets; ++i) {
         int texture = pass_.render_target_count > 0 ? pass_.render_targets[i] : -1;
@@ -289,8 +298,8 @@ class ProgramBuilder {
     const std::string& sem = s.semantic;
     Type u = Type::scalar(BaseType::kUint), u3 = Type::vector(BaseType::kUint, 3);
     if (which == Stage::kVertex) {
-      if (sem == "SV_VERTEXID" || sem == "VERTEXID0") return w.cast("uint(gl_VertexID)", u, s.type);
-      if (sem == "SV_INSTANCEID") return w.cast("uint(gl_InstanceID)", u, s.type);
+      if (sem == "SV_VERTEXID" || sem == "VERTEXID0") return w.cast(w.vulkan() ? "uint(gl_VertexIndex)" : "uint(gl_VertexID)", u, s.type);
+      if (sem == "SV_INSTANCEID") return w.cast(w.vulkan() ? "uint(gl_InstanceIndex)" : "uint(gl_InstanceID)", u, s.type);
       return w.cast("0", Type::scalar(BaseType::kInt), s.type);  // no vertex buffers in a post effect
     }
     if (which == Stage::kCompute) {
@@ -302,9 +311,9 @@ class ProgramBuilder {
       return w.cast("0", Type::scalar(BaseType::kInt), s.type);
     }
     if (is_position(sem)) {
-      // FX's pixel rows count from the top of the target.
-      return w.cast(std::string("vec4(gl_FragCoord.x, ") + GeneratedPass::kTargetHeightUniform + " - gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w)",
-                    Type::vector(BaseType::kFloat, 4), s.type);
+      // FX's pixel rows count from the top of the target, as Vulkan's do and GL's do not.
+      std::string y = w.vulkan() ? "gl_FragCoord.y" : std::string(GeneratedPass::kTargetHeightUniform) + " - gl_FragCoord.y";
+      return w.cast("vec4(gl_FragCoord.x, " + y + ", gl_FragCoord.z, 1.0 / gl_FragCoord.w)", Type::vector(BaseType::kFloat, 4), s.type);
     }
     if (sem == "SV_ISFRONTFACE") return w.cast("gl_FrontFacing", Type::scalar(BaseType::kBool), s.type);
     auto it = varyings_.find(sem);
@@ -326,7 +335,10 @@ class ProgramBuilder {
   std::string sink(GlslWriter& w, Stage which, const Slot& s) {
     const std::string& sem = s.semantic;
     if (which == Stage::kVertex) {
-      if (is_position(sem)) return "  gl_Position = " + padded(w, s.access, s.type, BaseType::kFloat) + ";\n";
+      if (is_position(sem)) {
+        std::string out = "  gl_Position = " + padded(w, s.access, s.type, BaseType::kFloat) + ";\n";
+        return w.vulkan() ? out + "  gl_Position.y = -gl_Position.y;\n" : out;  // Vulkan's clip space points y down
+      }
       auto it = varyings_.find(sem);
       if (it == varyings_.end()) return "";  // nothing reads it
       BaseType base = it->second == BaseType::kBool ? BaseType::kInt : it->second;
@@ -397,6 +409,7 @@ class ProgramBuilder {
   const PassInfo& pass_;
   Diagnostics& diagnostics_;
   const UniformConstants* constants_;  // null: every uniform live
+  const GlslDialect dialect_;
   std::map<std::string, BaseType> varyings_;
   GeneratedPass result_;
 };
@@ -404,9 +417,9 @@ class ProgramBuilder {
 }  // namespace
 
 GeneratedPass generate_pass(const TranslationUnit& unit, const EffectModel& model, const PassInfo& pass, Diagnostics& diagnostics,
-                            const UniformConstants* constants) {
+                            const UniformConstants* constants, GlslDialect dialect) {
   (void)unit;  // the model points into it; the signature says what the result depends on
-  return ProgramBuilder(model, pass, diagnostics, constants).build();
+  return ProgramBuilder(model, pass, diagnostics, constants, dialect).build();
 }
 
 }  // namespace pfx::fx

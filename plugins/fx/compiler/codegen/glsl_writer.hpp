@@ -10,6 +10,7 @@
 
 #include "../diagnostics.hpp"
 #include "../model/effect_model.hpp"
+#include "glsl_generator.hpp"
 #include "glsl_names.hpp"
 
 namespace pfx::fx {
@@ -24,8 +25,8 @@ inline Type row_of(const Type& matrix) { return Type::vector(matrix.base, matrix
 
 class GlslWriter {
  public:
-  GlslWriter(const EffectModel& model, const GlslNames& names, Diagnostics& diagnostics, Stage stage)
-      : model_(model), names_(names), diagnostics_(diagnostics), stage_(stage) {}
+  GlslWriter(const EffectModel& model, const GlslNames& names, Diagnostics& diagnostics, Stage stage, GlslDialect dialect)
+      : model_(model), names_(names), diagnostics_(diagnostics), stage_(stage), dialect_(dialect) {}
 
   // Types (glsl_types.cpp). `type` has no array dimensions; `full_type` adds them ("float[3]").
   std::string type(const Type& t) const;
@@ -67,6 +68,8 @@ class GlslWriter {
   std::set<std::string> helpers;
   bool uses_discard = false;
   Stage stage() const { return stage_; }
+  // Vulkan GLSL: FX's rows and GL's are the same way up there (glsl_generator.hpp).
+  bool vulkan() const { return dialect_ == GlslDialect::kVulkan; }
   const EffectModel& model() const { return model_; }
   const GlslNames& names() const { return names_; }
   void error(SourceLocation where, const std::string& message) { diagnostics_.error(where, message); }
@@ -89,12 +92,13 @@ class GlslWriter {
   const GlslNames& names_;
   Diagnostics& diagnostics_;
   Stage stage_;
+  GlslDialect dialect_;
   std::string temporary_declarations_;
   int temporary_count_ = 0;
 };
 
 // The GLSL helper functions a program needs, by the names GlslWriter::helpers holds.
-std::string prelude(const std::set<std::string>& helpers);
+std::string prelude(const std::set<std::string>& helpers, GlslDialect dialect);
 
 // Uniform values as constants (glsl_constants.cpp; can_be_constant is in glsl_generator.hpp). The
 // initialiser of such a constant ("vec2(0.5, 1.0)"), each component as the runtime would

@@ -1,0 +1,181 @@
+// technique compute pass 
+#version 450
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 1) in;
+layout(set = 0, binding = 17, r32f) uniform coherent image2D G_SharedOut;
+shared float G_Slots[16];
+vec2 pfx_flip(vec2 c) { return c; }
+vec3 pfx_flip(vec3 c) { return c; }
+ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }
+ivec3 pfx_flip_texel(ivec3 c, int h) { return c; }
+vec2 pfx_flip_offset(vec2 o) { return o; }
+vec3 pfx_flip_offset(vec3 o) { return o; }
+#line 22 1
+void F_Neighbours(uvec3 l_id, uvec3 l_group, uint l_index)
+#line 23 1
+{
+#line 24 1
+  (G_Slots[l_index] = (2.0 * float(l_index)));
+#line 25 1
+  (memoryBarrierShared(), barrier());
+#line 26 1
+  imageStore(G_SharedOut, pfx_flip_texel(ivec2(ivec2(l_id.xy)), imageSize(G_SharedOut).y), vec4((G_Slots[((l_index + uint(1)) % uint(16))] + (100.0 * float(l_group.x))), 0, 0, 1));
+}
+#line 22 1
+void main() {
+  uvec3 p0;
+  uvec3 p1;
+  uint p2;
+  p0 = gl_GlobalInvocationID;
+  p1 = gl_WorkGroupID;
+  p2 = gl_LocalInvocationIndex;
+  F_Neighbours(p0, p1, p2);
+}
+// technique compute pass 
+#version 450
+layout(local_size_x = 8, local_size_y = 2, local_size_z = 1) in;
+layout(set = 0, binding = 1) uniform sampler2D G_ReShade_ns_BackBuffer;
+layout(set = 0, binding = 17, rgba32f) uniform coherent image2D G_CopyOut;
+layout(set = 0, binding = 18, r32ui) uniform coherent uimage2D G_CountOut;
+vec2 pfx_flip(vec2 c) { return c; }
+vec3 pfx_flip(vec3 c) { return c; }
+ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }
+ivec3 pfx_flip_texel(ivec3 c, int h) { return c; }
+vec2 pfx_flip_offset(vec2 o) { return o; }
+vec3 pfx_flip_offset(vec3 o) { return o; }
+#line 29 1
+void F_CopyBackBuffer(uvec3 l_id)
+#line 30 1
+{
+#line 31 1
+  imageStore(G_CopyOut, pfx_flip_texel(ivec2(ivec2(l_id.xy)), imageSize(G_CopyOut).y), vec4(texelFetch(G_ReShade_ns_BackBuffer, pfx_flip_texel(ivec2(ivec2(l_id.xy)), textureSize(G_ReShade_ns_BackBuffer, 0).y), 0).xyz, 1.0));
+#line 32 1
+  imageAtomicAdd(G_CountOut, pfx_flip_texel(ivec2(ivec2(0, 0)), imageSize(G_CountOut).y), 1u);
+}
+#line 29 1
+void main() {
+  uvec3 p0;
+  p0 = gl_GlobalInvocationID;
+  F_CopyBackBuffer(p0);
+}
+// technique compute pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(set = 0, binding = 1) uniform sampler2D G_SharedIn;
+layout(set = 0, binding = 2) uniform sampler2D G_CopyIn;
+layout(set = 0, binding = 3) uniform usampler2D G_CountIn;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  int G_IZero;
+};
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+vec2 pfx_flip(vec2 c) { return c; }
+vec3 pfx_flip(vec3 c) { return c; }
+ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }
+ivec3 pfx_flip_texel(ivec3 c, int h) { return c; }
+vec2 pfx_flip_offset(vec2 o) { return o; }
+vec3 pfx_flip_offset(vec3 o) { return o; }
+int pfx_imod(int x, int y) { return x - y * (x / y); }
+ivec2 pfx_imod(ivec2 x, ivec2 y) { return x - y * (x / y); }
+ivec3 pfx_imod(ivec3 x, ivec3 y) { return x - y * (x / y); }
+ivec4 pfx_imod(ivec4 x, ivec4 y) { return x - y * (x / y); }
+int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
+ivec2 pfx_ftoi(vec2 x) { return mix(mix(mix(ivec2(0), ivec2(-2147483647 - 1), lessThan(x, vec2(0.0))), ivec2(x), greaterThan(x, vec2(-2147483648.0))), ivec2(2147483647), greaterThanEqual(x, vec2(2147483648.0))); }
+ivec3 pfx_ftoi(vec3 x) { return mix(mix(mix(ivec3(0), ivec3(-2147483647 - 1), lessThan(x, vec3(0.0))), ivec3(x), greaterThan(x, vec3(-2147483648.0))), ivec3(2147483647), greaterThanEqual(x, vec3(2147483648.0))); }
+ivec4 pfx_ftoi(vec4 x) { return mix(mix(mix(ivec4(0), ivec4(-2147483647 - 1), lessThan(x, vec4(0.0))), ivec4(x), greaterThan(x, vec4(-2147483648.0))), ivec4(2147483647), greaterThanEqual(x, vec4(2147483648.0))); }
+#line 9 2
+int F_CheckIndex(vec4 l_position)
+#line 9 2
+{
+#line 9 2
+  return (pfx_ftoi(l_position.x) / 4);
+}
+#line 11 2
+vec4 F_Verdict(bool l_ok)
+#line 11 2
+{
+#line 11 2
+  return (l_ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0));
+}
+#line 3 4
+vec3 F_InputPixel(ivec2 l_p)
+#line 4 4
+{
+#line 5 4
+  return (vec3(pfx_imod(((l_p.x * 37) + (l_p.y * 11)), 256), pfx_imod(((l_p.x * 5) + (l_p.y * 67)), 256), pfx_imod(((l_p.x * 3) + 128), 256)) / vec3(255.0));
+}
+#line 8 4
+bool F_SameCode(vec3 l_a, vec3 l_b)
+#line 8 4
+{
+#line 8 4
+  return all(lessThanEqual(abs((l_a - l_b)), vec3((0.5 / 255.0))));
+}
+#line 35 1
+bool F_Check(int l_i)
+#line 36 1
+{
+#line 37 1
+  switch (l_i) {
+    case 0:
+#line 39 1
+      return (texelFetch(G_SharedIn, pfx_flip_texel(ivec2((ivec2(0, 0) + ivec2(G_IZero))), textureSize(G_SharedIn, 0).y), 0).x == 2.0);
+    case 1:
+#line 40 1
+      return (texelFetch(G_SharedIn, pfx_flip_texel(ivec2((ivec2(5, 2) + ivec2(G_IZero))), textureSize(G_SharedIn, 0).y), 0).x == 120.0);
+    case 2:
+#line 41 1
+      return (texelFetch(G_SharedIn, pfx_flip_texel(ivec2((ivec2(7, 7) + ivec2(G_IZero))), textureSize(G_SharedIn, 0).y), 0).x == 100.0);
+    case 3:
+#line 42 1
+      return F_SameCode(texelFetch(G_CopyIn, pfx_flip_texel(ivec2((ivec2(3, 1) + ivec2(G_IZero))), textureSize(G_CopyIn, 0).y), 0).xyz, F_InputPixel(ivec2(3, 1)));
+    case 4:
+#line 43 1
+      return F_SameCode(texelFetch(G_CopyIn, pfx_flip_texel(ivec2((ivec2(6, 0) + ivec2(G_IZero))), textureSize(G_CopyIn, 0).y), 0).xyz, F_InputPixel(ivec2(6, 0)));
+    case 5:
+#line 44 1
+      return ((texelFetch(G_CountIn, pfx_flip_texel(ivec2((ivec2(0, 0) + ivec2(G_IZero))), textureSize(G_CountIn, 0).y), 0)).x == 16u);
+    default:
+#line 45 1
+      return true;
+  }
+}
+#line 49 1
+vec4 F_Main(vec4 l_position, vec2 l_texcoord)
+#line 50 1
+{
+#line 51 1
+  return F_Verdict(F_Check(F_CheckIndex(l_position)));
+}
+#line 49 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_Main(p0, p1);
+  pfx_target_0 = r;
+}
+OK   compute.fx
+1 of 1 files parse

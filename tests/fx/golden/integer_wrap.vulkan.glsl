@@ -1,0 +1,113 @@
+// technique integer_wrap pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  uint G_MinusOne;
+  int G_PastMax;
+  uint G_AllOnes;
+  uint G_Product;
+  int G_Shifted;
+  uint G_ShiftedOut;
+  int G_NegatedMin;
+  uint G_FromInt;
+  int G_FromUint;
+  ivec2 G_Pair;
+};
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
+ivec2 pfx_ftoi(vec2 x) { return mix(mix(mix(ivec2(0), ivec2(-2147483647 - 1), lessThan(x, vec2(0.0))), ivec2(x), greaterThan(x, vec2(-2147483648.0))), ivec2(2147483647), greaterThanEqual(x, vec2(2147483648.0))); }
+ivec3 pfx_ftoi(vec3 x) { return mix(mix(mix(ivec3(0), ivec3(-2147483647 - 1), lessThan(x, vec3(0.0))), ivec3(x), greaterThan(x, vec3(-2147483648.0))), ivec3(2147483647), greaterThanEqual(x, vec3(2147483648.0))); }
+ivec4 pfx_ftoi(vec4 x) { return mix(mix(mix(ivec4(0), ivec4(-2147483647 - 1), lessThan(x, vec4(0.0))), ivec4(x), greaterThan(x, vec4(-2147483648.0))), ivec4(2147483647), greaterThanEqual(x, vec4(2147483648.0))); }
+#line 9 2
+int F_CheckIndex(vec4 l_position)
+#line 9 2
+{
+#line 9 2
+  return (pfx_ftoi(l_position.x) / 4);
+}
+#line 11 2
+vec4 F_Verdict(bool l_ok)
+#line 11 2
+{
+#line 11 2
+  return (l_ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0));
+}
+#line 20 1
+bool F_Check(int l_i)
+#line 21 1
+{
+#line 22 1
+  switch (l_i) {
+    case 0:
+#line 24 1
+      return (G_MinusOne == 4294967295u);
+    case 1:
+#line 25 1
+      return (G_PastMax == ((-2147483647) - 1));
+    case 2:
+#line 26 1
+      return (G_AllOnes == 4294967295u);
+    case 3:
+#line 27 1
+      return (G_Product == 5u);
+    case 4:
+#line 28 1
+      return (G_Shifted == ((-2147483647) - 1));
+    case 5:
+#line 29 1
+      return (G_ShiftedOut == 0u);
+    case 6:
+#line 30 1
+      return (G_NegatedMin == ((-2147483647) - 1));
+    case 7:
+#line 31 1
+      return ((G_FromInt == 4294967294u) && (G_FromUint == (-2)));
+    case 8:
+#line 32 1
+      return all(equal(G_Pair, ivec2(((-2147483647) - 1), ((-2147483647) - 1))));
+    default:
+#line 33 1
+      return true;
+  }
+}
+#line 37 1
+vec4 F_Main(vec4 l_position, vec2 l_texcoord)
+#line 38 1
+{
+#line 39 1
+  return F_Verdict(F_Check(F_CheckIndex(l_position)));
+}
+#line 37 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_Main(p0, p1);
+  pfx_target_0 = r;
+}
+OK   integer_wrap.fx
+1 of 1 files parse

@@ -1,0 +1,200 @@
+// technique mips pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+#line 17 1
+vec4 F_Fill(vec4 l_position, vec2 l_texcoord)
+#line 18 1
+{
+#line 19 1
+  vec2 l_p = floor(l_position.xy);
+#line 20 1
+  return vec4((l_p.x + (4.0 * l_p.y)));
+}
+#line 17 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_Fill(p0, p1);
+  pfx_target_0 = r;
+}
+// technique mips pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+#line 22 1
+vec4 F_FillKept(vec4 l_position, vec2 l_texcoord)
+#line 22 1
+{
+#line 22 1
+  return vec4(3.0);
+}
+#line 22 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_FillKept(p0, p1);
+  pfx_target_0 = r;
+}
+// technique mips pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(set = 0, binding = 1) uniform sampler2D G_PyramidPoint;
+layout(set = 0, binding = 2) uniform sampler2D G_PyramidFloor;
+layout(set = 0, binding = 3) uniform sampler2D G_PyramidCeiling;
+layout(set = 0, binding = 4) uniform sampler2D G_PyramidBias;
+layout(set = 0, binding = 5) uniform sampler2D G_KeptPoint;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+vec2 pfx_flip(vec2 c) { return c; }
+vec3 pfx_flip(vec3 c) { return c; }
+ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }
+ivec3 pfx_flip_texel(ivec3 c, int h) { return c; }
+vec2 pfx_flip_offset(vec2 o) { return o; }
+vec3 pfx_flip_offset(vec3 o) { return o; }
+int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
+ivec2 pfx_ftoi(vec2 x) { return mix(mix(mix(ivec2(0), ivec2(-2147483647 - 1), lessThan(x, vec2(0.0))), ivec2(x), greaterThan(x, vec2(-2147483648.0))), ivec2(2147483647), greaterThanEqual(x, vec2(2147483648.0))); }
+ivec3 pfx_ftoi(vec3 x) { return mix(mix(mix(ivec3(0), ivec3(-2147483647 - 1), lessThan(x, vec3(0.0))), ivec3(x), greaterThan(x, vec3(-2147483648.0))), ivec3(2147483647), greaterThanEqual(x, vec3(2147483648.0))); }
+ivec4 pfx_ftoi(vec4 x) { return mix(mix(mix(ivec4(0), ivec4(-2147483647 - 1), lessThan(x, vec4(0.0))), ivec4(x), greaterThan(x, vec4(-2147483648.0))), ivec4(2147483647), greaterThanEqual(x, vec4(2147483648.0))); }
+#line 9 2
+int F_CheckIndex(vec4 l_position)
+#line 9 2
+{
+#line 9 2
+  return (pfx_ftoi(l_position.x) / 4);
+}
+#line 11 2
+vec4 F_Verdict(bool l_ok)
+#line 11 2
+{
+#line 11 2
+  return (l_ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0));
+}
+#line 24 1
+bool F_Check(int l_i)
+#line 25 1
+{
+#line 26 1
+  vec2 l_uv = (vec2(0.125, 0.125) + vec2(G_Zero));
+#line 27 1
+  switch (l_i) {
+    case 0:
+#line 29 1
+      return ((textureLod(G_PyramidPoint, pfx_flip(vec2((vec4(l_uv, 0, 0)).xy)), (vec4(l_uv, 0, 0)).w).x == 0.0) && (textureLod(G_PyramidPoint, pfx_flip(vec2((vec4(l_uv, 0, 1)).xy)), (vec4(l_uv, 0, 1)).w).x == 2.5));
+    case 1:
+#line 30 1
+      return (textureLod(G_PyramidPoint, pfx_flip(vec2((vec4(l_uv, 0, 2)).xy)), (vec4(l_uv, 0, 2)).w).x == 7.5);
+    case 2:
+#line 31 1
+      return ((texelFetch(G_PyramidPoint, pfx_flip_texel(ivec2((ivec2(1, 0) + ivec2(G_IZero))), textureSize(G_PyramidPoint, int(1)).y), int(1)).x == 4.5) && all(equal(textureSize(G_PyramidPoint, int(1)), ivec2(2, 2))));
+    case 3:
+#line 32 1
+      return (textureLod(G_PyramidFloor, pfx_flip(vec2((vec4(l_uv, 0, 0)).xy)), (vec4(l_uv, 0, 0)).w).x == 7.5);
+    case 4:
+#line 33 1
+      return (textureLod(G_PyramidCeiling, pfx_flip(vec2((vec4(l_uv, 0, 2)).xy)), (vec4(l_uv, 0, 2)).w).x == 0.0);
+    case 5:
+#line 34 1
+      return (textureLod(G_PyramidBias, pfx_flip(vec2((vec4(l_uv, 0, 0)).xy)), (vec4(l_uv, 0, 0)).w).x == 2.5);
+    case 6:
+#line 35 1
+      return ((texelFetch(G_KeptPoint, pfx_flip_texel(ivec2((ivec2(0, 0) + ivec2(G_IZero))), textureSize(G_KeptPoint, int(0)).y), int(0)).x == 3.0) && (texelFetch(G_KeptPoint, pfx_flip_texel(ivec2((ivec2(0, 0) + ivec2(G_IZero))), textureSize(G_KeptPoint, int(1)).y), int(1)).x == 0.0));
+    default:
+#line 36 1
+      return true;
+  }
+}
+#line 40 1
+vec4 F_Main(vec4 l_position, vec2 l_texcoord)
+#line 41 1
+{
+#line 42 1
+  return F_Verdict(F_Check(F_CheckIndex(l_position)));
+}
+#line 40 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_Main(p0, p1);
+  pfx_target_0 = r;
+}
+OK   mips.fx
+1 of 1 files parse

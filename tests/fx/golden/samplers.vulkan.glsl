@@ -1,0 +1,258 @@
+// technique samplers pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+#line 19 1
+vec4 F_FillRow(vec4 l_position, vec2 l_texcoord)
+#line 20 1
+{
+#line 21 1
+  return vec4(((floor(l_position.x) + 1.0) * 10.0));
+}
+#line 19 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_FillRow(p0, p1);
+  pfx_target_0 = r;
+}
+// technique samplers pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+#line 23 1
+vec4 F_FillEncoded(vec4 l_position, vec2 l_texcoord)
+#line 23 1
+{
+#line 23 1
+  return vec4(0.5);
+}
+#line 23 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_FillEncoded(p0, p1);
+  pfx_target_0 = r;
+}
+// technique samplers pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+#line 25 1
+vec4 F_FillWritten(vec4 l_position, vec2 l_texcoord)
+#line 25 1
+{
+#line 25 1
+  return vec4(0.215860501);
+}
+#line 25 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_FillWritten(p0, p1);
+  pfx_target_0 = r;
+}
+// technique samplers pass 
+#version 450
+layout(location = 0) out vec4 pfx_v_TEXCOORD0;
+#line 63 3
+void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
+#line 64 3
+{
+#line 65 3
+  (l_texcoord = vec2(((l_id == uint(2)) ? 2.0 : 0.0), ((l_id == uint(1)) ? 2.0 : 0.0)));
+#line 66 3
+  (l_position = vec4(((l_texcoord * vec2(2.0, (-2.0))) + vec2((-1.0), 1.0)), 0.0, 1.0));
+}
+#line 63 3
+void main() {
+  pfx_v_TEXCOORD0 = vec4(0);
+  uint p0;
+  vec4 p1;
+  vec2 p2;
+  p0 = uint(gl_VertexIndex);
+  F_PostProcessVS(p0, p1, p2);
+  gl_Position = p1;
+  gl_Position.y = -gl_Position.y;
+  pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
+}
+#version 450
+layout(set = 0, binding = 1) uniform sampler2D G_RowClamp;
+layout(set = 0, binding = 2) uniform sampler2D G_RowWrap;
+layout(set = 0, binding = 3) uniform sampler2D G_RowMirror;
+layout(set = 0, binding = 4) uniform sampler2D G_RowBorder;
+layout(set = 0, binding = 5) uniform sampler2D G_RowLinear;
+layout(set = 0, binding = 6) uniform sampler2D G_EncodedRaw;
+layout(set = 0, binding = 7) uniform sampler2D G_EncodedSrgb;
+layout(set = 0, binding = 8) uniform sampler2D G_WrittenRaw;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+};
+layout(location = 0) in vec4 pfx_v_TEXCOORD0;
+layout(location = 0) out vec4 pfx_target_0;
+vec2 pfx_flip(vec2 c) { return c; }
+vec3 pfx_flip(vec3 c) { return c; }
+ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }
+ivec3 pfx_flip_texel(ivec3 c, int h) { return c; }
+vec2 pfx_flip_offset(vec2 o) { return o; }
+vec3 pfx_flip_offset(vec3 o) { return o; }
+int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
+ivec2 pfx_ftoi(vec2 x) { return mix(mix(mix(ivec2(0), ivec2(-2147483647 - 1), lessThan(x, vec2(0.0))), ivec2(x), greaterThan(x, vec2(-2147483648.0))), ivec2(2147483647), greaterThanEqual(x, vec2(2147483648.0))); }
+ivec3 pfx_ftoi(vec3 x) { return mix(mix(mix(ivec3(0), ivec3(-2147483647 - 1), lessThan(x, vec3(0.0))), ivec3(x), greaterThan(x, vec3(-2147483648.0))), ivec3(2147483647), greaterThanEqual(x, vec3(2147483648.0))); }
+ivec4 pfx_ftoi(vec4 x) { return mix(mix(mix(ivec4(0), ivec4(-2147483647 - 1), lessThan(x, vec4(0.0))), ivec4(x), greaterThan(x, vec4(-2147483648.0))), ivec4(2147483647), greaterThanEqual(x, vec4(2147483648.0))); }
+#line 9 2
+int F_CheckIndex(vec4 l_position)
+#line 9 2
+{
+#line 9 2
+  return (pfx_ftoi(l_position.x) / 4);
+}
+#line 11 2
+vec4 F_Verdict(bool l_ok)
+#line 11 2
+{
+#line 11 2
+  return (l_ok ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0));
+}
+#line 15 2
+bool F_Near(float l_a, float l_b)
+#line 15 2
+{
+#line 15 2
+  return (abs((l_a - l_b)) <= (9.99999975e-06 * max(1.0, abs(l_b))));
+}
+#line 27 1
+float F_At(sampler2D l_s, float l_u)
+#line 27 1
+{
+#line 27 1
+  return texture(l_s, pfx_flip(vec2((vec2(l_u, 0.5) + vec2(G_Zero))))).x;
+}
+#line 29 1
+bool F_Check(int l_i)
+#line 30 1
+{
+#line 31 1
+  switch (l_i) {
+    case 0:
+#line 33 1
+      return ((F_At(G_RowClamp, (-0.5)) == 10.0) && (F_At(G_RowClamp, 1.5) == 40.0));
+    case 1:
+#line 34 1
+      return ((F_At(G_RowWrap, 1.125) == 10.0) && (F_At(G_RowWrap, (-0.125)) == 40.0));
+    case 2:
+#line 35 1
+      return ((F_At(G_RowMirror, 1.125) == 40.0) && (F_At(G_RowMirror, (-0.125)) == 10.0));
+    case 3:
+#line 36 1
+      return ((F_At(G_RowBorder, (-0.5)) == 0.0) && (F_At(G_RowBorder, 0.125) == 10.0));
+    case 4:
+#line 37 1
+      return (F_Near(F_At(G_RowLinear, 0.25), 15.0) && (F_At(G_RowClamp, 0.300000012) == 20.0));
+    case 5:
+#line 38 1
+      return F_Near(texture(G_EncodedRaw, pfx_flip(vec2((0.5 + G_Zero)))).x, (128.0 / 255.0));
+    case 6:
+#line 40 1
+      return (abs((texture(G_EncodedSrgb, pfx_flip(vec2((0.5 + G_Zero)))).x - 0.215860501)) < (1.0 / 1024.0));
+    case 7:
+#line 41 1
+      return F_Near(texture(G_WrittenRaw, pfx_flip(vec2((0.5 + G_Zero)))).x, (128.0 / 255.0));
+    default:
+#line 42 1
+      return true;
+  }
+}
+#line 46 1
+vec4 F_Main(vec4 l_position, vec2 l_texcoord)
+#line 47 1
+{
+#line 48 1
+  return F_Verdict(F_Check(F_CheckIndex(l_position)));
+}
+#line 46 1
+void main() {
+  vec4 p0;
+  vec2 p1;
+  p0 = vec4(gl_FragCoord.x, gl_FragCoord.y, gl_FragCoord.z, 1.0 / gl_FragCoord.w);
+  p1 = vec2(pfx_v_TEXCOORD0);
+  vec4 r = F_Main(p0, p1);
+  pfx_target_0 = r;
+}
+OK   samplers.fx
+1 of 1 files parse
