@@ -13,7 +13,8 @@ uniform uint FromHugeUnsigned = 5e9;
 
 bool Check(int i)
 {
-  float nan = Zero / Zero, inf = 1.0 / Zero;
+  // From their bits: Vulkan leaves 0.0 / 0.0 and 1.0 / 0.0 undefined.
+  float nan = asfloat(0x7FC00000u + uint(IZero)), inf = asfloat(0x7F800000u + uint(IZero));
   switch (i)
   {
     case 0: return uint(-1.0 + Zero) == 0u && uint(-0.5 + Zero) == 0u && uint(3.9 + Zero) == 3u;

@@ -23,6 +23,7 @@ void main() {
 }
 #version 450
 uniform float G_Zero;
+uniform int G_IZero;
 uniform uint G_FromNegative;
 uniform int G_FromHuge;
 uniform uint G_FromHugeUnsigned;
@@ -56,86 +57,86 @@ bool F_Check(int l_i)
 #line 15 1
 {
   mat2 t_0;
-#line 16 1
-  float l_nan = (G_Zero / G_Zero);
-  float l_inf = (1.0 / G_Zero);
 #line 17 1
+  float l_nan = uintBitsToFloat((2143289344u + uint(G_IZero)));
+  float l_inf = uintBitsToFloat((2139095040u + uint(G_IZero)));
+#line 18 1
   switch (l_i) {
     case 0:
-#line 19 1
+#line 20 1
       return (((pfx_ftou(((-1.0) + G_Zero)) == 0u) && (pfx_ftou(((-0.5) + G_Zero)) == 0u)) && (pfx_ftou((3.9000001 + G_Zero)) == 3u));
     case 1:
-#line 20 1
+#line 21 1
       return ((pfx_ftou((1e+10 + G_Zero)) == 4294967295u) && (pfx_ftou((4.29496704e+09 + G_Zero)) == 4294967040u));
     case 2:
-#line 21 1
+#line 22 1
       return (((pfx_ftoi(((-3.9000001) + G_Zero)) == (-3)) && (pfx_ftoi((1e+10 + G_Zero)) == 2147483647)) && (pfx_ftoi(((-1e+10) + G_Zero)) == ((-2147483647) - 1)));
     case 3:
-#line 22 1
+#line 23 1
       return (((((pfx_ftoi(l_nan) == 0) && (pfx_ftou(l_nan) == 0u)) && (pfx_ftoi(l_inf) == 2147483647)) && (pfx_ftoi((-l_inf)) == ((-2147483647) - 1))) && (pfx_ftou(l_inf) == 4294967295u));
     case 4:
-#line 23 1
+#line 24 1
       {
-#line 23 1
+#line 24 1
         uint l_u = pfx_ftou(((-2.0) + G_Zero));
-#line 23 1
+#line 24 1
         int l_k = pfx_ftoi((2.5e+09 + G_Zero));
-#line 23 1
+#line 24 1
         return ((l_u == 0u) && (l_k == 2147483647));
       }
     case 5:
-#line 24 1
+#line 25 1
       return (all(equal(uvec2(pfx_ftou((vec2((-1.0), 5.5) + vec2(G_Zero)))), uvec2(0, 5))) && all(equal(ivec3(pfx_ftoi((vec3((-1e+10), 7.9000001, l_nan) + vec3(G_Zero)))), ivec3(((-2147483647) - 1), 7, 0))));
     case 6:
-#line 25 1
+#line 26 1
       {
-#line 25 1
+#line 26 1
         uvec2 l_c = uvec2(pfx_ftou(((-1.0) + G_Zero)), pfx_ftou((2.0 + G_Zero)));
-#line 25 1
+#line 26 1
         ivec2 l_d = ivec2(pfx_ftoi(l_nan), pfx_ftoi(((-2.5) + G_Zero)));
-#line 25 1
+#line 26 1
         return (all(equal(l_c, uvec2(0, 2))) && all(equal(l_d, ivec2(0, (-2)))));
       }
     case 7:
-#line 26 1
+#line 27 1
       {
-#line 26 1
+#line 27 1
         uint l_a[2] = uint[2](pfx_ftou(((-1.0) + G_Zero)), pfx_ftou((7.5 + G_Zero)));
-#line 26 1
+#line 27 1
         return ((l_a[0] == 0u) && (l_a[1] == 7u));
       }
     case 8:
-#line 27 1
+#line 28 1
       {
-#line 27 1
+#line 28 1
         ivec2[2] l_m = (t_0 = (mat2((-1e+10), 1.5, (-1.5), 1e+10) + mat2(float(G_Zero), float(G_Zero), float(G_Zero), float(G_Zero))), ivec2[2](pfx_ftoi(t_0[0]), pfx_ftoi(t_0[1])));
-#line 27 1
+#line 28 1
         return ((((l_m[0][0] == ((-2147483647) - 1)) && (l_m[0][1] == 1)) && (l_m[1][0] == (-1))) && (l_m[1][1] == 2147483647));
       }
     case 9:
-#line 28 1
+#line 29 1
       return (((G_FromNegative == 0u) && (G_FromHuge == 2147483647)) && (G_FromHugeUnsigned == 4294967295u));
     case 10:
-#line 29 1
+#line 30 1
       {
-#line 29 1
+#line 30 1
         uvec4 l_v = pfx_ftou((vec4((-3.0), 0.0, 65535.8984, (-0.0)) + vec4(G_Zero)));
-#line 29 1
+#line 30 1
         return all(equal(l_v, uvec4(0, 0, 65535, 0)));
       }
     default:
-#line 30 1
+#line 31 1
       return true;
   }
 }
-#line 34 1
-vec4 F_Main(vec4 l_position, vec2 l_texcoord)
 #line 35 1
-{
+vec4 F_Main(vec4 l_position, vec2 l_texcoord)
 #line 36 1
+{
+#line 37 1
   return F_Verdict(F_Check(F_CheckIndex(l_position)));
 }
-#line 34 1
+#line 35 1
 void main() {
   vec4 p0;
   vec2 p1;
