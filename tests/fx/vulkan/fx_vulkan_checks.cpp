@@ -1,10 +1,12 @@
-// Runs a self-checking FX conformance file (one pass into the back buffer, uniforms, no textures)
-// through its SPIR-V on a Vulkan device, headless, and judges the picture: every pixel green,
-// or the checks whose columns are not (run_conformance.py's convention: check i is the columns
-// [i * CELL, (i + 1) * CELL)). What the GL runtime and the conformance suite hold the GLSL to,
-// this holds the Vulkan dialect's SPIR-V to, on the device Vulkan gives (lavapipe in the tests).
+// Runs an FX conformance file of one pass into the back buffer (uniforms, and the back buffer as
+// its only texture) through its SPIR-V on a Vulkan device, headless, and judges the picture as
+// run_conformance.py does: `checks`, every pixel green, or the checks whose columns are not
+// (check i is the columns [i * CELL, (i + 1) * CELL)); `input`, the back buffer's bytes (a
+// gradient with a varying alpha, made here); `invert`, 255 minus them in R, G and B. What the GL
+// runtime and the conformance suite hold the GLSL to, this holds the Vulkan dialect's SPIR-V to,
+// on the device Vulkan gives (lavapipe in the tests).
 //
-// usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] FILE.fx
+// usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--expect checks|input|invert] FILE.fx
 // Exit status: 0 every check holds, 1 some fail or Vulkan fails, 3 the file needs more than this
 // runs (it says what), 2 usage.
 #include <dlfcn.h>
@@ -181,21 +183,27 @@ bool spirv(const std::string& glsl, pfx::fx::SpirvStage stage, std::vector<std::
 
 }  // namespace
 
-int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, int width, int height, int cell);
+struct Judged {
+  std::string expect;  // checks, input or invert
+  int width, height, cell;
+};
+int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, const Judged& judged);
 
 int main(int argc, char** argv) {
   pfx::fx::FrontEndOptions options;
   std::string file;
   int width = 0, height = 0, cell = 4;
+  std::string expect = "checks";
   for (int i = 1; i < argc; ++i) {
     std::string argument = argv[i];
     if (argument.rfind("-I", 0) == 0) options.preprocessor.include_folders.push_back(argument.substr(2));
     else if (argument == "--size" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
     else if (argument == "--cell" && i + 1 < argc) cell = std::atoi(argv[++i]);
+    else if (argument == "--expect" && i + 1 < argc) expect = argv[++i];
     else file = argument;
   }
-  if (file.empty() || width <= 0 || height <= 0 || cell <= 0) {
-    std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] FILE.fx\n");
+  if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || (expect != "checks" && expect != "input" && expect != "invert")) {
+    std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--expect checks|input|invert] FILE.fx\n");
     return 2;
   }
   options.preprocessor.buffer_width = width;
@@ -211,11 +219,16 @@ int main(int argc, char** argv) {
     return std::printf("not run: the pass computes, renders to textures, blends or uses stencil\n"), 3;
   pfx::fx::GeneratedPass pass = pfx::fx::generate_pass(result->unit, model, info, result->diagnostics, nullptr, pfx::fx::GlslDialect::kVulkan);
   if (result->diagnostics.has_errors()) return std::printf("FAIL: %s", result->diagnostics.format_all().c_str()), 1;
-  if (!pass.sampler_units.empty() || !pass.image_units.empty()) return std::printf("not run: the pass samples textures\n"), 3;
+  if (!pass.image_units.empty()) return std::printf("not run: the pass uses storages\n"), 3;
+  for (int unit : pass.sampler_units) {
+    const int texture = model.samplers[static_cast<std::size_t>(unit)].texture;
+    if (texture < 0 || model.textures[static_cast<std::size_t>(texture)].semantic != pfx::fx::TextureSemantic::kColor)
+      return std::printf("not run: the pass samples a texture other than the back buffer\n"), 3;
+  }
   for (int u : pass.uniforms)
     if (!model.uniforms[static_cast<std::size_t>(u)].source.empty())
       return std::printf("not run: the uniform '%s' has a source\n", model.uniforms[static_cast<std::size_t>(u)].name.c_str()), 3;
-  return run(model, pass, width, height, cell);
+  return run(model, pass, Judged{expect, width, height, cell});
 }
 
 namespace {
@@ -347,63 +360,243 @@ std::vector<int> failed_checks(const unsigned char* rgba, int width, int height,
 
 }  // namespace
 
-int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, int width, int height, int cell) {
+
+namespace {
+
+// The back buffer the pass reads: R across, G down, B from both, alpha varying, so that a picture
+// upside down, mirrored or shifted by a texel cannot pass for it.
+std::vector<unsigned char> gradient(int width, int height) {
+  std::vector<unsigned char> rgba(static_cast<std::size_t>(width) * height * 4);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      unsigned char* p = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
+      p[0] = static_cast<unsigned char>(x * 255 / std::max(1, width - 1));
+      p[1] = static_cast<unsigned char>(y * 255 / std::max(1, height - 1));
+      p[2] = static_cast<unsigned char>((x * 37 + y * 11) & 255);
+      p[3] = static_cast<unsigned char>((x * 7 + y * 13 + 1) & 255);
+    }
+  return rgba;
+}
+
+void barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags before, VkAccessFlags after,
+             VkPipelineStageFlags source, VkPipelineStageFlags destination) {
+  auto b = vk<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+  b.srcAccessMask = before;
+  b.dstAccessMask = after;
+  b.oldLayout = from;
+  b.newLayout = to;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image;
+  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(commands, source, destination, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+// The back buffer as a sampled RGBA8 image, with a UNORM view and an sRGB one (SRGBTexture).
+struct BackBuffer {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE, staging_memory = VK_NULL_HANDLE;
+  VkImageView unorm = VK_NULL_HANDLE, srgb = VK_NULL_HANDLE;
+  VkBuffer staging = VK_NULL_HANDLE;
+  int width, height;
+
+  BackBuffer(const Device& d, const std::vector<unsigned char>& rgba, int w, int h) : width(w), height(h) {
+    auto info = vk<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+    info.flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = VK_FORMAT_R8G8B8A8_UNORM;
+    info.extent = {static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), 1};
+    info.mipLevels = info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    VK_OK(vkCreateImage(d.device, &info, nullptr, &image));
+    VkMemoryRequirements needs;
+    vkGetImageMemoryRequirements(d.device, image, &needs);
+    memory = d.allocate(needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VK_OK(vkBindImageMemory(d.device, image, memory, 0));
+    unorm = view(d, VK_FORMAT_R8G8B8A8_UNORM);
+    srgb = view(d, VK_FORMAT_R8G8B8A8_SRGB);
+    staging = d.buffer(rgba.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging_memory, rgba.data());
+  }
+  VkImageView view(const Device& d, VkFormat format) const {
+    auto info = vk<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+    info.image = image;
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = format;
+    info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkImageView out;
+    VK_OK(vkCreateImageView(d.device, &info, nullptr, &out));
+    return out;
+  }
+  // The pixels into the image, top row first (Vulkan's and FX's order), ready to sample.
+  void record_upload(VkCommandBuffer commands) const {
+    barrier(commands, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
+    vkCmdCopyBufferToImage(commands, staging, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    barrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+            VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+  }
+  void destroy(const Device& d) {
+    vkDestroyImageView(d.device, unorm, nullptr);
+    vkDestroyImageView(d.device, srgb, nullptr);
+    vkDestroyImage(d.device, image, nullptr);
+    vkFreeMemory(d.device, memory, nullptr);
+    vkDestroyBuffer(d.device, staging, nullptr);
+    vkFreeMemory(d.device, staging_memory, nullptr);
+  }
+};
+
+VkSamplerAddressMode address(pfx::fx::AddressMode mode) {
+  switch (mode) {
+    case pfx::fx::AddressMode::kMirror: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case pfx::fx::AddressMode::kWrap: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case pfx::fx::AddressMode::kBorder: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    case pfx::fx::AddressMode::kClamp: break;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+}
+
+VkSampler sampler(const Device& d, const pfx::fx::SamplerInfo& s) {
+  auto info = vk<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+  info.magFilter = s.mag_filter == pfx::fx::FilterMode::kPoint ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+  info.minFilter = s.min_filter == pfx::fx::FilterMode::kPoint ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+  info.mipmapMode = s.mip_filter == pfx::fx::FilterMode::kPoint ? VK_SAMPLER_MIPMAP_MODE_NEAREST : VK_SAMPLER_MIPMAP_MODE_LINEAR;
+  info.addressModeU = address(s.address[0]);
+  info.addressModeV = address(s.address[1]);
+  info.addressModeW = address(s.address[2]);
+  info.mipLodBias = s.lod_bias;
+  info.minLod = s.min_lod;
+  info.maxLod = s.max_lod;
+  info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+  VkSampler out;
+  VK_OK(vkCreateSampler(d.device, &info, nullptr, &out));
+  return out;
+}
+
+// The pass's descriptor set: the uniform block at its binding, each sampler at the binding after
+// the first sampler binding that its unit gives.
+struct Bindings {
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  VkBuffer uniforms = VK_NULL_HANDLE;
+  VkDeviceMemory uniform_memory = VK_NULL_HANDLE;
+  std::vector<VkSampler> samplers;
+
+  Bindings(const Device& d, const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, const BackBuffer& back_buffer) {
+    const std::vector<unsigned char> block = uniform_block(model, pass);
+    std::vector<VkDescriptorSetLayoutBinding> entries;
+    if (!block.empty())
+      entries.push_back({static_cast<std::uint32_t>(pfx::fx::kVulkanUniformBinding), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    for (std::size_t unit = 0; unit < pass.sampler_units.size(); ++unit)
+      entries.push_back({static_cast<std::uint32_t>(pfx::fx::kVulkanFirstSamplerBinding + unit), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    auto layout_info = vk<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    layout_info.bindingCount = static_cast<std::uint32_t>(entries.size());
+    layout_info.pBindings = entries.data();
+    VK_OK(vkCreateDescriptorSetLayout(d.device, &layout_info, nullptr, &layout));
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16}};
+    auto pool_info = vk<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = 2;
+    pool_info.pPoolSizes = sizes;
+    VK_OK(vkCreateDescriptorPool(d.device, &pool_info, nullptr, &pool));
+    auto allocate = vk<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    allocate.descriptorPool = pool;
+    allocate.descriptorSetCount = 1;
+    allocate.pSetLayouts = &layout;
+    VK_OK(vkAllocateDescriptorSets(d.device, &allocate, &set));
+    std::vector<VkWriteDescriptorSet> writes;
+    VkDescriptorBufferInfo buffer_info{};
+    std::vector<VkDescriptorImageInfo> images(pass.sampler_units.size());
+    if (!block.empty()) {
+      uniforms = d.buffer(block.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, uniform_memory, block.data());
+      buffer_info = {uniforms, 0, block.size()};
+      auto write = vk<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+      write.dstSet = set;
+      write.dstBinding = static_cast<std::uint32_t>(pfx::fx::kVulkanUniformBinding);
+      write.descriptorCount = 1;
+      write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+      write.pBufferInfo = &buffer_info;
+      writes.push_back(write);
+    }
+    for (std::size_t unit = 0; unit < pass.sampler_units.size(); ++unit) {
+      const pfx::fx::SamplerInfo& info = model.samplers[static_cast<std::size_t>(pass.sampler_units[unit])];
+      samplers.push_back(sampler(d, info));
+      images[unit] = {samplers.back(), info.srgb ? back_buffer.srgb : back_buffer.unorm, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+      auto write = vk<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+      write.dstSet = set;
+      write.dstBinding = static_cast<std::uint32_t>(pfx::fx::kVulkanFirstSamplerBinding + unit);
+      write.descriptorCount = 1;
+      write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      write.pImageInfo = &images[unit];
+      writes.push_back(write);
+    }
+    vkUpdateDescriptorSets(d.device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  }
+  void destroy(const Device& d) {
+    for (VkSampler s : samplers) vkDestroySampler(d.device, s, nullptr);
+    if (uniforms) vkDestroyBuffer(d.device, uniforms, nullptr);
+    if (uniform_memory) vkFreeMemory(d.device, uniform_memory, nullptr);
+    vkDestroyDescriptorPool(d.device, pool, nullptr);
+    vkDestroyDescriptorSetLayout(d.device, layout, nullptr);
+  }
+};
+
+// What the picture should be, said as the conformance runner says it; "" when it is.
+std::string judge(const Judged& judged, const unsigned char* out, const std::vector<unsigned char>& in) {
+  if (judged.expect == "checks") {
+    const std::vector<int> failed = failed_checks(out, judged.width, judged.height, judged.cell);
+    std::string list;
+    for (int check : failed) list += (list.empty() ? "" : ", ") + std::to_string(check);
+    return failed.empty() ? "" : "checks [" + list + "] of " + std::to_string((judged.width + judged.cell - 1) / judged.cell);
+  }
+  const bool invert = judged.expect == "invert";
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const bool alpha = i % 4 == 3;
+    if (invert && alpha) continue;
+    const int wanted = invert ? 255 - in[i] : in[i];
+    if (out[i] != wanted) {
+      const std::size_t pixel = i / 4;
+      return "pixel (" + std::to_string(pixel % static_cast<std::size_t>(judged.width)) + ", " +
+             std::to_string(pixel / static_cast<std::size_t>(judged.width)) + ") channel " + std::to_string(i % 4) + " is " +
+             std::to_string(out[i]) + ", not " + std::to_string(wanted) + (invert ? " (255 - the input)" : " (the input)");
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, const Judged& judged) {
   std::vector<std::uint32_t> vertex_words, fragment_words;
   if (!spirv(pass.vertex, pfx::fx::SpirvStage::kVertex, vertex_words) || !spirv(pass.fragment, pfx::fx::SpirvStage::kFragment, fragment_words))
     return 1;
+  const int width = judged.width, height = judged.height;
+  const std::vector<unsigned char> input = gradient(width, height);
   Device d;
   Target target(d, width, height);
-  // The uniforms: one block at binding 0 of set 0, read by both stages.
-  const std::vector<unsigned char> block = uniform_block(model, pass);
-  VkDescriptorSetLayoutBinding binding{static_cast<std::uint32_t>(pfx::fx::kVulkanUniformBinding), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  auto set_info = vk<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-  set_info.bindingCount = block.empty() ? 0 : 1;
-  set_info.pBindings = &binding;
-  VkDescriptorSetLayout set_layout;
-  VK_OK(vkCreateDescriptorSetLayout(d.device, &set_info, nullptr, &set_layout));
+  BackBuffer back_buffer(d, input, width, height);
+  Bindings bindings(d, model, pass, back_buffer);
   auto layout_info = vk<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
   layout_info.setLayoutCount = 1;
-  layout_info.pSetLayouts = &set_layout;
+  layout_info.pSetLayouts = &bindings.layout;
   VkPipelineLayout layout;
   VK_OK(vkCreatePipelineLayout(d.device, &layout_info, nullptr, &layout));
-  VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1};
-  auto pool_info = vk<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-  pool_info.maxSets = 1;
-  pool_info.poolSizeCount = 1;
-  pool_info.pPoolSizes = &pool_size;
-  VkDescriptorPool pool;
-  VK_OK(vkCreateDescriptorPool(d.device, &pool_info, nullptr, &pool));
-  auto allocate = vk<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
-  allocate.descriptorPool = pool;
-  allocate.descriptorSetCount = 1;
-  allocate.pSetLayouts = &set_layout;
-  VkDescriptorSet set;
-  VK_OK(vkAllocateDescriptorSets(d.device, &allocate, &set));
-  VkDeviceMemory uniform_memory = VK_NULL_HANDLE;
-  VkBuffer uniforms = VK_NULL_HANDLE;
-  if (!block.empty()) {
-    uniforms = d.buffer(block.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, uniform_memory, block.data());
-    VkDescriptorBufferInfo buffer_info{uniforms, 0, block.size()};
-    auto write = vk<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    write.dstSet = set;
-    write.dstBinding = binding.binding;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    write.pBufferInfo = &buffer_info;
-    vkUpdateDescriptorSets(d.device, 1, &write, 0, nullptr);
-  }
   VkShaderModule vertex = d.module(vertex_words), fragment = d.module(fragment_words);
   VkPipeline graphics = pipeline(d, target, layout, vertex, fragment, width, height);
   const VkDeviceSize pixels_size = static_cast<VkDeviceSize>(width) * height * 4;
   VkDeviceMemory readback_memory;
   VkBuffer readback = d.buffer(pixels_size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, readback_memory, nullptr);
 
-  // Record the pass and the copy, submit, wait.
-  auto command_pool_info = vk<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
-  command_pool_info.queueFamilyIndex = d.family;
+  // Upload the back buffer, draw the pass, copy the picture out; submit and wait.
+  auto pool_info = vk<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+  pool_info.queueFamilyIndex = d.family;
   VkCommandPool command_pool;
-  VK_OK(vkCreateCommandPool(d.device, &command_pool_info, nullptr, &command_pool));
+  VK_OK(vkCreateCommandPool(d.device, &pool_info, nullptr, &command_pool));
   auto command_info = vk<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
   command_info.commandPool = command_pool;
   command_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -412,6 +605,7 @@ int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, i
   VK_OK(vkAllocateCommandBuffers(d.device, &command_info, &commands));
   auto begin = vk<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   VK_OK(vkBeginCommandBuffer(commands, &begin));
+  back_buffer.record_upload(commands);
   VkClearValue clear{};
   auto pass_begin = vk<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
   pass_begin.renderPass = target.render_pass;
@@ -421,7 +615,7 @@ int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, i
   pass_begin.pClearValues = &clear;
   vkCmdBeginRenderPass(commands, &pass_begin, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, graphics);
-  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0, nullptr);
+  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &bindings.set, 0, nullptr);
   vkCmdDraw(commands, static_cast<std::uint32_t>(model.techniques[0].passes[0].vertex_count), 1, 0, 0);
   vkCmdEndRenderPass(commands);
   VkBufferImageCopy region{};
@@ -437,7 +631,7 @@ int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, i
 
   void* mapped;
   VK_OK(vkMapMemory(d.device, readback_memory, 0, pixels_size, 0, &mapped));
-  const std::vector<int> failed = failed_checks(static_cast<const unsigned char*>(mapped), width, height, cell);
+  const std::string wrong = judge(judged, static_cast<const unsigned char*>(mapped), input);
   vkUnmapMemory(d.device, readback_memory);
 
   vkDestroyCommandPool(d.device, command_pool, nullptr);
@@ -446,16 +640,11 @@ int run(const pfx::fx::EffectModel& model, const pfx::fx::GeneratedPass& pass, i
   vkDestroyPipeline(d.device, graphics, nullptr);
   vkDestroyShaderModule(d.device, vertex, nullptr);
   vkDestroyShaderModule(d.device, fragment, nullptr);
-  if (uniforms) vkDestroyBuffer(d.device, uniforms, nullptr);
-  if (uniform_memory) vkFreeMemory(d.device, uniform_memory, nullptr);
-  vkDestroyDescriptorPool(d.device, pool, nullptr);
   vkDestroyPipelineLayout(d.device, layout, nullptr);
-  vkDestroyDescriptorSetLayout(d.device, set_layout, nullptr);
+  bindings.destroy(d);
+  back_buffer.destroy(d);
   target.destroy(d);
-
-  if (failed.empty()) return std::printf("ok: %d checks\n", (width + cell - 1) / cell), 0;
-  std::string list;
-  for (int check : failed) list += (list.empty() ? "" : ", ") + std::to_string(check);
-  std::printf("FAIL: checks [%s] of %d\n", list.c_str(), (width + cell - 1) / cell);
-  return 1;
+  if (!wrong.empty()) return std::printf("FAIL: %s\n", wrong.c_str()), 1;
+  if (judged.expect == "checks") return std::printf("ok: %d checks\n", (width + judged.cell - 1) / judged.cell), 0;
+  return std::printf("ok: the picture is %s\n", judged.expect == "input" ? "the input" : "the input inverted"), 0;
 }
