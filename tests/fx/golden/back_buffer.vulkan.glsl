@@ -1,5 +1,9 @@
 // technique back_buffer pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -24,6 +28,10 @@ void main() {
 }
 #version 450
 layout(set = 0, binding = 1) uniform sampler2D G_ReShade_ns_BackBuffer;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 vec2 pfx_flip(vec2 c) { return c; }
@@ -54,6 +62,10 @@ void main() {
 }
 // technique back_buffer pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -78,6 +90,10 @@ void main() {
 }
 #version 450
 layout(set = 0, binding = 1) uniform sampler2D G_ReShade_ns_BackBuffer;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 vec2 pfx_flip(vec2 c) { return c; }

@@ -3,6 +3,10 @@
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 1) in;
 layout(set = 0, binding = 17, r32f) uniform coherent image2D G_SharedOut;
 shared float G_Slots[16];
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 vec2 pfx_flip(vec2 c) { return c; }
 vec3 pfx_flip(vec3 c) { return c; }
 ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }
@@ -36,6 +40,10 @@ layout(local_size_x = 8, local_size_y = 2, local_size_z = 1) in;
 layout(set = 0, binding = 1) uniform sampler2D G_ReShade_ns_BackBuffer;
 layout(set = 0, binding = 17, rgba32f) uniform coherent image2D G_CopyOut;
 layout(set = 0, binding = 18, r32ui) uniform coherent uimage2D G_CountOut;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 vec2 pfx_flip(vec2 c) { return c; }
 vec3 pfx_flip(vec3 c) { return c; }
 ivec2 pfx_flip_texel(ivec2 c, int h) { return c; }
@@ -59,6 +67,10 @@ void main() {
 }
 // technique compute pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -86,6 +98,7 @@ layout(set = 0, binding = 1) uniform sampler2D G_SharedIn;
 layout(set = 0, binding = 2) uniform sampler2D G_CopyIn;
 layout(set = 0, binding = 3) uniform usampler2D G_CountIn;
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
   int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;

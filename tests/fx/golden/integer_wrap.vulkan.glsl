@@ -1,5 +1,19 @@
 // technique integer_wrap pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  uint G_MinusOne;
+  int G_PastMax;
+  uint G_AllOnes;
+  uint G_Product;
+  int G_Shifted;
+  uint G_ShiftedOut;
+  int G_NegatedMin;
+  uint G_FromInt;
+  int G_FromUint;
+  ivec2 G_Pair;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -24,6 +38,8 @@ void main() {
 }
 #version 450
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
   uint G_MinusOne;
   int G_PastMax;
   uint G_AllOnes;

@@ -1,5 +1,9 @@
 // technique offsets_and_labels pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
 #line 64 3
@@ -20,6 +24,10 @@ void main() {
   gl_Position.y = -gl_Position.y;
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_target_0;
 int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
 ivec2 pfx_ftoi(vec2 x) { return mix(mix(mix(ivec2(0), ivec2(-2147483647 - 1), lessThan(x, vec2(0.0))), ivec2(x), greaterThan(x, vec2(-2147483648.0))), ivec2(2147483647), greaterThanEqual(x, vec2(2147483648.0))); }
@@ -41,6 +49,10 @@ void main() {
 }
 // technique offsets_and_labels pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -67,6 +79,7 @@ void main() {
 layout(set = 0, binding = 1) uniform sampler2D G_Grid;
 ivec2 G_Shift;
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
   int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;

@@ -1,5 +1,12 @@
 // technique persistence pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -24,6 +31,13 @@ void main() {
 }
 #version 450
 layout(set = 0, binding = 1) uniform sampler2D G_SCounter;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 vec2 pfx_flip(vec2 c) { return c; }
@@ -50,6 +64,13 @@ void main() {
 }
 // technique persistence pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -74,6 +95,13 @@ void main() {
 }
 #version 450
 layout(set = 0, binding = 1) uniform sampler2D G_SScratch;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 vec2 pfx_flip(vec2 c) { return c; }
@@ -100,6 +128,13 @@ void main() {
 }
 // technique persistence pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -125,6 +160,7 @@ void main() {
 #version 450
 layout(set = 0, binding = 1) uniform sampler2D G_SCounter;
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
   int G_IZero;
   int G_FrameCount;
   float G_FrameTime;

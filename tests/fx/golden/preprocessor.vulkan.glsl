@@ -1,5 +1,9 @@
 // technique preprocessor pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)

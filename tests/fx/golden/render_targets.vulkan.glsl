@@ -4,6 +4,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -30,6 +34,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
@@ -70,6 +78,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -96,6 +108,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
@@ -121,6 +137,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -147,6 +167,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
@@ -172,6 +196,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -198,6 +226,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
@@ -224,6 +256,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
@@ -259,6 +295,7 @@ layout(set = 0, binding = 4) uniform sampler2D G_SC;
 layout(set = 0, binding = 5) uniform sampler2D G_SD;
 layout(set = 0, binding = 6) uniform sampler2D G_SCleared;
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
   int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;

@@ -1,5 +1,10 @@
 // technique reshade_language pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_Mode;
+};
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
 #line 64 3
@@ -20,6 +25,11 @@ void main() {
   gl_Position.y = -gl_Position.y;
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_Mode;
+};
 layout(location = 0) out vec4 pfx_target_0;
 #line 24 1
 vec4 F_Fill(vec4 l_position)
@@ -37,6 +47,11 @@ void main() {
 }
 // technique reshade_language pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_Mode;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)

@@ -1,5 +1,9 @@
 // technique samplers pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -23,6 +27,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 19 1
@@ -43,6 +51,10 @@ void main() {
 }
 // technique samplers pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -66,6 +78,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 23 1
@@ -86,6 +102,10 @@ void main() {
 }
 // technique samplers pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -109,6 +129,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 25 1
@@ -129,6 +153,10 @@ void main() {
 }
 // technique samplers pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -162,6 +190,7 @@ layout(set = 0, binding = 7) uniform sampler2D G_EncodedSrgb;
 layout(set = 0, binding = 8) uniform sampler2D G_WrittenRaw;
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
   float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;

@@ -1,5 +1,9 @@
 // technique size_constants pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -29,6 +33,10 @@ layout(set = 0, binding = 3) uniform sampler2D G_Frame;
 layout(set = 0, binding = 4) uniform sampler2D G_Mipped;
 layout(set = 0, binding = 5) uniform sampler2D G_Vanished;
 int G_Levels;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 vec2 pfx_flip(vec2 c) { return c; }

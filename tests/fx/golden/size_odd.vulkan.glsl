@@ -1,5 +1,9 @@
 // technique size_odd pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -23,6 +27,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 7 1
@@ -43,6 +51,10 @@ void main() {
 }
 // technique size_odd pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -68,6 +80,10 @@ void main() {
 #version 450
 layout(set = 0, binding = 1) uniform sampler2D G_ReShade_ns_BackBuffer;
 layout(set = 0, binding = 2) uniform sampler2D G_SHalf;
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 vec2 pfx_flip(vec2 c) { return c; }

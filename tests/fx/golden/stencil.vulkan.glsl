@@ -1,5 +1,9 @@
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -23,6 +27,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
@@ -58,6 +66,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -81,6 +93,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -101,6 +117,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -124,6 +144,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
@@ -159,6 +183,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -182,6 +210,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -202,6 +234,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -225,6 +261,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -245,6 +285,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -268,6 +312,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
@@ -303,6 +351,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -326,6 +378,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
@@ -361,6 +417,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -384,6 +444,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -404,6 +468,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -427,6 +495,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -447,6 +519,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -470,6 +546,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -490,6 +570,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -513,6 +597,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -533,6 +621,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -556,6 +648,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;
 #line 31 1
@@ -576,6 +672,10 @@ void main() {
 }
 // technique stencil pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -609,6 +709,7 @@ layout(set = 0, binding = 7) uniform sampler2D G_SLess;
 layout(set = 0, binding = 8) uniform sampler2D G_SGreaterEqual;
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
   float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 layout(location = 0) out vec4 pfx_target_0;

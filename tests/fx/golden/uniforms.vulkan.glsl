@@ -1,5 +1,19 @@
 // technique uniforms pass 
 #version 450
+layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  float G_Strength;
+  vec3 G_Tint;
+  vec4 G_Edge;
+  int G_Mode;
+  bool G_Enabled;
+  ivec2 G_Cells;
+  uint G_Big;
+  float G_Weights[3];
+  mat2 G_Rows;
+  float G_Unset;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -24,6 +38,8 @@ void main() {
 }
 #version 450
 layout(set = 0, binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
   float G_Strength;
   vec3 G_Tint;
   vec4 G_Edge;

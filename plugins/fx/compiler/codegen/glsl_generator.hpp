@@ -33,8 +33,9 @@ struct GeneratedPass {
   // model.storages[image_units[i]].
   std::vector<int> sampler_units;
   std::vector<int> image_units;
-  // Uniforms the program reads as live uniforms (indices into model.uniforms), each a plain GLSL
-  // uniform named uniform_names[index]. Those compiled in as constants are not here.
+  // Uniforms the program reads as live uniforms (indices into model.uniforms, in order), each a
+  // plain GLSL uniform named uniform_names[index] (in the Vulkan dialect: every live uniform of
+  // the effect, the members of its block). Those compiled in as constants are not here.
   std::vector<int> uniforms;
   std::map<int, std::string> uniform_names;
   // The pixel shader may leave a pixel unwritten (discard or clip): a pass rendering to the back
@@ -49,7 +50,8 @@ struct GeneratedPass {
 // GL_KHR_vulkan_glsl rules) for SPIR-V (spirv_module.hpp). A Vulkan image keeps its top row first
 // and a Vulkan framebuffer's origin is its top-left, as FX's are, so the row flips of the GL
 // dialect fall away there, and the vertex position's y is negated (Vulkan's clip space points y
-// down). Uniforms live in one std140 block and samplers and storages take the bindings below.
+// down). Every live uniform of the effect lives in one std140 block, in the model's order, in
+// every stage of every pass; samplers and storages take the bindings below.
 enum class GlslDialect { kOpenGL, kVulkan };
 constexpr int kVulkanUniformBinding = 0;        // descriptor set 0
 constexpr int kVulkanFirstSamplerBinding = 1;   // + the sampler's unit (GeneratedPass::sampler_units)

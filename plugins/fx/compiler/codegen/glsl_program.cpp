@@ -204,13 +204,16 @@ class ProgramBuilder {
     std::string out, block;  // block: Vulkan's uniforms, which live in a uniform block
     // In the model's order, never a pointer's: the same source gives the same GLSL on every run
     // (the program cache's key).
+    // Vulkan's block holds every live uniform of the effect, used here or not, so that each stage
+    // of each pass reads one buffer with one layout.
     for (std::size_t index = 0; index < model_.uniforms.size(); ++index) {
       const VariableDecl* decl = model_.uniforms[index].decl;
-      if (!globals.count(decl)) continue;
+      const bool used = globals.count(decl) > 0;
+      if (!used && !w.vulkan()) continue;
       const std::string name = names_.global(decl) + w.array_suffix(decl->resolved);
       const std::vector<double>* value = constants_ && index < constants_->size() ? &(*constants_)[index] : nullptr;
       if (value && !value->empty() && can_be_constant(decl->resolved, *value)) {
-        out += "const " + w.type(decl->resolved) + " " + name + " = " + constant_initialiser(w, decl->resolved, *value) + ";\n";
+        if (used) out += "const " + w.type(decl->resolved) + " " + name + " = " + constant_initialiser(w, decl->resolved, *value) + ";\n";
         continue;
       }
       if (w.vulkan()) block += "  " + w.type(decl->resolved) + " " + name + ";\n";
