@@ -130,7 +130,7 @@ bool F_Check(int l_i)
       return F_Near(smoothstep(0.0, 2.0, (0.5 + G_Zero)), 0.15625);
     case 10:
 #line 21 1
-      return (((pfx_ftoi(sign(((-3.0) + G_Zero))) == (-1)) && (pfx_ftoi(sign(G_Zero)) == 0)) && (pfx_ftoi(sign((2.5 + G_Zero))) == 1));
+      return (((int(sign(((-3.0) + G_Zero))) == (-1)) && (int(sign(G_Zero)) == 0)) && (int(sign((2.5 + G_Zero))) == 1));
     case 11:
 #line 22 1
       return (((roundEven((2.5 + G_Zero)) == 2.0) && (roundEven((3.5 + G_Zero)) == 4.0)) && (roundEven(((-2.5) + G_Zero)) == (-2.0)));

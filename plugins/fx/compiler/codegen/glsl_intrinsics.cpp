@@ -271,7 +271,8 @@ std::string GlslWriter::with_hlsl_meaning(const Expr& e) {
     case I::kLog10: return "(log2(" + a[0] + ") * 0.301029995663981)";
     case I::kFmod: return helpers.insert("fmod"), "pfx_fmod(" + a[0] + ", " + a[1] + ")";
     case I::kMad: return "(" + a[0] + " * " + a[1] + " + " + a[2] + ")";
-    case I::kSign: return cast("sign(" + a[0] + ")", type_of(0), e.resolved);
+    // sign() is -1, 0 or 1: a plain conversion, not the saturating one.
+    case I::kSign: return type(e.resolved) + "(sign(" + a[0] + "))";
     case I::kIsfinite: return helpers.insert("isfinite"), "pfx_isfinite(" + a[0] + ")";
     case I::kAll: return all_or_any("all", type_of(0), a[0]);
     case I::kAny: return all_or_any("any", type_of(0), a[0]);
