@@ -35,7 +35,7 @@ bool samples_back_buffer_as_srgb(const pfx::fx::EffectModel& model) {
 // promised only to sample the frame).
 bool can_sample_frame(const pfx::fx::TechniqueInfo& technique, const std::vector<GeneratedPass>& generated) {
   for (std::size_t i = 0; i < technique.passes.size(); ++i)
-    if (writes_back_buffer(technique.passes[i])) return covers_back_buffer(technique.passes[i], generated[i]);
+    if (writes_back_buffer(technique.passes[i])) return pfx::fx::covers_back_buffer(technique.passes[i], generated[i].may_discard);
   return true;
 }
 

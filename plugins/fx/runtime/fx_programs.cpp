@@ -6,7 +6,6 @@
 
 #include <pfx/cpp/gl_program.hpp>
 
-#include "fx_full_screen_vs.hpp"
 #include "fx_pass_layout.hpp"
 #include "fx_program_cache.hpp"
 
@@ -197,16 +196,12 @@ bool FxPrograms::finish_build(const pfx::fx::CompiledEffect& compiled, int techn
     }
     for (int u : g.uniforms) p.uniform_locations.push_back(glGetUniformLocation(p.program, g.uniform_names.at(u).c_str()));
     p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
-    p.covers_target = covers_back_buffer(pass, g);
+    p.covers_target = pfx::fx::covers_back_buffer(pass, g.may_discard);
   }
   set.built = true;
   build_ms_ += ms_since(start);
   return true;
 }
 
-bool covers_back_buffer(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& generated) {
-  return draws_full_screen_triangle(pass.vertex_shader) && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !generated.may_discard &&
-         pass.vertex_count == 3 && pass.topology == pfx::fx::Topology::kTriangleList && !pass.stencil.enable;
-}
 
 }  // namespace pfx_fx

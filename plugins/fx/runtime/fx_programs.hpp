@@ -20,6 +20,7 @@
 #include <glad/gl.h>
 
 #include "effect_compiler.hpp"
+#include "model/full_screen_pass.hpp"
 #include "fx_uniform_values.hpp"
 
 namespace pfx_fx {
@@ -36,11 +37,6 @@ struct PassProgram {
   // empty once stored, or when it came from the cache.
   std::string cache_key;
 };
-
-// Whether a pass that writes the back buffer writes every pixel of it, so it need not start from
-// a copy of the picture: the standard full-screen triangle (fx_full_screen_vs.hpp), no blending,
-// every channel, no discard, no stencil test.
-bool covers_back_buffer(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& generated);
 
 struct ProgramSet {
   std::vector<pfx::fx::GeneratedPass> generated;  // per pass of the technique

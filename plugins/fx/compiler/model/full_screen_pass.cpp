@@ -1,17 +1,10 @@
-#include "fx_full_screen_vs.hpp"
+#include "full_screen_pass.hpp"
 
 #include <cctype>
 #include <string>
 
-namespace pfx_fx {
+namespace pfx::fx {
 namespace {
-
-using pfx::fx::Expr;
-using pfx::fx::ExprKind;
-using pfx::fx::FunctionDecl;
-using pfx::fx::Stmt;
-using pfx::fx::StmtKind;
-using pfx::fx::VariableDecl;
 
 constexpr const char* kStandard = "PostProcessVS";
 
@@ -66,7 +59,7 @@ bool draws_full_screen_triangle(const FunctionDecl* vs) {
   const VariableDecl *id = nullptr, *position = nullptr;
   for (const VariableDecl& p : vs->parameters) {
     if (has_semantic(p, "SV_VERTEXID")) id = &p;
-    if (has_semantic(p, "SV_POSITION") && (p.qualifiers & pfx::fx::kQualOut)) position = &p;
+    if (has_semantic(p, "SV_POSITION") && (p.qualifiers & kQualOut)) position = &p;
   }
   if (!id || !position) return false;
   int calls = 0;
@@ -76,4 +69,9 @@ bool draws_full_screen_triangle(const FunctionDecl* vs) {
   return calls == 1 && uses(vs->body.get(), id, position, &returns) == 2 && !returns;
 }
 
-}  // namespace pfx_fx
+bool covers_back_buffer(const PassInfo& pass, bool may_discard) {
+  return draws_full_screen_triangle(pass.vertex_shader) && !pass.blend[0].enable && pass.blend[0].write_mask == 0xF && !may_discard &&
+         pass.vertex_count == 3 && pass.topology == Topology::kTriangleList && !pass.stencil.enable;
+}
+
+}  // namespace pfx::fx

@@ -1,0 +1,318 @@
+#include "vk_technique.hpp"
+
+#include <algorithm>
+
+#include "codegen/spirv_module.hpp"
+#include "model/full_screen_pass.hpp"
+#include "vk_pipelines.hpp"
+#include "vk_states.hpp"
+
+namespace pfx::fx::vulkan {
+namespace {
+
+// The plain form of an 8-bit sRGB frame format: the back buffers hold its codes, and an sRGB view
+// of them decodes for the samplers that ask.
+VkFormat codes_form(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R8G8B8A8_SRGB: return VK_FORMAT_R8G8B8A8_UNORM;
+    case VK_FORMAT_B8G8R8A8_SRGB: return VK_FORMAT_B8G8R8A8_UNORM;
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32: return VK_FORMAT_A8B8G8R8_UNORM_PACK32;
+    default: return format;
+  }
+}
+
+bool contains(const std::vector<int>& list, int value) { return std::find(list.begin(), list.end(), value) != list.end(); }
+
+}  // namespace
+
+Technique::Status Technique::create(const Device& device, const CompiledEffect& effect, int technique, int width, int height,
+                                    VkFormat frame_format, VkPipelineCache cache, std::string& message) {
+  destroy();
+  d_ = &device;
+  model_ = &effect.model;
+  if (technique < 0 || static_cast<std::size_t>(technique) >= model_->techniques.size())
+    return message = "the effect has no technique " + std::to_string(technique), Status::kFailed;
+  technique_ = &model_->techniques[static_cast<std::size_t>(technique)];
+  width_ = width, height_ = height;
+  const Status supported = check_supported(message);
+  if (supported != Status::kOk) return supported;
+  Diagnostics diagnostics(effect.front->names);
+  std::vector<GeneratedPass> generated;
+  for (const PassInfo& pass : technique_->passes)
+    generated.push_back(generate_pass(effect.front->unit, *model_, pass, diagnostics, nullptr, GlslDialect::kVulkan));
+  if (diagnostics.has_errors()) return message = diagnostics.format_all(), Status::kFailed;
+  block_ = layout_uniform_block(*model_);
+  // vkCmdUpdateBuffer takes at most 64 KiB; FX blocks are a few hundred bytes.
+  if (block_.size > 65536) return message = "the uniforms take more than 64 KiB", Status::kUnsupported;
+  message = create_images(frame_format);
+  for (std::size_t i = 0; message.empty() && i < model_->samplers.size(); ++i) {
+    const SamplerInfo& s = model_->samplers[i];
+    const int image = image_of_texture(s.texture, 0);
+    const VkSamplerCreateInfo info = sampler_info(s, image >= 0 && images_[static_cast<std::size_t>(image)].integer,
+                                                  d_->properties.limits.maxSamplerLodBias);
+    samplers_.push_back(VK_NULL_HANDLE);
+    if (d_->vkCreateSampler(d_->device, &info, nullptr, &samplers_.back()) != VK_SUCCESS) message = "vkCreateSampler failed";
+  }
+  if (message.empty()) message = create_pool();
+  int back_buffer = 0;
+  for (std::size_t i = 0; message.empty() && i < generated.size(); ++i) {
+    passes_.emplace_back();
+    passes_.back().back_buffer = back_buffer;
+    message = create_pass(i, generated[i], cache);
+    if (passes_.back().writes_back_buffer) back_buffer = 1 - back_buffer;
+  }
+  if (message.empty()) return Status::kOk;
+  destroy();
+  return Status::kFailed;
+}
+
+Technique::Status Technique::check_supported(std::string& message) const {
+  for (const PassInfo& pass : technique_->passes) {
+    if (pass.stencil.enable) message = "pass '" + pass.name + "' uses the stencil test";
+    else if (pass.topology == Topology::kPointList) message = "pass '" + pass.name + "' draws points";
+    for (int i = 0; message.empty() && i < pass.render_target_count; ++i)
+      if (pass.render_targets[i] >= 0 && model_->textures[static_cast<std::size_t>(pass.render_targets[i])].dimension != 2)
+        message = "pass '" + pass.name + "' renders to a texture that is not 2D";
+    if (!message.empty()) break;
+  }
+  for (const TextureInfo& t : model_->textures)
+    if (message.empty() && !t.source.empty() && t.semantic == TextureSemantic::kNone) message = "texture '" + t.name + "' is read from an image file";
+  if (message.empty()) return Status::kOk;
+  message += ", which the Vulkan runtime does not run yet";
+  return Status::kUnsupported;
+}
+
+std::string Technique::create_images(VkFormat frame_format) {
+  const std::size_t textures = model_->textures.size();
+  images_.assign(textures + 3, Image{});
+  back_buffer_image_ = static_cast<int>(textures);
+  depth_image_ = back_buffer_image_ + 2;
+  for (std::size_t i = 0; i < textures; ++i) {
+    const TextureInfo& t = model_->textures[i];
+    if (t.semantic != TextureSemantic::kNone) continue;  // the back buffer's or the depth's images
+    ImageShape shape;
+    shape.type = t.dimension == 1 ? VK_IMAGE_TYPE_1D : t.dimension == 3 ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
+    shape.width = t.width, shape.height = t.height, shape.depth = t.depth, shape.levels = t.mip_levels;
+    shape.format = vk_format(t.format);
+    shape.integer = integer_class(t.format) != 0;
+    for (const StorageInfo& s : model_->storages) shape.storage = shape.storage || s.texture == static_cast<int>(i);
+    const std::string error = create_image(*d_, shape, images_[i]);
+    if (!error.empty()) return "texture '" + t.name + "' (" + format_name(t.format) + "): " + error;
+  }
+  ImageShape back;
+  back.width = width_, back.height = height_;
+  back.format = codes_form(frame_format);
+  for (int b = 0; b < 2; ++b) {
+    const std::string error = create_image(*d_, back, images_[static_cast<std::size_t>(back_buffer_image_ + b)]);
+    if (!error.empty()) return "the back buffer: " + error;
+  }
+  ImageShape depth;
+  depth.format = VK_FORMAT_R32_SFLOAT;
+  const std::string error = create_image(*d_, depth, images_[static_cast<std::size_t>(depth_image_)]);
+  return error.empty() ? "" : "the depth texture: " + error;
+}
+
+// The image a texture is, in a pass that starts with `back_buffer` holding the picture; -1 for none.
+int Technique::image_of_texture(int texture, int back_buffer) const {
+  if (texture < 0) return -1;
+  const TextureInfo& t = model_->textures[static_cast<std::size_t>(texture)];
+  if (t.semantic == TextureSemantic::kColor) return back_buffer_image_ + back_buffer;
+  if (t.semantic == TextureSemantic::kDepth) return depth_image_;
+  return texture;
+}
+
+VkImageView Technique::sampled_view(const SamplerInfo& sampler, int back_buffer) const {
+  const Image& image = images_[static_cast<std::size_t>(image_of_texture(sampler.texture, back_buffer))];
+  return sampler.srgb && image.srgb_view ? image.srgb_view : image.view;
+}
+
+std::string Technique::create_pool() {
+  // A set per pass, each with at most every sampler and storage of the effect.
+  const auto sets = static_cast<std::uint32_t>(technique_->passes.size());
+  const auto samplers = sets * static_cast<std::uint32_t>(std::max<std::size_t>(1, model_->samplers.size()));
+  const auto storages = sets * static_cast<std::uint32_t>(std::max<std::size_t>(1, model_->storages.size()));
+  const VkDescriptorPoolSize sizes[3] = {
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, sets}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, samplers}, {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storages}};
+  VkDescriptorPoolCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  info.maxSets = std::max<std::uint32_t>(1, sets);
+  info.poolSizeCount = 3;
+  info.pPoolSizes = sizes;
+  if (d_->vkCreateDescriptorPool(d_->device, &info, nullptr, &pool_) != VK_SUCCESS) return "vkCreateDescriptorPool failed";
+  if (block_.size == 0) return "";
+  VkBufferCreateInfo buffer{};
+  buffer.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  buffer.size = block_.size;
+  buffer.usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  if (d_->vkCreateBuffer(d_->device, &buffer, nullptr, &uniform_buffer_) != VK_SUCCESS) return "vkCreateBuffer failed";
+  VkMemoryRequirements needs;
+  d_->vkGetBufferMemoryRequirements(d_->device, uniform_buffer_, &needs);
+  uniform_memory_ = d_->allocate(needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  if (!uniform_memory_ || d_->vkBindBufferMemory(d_->device, uniform_buffer_, uniform_memory_, 0) != VK_SUCCESS) return "no memory for the uniforms";
+  return "";
+}
+
+std::string Technique::create_pass(std::size_t index, const GeneratedPass& generated, VkPipelineCache cache) {
+  Pass& pass = passes_[index];
+  const PassInfo& info = technique_->passes[index];
+  pass.info = &info;
+  pass.compute = !generated.compute.empty();
+  pass.writes_back_buffer = !pass.compute && info.render_target_count == 0;
+  pass.copy_first = pass.writes_back_buffer && !covers_back_buffer(info, generated.may_discard);
+  if (pass.writes_back_buffer) pass.targets.push_back(back_buffer_image_ + 1 - pass.back_buffer);
+  for (int i = 0; !pass.compute && i < info.render_target_count; ++i) pass.targets.push_back(info.render_targets[i]);
+  for (int unit : generated.sampler_units)
+    pass.sampled.push_back(image_of_texture(model_->samplers[static_cast<std::size_t>(unit)].texture, pass.back_buffer));
+  for (int unit : generated.image_units) pass.stored.push_back(model_->storages[static_cast<std::size_t>(unit)].texture);
+  const std::string* sources[2] = {pass.compute ? &generated.compute : &generated.vertex, &generated.fragment};
+  const SpirvStage stages[2] = {pass.compute ? SpirvStage::kCompute : SpirvStage::kVertex, SpirvStage::kFragment};
+  for (int i = 0; i < (pass.compute ? 1 : 2); ++i) {
+    std::vector<std::uint32_t> words;
+    std::string log;
+    if (!compile_spirv(*sources[i], stages[i], words, log)) return "pass '" + info.name + "': glslang refused the generated code: " + log;
+    VkShaderModuleCreateInfo module{};
+    module.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+    module.codeSize = words.size() * 4;
+    module.pCode = words.data();
+    if (d_->vkCreateShaderModule(d_->device, &module, nullptr, &pass.modules[i]) != VK_SUCCESS) return "vkCreateShaderModule failed";
+  }
+  std::string error = create_bindings(pass, generated);
+  if (error.empty()) error = create_draw(pass, cache);
+  return error.empty() ? "" : "pass '" + info.name + "': " + error;
+}
+
+std::string Technique::create_bindings(Pass& pass, const GeneratedPass& generated) {
+  std::vector<VkDescriptorSetLayoutBinding> entries;
+  if (block_.size) entries.push_back({static_cast<std::uint32_t>(kVulkanUniformBinding), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr});
+  for (std::size_t unit = 0; unit < generated.sampler_units.size(); ++unit)
+    entries.push_back({static_cast<std::uint32_t>(kVulkanFirstSamplerBinding + static_cast<int>(unit)), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                       VK_SHADER_STAGE_ALL, nullptr});
+  for (std::size_t unit = 0; unit < generated.image_units.size(); ++unit)
+    entries.push_back({static_cast<std::uint32_t>(kVulkanFirstStorageBinding + static_cast<int>(unit)), VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1,
+                       VK_SHADER_STAGE_ALL, nullptr});
+  VkDescriptorSetLayoutCreateInfo layout{};
+  layout.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  layout.bindingCount = static_cast<std::uint32_t>(entries.size());
+  layout.pBindings = entries.data();
+  if (d_->vkCreateDescriptorSetLayout(d_->device, &layout, nullptr, &pass.set_layout) != VK_SUCCESS) return "vkCreateDescriptorSetLayout failed";
+  VkDescriptorSetAllocateInfo allocate{};
+  allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  allocate.descriptorPool = pool_;
+  allocate.descriptorSetCount = 1;
+  allocate.pSetLayouts = &pass.set_layout;
+  if (d_->vkAllocateDescriptorSets(d_->device, &allocate, &pass.set) != VK_SUCCESS) return "vkAllocateDescriptorSets failed";
+  VkPipelineLayoutCreateInfo pipeline_layout{};
+  pipeline_layout.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  pipeline_layout.setLayoutCount = 1;
+  pipeline_layout.pSetLayouts = &pass.set_layout;
+  if (d_->vkCreatePipelineLayout(d_->device, &pipeline_layout, nullptr, &pass.layout) != VK_SUCCESS) return "vkCreatePipelineLayout failed";
+
+  // Descriptors: the uniform block, each sampler's view (in the general layout when the pass
+  // also stores to the image), each storage's level.
+  std::vector<VkDescriptorImageInfo> images(generated.sampler_units.size() + generated.image_units.size());
+  std::vector<VkWriteDescriptorSet> writes;
+  const VkDescriptorBufferInfo buffer{uniform_buffer_, 0, block_.size};
+  auto write = [&](int binding, VkDescriptorType type, const VkDescriptorImageInfo* image) {
+    VkWriteDescriptorSet w{};
+    w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    w.dstSet = pass.set;
+    w.dstBinding = static_cast<std::uint32_t>(binding);
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    w.pImageInfo = image;
+    w.pBufferInfo = image ? nullptr : &buffer;
+    writes.push_back(w);
+  };
+  if (block_.size) write(kVulkanUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, nullptr);
+  for (std::size_t unit = 0; unit < generated.sampler_units.size(); ++unit) {
+    const int sampler = generated.sampler_units[unit];
+    const bool stored = contains(pass.stored, pass.sampled[unit]);
+    images[unit] = {samplers_[static_cast<std::size_t>(sampler)], sampled_view(model_->samplers[static_cast<std::size_t>(sampler)], pass.back_buffer),
+                    stored ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    write(kVulkanFirstSamplerBinding + static_cast<int>(unit), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, &images[unit]);
+  }
+  for (std::size_t unit = 0; unit < generated.image_units.size(); ++unit) {
+    const StorageInfo& s = model_->storages[static_cast<std::size_t>(generated.image_units[unit])];
+    const Image& image = images_[static_cast<std::size_t>(s.texture)];
+    pass.owned_views.push_back(level_view(*d_, image, s.mip_level, image.format));
+    if (!pass.owned_views.back()) return "vkCreateImageView failed for storage '" + s.name + "'";
+    VkDescriptorImageInfo& info = images[generated.sampler_units.size() + unit];
+    info = {VK_NULL_HANDLE, pass.owned_views.back(), VK_IMAGE_LAYOUT_GENERAL};
+    write(kVulkanFirstStorageBinding + static_cast<int>(unit), VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, &info);
+  }
+  d_->vkUpdateDescriptorSets(d_->device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  return "";
+}
+
+std::string Technique::create_draw(Pass& pass, VkPipelineCache cache) {
+  if (pass.compute) {
+    pass.pipeline = create_compute_pipeline(*d_, pass.modules[0], pass.layout, cache);
+    return pass.pipeline ? "" : "vkCreateComputePipelines failed";
+  }
+  GraphicsPlan plan;
+  plan.pass = pass.info;
+  plan.vertex = pass.modules[0], plan.fragment = pass.modules[1];
+  plan.layout = pass.layout;
+  std::vector<VkImageView> views;
+  for (std::size_t i = 0; i < pass.targets.size(); ++i) {
+    const Image& image = images_[static_cast<std::size_t>(pass.targets[i])];
+    const bool srgb = pass.info->srgb_write && image.srgb_view;
+    // An attachment is one level: level 0 of a texture with mips.
+    VkImageView view = srgb ? image.srgb_view : image.view;
+    if (image.levels > 1) {
+      pass.owned_views.push_back(level_view(*d_, image, 0, srgb ? image.srgb_format : image.format));
+      view = pass.owned_views.back();
+      if (!view) return "vkCreateImageView failed for a render target";
+    }
+    views.push_back(view);
+    plan.attachments.push_back({srgb ? image.srgb_format : image.format, image.integer});
+    if (i == 0) plan.viewport_width = plan.area_width = image.width, plan.viewport_height = plan.area_height = image.height;
+    plan.area_width = std::min(plan.area_width, image.width);
+    plan.area_height = std::min(plan.area_height, image.height);
+  }
+  pass.area_width = plan.area_width, pass.area_height = plan.area_height;
+  pass.render_pass = plan.render_pass = create_render_pass(*d_, plan.attachments, pass.info->clear_render_targets);
+  if (!pass.render_pass) return "vkCreateRenderPass failed";
+  VkFramebufferCreateInfo framebuffer{};
+  framebuffer.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
+  framebuffer.renderPass = pass.render_pass;
+  framebuffer.attachmentCount = static_cast<std::uint32_t>(views.size());
+  framebuffer.pAttachments = views.data();
+  framebuffer.width = static_cast<std::uint32_t>(plan.area_width);
+  framebuffer.height = static_cast<std::uint32_t>(plan.area_height);
+  framebuffer.layers = 1;
+  if (d_->vkCreateFramebuffer(d_->device, &framebuffer, nullptr, &pass.framebuffer) != VK_SUCCESS) return "vkCreateFramebuffer failed";
+  pass.pipeline = create_graphics_pipeline(*d_, plan, cache);
+  return pass.pipeline ? "" : "vkCreateGraphicsPipelines failed";
+}
+
+void Technique::destroy() {
+  if (!d_) return;
+  const Device& d = *d_;
+  for (Pass& pass : passes_) {
+    if (pass.pipeline) d.vkDestroyPipeline(d.device, pass.pipeline, nullptr);
+    if (pass.framebuffer) d.vkDestroyFramebuffer(d.device, pass.framebuffer, nullptr);
+    if (pass.render_pass) d.vkDestroyRenderPass(d.device, pass.render_pass, nullptr);
+    if (pass.layout) d.vkDestroyPipelineLayout(d.device, pass.layout, nullptr);
+    if (pass.set_layout) d.vkDestroyDescriptorSetLayout(d.device, pass.set_layout, nullptr);
+    for (VkShaderModule m : pass.modules)
+      if (m) d.vkDestroyShaderModule(d.device, m, nullptr);
+    for (VkImageView v : pass.owned_views)
+      if (v) d.vkDestroyImageView(d.device, v, nullptr);
+  }
+  passes_.clear();
+  if (pool_) d.vkDestroyDescriptorPool(d.device, pool_, nullptr);  // frees the sets
+  pool_ = VK_NULL_HANDLE;
+  if (uniform_buffer_) d.vkDestroyBuffer(d.device, uniform_buffer_, nullptr);
+  if (uniform_memory_) d.vkFreeMemory(d.device, uniform_memory_, nullptr);
+  uniform_buffer_ = VK_NULL_HANDLE, uniform_memory_ = VK_NULL_HANDLE;
+  for (VkSampler s : samplers_)
+    if (s) d.vkDestroySampler(d.device, s, nullptr);
+  samplers_.clear();
+  for (Image& image : images_) destroy_image(d, image);
+  images_.clear();
+  started_ = false;
+  d_ = nullptr;
+}
+
+}  // namespace pfx::fx::vulkan

@@ -1,0 +1,101 @@
+#pragma once
+// One technique of an FX effect, run natively on a Vulkan device it is given: the passes compiled
+// to SPIR-V (the generator's Vulkan dialect through glslang), the effect's textures as images with
+// their formats and mip levels (kept from frame to frame, as FX effects expect), a sampler per FX
+// sampler, the uniforms in one block updated inside the command buffer, two back buffers that
+// the passes draw between as ReShade's runtime does, and a pipeline per pass. record() writes a
+// frame's work into the caller's command buffer: the frame's image is copied in, each pass drawn
+// or dispatched with the barriers it needs, the picture copied back, the image left in the layout
+// asked for. Nothing is submitted and nothing waits: the owner submits on its queue, frames in
+// the order they were recorded.
+//
+// What the GL runtime does that this does not yet: the stencil test, textures read from image
+// files (`source =`), the frame's depth (the depth texture is one texel at the far plane), point
+// lists. create() says kUnsupported with the reason for a technique that needs one of them.
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <vector>
+
+#include "effect_compiler.hpp"
+#include "vk_device.hpp"
+#include "vk_images.hpp"
+#include "vk_uniform_block.hpp"
+
+namespace pfx::fx::vulkan {
+
+// The caller's frame: an image of `format` at the size the effect was compiled for, usable as a
+// copy source and destination, in `layout` when the commands start; left in `final_layout`. Its
+// earlier writes are waited for (all commands, memory writes), and later commands wait for ours.
+struct Frame {
+  VkImage image = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  VkImageLayout final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+};
+
+class Technique {
+ public:
+  enum class Status { kOk, kUnsupported, kFailed };
+
+  Technique() = default;
+  Technique(const Technique&) = delete;
+  Technique& operator=(const Technique&) = delete;
+  ~Technique() { destroy(); }
+
+  // Builds technique `technique` of `effect` (its model and tree, compiled for frames of `width` x
+  // `height`) for frames of `frame_format`. `cache` may be VK_NULL_HANDLE. On anything but kOk,
+  // `message` says why and nothing is left behind. `device` and `effect` outlive the technique.
+  Status create(const Device& device, const CompiledEffect& effect, int technique, int width, int height, VkFormat frame_format,
+                VkPipelineCache cache, std::string& message);
+  // The frame's work. `uniforms`: per model uniform, its components as the runtimes hold them.
+  void record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms);
+  void destroy();
+
+ private:
+  struct Pass {
+    const PassInfo* info = nullptr;
+    bool compute = false;
+    bool writes_back_buffer = false, copy_first = false;
+    int back_buffer = 0;  // which back buffer holds the picture when the pass starts
+    std::vector<int> targets, sampled, stored;  // image indices
+    std::vector<VkImageView> owned_views;       // storages' level views
+    VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkRenderPass render_pass = VK_NULL_HANDLE;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    int area_width = 1, area_height = 1;
+  };
+
+  Status check_supported(std::string& message) const;
+  std::string create_images(VkFormat frame_format);
+  std::string create_pass(std::size_t index, const GeneratedPass& generated, VkPipelineCache cache);
+  std::string create_bindings(Pass& pass, const GeneratedPass& generated);
+  std::string create_draw(Pass& pass, VkPipelineCache cache);
+  std::string create_pool();
+  int image_of_texture(int texture, int back_buffer) const;
+  VkImageView sampled_view(const SamplerInfo& sampler, int back_buffer) const;
+  void record_uniforms(VkCommandBuffer commands, const std::vector<std::vector<double>>& uniforms);
+  void record_pass(VkCommandBuffer commands, Pass& pass);
+
+  const Device* d_ = nullptr;
+  const EffectModel* model_ = nullptr;
+  const TechniqueInfo* technique_ = nullptr;
+  int width_ = 0, height_ = 0;
+  std::vector<Image> images_;  // per model texture, then the two back buffers, then the depth texture
+  int back_buffer_image_ = 0, depth_image_ = 0;
+  std::vector<VkSampler> samplers_;  // per model sampler
+  UniformBlockLayout block_;
+  VkBuffer uniform_buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory uniform_memory_ = VK_NULL_HANDLE;
+  VkAccessFlags uniform_access_ = 0;
+  std::vector<unsigned char> block_bytes_;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  std::vector<Pass> passes_;
+  bool started_ = false;  // the images were cleared: ReShade's textures start as zeros
+};
+
+}  // namespace pfx::fx::vulkan

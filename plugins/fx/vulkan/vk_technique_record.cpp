@@ -1,0 +1,92 @@
+// Technique::record: a frame's commands (vk_technique.hpp).
+#include <algorithm>
+
+#include "vk_technique.hpp"
+
+namespace pfx::fx::vulkan {
+
+void Technique::record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms) {
+  const Device& d = *d_;
+  if (!started_) {
+    for (std::size_t i = 0; i < images_.size(); ++i)
+      if (images_[i].image) clear_image(d, commands, images_[i], static_cast<int>(i) == depth_image_);
+    started_ = true;
+  }
+  record_uniforms(commands, uniforms);
+  // The caller's image, tracked as ours for the length of the frame.
+  Image caller;
+  caller.image = frame.image;
+  caller.format = frame.format;
+  caller.width = width_, caller.height = height_;
+  caller.layout = frame.layout;
+  caller.access = VK_ACCESS_MEMORY_WRITE_BIT;
+  caller.stage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+  Image* back_buffers = &images_[static_cast<std::size_t>(back_buffer_image_)];
+  copy_image(d, commands, caller, back_buffers[0]);
+  int current = 0;
+  for (Pass& pass : passes_) {
+    record_pass(commands, pass);
+    if (pass.writes_back_buffer) current = 1 - current;
+  }
+  bool drawn = false;
+  for (const Pass& pass : passes_) drawn = drawn || pass.writes_back_buffer;
+  if (drawn) copy_image(d, commands, back_buffers[current], caller);
+  use_image(d, commands, caller, frame.final_layout, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT);
+}
+
+void Technique::record_uniforms(VkCommandBuffer commands, const std::vector<std::vector<double>>& uniforms) {
+  if (!block_.size) return;
+  const Device& d = *d_;
+  pack_uniform_block(*model_, block_, uniforms, block_bytes_);
+  // The last frame's passes read the block: they finish before it is written, and this frame's
+  // passes read what is written (the values travel inside the command buffer).
+  VkBufferMemoryBarrier b{};
+  b.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.buffer = uniform_buffer_;
+  b.size = VK_WHOLE_SIZE;
+  b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  d.vkCmdPipelineBarrier(commands, kShaderStages, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 1, &b, 0, nullptr);
+  d.vkCmdUpdateBuffer(commands, uniform_buffer_, 0, block_.size, block_bytes_.data());
+  b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  b.dstAccessMask = VK_ACCESS_UNIFORM_READ_BIT;
+  d.vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, kShaderStages, 0, 0, nullptr, 1, &b, 0, nullptr);
+}
+
+void Technique::record_pass(VkCommandBuffer commands, Pass& pass) {
+  const Device& d = *d_;
+  auto image = [&](int index) -> Image& { return images_[static_cast<std::size_t>(index)]; };
+  const bool stored_mips = pass.compute && pass.info->generate_mipmaps;
+  for (int s : pass.stored) use_as_storage(d, commands, image(s));
+  for (int s : pass.sampled)
+    if (std::find(pass.stored.begin(), pass.stored.end(), s) == pass.stored.end()) use_for_sampling(d, commands, image(s));
+  if (pass.compute) {
+    d.vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline);
+    d.vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set, 0, nullptr);
+    const int* groups = pass.info->dispatch;
+    d.vkCmdDispatch(commands, static_cast<std::uint32_t>(groups[0]), static_cast<std::uint32_t>(groups[1]), static_cast<std::uint32_t>(groups[2]));
+    if (stored_mips)
+      for (int s : pass.stored) generate_mips(d, commands, image(s));
+    return;
+  }
+  // A pass that may leave pixels of the back buffer unwritten starts from the picture.
+  if (pass.copy_first) copy_image(d, commands, image(back_buffer_image_ + pass.back_buffer), image(pass.targets[0]));
+  for (int t : pass.targets) use_as_attachment(d, commands, image(t));
+  std::vector<VkClearValue> clears(pass.targets.size(), VkClearValue{});  // zero bits in every format
+  VkRenderPassBeginInfo begin{};
+  begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+  begin.renderPass = pass.render_pass;
+  begin.framebuffer = pass.framebuffer;
+  begin.renderArea = {{0, 0}, {static_cast<std::uint32_t>(pass.area_width), static_cast<std::uint32_t>(pass.area_height)}};
+  begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
+  begin.pClearValues = clears.data();
+  d.vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  d.vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
+  d.vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.layout, 0, 1, &pass.set, 0, nullptr);
+  d.vkCmdDraw(commands, static_cast<std::uint32_t>(pass.info->vertex_count), 1, 0, 0);
+  d.vkCmdEndRenderPass(commands);
+  if (!pass.writes_back_buffer && pass.info->generate_mipmaps)
+    for (int t : pass.targets) generate_mips(d, commands, image(t));
+}
+
+}  // namespace pfx::fx::vulkan
