@@ -6,7 +6,7 @@ namespace pfx::fx::vulkan {
 namespace {
 
 constexpr VkAccessFlags kWrites = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT |
-                                  VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
+                                  VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
 
 VkImageMemoryBarrier barrier(const Image& image, VkImageLayout layout, VkAccessFlags access, int first_level, int levels) {
   VkImageMemoryBarrier b{};
@@ -17,7 +17,7 @@ VkImageMemoryBarrier barrier(const Image& image, VkImageLayout layout, VkAccessF
   b.newLayout = layout;
   b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.image = image.image;
-  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<std::uint32_t>(first_level), static_cast<std::uint32_t>(levels), 0, 1};
+  b.subresourceRange = {image.aspect, static_cast<std::uint32_t>(first_level), static_cast<std::uint32_t>(levels), 0, 1};
   return b;
 }
 
@@ -31,12 +31,18 @@ VkImageView make_view(const Device& d, const Image& image, VkFormat format, int 
   info.image = image.image;
   info.viewType = image.type == VK_IMAGE_TYPE_1D ? VK_IMAGE_VIEW_TYPE_1D : image.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
   info.format = format;
-  info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, static_cast<std::uint32_t>(first_level), static_cast<std::uint32_t>(levels), 0, 1};
+  info.subresourceRange = {image.aspect, static_cast<std::uint32_t>(first_level), static_cast<std::uint32_t>(levels), 0, 1};
   VkImageView out = VK_NULL_HANDLE;
   return d.vkCreateImageView(d.device, &info, nullptr, &out) == VK_SUCCESS ? out : VK_NULL_HANDLE;
 }
 
 }  // namespace
+
+VkFormat stencil_format(const Device& d) {
+  for (VkFormat format : {VK_FORMAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT})
+    if (d.optimal_features(format) & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) return format;
+  return VK_FORMAT_UNDEFINED;
+}
 
 std::string create_image(const Device& d, const ImageShape& shape, Image& out) {
   out = Image{};
@@ -45,6 +51,8 @@ std::string create_image(const Device& d, const ImageShape& shape, Image& out) {
   out.format = shape.format;
   out.srgb_format = srgb_form(shape.format);
   out.integer = shape.integer;
+  if (shape.stencil)
+    out.aspect = shape.format == VK_FORMAT_S8_UINT ? VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
   info.flags = out.srgb_format != VK_FORMAT_UNDEFINED ? VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT : 0;
@@ -57,6 +65,7 @@ std::string create_image(const Device& d, const ImageShape& shape, Image& out) {
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                (shape.type != VK_IMAGE_TYPE_3D ? VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT : 0) | (shape.storage ? VK_IMAGE_USAGE_STORAGE_BIT : 0);
+  if (shape.stencil) info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   if (d.vkCreateImage(d.device, &info, nullptr, &out.image) != VK_SUCCESS) return "vkCreateImage refused the texture's format or size";
   VkMemoryRequirements needs;
   d.vkGetImageMemoryRequirements(d.device, out.image, &needs);
@@ -111,8 +120,20 @@ void use_as_storage(const Device& d, VkCommandBuffer commands, Image& image) {
             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
 }
 
+void use_as_stencil(const Device& d, VkCommandBuffer commands, Image& image) {
+  use_image(d, commands, image, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+            VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT);
+}
+
 void clear_image(const Device& d, VkCommandBuffer commands, Image& image, bool one) {
   use_image(d, commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  if (image.aspect != VK_IMAGE_ASPECT_COLOR_BIT) {
+    const VkClearDepthStencilValue zero{1.0f, 0};
+    const VkImageSubresourceRange range = {image.aspect, 0, 1, 0, 1};
+    d.vkCmdClearDepthStencilImage(commands, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+    return;
+  }
   VkClearColorValue value{};  // zero bits: 0 as a float, an int and a uint
   if (one) value.float32[0] = value.float32[1] = value.float32[2] = value.float32[3] = 1.0f;
   const VkImageSubresourceRange all = {VK_IMAGE_ASPECT_COLOR_BIT, 0, static_cast<std::uint32_t>(image.levels), 0, 1};

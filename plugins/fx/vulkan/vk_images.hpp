@@ -21,6 +21,7 @@ struct Image {
   VkImageType type = VK_IMAGE_TYPE_2D;
   int width = 1, height = 1, depth = 1, levels = 1;
   bool integer = false;
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;  // depth and stencil for the stencil buffer
   // What the recorded commands leave it in.
   VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkAccessFlags access = 0;
@@ -33,7 +34,13 @@ struct ImageShape {
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
   bool integer = false;
   bool storage = false;  // a compute pass stores to it
+  // The stencil buffer: a depth-stencil attachment (`format` has a stencil aspect), cleared by
+  // copy commands, never sampled.
+  bool stencil = false;
 };
+
+// A stencil format the device draws with: 8-bit stencil alone where it can, else with depth.
+VkFormat stencil_format(const Device& d);
 
 // Device-local storage of the shape, usable as a sampled image, colour attachment and copy source
 // and destination (and storage image when asked); an sRGB view where the format has an sRGB form.
@@ -54,8 +61,10 @@ void use_image(const Device& d, VkCommandBuffer commands, Image& image, VkImageL
 void use_for_sampling(const Device& d, VkCommandBuffer commands, Image& image);
 void use_as_attachment(const Device& d, VkCommandBuffer commands, Image& image);
 void use_as_storage(const Device& d, VkCommandBuffer commands, Image& image);
+void use_as_stencil(const Device& d, VkCommandBuffer commands, Image& image);
 
-// Every level filled with zeros (`one`: with 1.0, the far plane of a depth texture).
+// Every level filled with zeros (`one`: with 1.0, the far plane of a depth texture); a stencil
+// buffer with stencil 0.
 void clear_image(const Device& d, VkCommandBuffer commands, Image& image, bool one = false);
 // Level 0 to every other level, each halving the last (linear filtering where the format allows
 // it), as GenerateMipMaps asks; the image is ready to sample afterwards.

@@ -4,7 +4,7 @@
 
 namespace pfx::fx::vulkan {
 
-VkRenderPass create_render_pass(const Device& d, const std::vector<AttachmentPlan>& attachments, bool clear) {
+VkRenderPass create_render_pass(const Device& d, const std::vector<AttachmentPlan>& attachments, bool clear, VkFormat stencil) {
   std::vector<VkAttachmentDescription> descriptions;
   std::vector<VkAttachmentReference> references;
   for (const AttachmentPlan& a : attachments) {
@@ -23,6 +23,19 @@ VkRenderPass create_render_pass(const Device& d, const std::vector<AttachmentPla
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpass.colorAttachmentCount = static_cast<std::uint32_t>(references.size());
   subpass.pColorAttachments = references.data();
+  const VkAttachmentReference stencil_reference{static_cast<std::uint32_t>(descriptions.size()), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  if (stencil != VK_FORMAT_UNDEFINED) {
+    VkAttachmentDescription description{};
+    description.format = stencil;
+    description.samples = VK_SAMPLE_COUNT_1_BIT;
+    description.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // no depth test: a combined format's depth is unused
+    description.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    description.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    description.stencilStoreOp = VK_ATTACHMENT_STORE_OP_STORE;
+    description.initialLayout = description.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    descriptions.push_back(description);
+    subpass.pDepthStencilAttachment = &stencil_reference;
+  }
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
   info.attachmentCount = static_cast<std::uint32_t>(descriptions.size());
@@ -67,6 +80,11 @@ VkPipeline create_graphics_pipeline(const Device& d, const GraphicsPlan& plan, V
   blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
   blend.attachmentCount = static_cast<std::uint32_t>(blends.size());
   blend.pAttachments = blends.data();
+  VkPipelineDepthStencilStateCreateInfo depth_stencil{};
+  depth_stencil.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+  depth_stencil.stencilTestEnable = plan.stencil ? VK_TRUE : VK_FALSE;
+  depth_stencil.front = depth_stencil.back = stencil_state(plan.pass->stencil);
+  depth_stencil.maxDepthBounds = 1.0f;
   VkGraphicsPipelineCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
   info.stageCount = 2;
@@ -77,6 +95,7 @@ VkPipeline create_graphics_pipeline(const Device& d, const GraphicsPlan& plan, V
   info.pRasterizationState = &raster;
   info.pMultisampleState = &multisample;
   info.pColorBlendState = &blend;
+  info.pDepthStencilState = plan.stencil ? &depth_stencil : nullptr;
   info.layout = plan.layout;
   info.renderPass = plan.render_pass;
   VkPipeline out = VK_NULL_HANDLE;

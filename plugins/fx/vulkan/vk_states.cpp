@@ -73,7 +73,48 @@ VkBlendFactor blend_factor(BlendFactor factor) {
   return VK_BLEND_FACTOR_ONE;
 }
 
+VkCompareOp compare_op(CompareFunc func) {
+  switch (func) {
+    case CompareFunc::kNever: return VK_COMPARE_OP_NEVER;
+    case CompareFunc::kLess: return VK_COMPARE_OP_LESS;
+    case CompareFunc::kEqual: return VK_COMPARE_OP_EQUAL;
+    case CompareFunc::kLessEqual: return VK_COMPARE_OP_LESS_OR_EQUAL;
+    case CompareFunc::kGreater: return VK_COMPARE_OP_GREATER;
+    case CompareFunc::kNotEqual: return VK_COMPARE_OP_NOT_EQUAL;
+    case CompareFunc::kGreaterEqual: return VK_COMPARE_OP_GREATER_OR_EQUAL;
+    case CompareFunc::kAlways: break;
+  }
+  return VK_COMPARE_OP_ALWAYS;
+}
+
+// ReShade's INCR and DECR wrap, INCRSAT and DECRSAT saturate (Vulkan names them the other way).
+VkStencilOp stencil_op(StencilOp op) {
+  switch (op) {
+    case StencilOp::kKeep: break;
+    case StencilOp::kZero: return VK_STENCIL_OP_ZERO;
+    case StencilOp::kReplace: return VK_STENCIL_OP_REPLACE;
+    case StencilOp::kIncrSat: return VK_STENCIL_OP_INCREMENT_AND_CLAMP;
+    case StencilOp::kDecrSat: return VK_STENCIL_OP_DECREMENT_AND_CLAMP;
+    case StencilOp::kInvert: return VK_STENCIL_OP_INVERT;
+    case StencilOp::kIncr: return VK_STENCIL_OP_INCREMENT_AND_WRAP;
+    case StencilOp::kDecr: return VK_STENCIL_OP_DECREMENT_AND_WRAP;
+  }
+  return VK_STENCIL_OP_KEEP;
+}
+
 }  // namespace
+
+VkStencilOpState stencil_state(const StencilState& s) {
+  VkStencilOpState out{};
+  out.failOp = stencil_op(s.fail_op);
+  out.passOp = stencil_op(s.pass_op);
+  out.depthFailOp = stencil_op(s.depth_fail_op);
+  out.compareOp = compare_op(s.func);
+  out.compareMask = s.read_mask & 0xFFu;
+  out.writeMask = s.write_mask & 0xFFu;
+  out.reference = s.ref & 0xFFu;
+  return out;
+}
 
 VkSamplerCreateInfo sampler_info(const SamplerInfo& s, bool integer_texture, float max_lod_bias) {
   VkSamplerCreateInfo info{};

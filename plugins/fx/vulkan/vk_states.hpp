@@ -1,7 +1,7 @@
 #pragma once
 // FX's formats and states in Vulkan's terms: texture formats (with the sRGB form an RGBA8
 // texture is sampled and written through when a sampler or pass asks for sRGB), sampler states,
-// blend states and topologies. The same choices as the GL runtime's, so a technique means the
+// blend and stencil states and topologies. The same choices as the GL runtime's, so a technique means the
 // same on both.
 #include <vulkan/vulkan.h>
 
@@ -18,6 +18,8 @@ VkFormat srgb_form(VkFormat format);
 VkSamplerCreateInfo sampler_info(const SamplerInfo& sampler, bool integer_texture, float max_lod_bias);
 
 VkPipelineColorBlendAttachmentState blend_state(const BlendTarget& blend, bool integer_target);
+// The same operations on front and back faces, as ReShade applies them.
+VkStencilOpState stencil_state(const StencilState& stencil);
 VkPrimitiveTopology vk_topology(Topology topology);
 
 }  // namespace pfx::fx::vulkan

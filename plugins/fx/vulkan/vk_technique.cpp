@@ -23,6 +23,15 @@ VkFormat codes_form(VkFormat format) {
 
 bool contains(const std::vector<int>& list, int value) { return std::find(list.begin(), list.end(), value) != list.end(); }
 
+// A pass as messages name it: by its name, or by its place in the technique (from 0).
+std::string pass_label(const PassInfo& pass, std::size_t index) {
+  return pass.name.empty() ? "pass " + std::to_string(index) : "pass '" + pass.name + "'";
+}
+
+// The back buffer a pass that writes it draws into: never the frame's copy (0), whose alpha is put
+// back at the end.
+int next_back_buffer(int current) { return current == 1 ? 2 : 1; }
+
 }  // namespace
 
 Technique::Status Technique::create(const Device& device, const CompiledEffect& effect, int technique, int width, int height,
@@ -59,20 +68,24 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
     passes_.emplace_back();
     passes_.back().back_buffer = back_buffer;
     message = create_pass(i, generated[i], cache);
-    if (passes_.back().writes_back_buffer) back_buffer = 1 - back_buffer;
+    if (passes_.back().writes_back_buffer) back_buffer = next_back_buffer(back_buffer);
   }
+  last_back_buffer_ = back_buffer;
+  if (message.empty() && last_back_buffer_ != 0)
+    message = frame_alpha_.create(*d_, images_[static_cast<std::size_t>(back_buffer_image_)],
+                                  images_[static_cast<std::size_t>(back_buffer_image_ + last_back_buffer_)], cache);
   if (message.empty()) return Status::kOk;
   destroy();
   return Status::kFailed;
 }
 
 Technique::Status Technique::check_supported(std::string& message) const {
-  for (const PassInfo& pass : technique_->passes) {
-    if (pass.stencil.enable) message = "pass '" + pass.name + "' uses the stencil test";
-    else if (pass.topology == Topology::kPointList) message = "pass '" + pass.name + "' draws points";
+  for (std::size_t index = 0; index < technique_->passes.size(); ++index) {
+    const PassInfo& pass = technique_->passes[index];
+    if (pass.topology == Topology::kPointList) message = pass_label(pass, index) + " draws points";
     for (int i = 0; message.empty() && i < pass.render_target_count; ++i)
       if (pass.render_targets[i] >= 0 && model_->textures[static_cast<std::size_t>(pass.render_targets[i])].dimension != 2)
-        message = "pass '" + pass.name + "' renders to a texture that is not 2D";
+        message = pass_label(pass, index) + " renders to a texture that is not 2D";
     if (!message.empty()) break;
   }
   for (const TextureInfo& t : model_->textures)
@@ -84,9 +97,10 @@ Technique::Status Technique::check_supported(std::string& message) const {
 
 std::string Technique::create_images(VkFormat frame_format) {
   const std::size_t textures = model_->textures.size();
-  images_.assign(textures + 3, Image{});
+  images_.assign(textures + 5, Image{});
   back_buffer_image_ = static_cast<int>(textures);
-  depth_image_ = back_buffer_image_ + 2;
+  depth_image_ = back_buffer_image_ + 3;
+  stencil_image_ = depth_image_ + 1;
   for (std::size_t i = 0; i < textures; ++i) {
     const TextureInfo& t = model_->textures[i];
     if (t.semantic != TextureSemantic::kNone) continue;  // the back buffer's or the depth's images
@@ -102,14 +116,24 @@ std::string Technique::create_images(VkFormat frame_format) {
   ImageShape back;
   back.width = width_, back.height = height_;
   back.format = codes_form(frame_format);
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < 3; ++b) {
     const std::string error = create_image(*d_, back, images_[static_cast<std::size_t>(back_buffer_image_ + b)]);
     if (!error.empty()) return "the back buffer: " + error;
   }
   ImageShape depth;
   depth.format = VK_FORMAT_R32_SFLOAT;
-  const std::string error = create_image(*d_, depth, images_[static_cast<std::size_t>(depth_image_)]);
-  return error.empty() ? "" : "the depth texture: " + error;
+  std::string error = create_image(*d_, depth, images_[static_cast<std::size_t>(depth_image_)]);
+  if (!error.empty()) return "the depth texture: " + error;
+  bool stencil = false;
+  for (const PassInfo& pass : technique_->passes) stencil = stencil || (pass.stencil.enable && !pass.compute_shader);
+  if (!stencil) return "";
+  ImageShape buffer;
+  buffer.width = width_, buffer.height = height_;
+  buffer.format = stencil_format(*d_);
+  buffer.stencil = true;
+  if (buffer.format == VK_FORMAT_UNDEFINED) return "the device has no stencil format to draw with";
+  error = create_image(*d_, buffer, images_[static_cast<std::size_t>(stencil_image_)]);
+  return error.empty() ? "" : "the stencil buffer: " + error;
 }
 
 // The image a texture is, in a pass that starts with `back_buffer` holding the picture; -1 for none.
@@ -159,7 +183,7 @@ std::string Technique::create_pass(std::size_t index, const GeneratedPass& gener
   pass.compute = !generated.compute.empty();
   pass.writes_back_buffer = !pass.compute && info.render_target_count == 0;
   pass.copy_first = pass.writes_back_buffer && !covers_back_buffer(info, generated.may_discard);
-  if (pass.writes_back_buffer) pass.targets.push_back(back_buffer_image_ + 1 - pass.back_buffer);
+  if (pass.writes_back_buffer) pass.targets.push_back(back_buffer_image_ + next_back_buffer(pass.back_buffer));
   for (int i = 0; !pass.compute && i < info.render_target_count; ++i) pass.targets.push_back(info.render_targets[i]);
   for (int unit : generated.sampler_units)
     pass.sampled.push_back(image_of_texture(model_->samplers[static_cast<std::size_t>(unit)].texture, pass.back_buffer));
@@ -169,7 +193,7 @@ std::string Technique::create_pass(std::size_t index, const GeneratedPass& gener
   for (int i = 0; i < (pass.compute ? 1 : 2); ++i) {
     std::vector<std::uint32_t> words;
     std::string log;
-    if (!compile_spirv(*sources[i], stages[i], words, log)) return "pass '" + info.name + "': glslang refused the generated code: " + log;
+    if (!compile_spirv(*sources[i], stages[i], words, log)) return pass_label(info, index) + ": glslang refused the generated code: " + log;
     VkShaderModuleCreateInfo module{};
     module.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
     module.codeSize = words.size() * 4;
@@ -178,7 +202,7 @@ std::string Technique::create_pass(std::size_t index, const GeneratedPass& gener
   }
   std::string error = create_bindings(pass, generated);
   if (error.empty()) error = create_draw(pass, cache);
-  return error.empty() ? "" : "pass '" + info.name + "': " + error;
+  return error.empty() ? "" : pass_label(info, index) + ": " + error;
 }
 
 std::string Technique::create_bindings(Pass& pass, const GeneratedPass& generated) {
@@ -270,8 +294,13 @@ std::string Technique::create_draw(Pass& pass, VkPipelineCache cache) {
     plan.area_width = std::min(plan.area_width, image.width);
     plan.area_height = std::min(plan.area_height, image.height);
   }
+  // The stencil test applies where the first target has the frame's size, as in ReShade.
+  const Image& stencil = images_[static_cast<std::size_t>(stencil_image_)];
+  pass.stencil = plan.stencil = pass.info->stencil.enable && stencil.image && plan.viewport_width == width_ && plan.viewport_height == height_;
+  if (pass.stencil) views.push_back(stencil.view);
   pass.area_width = plan.area_width, pass.area_height = plan.area_height;
-  pass.render_pass = plan.render_pass = create_render_pass(*d_, plan.attachments, pass.info->clear_render_targets);
+  pass.render_pass = plan.render_pass =
+      create_render_pass(*d_, plan.attachments, pass.info->clear_render_targets, pass.stencil ? stencil.format : VK_FORMAT_UNDEFINED);
   if (!pass.render_pass) return "vkCreateRenderPass failed";
   VkFramebufferCreateInfo framebuffer{};
   framebuffer.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
@@ -309,6 +338,7 @@ void Technique::destroy() {
   for (VkSampler s : samplers_)
     if (s) d.vkDestroySampler(d.device, s, nullptr);
   samplers_.clear();
+  frame_alpha_.destroy(d);
   for (Image& image : images_) destroy_image(d, image);
   images_.clear();
   started_ = false;

@@ -3,15 +3,17 @@
 // to SPIR-V (the generator's Vulkan dialect through glslang), the effect's textures as images with
 // their formats and mip levels (kept from frame to frame, as FX effects expect), a sampler per FX
 // sampler, the uniforms in one block updated inside the command buffer, two back buffers that
-// the passes draw between as ReShade's runtime does, and a pipeline per pass. record() writes a
+// the passes draw between as ReShade's runtime does (beside a copy of the frame, which the first
+// passes sample until one writes the back buffer), and a pipeline per pass. record() writes a
 // frame's work into the caller's command buffer: the frame's image is copied in, each pass drawn
 // or dispatched with the barriers it needs, the picture copied back, the image left in the layout
 // asked for. Nothing is submitted and nothing waits: the owner submits on its queue, frames in
 // the order they were recorded.
 //
-// What the GL runtime does that this does not yet: the stencil test, textures read from image
-// files (`source =`), the frame's depth (the depth texture is one texel at the far plane), point
-// lists. create() says kUnsupported with the reason for a technique that needs one of them.
+// The stencil buffer is ReShade's: 8 bits of the frame's size, cleared to 0 when the technique
+// starts (every frame), kept from pass to pass, tested by a pass whose first target has the
+// frame's size. What the GL runtime does that this does not yet: textures read from image files
+// (`source =`), the frame's depth (the depth texture is one texel at the far plane), point lists. create() says kUnsupported with the reason for a technique that needs one of them.
 #include <vulkan/vulkan.h>
 
 #include <string>
@@ -19,6 +21,7 @@
 
 #include "effect_compiler.hpp"
 #include "vk_device.hpp"
+#include "vk_frame_alpha.hpp"
 #include "vk_images.hpp"
 #include "vk_uniform_block.hpp"
 
@@ -32,6 +35,9 @@ struct Frame {
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
   VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   VkImageLayout final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  // The frame's alpha comes back as it went in (FX passes use the back buffer's alpha as
+  // scratch); false where it means nothing (a swapchain composited opaque) saves a draw.
+  bool keep_alpha = true;
 };
 
 class Technique {
@@ -57,7 +63,8 @@ class Technique {
     const PassInfo* info = nullptr;
     bool compute = false;
     bool writes_back_buffer = false, copy_first = false;
-    int back_buffer = 0;  // which back buffer holds the picture when the pass starts
+    bool stencil = false;  // tests the stencil buffer
+    int back_buffer = 0;  // which back buffer holds the picture when the pass starts (0: the frame's copy)
     std::vector<int> targets, sampled, stored;  // image indices
     std::vector<VkImageView> owned_views;       // storages' level views
     VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
@@ -85,8 +92,12 @@ class Technique {
   const EffectModel* model_ = nullptr;
   const TechniqueInfo* technique_ = nullptr;
   int width_ = 0, height_ = 0;
-  std::vector<Image> images_;  // per model texture, then the two back buffers, then the depth texture
-  int back_buffer_image_ = 0, depth_image_ = 0;
+  // Per model texture, then the back buffers (the frame's copy and the two the passes draw
+  // between), the depth texture and the stencil buffer (when a pass tests it).
+  std::vector<Image> images_;
+  int back_buffer_image_ = 0, depth_image_ = 0, stencil_image_ = 0;
+  int last_back_buffer_ = 0;  // which back buffer holds the picture after the last pass
+  FrameAlpha frame_alpha_;    // when a pass writes the back buffer
   std::vector<VkSampler> samplers_;  // per model sampler
   UniformBlockLayout block_;
   VkBuffer uniform_buffer_ = VK_NULL_HANDLE;

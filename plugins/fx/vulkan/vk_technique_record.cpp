@@ -12,6 +12,8 @@ void Technique::record(VkCommandBuffer commands, const Frame& frame, const std::
       if (images_[i].image) clear_image(d, commands, images_[i], static_cast<int>(i) == depth_image_);
     started_ = true;
   }
+  Image& stencil = images_[static_cast<std::size_t>(stencil_image_)];
+  if (stencil.image) clear_image(d, commands, stencil);  // the technique starts: zeros, as in ReShade
   record_uniforms(commands, uniforms);
   // The caller's image, tracked as ours for the length of the frame.
   Image caller;
@@ -23,14 +25,12 @@ void Technique::record(VkCommandBuffer commands, const Frame& frame, const std::
   caller.stage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
   Image* back_buffers = &images_[static_cast<std::size_t>(back_buffer_image_)];
   copy_image(d, commands, caller, back_buffers[0]);
-  int current = 0;
-  for (Pass& pass : passes_) {
-    record_pass(commands, pass);
-    if (pass.writes_back_buffer) current = 1 - current;
+  for (Pass& pass : passes_) record_pass(commands, pass);
+  // A technique that never writes the back buffer leaves the frame as it was.
+  if (last_back_buffer_ != 0) {
+    if (frame.keep_alpha) frame_alpha_.record(commands, back_buffers[0], back_buffers[last_back_buffer_]);
+    copy_image(d, commands, back_buffers[last_back_buffer_], caller);
   }
-  bool drawn = false;
-  for (const Pass& pass : passes_) drawn = drawn || pass.writes_back_buffer;
-  if (drawn) copy_image(d, commands, back_buffers[current], caller);
   use_image(d, commands, caller, frame.final_layout, VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT);
 }
 
@@ -57,6 +57,9 @@ void Technique::record_pass(VkCommandBuffer commands, Pass& pass) {
   const Device& d = *d_;
   auto image = [&](int index) -> Image& { return images_[static_cast<std::size_t>(index)]; };
   const bool stored_mips = pass.compute && pass.info->generate_mipmaps;
+  // A pass that may leave pixels of the back buffer unwritten starts from the picture (copied
+  // before the picture is made ready to sample).
+  if (pass.copy_first) copy_image(d, commands, image(back_buffer_image_ + pass.back_buffer), image(pass.targets[0]));
   for (int s : pass.stored) use_as_storage(d, commands, image(s));
   for (int s : pass.sampled)
     if (std::find(pass.stored.begin(), pass.stored.end(), s) == pass.stored.end()) use_for_sampling(d, commands, image(s));
@@ -69,10 +72,10 @@ void Technique::record_pass(VkCommandBuffer commands, Pass& pass) {
       for (int s : pass.stored) generate_mips(d, commands, image(s));
     return;
   }
-  // A pass that may leave pixels of the back buffer unwritten starts from the picture.
-  if (pass.copy_first) copy_image(d, commands, image(back_buffer_image_ + pass.back_buffer), image(pass.targets[0]));
   for (int t : pass.targets) use_as_attachment(d, commands, image(t));
-  std::vector<VkClearValue> clears(pass.targets.size(), VkClearValue{});  // zero bits in every format
+  if (pass.stencil) use_as_stencil(d, commands, image(stencil_image_));
+  // Zero bits in every format, for a pass that clears its targets.
+  std::vector<VkClearValue> clears(pass.info->clear_render_targets ? pass.targets.size() : 0, VkClearValue{});
   VkRenderPassBeginInfo begin{};
   begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
   begin.renderPass = pass.render_pass;

@@ -1,15 +1,15 @@
 // Runs an FX conformance file through the Vulkan runtime for FX (plugins/fx/vulkan) on a Vulkan
 // device, headless, and judges the picture as run_conformance.py does: `checks`, every pixel
 // green, or the checks whose columns are not (check i is the columns [i * CELL, (i + 1) * CELL));
-// `input`, the frame's bytes (a gradient with a varying alpha, made here); `invert`, 255 minus
+// `input`, the frame's bytes (run_conformance.py's input picture, made here); `invert`, 255 minus
 // them in R, G and B. This program is the runtime's owner, as a layer or a host would be: it
-// makes the device, hands the runtime its functions, uploads the frame, records FRAMES frames
+// makes the device, hands the runtime its functions, uploads the input picture, records FRAMES frames
 // (each submitted and waited for here, never by the runtime) and reads the last picture back.
 // Uniforms hold their initial values; the sources framecount, frametime and timer follow the
 // frame number (16 ms a frame).
 //
 // usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--frames N] [--technique NAME]
-//                         [--expect checks|input|invert] FILE.fx
+//                         [--expect checks|input|invert] [--input gradient|alpha] FILE.fx
 // Exit status: 0 every check holds, 1 some fail or Vulkan fails, 3 the technique needs what the
 // Vulkan runtime does not run yet (it says what), 2 usage.
 #include <dlfcn.h>
@@ -130,7 +130,7 @@ struct Owner {
 };
 
 // The frame: an RGBA8 image the runtime reads and writes, and a host-visible buffer that brings
-// the gradient in and the picture out.
+// the input picture in and the picture out.
 struct FrameImage {
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE, staging_memory = VK_NULL_HANDLE;
@@ -158,7 +158,7 @@ struct FrameImage {
     r.imageExtent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
     return r;
   }
-  // The gradient into the image, top row first (Vulkan's and FX's order), left for copying from.
+  // The input picture into the image, top row first (Vulkan's and FX's order), left for copying from.
   void record_upload(VkCommandBuffer commands) const {
     auto b = vk<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
     b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -223,6 +223,7 @@ std::string uniform_values(const pfx::fx::EffectModel& model, int frame, std::ve
 struct Judged {
   std::string expect;  // checks, input or invert
   int width, height, cell, frames;
+  bool varying_alpha;
 };
 
 // The checks whose columns hold a pixel that is not pure green.
@@ -240,17 +241,18 @@ std::vector<int> failed_checks(const unsigned char* rgba, int width, int height,
 }
 
 
-// The back buffer the pass reads: R across, G down, B from both, alpha varying, so that a picture
-// upside down, mirrored or shifted by a texel cannot pass for it.
-std::vector<unsigned char> gradient(int width, int height) {
+// The frame run_conformance.py makes (and include/input_picture.fxh works out in FX): codes that
+// differ between neighbours in both directions, so a picture upside down, mirrored or shifted by
+// a texel cannot pass for it; alpha 255, or varying for `--input alpha`.
+std::vector<unsigned char> input_picture(int width, int height, bool varying_alpha) {
   std::vector<unsigned char> rgba(static_cast<std::size_t>(width) * height * 4);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       unsigned char* p = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
-      p[0] = static_cast<unsigned char>(x * 255 / std::max(1, width - 1));
-      p[1] = static_cast<unsigned char>(y * 255 / std::max(1, height - 1));
-      p[2] = static_cast<unsigned char>((x * 37 + y * 11) & 255);
-      p[3] = static_cast<unsigned char>((x * 7 + y * 13 + 1) & 255);
+      p[0] = static_cast<unsigned char>((x * 37 + y * 11) % 256);
+      p[1] = static_cast<unsigned char>((x * 5 + y * 67) % 256);
+      p[2] = static_cast<unsigned char>((x * 3 + 128) % 256);
+      p[3] = static_cast<unsigned char>(varying_alpha ? (x * 7 + y * 13) % 256 : 255);
     }
   return rgba;
 }
@@ -283,7 +285,7 @@ std::string judge(const Judged& judged, const unsigned char* out, const std::vec
 // Runs `technique` of `effect` for the frames and judges the last picture.
 int run(const pfx::fx::CompiledEffect& effect, int technique, const Judged& judged) {
   const int width = judged.width, height = judged.height;
-  const std::vector<unsigned char> input = gradient(width, height);
+  const std::vector<unsigned char> input = input_picture(width, height, judged.varying_alpha);
   std::vector<std::vector<double>> uniforms;
   for (int frame = 0; frame < judged.frames; ++frame) {
     const std::string missing = uniform_values(effect.model, frame, uniforms);
@@ -334,7 +336,7 @@ int main(int argc, char** argv) {
   pfx::fx::FrontEndOptions options;
   std::string file, technique_name;
   int width = 0, height = 0, cell = 4, frames = 1;
-  std::string expect = "checks";
+  std::string expect = "checks", input = "gradient";
   for (int i = 1; i < argc; ++i) {
     std::string argument = argv[i];
     if (argument.rfind("-I", 0) == 0) options.preprocessor.include_folders.push_back(argument.substr(2));
@@ -343,11 +345,13 @@ int main(int argc, char** argv) {
     else if (argument == "--frames" && i + 1 < argc) frames = std::atoi(argv[++i]);
     else if (argument == "--technique" && i + 1 < argc) technique_name = argv[++i];
     else if (argument == "--expect" && i + 1 < argc) expect = argv[++i];
+    else if (argument == "--input" && i + 1 < argc) input = argv[++i];
     else file = argument;
   }
-  if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert")) {
+  if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert") ||
+      (input != "gradient" && input != "alpha")) {
     std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--frames N] [--technique NAME] "
-                         "[--expect checks|input|invert] FILE.fx\n");
+                         "[--expect checks|input|invert] [--input gradient|alpha] FILE.fx\n");
     return 2;
   }
   options.preprocessor.buffer_width = width;
@@ -360,5 +364,5 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < techniques.size(); ++i)
     if (techniques[i].name == technique_name) technique = static_cast<int>(i);
   if (technique < 0) return std::printf("FAIL: %s has no technique '%s'\n", file.c_str(), technique_name.c_str()), 1;
-  return run(*effect, technique, Judged{expect, width, height, cell, frames});
+  return run(*effect, technique, Judged{expect, width, height, cell, frames, input == "alpha"});
 }

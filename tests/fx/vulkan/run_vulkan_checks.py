@@ -1,38 +1,43 @@
 #!/usr/bin/env python3
-"""The conformance suite through SPIR-V on Vulkan (lavapipe).
+"""The conformance suite on Vulkan (lavapipe), through the Vulkan runtime for FX, under Khronos'
+validation layer with synchronisation validation.
 
 usage: run_vulkan_checks.py FX_VULKAN_CHECKS
 
-Each file of tests/fx/conformance judged on the 8-bit gradient (`// expect: checks`, the default,
-`input` or `invert`) is run by FX_VULKAN_CHECKS: its pass in the Vulkan dialect, compiled to
-SPIR-V by glslang, drawn on Mesa's lavapipe device over a gradient back buffer, and judged as in
-GL: every check green, the input's bytes, or their inverse. The files of RUN must run and pass;
-every other file must be one the tool does not run yet (more than one pass, textures other than
-the back buffer, compute, blending, stencil: what needs the Vulkan runtime for FX), so a file
-that starts to run is added to RUN rather than passing unseen. Files judged on another input (an
-alpha that the runtime keeps, an EXR of non-finite values) are the GL runtime's to judge.
+Each file of tests/fx/conformance judged on the 8-bit input picture (`// expect: checks`, the
+default, `input` or `invert`; `// input: gradient` or `alpha`) is run by FX_VULKAN_CHECKS: every
+pass in the Vulkan dialect, compiled to SPIR-V by glslang, run by plugins/fx/vulkan on Mesa's
+lavapipe device for the file's frames, and judged as in GL: every check green, the input's bytes,
+or their inverse. The files of RUN must run and pass with no message from the validation layer;
+every other file must be one the runtime says it does not run yet (exit status 3), so a file that
+starts to run is added to RUN rather than passing unseen. A file judged on another input (an EXR
+of non-finite values) is the GL runtime's to judge.
 """
 import glob
 import os
 import re
 import subprocess
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CONFORMANCE = os.path.join(HERE, "..", "conformance")
 INCLUDE = os.path.join(HERE, "..", "..", "..", "plugins", "fx", "include")
 
-RUN = ["identity.fx", "invert.fx", "size_1x1.fx", "conversions.fx", "exists_and_widening.fx", "float_to_integer.fx", "function_statics.fx",
-       "initializer_assignments.fx", "integer_matrices.fx", "integer_wrap.fx", "intrinsics_bits.fx",
-       "intrinsics_math.fx", "matrices.fx", "matrix_comparisons.fx", "matrix_swizzle_stores.fx",
-       "namespaced_constants.fx", "operators.fx", "out_arguments.fx", "preprocessor.fx", "uniforms.fx"]
+RUN = ["alpha.fx", "back_buffer.fx", "blending.fx", "compute.fx", "conversions.fx", "exists_and_widening.fx",
+       "float_to_integer.fx", "formats.fx", "function_statics.fx", "identity.fx", "initializer_assignments.fx",
+       "integer_matrices.fx", "integer_wrap.fx", "intrinsics_bits.fx", "intrinsics_math.fx", "invert.fx", "matrices.fx",
+       "matrix_comparisons.fx", "matrix_swizzle_stores.fx", "mips.fx", "namespaced_constants.fx", "offsets_and_labels.fx",
+       "operators.fx", "out_arguments.fx", "persistence.fx", "preprocessor.fx", "render_targets.fx", "reshade_language.fx",
+       "samplers.fx", "size_1x1.fx", "size_constants.fx", "size_odd.fx", "stencil.fx", "stencil_back_buffer.fx",
+       "textures.fx", "uniforms.fx"]
 
 
 def header(path):
-    settings = {"size": "64x4", "expect": "checks", "cell": "4", "input": "gradient"}
+    settings = {"size": "64x4", "expect": "checks", "cell": "4", "input": "gradient", "frames": "1"}
     with open(path) as f:
         for line in f:
-            m = re.match(r"\s*//\s*(size|expect|cell|input):\s*(\S+)", line)
+            m = re.match(r"\s*//\s*(size|expect|cell|input|frames|technique):\s*(\S+)", line)
             if m:
                 settings[m.group(1)] = m.group(2)
     return settings
@@ -46,21 +51,44 @@ def main(argv):
     if not icds:
         print("FAIL: lavapipe is not installed (/usr/share/vulkan/icd.d/lvp_icd.*.json): install mesa-vulkan-drivers")
         return 1
-    env = dict(os.environ, VK_ICD_FILENAMES=icds[0])
+    layers = "/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json"
+    if not os.path.exists(layers):
+        print("FAIL: Khronos' validation layer is not installed (%s): install vulkan-validationlayers" % layers)
+        return 1
+    with tempfile.TemporaryDirectory(prefix="pfx-vulkan-checks-") as scratch:
+        return run_all(argv[1], icds[0], scratch)
+
+
+def run_all(checks, icd, scratch):
+    log = os.path.join(scratch, "validation.txt")
+    with open(os.path.join(scratch, "vk_layer_settings.txt"), "w") as f:
+        f.write("khronos_validation.report_flags = error,warn\n"
+                "khronos_validation.debug_action = VK_DBG_LAYER_ACTION_LOG_MSG\n"
+                "khronos_validation.log_filename = %s\n"
+                "khronos_validation.enables = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT\n" % log)
+    env = dict(os.environ, VK_ICD_FILENAMES=icd, VK_INSTANCE_LAYERS="VK_LAYER_KHRONOS_validation",
+               VK_LAYER_SETTINGS_PATH=scratch)
     failures, ran = [], 0
     for path in sorted(glob.glob(os.path.join(CONFORMANCE, "*.fx"))):
         name = os.path.basename(path)
         s = header(path)
-        if s["expect"] not in ("checks", "input", "invert") or s["input"] != "gradient":
-            continue  # judged on another input or by what the runtime keeps: the GL suite's business
-        result = subprocess.run([argv[1], "-I" + os.path.abspath(INCLUDE), "--size", s["size"], "--cell", s["cell"],
-                                 "--expect", s["expect"], path],
-                                capture_output=True, text=True, env=env, timeout=300)
+        if s["expect"] not in ("checks", "input", "invert") or s["input"] not in ("gradient", "alpha"):
+            continue  # judged on another input: the GL suite's business
+        command = [checks, "-I" + os.path.abspath(INCLUDE), "--size", s["size"], "--cell", s["cell"], "--expect", s["expect"],
+                   "--input", s["input"], "--frames", s["frames"]]
+        if "technique" in s:
+            command += ["--technique", s["technique"]]
+        if os.path.exists(log):
+            os.remove(log)
+        result = subprocess.run(command + [path], capture_output=True, text=True, env=env, timeout=300)
         said = (result.stdout + result.stderr).strip()
+        messages = open(log).read().strip() if os.path.exists(log) else ""
         if name in RUN:
             ran += 1
             if result.returncode != 0:
                 failures.append("%s: %s" % (name, said))
+            elif messages:
+                failures.append("%s: the validation layer said:\n%s" % (name, messages[:4000]))
             else:
                 print("%s: %s" % (name, said))
         elif result.returncode != 3:
@@ -72,7 +100,7 @@ def main(argv):
         print("FAIL: " + failure)
     if failures:
         return 1
-    print("ok: %d conformance files hold on Vulkan (lavapipe) as in GL" % ran)
+    print("ok: %d conformance files hold on Vulkan (lavapipe) as in GL, with no message from the validation layer" % ran)
     return 0
 
 
