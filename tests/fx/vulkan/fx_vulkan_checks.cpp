@@ -56,10 +56,12 @@ struct Owner {
   VkPhysicalDeviceMemoryProperties memory{};
 
   Owner() {
-    // lavapipe stays mapped to the end: the loader unloads the driver at vkDestroyInstance, and a
-    // block it keeps in its globals would then read as a leak of an unknown module under
-    // LeakSanitizer (docs/reliability.md). Another driver is not touched.
+    // lavapipe and the validation layer stay mapped to the end: the loader unloads them at
+    // vkDestroyInstance, and a block one keeps in its globals would then read as a leak of an
+    // unknown module (or of this program) under LeakSanitizer (docs/reliability.md). Another
+    // driver is not touched.
     (void)dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
+    (void)dlopen("libVkLayer_khronos_validation.so", RTLD_NOW | RTLD_NODELETE);
     auto app = vk<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
     app.pApplicationName = "fx_vulkan_checks";
     app.apiVersion = VK_API_VERSION_1_1;
