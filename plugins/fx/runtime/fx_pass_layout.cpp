@@ -50,7 +50,7 @@ int find_output_pass(const pfx::fx::EffectModel& model, const pfx::fx::Technique
   if (last < 0) return -1;
   const PassInfo& pass = technique.passes[static_cast<std::size_t>(last)];
   const GeneratedPass& g = generated[static_cast<std::size_t>(last)];
-  if (!covers_back_buffer(pass, g) || g.fragment.find("pfx_target_0") == std::string::npos) return -1;
+  if (!pfx::fx::covers_back_buffer(pass, g.may_discard) || g.fragment.find("pfx_target_0") == std::string::npos) return -1;
   for (std::size_t j = static_cast<std::size_t>(last) + 1; j < technique.passes.size(); ++j)
     if (samples_back_buffer(model, generated[j])) return -1;
   return last;
