@@ -6,10 +6,11 @@
 // makes the device, hands the runtime its functions, uploads the input picture, records FRAMES frames
 // (each submitted and waited for here, never by the runtime) and reads the last picture back.
 // Uniforms hold their initial values; the sources framecount, frametime and timer follow the
-// frame number (16 ms a frame).
+// frame number (16 ms a frame). Pipelines go through the runtime's pipeline cache file;
+// --report-cache says whether it was read from disk.
 //
 // usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--frames N] [--technique NAME]
-//                         [--expect checks|input|invert] [--input gradient|alpha] FILE.fx
+//                         [--expect checks|input|invert] [--input gradient|alpha] [--report-cache] FILE.fx
 // Exit status: 0 every check holds, 1 some fail or Vulkan fails, 3 the technique needs what the
 // Vulkan runtime does not run yet (it says what), 2 usage.
 #include <dlfcn.h>
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include "effect_compiler.hpp"
+#include "vk_pipeline_cache.hpp"
 #include "vk_technique.hpp"
 
 namespace {
@@ -226,6 +228,7 @@ struct Judged {
   std::string expect;  // checks, input or invert
   int width, height, cell, frames;
   bool varying_alpha;
+  bool report_cache;  // say whether the pipeline cache came from its file
 };
 
 // The checks whose columns hold a pixel that is not pure green.
@@ -297,9 +300,15 @@ int run(const pfx::fx::CompiledEffect& effect, int technique, const Judged& judg
   pfx::fx::vulkan::Device device;
   const std::string missing = device.load(vkGetInstanceProcAddr, d.instance, d.physical, vkGetDeviceProcAddr, d.device);
   if (!missing.empty()) return std::printf("FAIL: the device gives no %s\n", missing.c_str()), 1;
+  pfx::fx::vulkan::PipelineCacheFile cache;
+  if (!cache.open(device)) return std::printf("FAIL: vkCreatePipelineCache failed\n"), 1;
   pfx::fx::vulkan::Technique runtime;
   std::string message;
-  const auto status = runtime.create(device, effect, technique, width, height, VK_FORMAT_R8G8B8A8_UNORM, VK_NULL_HANDLE, message);
+  const auto status = runtime.create(device, effect, technique, width, height, VK_FORMAT_R8G8B8A8_UNORM, cache.handle(), message);
+  cache.save();
+  if (judged.report_cache)
+    std::printf("pipeline cache: %s (%s)\n", cache.loaded() ? "from the file" : "started empty", cache.path().empty() ? "off" : cache.path().c_str());
+  cache.destroy();
   if (status == pfx::fx::vulkan::Technique::Status::kUnsupported) return std::printf("not run: %s\n", message.c_str()), 3;
   if (status != pfx::fx::vulkan::Technique::Status::kOk) return std::printf("FAIL: %s\n", message.c_str()), 1;
   FrameImage frame(d, input, width, height);
@@ -338,6 +347,7 @@ int main(int argc, char** argv) {
   pfx::fx::FrontEndOptions options;
   std::string file, technique_name;
   int width = 0, height = 0, cell = 4, frames = 1;
+  bool report_cache = false;
   std::string expect = "checks", input = "gradient";
   for (int i = 1; i < argc; ++i) {
     std::string argument = argv[i];
@@ -348,12 +358,13 @@ int main(int argc, char** argv) {
     else if (argument == "--technique" && i + 1 < argc) technique_name = argv[++i];
     else if (argument == "--expect" && i + 1 < argc) expect = argv[++i];
     else if (argument == "--input" && i + 1 < argc) input = argv[++i];
+    else if (argument == "--report-cache") report_cache = true;
     else file = argument;
   }
   if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert") ||
       (input != "gradient" && input != "alpha")) {
     std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--frames N] [--technique NAME] "
-                         "[--expect checks|input|invert] [--input gradient|alpha] FILE.fx\n");
+                         "[--expect checks|input|invert] [--input gradient|alpha] [--report-cache] FILE.fx\n");
     return 2;
   }
   options.preprocessor.buffer_width = width;
@@ -366,5 +377,5 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < techniques.size(); ++i)
     if (techniques[i].name == technique_name) technique = static_cast<int>(i);
   if (technique < 0) return std::printf("FAIL: %s has no technique '%s'\n", file.c_str(), technique_name.c_str()), 1;
-  return run(*effect, technique, Judged{expect, width, height, cell, frames, input == "alpha"});
+  return run(*effect, technique, Judged{expect, width, height, cell, frames, input == "alpha", report_cache});
 }

@@ -67,7 +67,7 @@ def run_all(checks, icd, scratch):
                 "khronos_validation.log_filename = %s\n"
                 "khronos_validation.enables = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT\n" % log)
     env = dict(os.environ, VK_ICD_FILENAMES=icd, VK_INSTANCE_LAYERS="VK_LAYER_KHRONOS_validation",
-               VK_LAYER_SETTINGS_PATH=scratch)
+               VK_LAYER_SETTINGS_PATH=scratch, XDG_CACHE_HOME=scratch)  # the pipeline cache stays out of the user's
     failures, ran = [], 0
     for path in sorted(glob.glob(os.path.join(CONFORMANCE, "*.fx"))):
         name = os.path.basename(path)
