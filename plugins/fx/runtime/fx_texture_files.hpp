@@ -1,8 +1,9 @@
 #pragma once
 // Images FX textures name with `source = "file.png"`: found beside the effect as ReShade lays a
 // collection out (a Textures folder beside the Shaders folder), in the folders of
-// PFX_FX_TEXTURE_PATH, or beside the .fx file; decoded to 8-bit RGBA and uploaded with GL's row
-// order. An image of another size than the texture declares is scaled to it (nearest texel).
+// PFX_FX_TEXTURE_PATH, or beside the .fx file; decoded to 8-bit RGBA (images/texture_image.hpp:
+// an image of another size than the texture declares is scaled to it, nearest texel) and uploaded
+// with GL's row order.
 #include <string>
 
 #include "fx_gl_objects.hpp"

@@ -35,7 +35,7 @@ int next_back_buffer(int current) { return current == 1 ? 2 : 1; }
 }  // namespace
 
 Technique::Status Technique::create(const Device& device, const CompiledEffect& effect, int technique, int width, int height,
-                                    VkFormat frame_format, VkPipelineCache cache, std::string& message) {
+                                    VkFormat frame_format, VkPipelineCache cache, const TexelLoader& load_texels, std::string& message) {
   destroy();
   d_ = &device;
   model_ = &effect.model;
@@ -53,7 +53,7 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
   block_ = layout_uniform_block(*model_);
   // vkCmdUpdateBuffer takes at most 64 KiB; FX blocks are a few hundred bytes.
   if (block_.size > 65536) return message = "the uniforms take more than 64 KiB", Status::kUnsupported;
-  message = create_images(frame_format);
+  message = create_images(frame_format, load_texels);
   for (std::size_t i = 0; message.empty() && i < model_->samplers.size(); ++i) {
     const SamplerInfo& s = model_->samplers[i];
     const int image = image_of_texture(s.texture, 0);
@@ -88,14 +88,12 @@ Technique::Status Technique::check_supported(std::string& message) const {
         message = pass_label(pass, index) + " renders to a texture that is not 2D";
     if (!message.empty()) break;
   }
-  for (const TextureInfo& t : model_->textures)
-    if (message.empty() && !t.source.empty() && t.semantic == TextureSemantic::kNone) message = "texture '" + t.name + "' is read from an image file";
   if (message.empty()) return Status::kOk;
   message += ", which the Vulkan runtime does not run yet";
   return Status::kUnsupported;
 }
 
-std::string Technique::create_images(VkFormat frame_format) {
+std::string Technique::create_images(VkFormat frame_format, const TexelLoader& load_texels) {
   const std::size_t textures = model_->textures.size();
   images_.assign(textures + 5, Image{});
   back_buffer_image_ = static_cast<int>(textures);
@@ -110,7 +108,12 @@ std::string Technique::create_images(VkFormat frame_format) {
     shape.format = vk_format(t.format);
     shape.integer = integer_class(t.format) != 0;
     for (const StorageInfo& s : model_->storages) shape.storage = shape.storage || s.texture == static_cast<int>(i);
-    const std::string error = create_image(*d_, shape, images_[i]);
+    std::string error = create_image(*d_, shape, images_[i]);
+    if (error.empty() && !t.source.empty()) {
+      TextureTexels texels;
+      if (!load_texels || !load_texels(t, texels, error)) error = error.empty() ? "no loader for its image file" : error;
+      else error = uploads_.add(*d_, images_[i], static_cast<int>(i), texels);
+    }
     if (!error.empty()) return "texture '" + t.name + "' (" + format_name(t.format) + "): " + error;
   }
   ImageShape back;
@@ -339,6 +342,7 @@ void Technique::destroy() {
     if (s) d.vkDestroySampler(d.device, s, nullptr);
   samplers_.clear();
   frame_alpha_.destroy(d);
+  uploads_.destroy();
   for (Image& image : images_) destroy_image(d, image);
   images_.clear();
   started_ = false;

@@ -12,17 +12,21 @@
 //
 // The stencil buffer is ReShade's: 8 bits of the frame's size, cleared to 0 when the technique
 // starts (every frame), kept from pass to pass, tested by a pass whose first target has the
-// frame's size. What the GL runtime does that this does not yet: textures read from image files
-// (`source =`), the frame's depth (the depth texture is one texel at the far plane), point lists. create() says kUnsupported with the reason for a technique that needs one of them.
+// frame's size. Textures with `source =` start from the texels the owner's loader gives (it finds
+// and decodes the file: images/texture_image.hpp). What the GL runtime does that this does not
+// yet: the frame's depth (the depth texture is one texel at the far plane), point lists. create() says kUnsupported with the reason for a technique that needs one of them.
 #include <vulkan/vulkan.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "effect_compiler.hpp"
+#include "texture_image.hpp"
 #include "vk_device.hpp"
 #include "vk_frame_alpha.hpp"
 #include "vk_images.hpp"
+#include "vk_texture_uploads.hpp"
 #include "vk_uniform_block.hpp"
 
 namespace pfx::fx::vulkan {
@@ -40,6 +44,10 @@ struct Frame {
   bool keep_alpha = true;
 };
 
+// Finds and decodes the image file a texture names (`source`), at the texture's size; false with
+// the reason.
+using TexelLoader = std::function<bool(const TextureInfo& texture, TextureTexels& texels, std::string& error)>;
+
 class Technique {
  public:
   enum class Status { kOk, kUnsupported, kFailed };
@@ -53,7 +61,7 @@ class Technique {
   // `height`) for frames of `frame_format`. `cache` may be VK_NULL_HANDLE. On anything but kOk,
   // `message` says why and nothing is left behind. `device` and `effect` outlive the technique.
   Status create(const Device& device, const CompiledEffect& effect, int technique, int width, int height, VkFormat frame_format,
-                VkPipelineCache cache, std::string& message);
+                VkPipelineCache cache, const TexelLoader& load_texels, std::string& message);
   // The frame's work. `uniforms`: per model uniform, its components as the runtimes hold them.
   void record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms);
   void destroy();
@@ -78,7 +86,7 @@ class Technique {
   };
 
   Status check_supported(std::string& message) const;
-  std::string create_images(VkFormat frame_format);
+  std::string create_images(VkFormat frame_format, const TexelLoader& load_texels);
   std::string create_pass(std::size_t index, const GeneratedPass& generated, VkPipelineCache cache);
   std::string create_bindings(Pass& pass, const GeneratedPass& generated);
   std::string create_draw(Pass& pass, VkPipelineCache cache);
@@ -98,6 +106,7 @@ class Technique {
   int back_buffer_image_ = 0, depth_image_ = 0, stencil_image_ = 0;
   int last_back_buffer_ = 0;  // which back buffer holds the picture after the last pass
   FrameAlpha frame_alpha_;    // when a pass writes the back buffer
+  TextureUploads uploads_;    // textures from image files
   std::vector<VkSampler> samplers_;  // per model sampler
   UniformBlockLayout block_;
   VkBuffer uniform_buffer_ = VK_NULL_HANDLE;

@@ -10,6 +10,7 @@ void Technique::record(VkCommandBuffer commands, const Frame& frame, const std::
   if (!started_) {
     for (std::size_t i = 0; i < images_.size(); ++i)
       if (images_[i].image) clear_image(d, commands, images_[i], static_cast<int>(i) == depth_image_);
+    uploads_.record(commands, images_);
     started_ = true;
   }
   Image& stencil = images_[static_cast<std::size_t>(stencil_image_)];

@@ -65,6 +65,7 @@ LEFT_OUT = {
     "stencil_back_buffer.fx": "a stencil pass into the back buffer: vkBasalt leaves the pixels the test rejects undefined "
                               "(black on lavapipe) where ReShade keeps the back buffer's",
     "textures.fx": "tex2Dfetch with an int2 coordinate",
+    "texture_files.fx": "tex2Dfetch with an int2 coordinate",
     "uniforms.fx": "a uniform without an initial value: vkBasalt makes uniforms specialisation constants and "
                    "vkcube aborts",
 }

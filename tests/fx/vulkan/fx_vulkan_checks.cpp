@@ -210,6 +210,21 @@ void submit(const Owner& d, VkCommandPool pool, Body body) {
   vkFreeCommandBuffers(d.device, pool, 1, &commands);
 }
 
+// The image file a texture names, looked for as a collection lays them out: in a Textures folder
+// beside the effect or above it, or beside the effect.
+bool load_texels(const std::string& effect_file, const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& error) {
+  const std::filesystem::path folder = std::filesystem::path(effect_file).parent_path();
+  for (const std::filesystem::path& candidate : {folder / "Textures" / texture.source, folder.parent_path() / "Textures" / texture.source,
+                                                 folder / texture.source}) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(candidate, ec))
+      return pfx::fx::decode_texture_image(candidate.string(), texture.width, texture.height, texture.dimension == 3 ? texture.depth : 1,
+                                           texels, error);
+  }
+  error = "'" + texture.source + "' was not found beside the effect";
+  return false;
+}
+
 // The uniforms of frame `frame`: initial values, and the frame's sources; "" or the source that
 // this program cannot give.
 std::string uniform_values(const pfx::fx::EffectModel& model, int frame, std::vector<std::vector<double>>& values) {
@@ -288,7 +303,7 @@ std::string judge(const Judged& judged, const unsigned char* out, const std::vec
 
 
 // Runs `technique` of `effect` for the frames and judges the last picture.
-int run(const pfx::fx::CompiledEffect& effect, int technique, const Judged& judged) {
+int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int technique, const Judged& judged) {
   const int width = judged.width, height = judged.height;
   const std::vector<unsigned char> input = input_picture(width, height, judged.varying_alpha);
   std::vector<std::vector<double>> uniforms;
@@ -304,7 +319,10 @@ int run(const pfx::fx::CompiledEffect& effect, int technique, const Judged& judg
   if (!cache.open(device)) return std::printf("FAIL: vkCreatePipelineCache failed\n"), 1;
   pfx::fx::vulkan::Technique runtime;
   std::string message;
-  const auto status = runtime.create(device, effect, technique, width, height, VK_FORMAT_R8G8B8A8_UNORM, cache.handle(), message);
+  const auto loader = [&file](const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& error) {
+    return load_texels(file, texture, texels, error);
+  };
+  const auto status = runtime.create(device, effect, technique, width, height, VK_FORMAT_R8G8B8A8_UNORM, cache.handle(), loader, message);
   cache.save();
   if (judged.report_cache)
     std::printf("pipeline cache: %s (%s)\n", cache.loaded() ? "from the file" : "started empty", cache.path().empty() ? "off" : cache.path().c_str());
@@ -377,5 +395,5 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < techniques.size(); ++i)
     if (techniques[i].name == technique_name) technique = static_cast<int>(i);
   if (technique < 0) return std::printf("FAIL: %s has no technique '%s'\n", file.c_str(), technique_name.c_str()), 1;
-  return run(*effect, technique, Judged{expect, width, height, cell, frames, input == "alpha", report_cache});
+  return run(file, *effect, technique, Judged{expect, width, height, cell, frames, input == "alpha", report_cache});
 }

@@ -30,7 +30,7 @@ RUN = ["alpha.fx", "back_buffer.fx", "blending.fx", "compute.fx", "conversions.f
        "matrix_comparisons.fx", "matrix_swizzle_stores.fx", "mips.fx", "namespaced_constants.fx", "offsets_and_labels.fx",
        "operators.fx", "out_arguments.fx", "persistence.fx", "preprocessor.fx", "render_targets.fx", "reshade_language.fx",
        "samplers.fx", "size_1x1.fx", "size_constants.fx", "size_odd.fx", "stencil.fx", "stencil_back_buffer.fx",
-       "textures.fx", "uniforms.fx"]
+       "texture_files.fx", "textures.fx", "uniforms.fx"]
 
 
 def header(path):

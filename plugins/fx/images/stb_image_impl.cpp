@@ -1,6 +1,6 @@
 // Debian's stb_image (libstb-dev) for the images FX textures name with `source`: PNG, JPEG, BMP
-// and TGA, read from memory (the plugin reads the file itself). Compiled into the plugin, whose
-// version script keeps these symbols private.
+// and TGA, read from memory (texture_image.cpp reads the file itself). Linked into the plugin, whose
+// version script keeps these symbols private, and into the Vulkan runtime's test program.
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
 #define STBI_ONLY_JPEG
