@@ -9,8 +9,13 @@
 // frame number (16 ms a frame). Pipelines go through the runtime's pipeline cache file;
 // --report-cache says whether it was read from disk.
 //
-// usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--frames N] [--technique NAME]
-//                         [--expect checks|input|invert] [--input gradient|alpha] [--report-cache] FILE.fx
+// usage: fx_vulkan_checks [-IFOLDER...] [-DNAME=VALUE...] --size WxH [--cell N] [--frames N]
+//          [--technique NAME] [--expect checks|input|invert|none] [--input gradient|alpha|IMAGE]
+//          [--raw-out FILE] [--report-cache] FILE.fx
+// `--input IMAGE` runs on a picture file (PNG, JPEG...) of the size given; `--expect none` judges
+// nothing (uniform sources this program does not give hold 0, named in a line) and `--raw-out`
+// writes the last picture's RGBA bytes, top row first: how compare_collections.py holds the
+// Vulkan runtime to the GL one on collections of effects.
 // Exit status: 0 every check holds, 1 some fail or Vulkan fails, 3 the technique needs what the
 // Vulkan runtime does not run yet (it says what), 2 usage.
 #include <dlfcn.h>
@@ -210,40 +215,51 @@ void submit(const Owner& d, VkCommandPool pool, Body body) {
   vkFreeCommandBuffers(d.device, pool, 1, &commands);
 }
 
-// The image file a texture names, looked for as a collection lays them out: in a Textures folder
-// beside the effect or above it, or beside the effect.
+// The image file a texture names, looked for as a collection lays them out: beside the effect, or
+// anywhere under a Textures folder beside the effect or beside a folder above it
+// (reshade-shaders/Textures/SweetFX/AreaTex.png for reshade-shaders/Shaders/SweetFX/SMAA.fx).
 bool load_texels(const std::string& effect_file, const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& error) {
-  const std::filesystem::path folder = std::filesystem::path(effect_file).parent_path();
-  for (const std::filesystem::path& candidate : {folder / "Textures" / texture.source, folder.parent_path() / "Textures" / texture.source,
-                                                 folder / texture.source}) {
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(candidate, ec))
-      return pfx::fx::decode_texture_image(candidate.string(), texture.width, texture.height, texture.dimension == 3 ? texture.depth : 1,
-                                           texels, error);
+  namespace fs = std::filesystem;
+  const fs::path name = fs::path(texture.source).filename();
+  std::error_code ec;
+  fs::path found = fs::path(effect_file).parent_path() / texture.source;
+  for (fs::path folder = fs::path(effect_file).parent_path(); !fs::is_regular_file(found, ec) && !folder.empty(); folder = folder.parent_path()) {
+    for (fs::recursive_directory_iterator it(folder / "Textures", ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().filename() == name && it->is_regular_file(ec)) {
+        found = it->path();
+        break;
+      }
+    if (folder == folder.parent_path()) break;
   }
-  error = "'" + texture.source + "' was not found beside the effect";
-  return false;
+  if (!fs::is_regular_file(found, ec)) {
+    error = "'" + texture.source + "' was not found beside the effect or in a Textures folder";
+    return false;
+  }
+  return pfx::fx::decode_texture_image(found.string(), texture.width, texture.height, texture.dimension == 3 ? texture.depth : 1, texels, error);
 }
 
-// The uniforms of frame `frame`: initial values, and the frame's sources; "" or the source that
-// this program cannot give.
-std::string uniform_values(const pfx::fx::EffectModel& model, int frame, std::vector<std::vector<double>>& values) {
+// `any_source`: another source holds 0 (and is named all the same).
+std::string uniform_values(const pfx::fx::EffectModel& model, int frame, bool any_source, std::vector<std::vector<double>>& values) {
   values.clear();
+  std::string missing;
   for (const pfx::fx::UniformInfo& u : model.uniforms) {
     values.push_back(u.initial);
     if (u.source.empty()) continue;
-    const double value = u.source == "framecount" ? frame : u.source == "frametime" ? 16.0 : u.source == "timer" ? 16.0 * frame : -1;
+    double value = u.source == "framecount" ? frame : u.source == "frametime" ? 16.0 : u.source == "timer" ? 16.0 * frame : -1;
+    if (value < 0 && any_source) missing += (missing.empty() ? "" : ", ") + u.source, value = 0;
     if (value < 0) return u.source;
     std::fill(values.back().begin(), values.back().end(), value);
   }
-  return "";
+  return missing;
 }
 
 struct Judged {
-  std::string expect;  // checks, input or invert
+  std::string expect;  // checks, input, invert, or none (with raw_out: the picture is written)
   int width, height, cell, frames;
   bool varying_alpha;
   bool report_cache;  // say whether the pipeline cache came from its file
+  std::string input_file;  // the frame from this image (at the size), not made here
+  std::string raw_out;     // the last picture's RGBA bytes, top row first, into this file
 };
 
 // The checks whose columns hold a pixel that is not pure green.
@@ -305,11 +321,19 @@ std::string judge(const Judged& judged, const unsigned char* out, const std::vec
 // Runs `technique` of `effect` for the frames and judges the last picture.
 int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int technique, const Judged& judged) {
   const int width = judged.width, height = judged.height;
-  const std::vector<unsigned char> input = input_picture(width, height, judged.varying_alpha);
+  std::vector<unsigned char> input = input_picture(width, height, judged.varying_alpha);
+  if (!judged.input_file.empty()) {
+    pfx::fx::TextureTexels texels;
+    std::string error;
+    if (!pfx::fx::decode_texture_image(judged.input_file, width, height, 1, texels, error)) return std::printf("FAIL: %s\n", error.c_str()), 1;
+    input = texels.rgba;
+  }
+  const bool any_source = judged.expect == "none";
   std::vector<std::vector<double>> uniforms;
   for (int frame = 0; frame < judged.frames; ++frame) {
-    const std::string missing = uniform_values(effect.model, frame, uniforms);
-    if (!missing.empty()) return std::printf("not run: this program gives no uniform source '%s'\n", missing.c_str()), 3;
+    const std::string missing = uniform_values(effect.model, frame, any_source, uniforms);
+    if (!missing.empty() && !any_source) return std::printf("not run: this program gives no uniform source '%s'\n", missing.c_str()), 3;
+    if (!missing.empty() && frame == 0) std::printf("sources given as 0: %s\n", missing.c_str());
   }
   Owner d;
   pfx::fx::vulkan::Device device;
@@ -335,7 +359,7 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
   VkCommandPool pool;
   VK_OK(vkCreateCommandPool(d.device, &pool_info, nullptr, &pool));
   for (int n = 0; n < judged.frames; ++n) {
-    uniform_values(effect.model, n, uniforms);
+    uniform_values(effect.model, n, any_source, uniforms);
     submit(d, pool, [&](VkCommandBuffer commands) {
       if (n == 0) frame.record_upload(commands);
       pfx::fx::vulkan::Frame f;
@@ -349,13 +373,20 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
   const VkDeviceSize pixels_size = static_cast<VkDeviceSize>(width) * height * 4;
   void* mapped;
   VK_OK(vkMapMemory(d.device, frame.staging_memory, 0, pixels_size, 0, &mapped));
-  const std::string wrong = judge(judged, static_cast<const unsigned char*>(mapped), input);
+  const std::string wrong = judged.expect == "none" ? "" : judge(judged, static_cast<const unsigned char*>(mapped), input);
+  if (!judged.raw_out.empty()) {
+    std::FILE* out = std::fopen(judged.raw_out.c_str(), "wb");
+    const bool written = out && std::fwrite(mapped, 1, static_cast<std::size_t>(pixels_size), out) == pixels_size;
+    if (out) std::fclose(out);
+    if (!written) std::printf("FAIL: cannot write %s\n", judged.raw_out.c_str());
+  }
   vkUnmapMemory(d.device, frame.staging_memory);
   vkDestroyCommandPool(d.device, pool, nullptr);
   runtime.destroy();
   frame.destroy(d);
   if (!wrong.empty()) return std::printf("FAIL: %s\n", wrong.c_str()), 1;
   if (judged.expect == "checks") return std::printf("ok: %d checks\n", (width + judged.cell - 1) / judged.cell), 0;
+  if (judged.expect == "none") return std::printf("ok: ran\n"), 0;
   return std::printf("ok: the picture is %s\n", judged.expect == "input" ? "the input" : "the input inverted"), 0;
 }
 
@@ -366,10 +397,15 @@ int main(int argc, char** argv) {
   std::string file, technique_name;
   int width = 0, height = 0, cell = 4, frames = 1;
   bool report_cache = false;
-  std::string expect = "checks", input = "gradient";
+  std::string expect = "checks", input = "gradient", raw_out;
   for (int i = 1; i < argc; ++i) {
     std::string argument = argv[i];
     if (argument.rfind("-I", 0) == 0) options.preprocessor.include_folders.push_back(argument.substr(2));
+    else if (argument.rfind("-D", 0) == 0) {
+      const std::size_t equals = argument.find('=');
+      options.preprocessor.defines.emplace_back(argument.substr(2, equals == std::string::npos ? std::string::npos : equals - 2),
+                                                equals == std::string::npos ? "1" : argument.substr(equals + 1));
+    }
     else if (argument == "--size" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
     else if (argument == "--cell" && i + 1 < argc) cell = std::atoi(argv[++i]);
     else if (argument == "--frames" && i + 1 < argc) frames = std::atoi(argv[++i]);
@@ -377,12 +413,12 @@ int main(int argc, char** argv) {
     else if (argument == "--expect" && i + 1 < argc) expect = argv[++i];
     else if (argument == "--input" && i + 1 < argc) input = argv[++i];
     else if (argument == "--report-cache") report_cache = true;
+    else if (argument == "--raw-out" && i + 1 < argc) raw_out = argv[++i];
     else file = argument;
   }
-  if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert") ||
-      (input != "gradient" && input != "alpha")) {
-    std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] --size WxH [--cell N] [--frames N] [--technique NAME] "
-                         "[--expect checks|input|invert] [--input gradient|alpha] [--report-cache] FILE.fx\n");
+  if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert" && expect != "none") || input.empty()) {
+    std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] [-DNAME=VALUE...] --size WxH [--cell N] [--frames N] [--technique NAME] "
+                         "[--expect checks|input|invert|none] [--input gradient|alpha|IMAGE] [--raw-out FILE] [--report-cache] FILE.fx\n");
     return 2;
   }
   options.preprocessor.buffer_width = width;
@@ -395,5 +431,6 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < techniques.size(); ++i)
     if (techniques[i].name == technique_name) technique = static_cast<int>(i);
   if (technique < 0) return std::printf("FAIL: %s has no technique '%s'\n", file.c_str(), technique_name.c_str()), 1;
-  return run(file, *effect, technique, Judged{expect, width, height, cell, frames, input == "alpha", report_cache});
+  return run(file, *effect, technique, Judged{expect, width, height, cell, frames, input == "alpha", report_cache,
+                                                input == "gradient" || input == "alpha" ? "" : input, raw_out});
 }
