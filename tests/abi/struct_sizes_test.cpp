@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <pfx/pfx.h>
+#include <pfx/vulkan_effects.h>
 
 namespace {
 
@@ -17,7 +18,7 @@ struct Sizes {
   size_t minimum, today;
 };
 
-// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.6).
+// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.7).
 const std::map<std::string, Sizes>& pinned() {
   static const std::map<std::string, Sizes> sizes = {
       {"pfx_entry", {64, 64}},          {"pfx_host", {48, 56}},
@@ -29,7 +30,9 @@ const std::map<std::string, Sizes>& pinned() {
       {"pfx_reference_request", {64, 88}}, {"pfx_importer_factory", {24, 24}},
       {"pfx_importer_desc", {56, 56}},  {"pfx_import_request", {64, 64}},
       {"pfx_import_result", {184, 184}}, {"pfx_import_material", {80, 104}},
-      {"pfx_thread_pool", {32, 32}},    {"pfx_source_factory", {40, 56}}};
+      {"pfx_thread_pool", {32, 32}},    {"pfx_source_factory", {40, 56}},
+      {"pfx_vk_device", {56, 56}},      {"pfx_vk_frame_image", {28, 32}},
+      {"pfx_vulkan_effect_factory", {40, 40}}};
   return sizes;
 }
 
@@ -54,7 +57,10 @@ std::map<std::string, Sizes> compiled() {
           PFX_SIZES(pfx_import_result, PFX_IMPORT_RESULT_MIN_SIZE),
           PFX_SIZES(pfx_import_material, PFX_IMPORT_MATERIAL_MIN_SIZE),
           PFX_SIZES(pfx_thread_pool, PFX_THREAD_POOL_MIN_SIZE),
-          PFX_SIZES(pfx_source_factory, PFX_SOURCE_FACTORY_MIN_SIZE)};
+          PFX_SIZES(pfx_source_factory, PFX_SOURCE_FACTORY_MIN_SIZE),
+          PFX_SIZES(pfx_vk_device, PFX_VK_DEVICE_MIN_SIZE),
+          PFX_SIZES(pfx_vk_frame_image, PFX_VK_FRAME_IMAGE_MIN_SIZE),
+          PFX_SIZES(pfx_vulkan_effect_factory, PFX_VULKAN_EFFECT_FACTORY_MIN_SIZE)};
 }
 #undef PFX_SIZES
 

@@ -8,6 +8,7 @@
 #include "fx_catalog.hpp"
 #include "fx_effect.hpp"
 #include "fx_instance.hpp"
+#include "fx_vulkan_effect.hpp"
 
 namespace pfx_fx {
 namespace {
@@ -91,8 +92,12 @@ constexpr pfx_effect_factory kFactory = {sizeof(pfx_effect_factory), effect_coun
 constexpr pfx_source_factory kSources = {
     sizeof(pfx_source_factory), effect_file, effect_source_name, error_count, error, set_definitions, params_at_size};
 
-constexpr auto kPlugin =
-    pfx::plugin::Plugin("org.pfx.fx").name("pfx ReShade FX").version("0.1.0").effect_factory(&kFactory).sources(&kSources);
+constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.fx")
+                             .name("pfx ReShade FX")
+                             .version("0.1.0")
+                             .effect_factory(&kFactory)
+                             .sources(&kSources)
+                             .factory(PFX_VULKAN_EFFECTS_FACTORY_ID, &kVulkanEffects);
 
 }  // namespace
 }  // namespace pfx_fx

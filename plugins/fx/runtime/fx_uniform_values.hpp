@@ -22,6 +22,7 @@ class UniformValues {
   void update(const pfx::fx::EffectModel& model, const ParamTable& params, const pfx_value* values, const pfx_frame& frame,
               bool depth_available);
   const std::vector<double>& of(int uniform) const { return values_[static_cast<std::size_t>(uniform)]; }
+  const std::vector<std::vector<double>>& all() const { return values_; }  // per model uniform
 
  private:
   std::vector<std::vector<double>> values_;

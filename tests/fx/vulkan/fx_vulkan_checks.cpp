@@ -10,8 +10,13 @@
 // --report-cache says whether it was read from disk.
 //
 // usage: fx_vulkan_checks [-IFOLDER...] [-DNAME=VALUE...] --size WxH [--cell N] [--frames N]
-//          [--technique NAME] [--expect checks|input|invert|none] [--input gradient|alpha|IMAGE]
-//          [--raw-out FILE] [--report-cache] FILE.fx
+//          [--technique NAME] [--expect checks|input|invert|gain|none] [--gain G]
+//          [--input gradient|alpha|IMAGE] [--raw-out FILE] [--report-cache]
+//          [--plugin PFX_FX_SO [--set PARAM=VALUE...]] FILE.fx
+// `--plugin` runs the technique as a Vulkan host runs an effect of the FX plugin: through its
+// "pfx.vulkan_effects/1" factory (pfx/vulkan_effects.h), with the parameters' defaults and the
+// `--set` values, the frame's time and number for its sources; `--expect gain` judges the input's
+// RGB times G within a code, alpha kept.
 // `--input IMAGE` runs on a picture file (PNG, JPEG...) of the size given; `--expect none` judges
 // nothing (uniform sources this program does not give hold 0, named in a line) and `--raw-out`
 // writes the last picture's RGBA bytes, top row first: how compare_collections.py holds the
@@ -29,6 +34,9 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <pfx/pfx.h>
+#include <pfx/vulkan_effects.h>
 
 #include "effect_compiler.hpp"
 #include "vk_pipeline_cache.hpp"
@@ -253,6 +261,66 @@ std::string uniform_values(const pfx::fx::EffectModel& model, int frame, bool an
   return missing;
 }
 
+// The FX plugin as a Vulkan host meets it: its library loaded, its "pfx.vulkan_effects/1" factory,
+// and the effect of FILE's technique (PFX_FX_PATH names FILE alone) at its parameters' defaults
+// with the --set values.
+struct PluginEffect {
+  void* library = nullptr;
+  const pfx_entry* entry = nullptr;
+  const pfx_vulkan_effect_factory* vulkan = nullptr;
+  std::string id;
+  std::vector<pfx_value> params;
+  pfx_host host{};
+  void* instance = nullptr;
+
+  static void log(void*, pfx_log_level level, const char* message) {
+    if (level >= PFX_LOG_WARNING) std::printf("plugin: %s\n", message);
+  }
+  static pfx_gl_proc no_gl(void*, const char*) { return nullptr; }  // a host without GL
+
+  // "" or what went wrong.
+  std::string load(const std::string& path, const std::string& file, const std::string& technique,
+                   const std::vector<std::pair<std::string, double>>& sets) {
+    setenv("PFX_FX_PATH", file.c_str(), 1);
+    library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!library) return std::string("cannot load the plugin: ") + dlerror();
+    auto get_entry = reinterpret_cast<const pfx_entry* (*)()>(dlsym(library, PFX_ENTRY_SYMBOL));
+    entry = get_entry ? get_entry() : nullptr;
+    host.struct_size = sizeof host;
+    host.abi_major = PFX_ABI_MAJOR, host.abi_minor = PFX_ABI_MINOR;
+    host.host_name = "fx_vulkan_checks";
+    host.log = log;
+    host.get_proc_address = no_gl;
+    if (!entry || entry->init(&host) != PFX_OK) return "the plugin's init failed";
+    vulkan = static_cast<const pfx_vulkan_effect_factory*>(entry->get_factory(PFX_VULKAN_EFFECTS_FACTORY_ID));
+    const auto* effects = static_cast<const pfx_effect_factory*>(entry->get_factory(PFX_EFFECTS_FACTORY_ID));
+    const auto* sources = static_cast<const pfx_source_factory*>(entry->get_factory(PFX_SOURCES_FACTORY_ID));
+    if (!vulkan || vulkan->struct_size < PFX_VULKAN_EFFECT_FACTORY_MIN_SIZE || !effects || !sources)
+      return "the plugin offers no pfx.vulkan_effects/1 factory";
+    for (uint32_t i = 0; i < effects->effect_count(); ++i) {
+      const pfx_effect_desc* desc = effects->get_effect(i);
+      const char* name = sources->effect_source_name(desc->id);
+      if (!name || technique != name) continue;
+      id = desc->id;
+      for (uint32_t k = 0; k < desc->param_count; ++k) params.push_back(pfx_at(pfx_param_desc, desc->params, k)->default_value);
+      for (const auto& set : sets) {
+        bool found = false;
+        for (uint32_t k = 0; k < desc->param_count; ++k)
+          if (set.first == pfx_at(pfx_param_desc, desc->params, k)->id) params[k].v[0] = set.second, found = true;
+        if (!found) return "the effect has no parameter '" + set.first + "'";
+      }
+    }
+    if (id.empty()) return "the plugin lists no effect for technique '" + technique + "'";
+    if (!vulkan->supports(id.c_str()) || vulkan->supports("no such effect")) return "supports() answers wrong";
+    return "";
+  }
+  void unload() {
+    if (instance) vulkan->destroy(instance);
+    if (entry) entry->deinit();
+    // The library stays mapped: LeakSanitizer then names its frames.
+  }
+};
+
 struct Judged {
   std::string expect;  // checks, input, invert, or none (with raw_out: the picture is written)
   int width, height, cell, frames;
@@ -260,6 +328,9 @@ struct Judged {
   bool report_cache;  // say whether the pipeline cache came from its file
   std::string input_file;  // the frame from this image (at the size), not made here
   std::string raw_out;     // the last picture's RGBA bytes, top row first, into this file
+  std::string plugin;      // through this FX plugin's "pfx.vulkan_effects/1" factory
+  std::vector<std::pair<std::string, double>> sets;  // parameter values for the plugin's effect
+  double gain = 1.0;       // expect "gain": the input's RGB times this
 };
 
 // The checks whose columns hold a pixel that is not pure green.
@@ -302,21 +373,64 @@ std::string judge(const Judged& judged, const unsigned char* out, const std::vec
     for (int check : failed) list += (list.empty() ? "" : ", ") + std::to_string(check);
     return failed.empty() ? "" : "checks [" + list + "] of " + std::to_string((judged.width + judged.cell - 1) / judged.cell);
   }
-  const bool invert = judged.expect == "invert";
+  const bool invert = judged.expect == "invert", gain = judged.expect == "gain";
   for (std::size_t i = 0; i < in.size(); ++i) {
     const bool alpha = i % 4 == 3;
     if (invert && alpha) continue;
-    const int wanted = invert ? 255 - in[i] : in[i];
-    if (out[i] != wanted) {
+    const int wanted = invert ? 255 - in[i] : gain && !alpha ? static_cast<int>(in[i] * judged.gain + 0.5) : in[i];
+    if (std::abs(out[i] - wanted) > (gain && !alpha ? 1 : 0)) {
       const std::size_t pixel = i / 4;
       return "pixel (" + std::to_string(pixel % static_cast<std::size_t>(judged.width)) + ", " +
              std::to_string(pixel / static_cast<std::size_t>(judged.width)) + ") channel " + std::to_string(i % 4) + " is " +
-             std::to_string(out[i]) + ", not " + std::to_string(wanted) + (invert ? " (255 - the input)" : " (the input)");
+             std::to_string(out[i]) + ", not " + std::to_string(wanted) + (invert ? " (255 - the input)" : gain ? " (the input times the gain)" : " (the input)");
     }
   }
   return "";
 }
 
+
+// The technique through the Vulkan runtime itself, its pipelines through the cache file: 0, or the
+// exit status to end with.
+int make_technique(const pfx::fx::vulkan::Device& device, const std::string& file, const pfx::fx::CompiledEffect& effect, int technique,
+                   const Judged& judged, pfx::fx::vulkan::Technique& runtime) {
+  pfx::fx::vulkan::PipelineCacheFile cache;
+  if (!cache.open(device)) return std::printf("FAIL: vkCreatePipelineCache failed\n"), 1;
+  std::string message;
+  const auto loader = [&file](const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& error) {
+    return load_texels(file, texture, texels, error);
+  };
+  const auto status =
+      runtime.create(device, effect, technique, judged.width, judged.height, VK_FORMAT_R8G8B8A8_UNORM, cache.handle(), loader, message);
+  cache.save();
+  if (judged.report_cache)
+    std::printf("pipeline cache: %s (%s)\n", cache.loaded() ? "from the file" : "started empty", cache.path().empty() ? "off" : cache.path().c_str());
+  cache.destroy();
+  if (status == pfx::fx::vulkan::Technique::Status::kUnsupported) return std::printf("not run: %s\n", message.c_str()), 3;
+  if (status != pfx::fx::vulkan::Technique::Status::kOk) return std::printf("FAIL: %s\n", message.c_str()), 1;
+  return 0;
+}
+
+// The technique through the plugin's factory: 0, or the exit status to end with.
+int make_plugin_effect(const Owner& d, const std::string& file, const std::string& technique, const Judged& judged, PluginEffect& plugin) {
+  const std::string problem = plugin.load(judged.plugin, std::filesystem::absolute(file).string(), technique, judged.sets);
+  if (!problem.empty()) return std::printf("FAIL: %s\n", problem.c_str()), 1;
+  pfx_vk_device device{};
+  device.struct_size = sizeof device;
+  device.instance = d.instance;
+  device.physical_device = d.physical;
+  device.device = d.device;
+  device.get_instance_proc_addr = vkGetInstanceProcAddr;
+  device.get_device_proc_addr = vkGetDeviceProcAddr;
+  device.queue_family_index = d.family;
+  device.api_version = VK_API_VERSION_1_1;
+  char error[1024] = "";
+  const pfx_status status = plugin.vulkan->create(&plugin.host, plugin.id.c_str(), &device, static_cast<uint32_t>(judged.width),
+                                                  static_cast<uint32_t>(judged.height), VK_FORMAT_R8G8B8A8_UNORM, &plugin.instance, error,
+                                                  sizeof error);
+  if (status == PFX_UNSUPPORTED) return std::printf("not run: %s\n", error), 3;
+  if (status != PFX_OK) return std::printf("FAIL: %s\n", error), 1;
+  return 0;
+}
 
 // Runs `technique` of `effect` for the frames and judges the last picture.
 int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int technique, const Judged& judged) {
@@ -339,20 +453,12 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
   pfx::fx::vulkan::Device device;
   const std::string missing = device.load(vkGetInstanceProcAddr, d.instance, d.physical, vkGetDeviceProcAddr, d.device);
   if (!missing.empty()) return std::printf("FAIL: the device gives no %s\n", missing.c_str()), 1;
-  pfx::fx::vulkan::PipelineCacheFile cache;
-  if (!cache.open(device)) return std::printf("FAIL: vkCreatePipelineCache failed\n"), 1;
   pfx::fx::vulkan::Technique runtime;
-  std::string message;
-  const auto loader = [&file](const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& error) {
-    return load_texels(file, texture, texels, error);
-  };
-  const auto status = runtime.create(device, effect, technique, width, height, VK_FORMAT_R8G8B8A8_UNORM, cache.handle(), loader, message);
-  cache.save();
-  if (judged.report_cache)
-    std::printf("pipeline cache: %s (%s)\n", cache.loaded() ? "from the file" : "started empty", cache.path().empty() ? "off" : cache.path().c_str());
-  cache.destroy();
-  if (status == pfx::fx::vulkan::Technique::Status::kUnsupported) return std::printf("not run: %s\n", message.c_str()), 3;
-  if (status != pfx::fx::vulkan::Technique::Status::kOk) return std::printf("FAIL: %s\n", message.c_str()), 1;
+  PluginEffect plugin;
+  const int made = judged.plugin.empty() ? make_technique(device, file, effect, technique, judged, runtime)
+                                         : make_plugin_effect(d, file, effect.model.techniques[static_cast<std::size_t>(technique)].name,
+                                                              judged, plugin);
+  if (made != 0) return made;
   FrameImage frame(d, input, width, height);
   auto pool_info = vk<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
   pool_info.queueFamilyIndex = d.family;
@@ -362,12 +468,28 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
     uniform_values(effect.model, n, any_source, uniforms);
     submit(d, pool, [&](VkCommandBuffer commands) {
       if (n == 0) frame.record_upload(commands);
+      struct ReadBack {  // after the frame's commands, however the body returns
+        const FrameImage& frame;
+        VkCommandBuffer commands;
+        bool last;
+        ~ReadBack() {
+          if (last) frame.record_readback(commands);
+        }
+      } read_back{frame, commands, n + 1 == judged.frames};
       pfx::fx::vulkan::Frame f;
       f.image = frame.image;
       f.layout = n == 0 ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
       f.final_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-      runtime.record(commands, f, uniforms);
-      if (n + 1 == judged.frames) frame.record_readback(commands);
+      if (judged.plugin.empty()) return runtime.record(commands, f, uniforms);
+      pfx_vk_frame_image image{sizeof(pfx_vk_frame_image), f.image, f.layout, f.final_layout, 0};
+      pfx_frame info{};
+      info.struct_size = sizeof info;
+      info.width = static_cast<uint32_t>(width), info.height = static_cast<uint32_t>(height);
+      info.time_seconds = n * 0.016;
+      info.frame_index = static_cast<uint64_t>(n);
+      info.light_struct_size = sizeof(pfx_light);
+      if (plugin.vulkan->record(plugin.instance, commands, &image, &info, plugin.params.data()) != PFX_OK)
+        std::printf("FAIL: the plugin's record failed\n");
     });
   }
   const VkDeviceSize pixels_size = static_cast<VkDeviceSize>(width) * height * 4;
@@ -383,10 +505,12 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
   vkUnmapMemory(d.device, frame.staging_memory);
   vkDestroyCommandPool(d.device, pool, nullptr);
   runtime.destroy();
+  plugin.unload();
   frame.destroy(d);
   if (!wrong.empty()) return std::printf("FAIL: %s\n", wrong.c_str()), 1;
   if (judged.expect == "checks") return std::printf("ok: %d checks\n", (width + judged.cell - 1) / judged.cell), 0;
   if (judged.expect == "none") return std::printf("ok: ran\n"), 0;
+  if (judged.expect == "gain") return std::printf("ok: the picture is the input times %g\n", judged.gain), 0;
   return std::printf("ok: the picture is %s\n", judged.expect == "input" ? "the input" : "the input inverted"), 0;
 }
 
@@ -397,7 +521,9 @@ int main(int argc, char** argv) {
   std::string file, technique_name;
   int width = 0, height = 0, cell = 4, frames = 1;
   bool report_cache = false;
-  std::string expect = "checks", input = "gradient", raw_out;
+  std::string expect = "checks", input = "gradient", raw_out, plugin;
+  std::vector<std::pair<std::string, double>> sets;
+  double gain = 1.0;
   for (int i = 1; i < argc; ++i) {
     std::string argument = argv[i];
     if (argument.rfind("-I", 0) == 0) options.preprocessor.include_folders.push_back(argument.substr(2));
@@ -414,11 +540,19 @@ int main(int argc, char** argv) {
     else if (argument == "--input" && i + 1 < argc) input = argv[++i];
     else if (argument == "--report-cache") report_cache = true;
     else if (argument == "--raw-out" && i + 1 < argc) raw_out = argv[++i];
+    else if (argument == "--plugin" && i + 1 < argc) plugin = argv[++i];
+    else if (argument == "--gain" && i + 1 < argc) gain = std::atof(argv[++i]);
+    else if (argument == "--set" && i + 1 < argc) {
+      const std::string assignment = argv[++i];
+      const std::size_t equals = assignment.find('=');
+      if (equals != std::string::npos) sets.emplace_back(assignment.substr(0, equals), std::atof(assignment.c_str() + equals + 1));
+    }
     else file = argument;
   }
-  if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert" && expect != "none") || input.empty()) {
+  if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert" && expect != "none" && expect != "gain") || input.empty()) {
     std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] [-DNAME=VALUE...] --size WxH [--cell N] [--frames N] [--technique NAME] "
-                         "[--expect checks|input|invert|none] [--input gradient|alpha|IMAGE] [--raw-out FILE] [--report-cache] FILE.fx\n");
+                         "[--expect checks|input|invert|gain|none] [--gain G] [--input gradient|alpha|IMAGE] [--raw-out FILE] [--report-cache] "
+                         "[--plugin PFX_FX_SO [--set PARAM=VALUE...]] FILE.fx\n");
     return 2;
   }
   options.preprocessor.buffer_width = width;
@@ -431,6 +565,7 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < techniques.size(); ++i)
     if (techniques[i].name == technique_name) technique = static_cast<int>(i);
   if (technique < 0) return std::printf("FAIL: %s has no technique '%s'\n", file.c_str(), technique_name.c_str()), 1;
-  return run(file, *effect, technique, Judged{expect, width, height, cell, frames, input == "alpha", report_cache,
-                                                input == "gradient" || input == "alpha" ? "" : input, raw_out});
+  Judged judged{expect, width, height, cell, frames, input == "alpha", report_cache, input == "gradient" || input == "alpha" ? "" : input,
+                raw_out, plugin, sets, gain};
+  return run(file, *effect, technique, judged);
 }

@@ -2,13 +2,15 @@
 """The conformance suite on Vulkan (lavapipe), through the Vulkan runtime for FX, under Khronos'
 validation layer with synchronisation validation.
 
-usage: run_vulkan_checks.py FX_VULKAN_CHECKS
+usage: run_vulkan_checks.py FX_VULKAN_CHECKS PFX_FX_SO
 
 Each file of tests/fx/conformance judged on the 8-bit input picture (`// expect: checks`, the
-default, `input` or `invert`; `// input: gradient` or `alpha`) is run by FX_VULKAN_CHECKS: every
-pass in the Vulkan dialect, compiled to SPIR-V by glslang, run by plugins/fx/vulkan on Mesa's
+default, `input` or `invert`; `// input: gradient` or `alpha`) is run by FX_VULKAN_CHECKS as a
+Vulkan host runs an effect: through the FX plugin PFX_FX_SO's "pfx.vulkan_effects/1" factory, its
+passes in the Vulkan dialect compiled to SPIR-V by glslang and run by plugins/fx/vulkan on Mesa's
 lavapipe device for the file's frames, and judged as in GL: every check green, the input's bytes,
-or their inverse. The files of RUN must run and pass with no message from the validation layer;
+or their inverse. effects/gain.fx then shows a parameter reaching the effect: at its default the
+picture is the input, at --set gain=0.25 the input's colour times 0.25. The files of RUN must run and pass with no message from the validation layer;
 every other file must be one the runtime says it does not run yet (exit status 3), so a file that
 starts to run is added to RUN rather than passing unseen. A file judged on another input (an EXR
 of non-finite values) is the GL runtime's to judge.
@@ -44,7 +46,7 @@ def header(path):
 
 
 def main(argv):
-    if len(argv) != 2:
+    if len(argv) != 3:
         print(__doc__)
         return 2
     icds = sorted(glob.glob("/usr/share/vulkan/icd.d/lvp_icd.*.json"))
@@ -56,10 +58,10 @@ def main(argv):
         print("FAIL: Khronos' validation layer is not installed (%s): install vulkan-validationlayers" % layers)
         return 1
     with tempfile.TemporaryDirectory(prefix="pfx-vulkan-checks-") as scratch:
-        return run_all(argv[1], icds[0], scratch)
+        return run_all(argv[1], argv[2], icds[0], scratch)
 
 
-def run_all(checks, icd, scratch):
+def run_all(checks, plugin, icd, scratch):
     log = os.path.join(scratch, "validation.txt")
     with open(os.path.join(scratch, "vk_layer_settings.txt"), "w") as f:
         f.write("khronos_validation.report_flags = error,warn\n"
@@ -74,7 +76,7 @@ def run_all(checks, icd, scratch):
         s = header(path)
         if s["expect"] not in ("checks", "input", "invert") or s["input"] not in ("gradient", "alpha"):
             continue  # judged on another input: the GL suite's business
-        command = [checks, "-I" + os.path.abspath(INCLUDE), "--size", s["size"], "--cell", s["cell"], "--expect", s["expect"],
+        command = [checks, "--plugin", plugin, "-I" + os.path.abspath(INCLUDE), "--size", s["size"], "--cell", s["cell"], "--expect", s["expect"],
                    "--input", s["input"], "--frames", s["frames"]]
         if "technique" in s:
             command += ["--technique", s["technique"]]
@@ -93,6 +95,19 @@ def run_all(checks, icd, scratch):
                 print("%s: %s" % (name, said))
         elif result.returncode != 3:
             failures.append("%s ran (%s): add it to RUN in %s" % (name, said, __file__))
+    gain = os.path.join(HERE, "effects", "gain.fx")
+    for name, extra in (("gain at its default", ["--expect", "input"]),
+                        ("gain set to 0.25", ["--set", "gain=0.25", "--expect", "gain", "--gain", "0.25"])):
+        if os.path.exists(log):
+            os.remove(log)
+        result = subprocess.run([checks, "--plugin", plugin, "-I" + os.path.abspath(INCLUDE), "--size", "33x7", "--input", "alpha"] + extra + [gain],
+                                capture_output=True, text=True, env=env, timeout=300)
+        said = (result.stdout + result.stderr).strip()
+        messages = open(log).read().strip() if os.path.exists(log) else ""
+        if result.returncode != 0 or messages:
+            failures.append("%s: %s %s" % (name, said, messages[:4000]))
+        else:
+            print("%s: %s" % (name, said))
     missing = [f for f in RUN if not os.path.exists(os.path.join(CONFORMANCE, f))]
     if missing:
         failures.append("RUN names files that are gone: %s" % missing)

@@ -122,6 +122,14 @@ class Plugin {
     p.sources_ = factory;
     return p;
   }
+  // A factory of a kind this header does not name, offered under its id: "pfx.vulkan_effects/1"
+  // (pfx/vulkan_effects.h, which needs Vulkan's headers, so only its users include it).
+  constexpr Plugin factory(const char* factory_id, const void* factory) const {
+    Plugin p = *this;
+    p.other_id_ = factory_id;
+    p.other_ = factory;
+    return p;
+  }
   constexpr Plugin references(const pfx_reference_factory* factory) const {
     Plugin p = *this;
     p.references_ = factory;
@@ -158,6 +166,8 @@ class Plugin {
   const pfx_effect_factory* effect_factory_ = nullptr;
   const pfx_reference_factory* references_ = nullptr;
   const pfx_source_factory* sources_ = nullptr;
+  const char* other_id_ = nullptr;
+  const void* other_ = nullptr;
   const pfx_importer_desc* const* importers_ = nullptr;
   uint32_t importer_count_ = 0;
   bool own_effect_factory_ = false;
@@ -193,6 +203,9 @@ struct Entry {
     const pfx_effect_factory* effects = P.own_effect_factory_ ? P.effect_factory_
                                         : P.effect_count_     ? &kEffects
                                                               : nullptr;
+    if constexpr (P.other_id_ != nullptr) {
+      if (factory_id && std::strcmp(factory_id, P.other_id_) == 0) return P.other_;
+    }
     return factory_for(factory_id, effects, P.references_, P.importer_count_ ? &kImporters : nullptr, P.sources_);
   }
 

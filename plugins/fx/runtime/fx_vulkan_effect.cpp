@@ -1,0 +1,166 @@
+#include "fx_vulkan_effect.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <pfx/cpp/plugin_entry.hpp>
+
+#include "fx_catalog.hpp"
+#include "fx_frame_params.hpp"
+#include "fx_texture_files.hpp"
+#include "fx_uniform_values.hpp"
+#include "texture_image.hpp"
+#include "vk_pipeline_cache.hpp"
+#include "vk_technique.hpp"
+
+namespace pfx_fx {
+namespace {
+
+class FxVulkanInstance {
+ public:
+  FxVulkanInstance(const FxEffectEntry& entry, const pfx_host* host) : entry_(entry), host_(host) {}
+  ~FxVulkanInstance() {
+    technique_.destroy();
+    cache_.destroy();
+  }
+  pfx_status create(const pfx_vk_device& device, int width, int height, VkFormat format, std::string& error);
+  pfx_status record(VkCommandBuffer commands, const pfx_vk_frame_image& image, const pfx_frame& frame, const pfx_value* params);
+
+ private:
+  void log(pfx_log_level level, const std::string& message) const {
+    host_->log(host_->host_data, level, ("fx: " + entry_.id + " (Vulkan): " + message).c_str());
+  }
+
+  const FxEffectEntry& entry_;
+  const pfx_host* host_;
+  pfx::fx::vulkan::Device device_;
+  std::unique_ptr<pfx::fx::CompiledEffect> compiled_;
+  pfx::fx::vulkan::PipelineCacheFile cache_;
+  pfx::fx::vulkan::Technique technique_;
+  UniformValues uniforms_;
+  FrameParams frame_params_;
+};
+
+pfx_status FxVulkanInstance::create(const pfx_vk_device& device, int width, int height, VkFormat format, std::string& error) {
+  error = device_.load(device.get_instance_proc_addr, device.instance, device.physical_device, device.get_device_proc_addr, device.device);
+  if (!error.empty()) return error = "the device gives no " + error, PFX_ERROR;
+  compiled_ = pfx::fx::compile_effect(entry_.file, compile_options(width, height), false);
+  if (!compiled_->ok()) return error = compiled_->errors(), PFX_ERROR;
+  const auto& techniques = compiled_->model.techniques;
+  if (static_cast<std::size_t>(entry_.technique_index) >= techniques.size() || techniques[static_cast<std::size_t>(entry_.technique_index)].name != entry_.technique)
+    return error = "technique '" + entry_.technique + "' is no longer in " + entry_.file, PFX_ERROR;
+  if (!cache_.open(device_)) return error = "vkCreatePipelineCache failed", PFX_ERROR;
+  const std::string effect_file = entry_.file;
+  const auto load = [effect_file](const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& message) {
+    const std::string path = find_texture_file(texture.source, effect_file);
+    if (path.empty()) {
+      message = "source image '" + texture.source + "' was not found (looked in a Textures folder beside the effect and in PFX_FX_TEXTURE_PATH)";
+      return false;
+    }
+    return pfx::fx::decode_texture_image(path, texture.width, texture.height, texture.dimension == 3 ? texture.depth : 1, texels, message);
+  };
+  const auto status = technique_.create(device_, *compiled_, entry_.technique_index, width, height, format, cache_.handle(), load, error);
+  cache_.save();
+  if (status == pfx::fx::vulkan::Technique::Status::kUnsupported) return PFX_UNSUPPORTED;
+  if (status != pfx::fx::vulkan::Technique::Status::kOk) return PFX_ERROR;
+  uniforms_.reset(compiled_->model, entry_.params);
+  frame_params_.reset(compiled_->model, entry_.params, width, height);
+  return PFX_OK;
+}
+
+pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame_image& image, const pfx_frame& frame, const pfx_value* params) {
+  if (!params && !entry_.params.descs.empty()) return PFX_INVALID_ARGUMENT;  // an effect without parameters may get none
+  std::vector<std::string> notes;
+  const pfx_value* values = frame_params_.resolve(entry_.params, params, notes);
+  for (const std::string& note : notes) log(PFX_LOG_WARNING, note);
+  uniforms_.update(compiled_->model, entry_.params, values, frame, false);
+  pfx::fx::vulkan::Frame f;
+  f.image = image.image;
+  f.layout = image.layout;
+  f.final_layout = image.final_layout;
+  f.keep_alpha = !(image.flags & PFX_VK_FRAME_ALPHA_UNUSED);
+  technique_.record(commands, f, uniforms_.all());
+  return PFX_OK;
+}
+
+// Instances this factory made and has not destroyed: a pointer of anybody else's is refused.
+std::mutex live_mutex;
+std::set<const FxVulkanInstance*> live;
+
+FxVulkanInstance* live_vulkan_instance(void* instance) {
+  std::lock_guard<std::mutex> lock(live_mutex);
+  auto* fx = static_cast<FxVulkanInstance*>(instance);
+  return live.count(fx) ? fx : nullptr;
+}
+
+const FxEffectEntry* entry_of(const char* effect_id) {
+  if (!effect_id) return nullptr;
+  for (const auto& entry : catalog().effects)
+    if (entry->id == effect_id) return entry.get();
+  return nullptr;
+}
+
+void copy_error(const std::string& message, char* error, uint32_t error_size) {
+  if (!error || error_size == 0) return;
+  const std::size_t n = std::min<std::size_t>(message.size(), error_size - 1);
+  std::memcpy(error, message.data(), n);
+  error[n] = '\0';
+}
+
+int32_t supports(const char* effect_id) {
+  try {
+    return entry_of(effect_id) ? 1 : 0;
+  } catch (...) {
+    return 0;
+  }
+}
+
+pfx_status create(const pfx_host* host, const char* effect_id, const pfx_vk_device* device, uint32_t width, uint32_t height, VkFormat format,
+                  void** out_instance, char* error, uint32_t error_size) {
+  if (out_instance) *out_instance = nullptr;
+  if (!host || !device || !out_instance || device->struct_size < PFX_VK_DEVICE_MIN_SIZE || width == 0 || height == 0 || width > 16384 ||
+      height > 16384)
+    return copy_error("invalid arguments", error, error_size), PFX_INVALID_ARGUMENT;
+  std::string message;
+  const pfx_status status = pfx::plugin::without_exceptions([&]() -> pfx_status {
+    const FxEffectEntry* entry = entry_of(effect_id);
+    if (!entry) return message = std::string("no FX effect '") + (effect_id ? effect_id : "") + "'", PFX_INVALID_ARGUMENT;
+    auto fx = std::make_unique<FxVulkanInstance>(*entry, host);
+    const pfx_status made = fx->create(*device, static_cast<int>(width), static_cast<int>(height), format, message);
+    if (made != PFX_OK) return made;
+    std::lock_guard<std::mutex> lock(live_mutex);
+    live.insert(fx.get());
+    *out_instance = fx.release();
+    return PFX_OK;
+  });
+  if (status != PFX_OK) copy_error(message.empty() ? "the instance could not be made" : message, error, error_size);
+  return status;
+}
+
+pfx_status record(void* instance, VkCommandBuffer commands, const pfx_vk_frame_image* image, const pfx_frame* frame, const pfx_value* params) {
+  FxVulkanInstance* fx = live_vulkan_instance(instance);
+  if (!fx || !commands || !image || image->struct_size < PFX_VK_FRAME_IMAGE_MIN_SIZE || !frame || frame->struct_size < PFX_FRAME_MIN_SIZE)
+    return PFX_INVALID_ARGUMENT;
+  return pfx::plugin::without_exceptions([&]() -> pfx_status { return fx->record(commands, *image, *frame, params); });
+}
+
+void destroy(void* instance) {
+  FxVulkanInstance* fx = live_vulkan_instance(instance);
+  if (!fx) return;
+  {
+    std::lock_guard<std::mutex> lock(live_mutex);
+    live.erase(fx);
+  }
+  delete fx;
+}
+
+}  // namespace
+
+const pfx_vulkan_effect_factory kVulkanEffects = {sizeof(pfx_vulkan_effect_factory), supports, create, record, destroy};
+
+}  // namespace pfx_fx
