@@ -82,7 +82,6 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
 Technique::Status Technique::check_supported(std::string& message) const {
   for (std::size_t index = 0; index < technique_->passes.size(); ++index) {
     const PassInfo& pass = technique_->passes[index];
-    if (pass.topology == Topology::kPointList) message = pass_label(pass, index) + " draws points";
     for (int i = 0; message.empty() && i < pass.render_target_count; ++i)
       if (pass.render_targets[i] >= 0 && model_->textures[static_cast<std::size_t>(pass.render_targets[i])].dimension != 2)
         message = pass_label(pass, index) + " renders to a texture that is not 2D";

@@ -14,7 +14,8 @@
 // starts (every frame), kept from pass to pass, tested by a pass whose first target has the
 // frame's size. Textures with `source =` start from the texels the owner's loader gives (it finds
 // and decodes the file: images/texture_image.hpp). What the GL runtime does that this does not
-// yet: the frame's depth (the depth texture is one texel at the far plane), point lists. create() says kUnsupported with the reason for a technique that needs one of them.
+// yet: the frame's depth (the depth texture is one texel at the far plane), render targets that
+// are not 2D. create() says kUnsupported with the reason for a technique that needs one of them.
 #include <vulkan/vulkan.h>
 
 #include <functional>

@@ -55,6 +55,7 @@ LEFT_OUT = {
     "out_arguments.fx": "an out argument of another type than its parameter: vkBasalt's SPIR-V generator fails an "
                         "assertion (emit_store) and vkcube aborts; with a matrix element as the argument, creating "
                         "the pipeline fails (VK_ERROR_UNKNOWN)",
+    "points.fx": "tex2Dfetch with an int2 coordinate",
     "persistence.fx": "tex2Dfetch with an int2 coordinate (and vkBasalt keeps a texture per swapchain image)",
     "preprocessor.fx": "BUFFER_COLOR_BIT_DEPTH: not defined by vkBasalt",
     "render_targets.fx": "tex2Dfetch with an int2 coordinate, and `return` after `discard` (an error there: unreachable code)",

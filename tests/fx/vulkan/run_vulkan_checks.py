@@ -30,7 +30,7 @@ RUN = ["alpha.fx", "back_buffer.fx", "blending.fx", "compute.fx", "conversions.f
        "float_to_integer.fx", "formats.fx", "function_statics.fx", "identity.fx", "initializer_assignments.fx",
        "integer_matrices.fx", "integer_wrap.fx", "intrinsics_bits.fx", "intrinsics_math.fx", "invert.fx", "matrices.fx",
        "matrix_comparisons.fx", "matrix_swizzle_stores.fx", "mips.fx", "namespaced_constants.fx", "offsets_and_labels.fx",
-       "operators.fx", "out_arguments.fx", "persistence.fx", "preprocessor.fx", "render_targets.fx", "reshade_language.fx",
+       "operators.fx", "out_arguments.fx", "persistence.fx", "points.fx", "preprocessor.fx", "render_targets.fx", "reshade_language.fx",
        "samplers.fx", "size_1x1.fx", "size_constants.fx", "size_odd.fx", "stencil.fx", "stencil_back_buffer.fx",
        "texture_files.fx", "textures.fx", "uniforms.fx"]
 

@@ -340,7 +340,10 @@ class ProgramBuilder {
     if (which == Stage::kVertex) {
       if (is_position(sem)) {
         std::string out = "  gl_Position = " + padded(w, s.access, s.type, BaseType::kFloat) + ";\n";
-        return w.vulkan() ? out + "  gl_Position.y = -gl_Position.y;\n" : out;  // Vulkan's clip space points y down
+        if (!w.vulkan()) return out;
+        out += "  gl_Position.y = -gl_Position.y;\n";  // Vulkan's clip space points y down
+        // A point's size is the shader's to give in Vulkan (GL's is 1 unless a program asks).
+        return pass_.topology == Topology::kPointList ? out + "  gl_PointSize = 1.0;\n" : out;
       }
       auto it = varyings_.find(sem);
       if (it == varyings_.end()) return "";  // nothing reads it
