@@ -12,11 +12,12 @@
 // usage: fx_vulkan_checks [-IFOLDER...] [-DNAME=VALUE...] --size WxH [--cell N] [--frames N]
 //          [--technique NAME] [--expect checks|input|invert|gain|none] [--gain G]
 //          [--input gradient|alpha|IMAGE] [--raw-out FILE] [--report-cache]
-//          [--plugin PFX_FX_SO [--set PARAM=VALUE...]] FILE.fx
+//          [--plugin PFX_FX_SO [--set PARAM=VALUE...]] [--time N] FILE.fx
 // `--plugin` runs the technique as a Vulkan host runs an effect of the FX plugin: through its
 // "pfx.vulkan_effects/1" factory (pfx/vulkan_effects.h), with the parameters' defaults and the
 // `--set` values, the frame's time and number for its sources; `--expect gain` judges the input's
-// RGB times G within a code, alpha kept.
+// RGB times G within a code, alpha kept. `--time N` runs N more frames, each submitted and waited
+// for alone, and prints their median wall time (by hand: Vulkan's cost of an effect).
 // `--input IMAGE` runs on a picture file (PNG, JPEG...) of the size given; `--expect none` judges
 // nothing (uniform sources this program does not give hold 0, named in a line) and `--raw-out`
 // writes the last picture's RGBA bytes, top row first: how compare_collections.py holds the
@@ -27,6 +28,7 @@
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -331,6 +333,7 @@ struct Judged {
   std::string plugin;      // through this FX plugin's "pfx.vulkan_effects/1" factory
   std::vector<std::pair<std::string, double>> sets;  // parameter values for the plugin's effect
   double gain = 1.0;       // expect "gain": the input's RGB times this
+  int time_frames = 0;     // --time: frames timed after the judged ones
 };
 
 // The checks whose columns hold a pixel that is not pure green.
@@ -464,8 +467,20 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
   pool_info.queueFamilyIndex = d.family;
   VkCommandPool pool;
   VK_OK(vkCreateCommandPool(d.device, &pool_info, nullptr, &pool));
-  for (int n = 0; n < judged.frames; ++n) {
+  // With --time N, N more frames before the last, each submitted and waited for alone: their
+  // median wall time.
+  const int total = judged.frames + (judged.time_frames > 0 ? judged.time_frames + 1 : 0);
+  std::vector<double> frame_ms;
+  for (int n = 0; n < total; ++n) {
     uniform_values(effect.model, n, any_source, uniforms);
+    const auto started = std::chrono::steady_clock::now();
+    struct Timed {  // the frame's wall time, for the frames --time counts
+      std::vector<double>* into;
+      std::chrono::steady_clock::time_point started;
+      ~Timed() {
+        if (into) into->push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count());
+      }
+    } timed{n >= judged.frames && n + 1 < total ? &frame_ms : nullptr, started};
     submit(d, pool, [&](VkCommandBuffer commands) {
       if (n == 0) frame.record_upload(commands);
       struct ReadBack {  // after the frame's commands, however the body returns
@@ -475,7 +490,7 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
         ~ReadBack() {
           if (last) frame.record_readback(commands);
         }
-      } read_back{frame, commands, n + 1 == judged.frames};
+      } read_back{frame, commands, n + 1 == total};
       pfx::fx::vulkan::Frame f;
       f.image = frame.image;
       f.layout = n == 0 ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
@@ -491,6 +506,11 @@ int run(const std::string& file, const pfx::fx::CompiledEffect& effect, int tech
       if (plugin.vulkan->record(plugin.instance, commands, &image, &info, plugin.params.data()) != PFX_OK)
         std::printf("FAIL: the plugin's record failed\n");
     });
+  }
+  if (!frame_ms.empty()) {
+    std::sort(frame_ms.begin(), frame_ms.end());
+    std::printf("frame ms: median %.3f of %zu (min %.3f, max %.3f)\n", frame_ms[frame_ms.size() / 2], frame_ms.size(), frame_ms.front(),
+                frame_ms.back());
   }
   const VkDeviceSize pixels_size = static_cast<VkDeviceSize>(width) * height * 4;
   void* mapped;
@@ -524,6 +544,7 @@ int main(int argc, char** argv) {
   std::string expect = "checks", input = "gradient", raw_out, plugin;
   std::vector<std::pair<std::string, double>> sets;
   double gain = 1.0;
+  int time_frames = 0;
   for (int i = 1; i < argc; ++i) {
     std::string argument = argv[i];
     if (argument.rfind("-I", 0) == 0) options.preprocessor.include_folders.push_back(argument.substr(2));
@@ -542,6 +563,7 @@ int main(int argc, char** argv) {
     else if (argument == "--raw-out" && i + 1 < argc) raw_out = argv[++i];
     else if (argument == "--plugin" && i + 1 < argc) plugin = argv[++i];
     else if (argument == "--gain" && i + 1 < argc) gain = std::atof(argv[++i]);
+    else if (argument == "--time" && i + 1 < argc) time_frames = std::atoi(argv[++i]);
     else if (argument == "--set" && i + 1 < argc) {
       const std::string assignment = argv[++i];
       const std::size_t equals = assignment.find('=');
@@ -552,7 +574,7 @@ int main(int argc, char** argv) {
   if (file.empty() || width <= 0 || height <= 0 || cell <= 0 || frames <= 0 || (expect != "checks" && expect != "input" && expect != "invert" && expect != "none" && expect != "gain") || input.empty()) {
     std::fprintf(stderr, "usage: fx_vulkan_checks [-IFOLDER...] [-DNAME=VALUE...] --size WxH [--cell N] [--frames N] [--technique NAME] "
                          "[--expect checks|input|invert|gain|none] [--gain G] [--input gradient|alpha|IMAGE] [--raw-out FILE] [--report-cache] "
-                         "[--plugin PFX_FX_SO [--set PARAM=VALUE...]] FILE.fx\n");
+                         "[--plugin PFX_FX_SO [--set PARAM=VALUE...]] [--time N] FILE.fx\n");
     return 2;
   }
   options.preprocessor.buffer_width = width;
@@ -566,6 +588,6 @@ int main(int argc, char** argv) {
     if (techniques[i].name == technique_name) technique = static_cast<int>(i);
   if (technique < 0) return std::printf("FAIL: %s has no technique '%s'\n", file.c_str(), technique_name.c_str()), 1;
   Judged judged{expect, width, height, cell, frames, input == "alpha", report_cache, input == "gradient" || input == "alpha" ? "" : input,
-                raw_out, plugin, sets, gain};
+                raw_out, plugin, sets, gain, time_frames};
   return run(file, *effect, technique, judged);
 }
