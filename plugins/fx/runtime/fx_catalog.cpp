@@ -157,6 +157,13 @@ const FxCatalog& catalog() {
   return c;
 }
 
+const FxEffectEntry* find_effect(const char* effect_id) {
+  if (!effect_id) return nullptr;
+  for (const auto& entry : catalog().effects)
+    if (entry->id == effect_id) return entry.get();
+  return nullptr;
+}
+
 const ParamTable* params_at(const FxEffectEntry& entry, int width, int height) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384) return nullptr;
   bool follows = false;

@@ -41,6 +41,8 @@ struct FxCatalog {
 
 // The catalog, built on the first call (thread-safe).
 const FxCatalog& catalog();
+// The catalog's effect of that id, or null (null for a null id).
+const FxEffectEntry* find_effect(const char* effect_id);
 
 // The entry's parameters as they are at a frame of width x height (compiled once per size), or
 // null for a size outside 1..16384, a file that does not compile there, or parameters that do not

@@ -29,16 +29,9 @@ const pfx_effect_desc* get_effect(uint32_t index) {
   }
 }
 
-const FxEffectEntry* find_entry(const char* effect_id) {
-  if (!effect_id) return nullptr;
-  for (const auto& entry : catalog().effects)
-    if (entry->id == effect_id) return entry.get();
-  return nullptr;
-}
-
 const char* effect_file(const char* effect_id) {
   try {
-    const FxEffectEntry* entry = find_entry(effect_id);
+    const FxEffectEntry* entry = find_effect(effect_id);
     return entry ? entry->file.c_str() : nullptr;
   } catch (...) {
     return nullptr;
@@ -47,7 +40,7 @@ const char* effect_file(const char* effect_id) {
 
 const char* effect_source_name(const char* effect_id) {
   try {
-    const FxEffectEntry* entry = find_entry(effect_id);
+    const FxEffectEntry* entry = find_effect(effect_id);
     return entry ? entry->technique.c_str() : nullptr;
   } catch (...) {
     return nullptr;
@@ -78,7 +71,7 @@ pfx_status set_definitions(void* instance, const char* definitions) {
 
 const pfx_param_desc* params_at_size(const char* effect_id, uint32_t width, uint32_t height) {
   try {
-    const FxEffectEntry* entry = find_entry(effect_id);
+    const FxEffectEntry* entry = find_effect(effect_id);
     const ParamTable* table = entry && width <= 16384 && height <= 16384
                                   ? params_at(*entry, static_cast<int>(width), static_cast<int>(height))
                                   : nullptr;

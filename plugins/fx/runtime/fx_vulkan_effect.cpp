@@ -98,13 +98,6 @@ FxVulkanInstance* live_vulkan_instance(void* instance) {
   return live.count(fx) ? fx : nullptr;
 }
 
-const FxEffectEntry* entry_of(const char* effect_id) {
-  if (!effect_id) return nullptr;
-  for (const auto& entry : catalog().effects)
-    if (entry->id == effect_id) return entry.get();
-  return nullptr;
-}
-
 void copy_error(const std::string& message, char* error, uint32_t error_size) {
   if (!error || error_size == 0) return;
   const std::size_t n = std::min<std::size_t>(message.size(), error_size - 1);
@@ -114,7 +107,7 @@ void copy_error(const std::string& message, char* error, uint32_t error_size) {
 
 int32_t supports(const char* effect_id) {
   try {
-    return entry_of(effect_id) ? 1 : 0;
+    return find_effect(effect_id) ? 1 : 0;
   } catch (...) {
     return 0;
   }
@@ -128,7 +121,7 @@ pfx_status create(const pfx_host* host, const char* effect_id, const pfx_vk_devi
     return copy_error("invalid arguments", error, error_size), PFX_INVALID_ARGUMENT;
   std::string message;
   const pfx_status status = pfx::plugin::without_exceptions([&]() -> pfx_status {
-    const FxEffectEntry* entry = entry_of(effect_id);
+    const FxEffectEntry* entry = find_effect(effect_id);
     if (!entry) return message = std::string("no FX effect '") + (effect_id ? effect_id : "") + "'", PFX_INVALID_ARGUMENT;
     auto fx = std::make_unique<FxVulkanInstance>(*entry, host);
     const pfx_status made = fx->create(*device, static_cast<int>(width), static_cast<int>(height), format, message);

@@ -2,7 +2,6 @@
 
 #include <vector>
 
-#include "codegen/spirv_module.hpp"
 #include "vk_pipelines.hpp"
 
 namespace pfx::fx::vulkan {
@@ -29,14 +28,8 @@ std::string FrameAlpha::create(const Device& d, const Image& original, const Ima
   width_ = target.width, height_ = target.height;
   const char* sources[2] = {kVertex, kFragment};
   for (int i = 0; i < 2; ++i) {
-    std::vector<std::uint32_t> words;
-    std::string log;
-    if (!compile_spirv(sources[i], i == 0 ? SpirvStage::kVertex : SpirvStage::kFragment, words, log)) return "the alpha pass: " + log;
-    VkShaderModuleCreateInfo module{};
-    module.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-    module.codeSize = words.size() * 4;
-    module.pCode = words.data();
-    if (d.vkCreateShaderModule(d.device, &module, nullptr, &modules_[i]) != VK_SUCCESS) return "vkCreateShaderModule failed";
+    const std::string log = create_shader_module(d, sources[i], i == 0 ? SpirvStage::kVertex : SpirvStage::kFragment, modules_[i]);
+    if (!log.empty()) return "the alpha pass: " + log;
   }
   VkSamplerCreateInfo sampler{};
   sampler.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;  // nearest, clamped: texelFetch ignores it anyway

@@ -4,6 +4,17 @@
 
 namespace pfx::fx::vulkan {
 
+std::string create_shader_module(const Device& d, const std::string& glsl, SpirvStage stage, VkShaderModule& out) {
+  std::vector<std::uint32_t> words;
+  std::string log;
+  if (!compile_spirv(glsl, stage, words, log)) return log.empty() ? "glslang failed" : log;
+  VkShaderModuleCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  info.codeSize = words.size() * 4;
+  info.pCode = words.data();
+  return d.vkCreateShaderModule(d.device, &info, nullptr, &out) == VK_SUCCESS ? "" : "vkCreateShaderModule failed";
+}
+
 VkRenderPass create_render_pass(const Device& d, const std::vector<AttachmentPlan>& attachments, bool clear, VkFormat stencil) {
   std::vector<VkAttachmentDescription> descriptions;
   std::vector<VkAttachmentReference> references;

@@ -7,12 +7,17 @@
 // Every pipeline goes through the VkPipelineCache it is given.
 #include <vulkan/vulkan.h>
 
+#include <string>
 #include <vector>
 
+#include "codegen/spirv_module.hpp"
 #include "model/effect_model.hpp"
 #include "vk_device.hpp"
 
 namespace pfx::fx::vulkan {
+
+// A shader module from Vulkan GLSL, compiled by glslang: "" or glslang's log (or what failed).
+std::string create_shader_module(const Device& d, const std::string& glsl, SpirvStage stage, VkShaderModule& out);
 
 struct AttachmentPlan {
   VkFormat format = VK_FORMAT_UNDEFINED;

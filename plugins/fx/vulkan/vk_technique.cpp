@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "codegen/spirv_module.hpp"
 #include "model/full_screen_pass.hpp"
 #include "vk_pipelines.hpp"
 #include "vk_states.hpp"
@@ -63,6 +62,7 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
     if (d_->vkCreateSampler(d_->device, &info, nullptr, &samplers_.back()) != VK_SUCCESS) message = "vkCreateSampler failed";
   }
   if (message.empty()) message = create_pool();
+  if (message.empty()) message = create_uniform_buffer();
   int back_buffer = 0;
   for (std::size_t i = 0; message.empty() && i < generated.size(); ++i) {
     passes_.emplace_back();
@@ -164,8 +164,11 @@ std::string Technique::create_pool() {
   info.maxSets = std::max<std::uint32_t>(1, sets);
   info.poolSizeCount = 3;
   info.pPoolSizes = sizes;
-  if (d_->vkCreateDescriptorPool(d_->device, &info, nullptr, &pool_) != VK_SUCCESS) return "vkCreateDescriptorPool failed";
-  if (block_.size == 0) return "";
+  return d_->vkCreateDescriptorPool(d_->device, &info, nullptr, &pool_) == VK_SUCCESS ? "" : "vkCreateDescriptorPool failed";
+}
+
+std::string Technique::create_uniform_buffer() {
+  if (block_.size == 0) return "";  // no uniforms, no block
   VkBufferCreateInfo buffer{};
   buffer.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
   buffer.size = block_.size;
@@ -193,14 +196,8 @@ std::string Technique::create_pass(std::size_t index, const GeneratedPass& gener
   const std::string* sources[2] = {pass.compute ? &generated.compute : &generated.vertex, &generated.fragment};
   const SpirvStage stages[2] = {pass.compute ? SpirvStage::kCompute : SpirvStage::kVertex, SpirvStage::kFragment};
   for (int i = 0; i < (pass.compute ? 1 : 2); ++i) {
-    std::vector<std::uint32_t> words;
-    std::string log;
-    if (!compile_spirv(*sources[i], stages[i], words, log)) return pass_label(info, index) + ": glslang refused the generated code: " + log;
-    VkShaderModuleCreateInfo module{};
-    module.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-    module.codeSize = words.size() * 4;
-    module.pCode = words.data();
-    if (d_->vkCreateShaderModule(d_->device, &module, nullptr, &pass.modules[i]) != VK_SUCCESS) return "vkCreateShaderModule failed";
+    const std::string log = create_shader_module(*d_, *sources[i], stages[i], pass.modules[i]);
+    if (!log.empty()) return pass_label(info, index) + ": glslang refused the generated code: " + log;
   }
   std::string error = create_bindings(pass, generated);
   if (error.empty()) error = create_draw(pass, cache);

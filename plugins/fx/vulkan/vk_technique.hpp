@@ -91,7 +91,8 @@ class Technique {
   std::string create_pass(std::size_t index, const GeneratedPass& generated, VkPipelineCache cache);
   std::string create_bindings(Pass& pass, const GeneratedPass& generated);
   std::string create_draw(Pass& pass, VkPipelineCache cache);
-  std::string create_pool();
+  std::string create_pool();            // a descriptor set per pass
+  std::string create_uniform_buffer();  // the block, updated in each frame's commands
   int image_of_texture(int texture, int back_buffer) const;
   VkImageView sampled_view(const SamplerInfo& sampler, int back_buffer) const;
   void record_uniforms(VkCommandBuffer commands, const std::vector<std::vector<double>>& uniforms);
