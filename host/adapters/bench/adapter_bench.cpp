@@ -63,9 +63,10 @@ const char* const kUsage =
     "wall times over LONG-SHORT; median of N runs (default 3). The unit is a full-frame RGBA16F copy\n"
     "pass at the same size (default 1920x1080) timed in this process before and after the rows.\n"
     "\n"
-    "  --vulkan               vkcube (vulkan-tools) alone, through pfx's Vulkan layer (shared and host\n"
-    "                         memory, chain none and bloom) and through vkBasalt's CAS; needs a display\n"
-    "                         (xvfb-run) and a Vulkan driver (lavapipe: VK_ICD_FILENAMES)\n"
+    "  --vulkan               vkcube (vulkan-tools) alone, through pfx's Vulkan layer (chain none natively\n"
+    "                         and through the GL, bloom; shared and host memory) and through vkBasalt's\n"
+    "                         CAS; needs a display (xvfb-run) and a Vulkan driver (lavapipe:\n"
+    "                         VK_ICD_FILENAMES)\n"
     "  --vkbasalt-fx FILE.fx  (repeatable; implies --vulkan) the rows become vkcube alone and vkcube\n"
     "                         through vkBasalt running each ReShade FX file (its first technique); a file\n"
     "                         vkBasalt cannot compile is listed with its first error, not measured\n"
@@ -74,7 +75,8 @@ const char* const kUsage =
     "  --reshade-textures DIR vkBasalt's reshadeTexturePath (default: each FX file's folder)\n"
     "  --pfx-chain CHAIN      (repeatable; with --vkbasalt-fx) also vkcube through pfx's Vulkan layer\n"
     "                         running CHAIN (\"fx_lumasharpen\"), its FX effects found in the FX files'\n"
-    "                         folders: the same application and effect both ways in one run\n"
+    "                         folders, natively and through the GL (PFX_VK_NATIVE=0): the same\n"
+    "                         application and effect every way in one run\n"
     "  --json FILE            also write the rows as JSON\n";
 
 double median(std::vector<double> values) {
@@ -177,17 +179,23 @@ std::vector<Row> vulkan_rows(const fs::path& scratch, const Options& options) {
     std::string folders;
     for (const std::string& file : options.vkbasalt_fx)
       folders += (folders.empty() ? "" : ":") + fs::path(file).parent_path().string();
-    for (const std::string& chain : options.pfx_chains)
-      rows.push_back({"vkcube", "pfx layer chain=" + chain,
-                      "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=" + chain + " PFX_FX_PATH=" + folders, alone});
+    // Each chain on both of the layer's paths: native where its effects run on Vulkan, and
+    // through the GL.
+    for (const std::string& chain : options.pfx_chains) {
+      const std::string variables = "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=" + chain + " PFX_FX_PATH=" + folders;
+      rows.push_back({"vkcube", "pfx layer chain=" + chain + ", native", variables, alone});
+      rows.push_back({"vkcube", "pfx layer chain=" + chain + ", through GL", variables + " PFX_VK_NATIVE=0", alone});
+    }
     return rows;
   }
   return {
       {"vkcube", alone, "DISABLE_PFX_VULKAN=1", ""},
-      {"vkcube", "pfx layer chain=none, shared memory", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none", alone},
+      {"vkcube", "pfx layer chain=none, native", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none", alone},
+      {"vkcube", "pfx layer chain=none, GL path, shared memory",
+       "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none PFX_VK_NATIVE=0", alone},
       {"vkcube", "pfx layer chain=bloom, shared memory", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=bloom", alone},
-      {"vkcube", "pfx layer chain=none, host memory", "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none PFX_VK_HOST_MEMORY=1",
-       alone},
+      {"vkcube", "pfx layer chain=none, GL path, host memory",
+       "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=none PFX_VK_NATIVE=0 PFX_VK_HOST_MEMORY=1", alone},
       {"vkcube", "pfx layer chain=bloom, host memory",
        "ENABLE_PFX_VULKAN=1 PFX_INJECT_CHAIN=bloom PFX_VK_HOST_MEMORY=1", alone},
       {"vkcube", "vkBasalt cas", "ENABLE_VKBASALT=1 VKBASALT_CONFIG_FILE=" + (scratch / "vkBasalt.conf").string(), alone},

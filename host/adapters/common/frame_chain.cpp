@@ -49,11 +49,10 @@ FrameChain::~FrameChain() {
 
 bool FrameChain::runs_effects() const { return app::any_enabled(*chain_); }
 
-pfx_frame FrameChain::describe(int width, int height, double time_seconds, uint64_t frame_index) const {
-  // A video frame is colour alone: no depth, normals or lights arrive with it.
+pfx_frame describe_video_frame(int width, int height, double time_seconds, uint64_t frame_index) {
   pfx_frame description = app::describe_frame(width, height, PFX_INPUT_COLOR, PFX_DEPTH_NONE,
                                               app::make_camera(app::CameraOptions{}, width, height));
-  // As the host gives it (docs/hosts.md says what each host passes); a non-finite time is none.
+  // As the host gives it (docs/hosts.md says what each host passes).
   description.time_seconds = std::isfinite(time_seconds) ? time_seconds : 0.0;
   description.frame_index = frame_index;
   return description;
@@ -63,7 +62,7 @@ bool FrameChain::plans_passes(int width, int height, double time_seconds, uint64
                               std::string* error) const {
   *passes = false;
   if (!runs_effects()) return true;
-  return chain_->plans_passes(describe(width, height, time_seconds, frame_index), passes, error);
+  return chain_->plans_passes(describe_video_frame(width, height, time_seconds, frame_index), passes, error);
 }
 
 bool FrameChain::render(gl::DisplayFrame& frame, double time_seconds, uint64_t frame_index, GLuint* result,
@@ -74,7 +73,7 @@ bool FrameChain::render(gl::DisplayFrame& frame, double time_seconds, uint64_t f
   }
   host::FrameTextures textures;
   textures.color = frame.color();
-  if (!chain_->render(describe(frame.width(), frame.height(), time_seconds, frame_index), textures, frame.output(),
+  if (!chain_->render(describe_video_frame(frame.width(), frame.height(), time_seconds, frame_index), textures, frame.output(),
                       error))
     return false;
   *result = frame.output();
@@ -89,7 +88,7 @@ bool FrameChain::render(GLuint color, GLuint output, int width, int height, doub
   }
   host::FrameTextures textures;
   textures.color = color;
-  return chain_->render(describe(width, height, time_seconds, frame_index), textures, output, error);
+  return chain_->render(describe_video_frame(width, height, time_seconds, frame_index), textures, output, error);
 }
 
 bool no_gl_error(std::string* error) {

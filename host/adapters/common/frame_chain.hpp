@@ -60,10 +60,14 @@ class FrameChain {
 
  private:
   FrameChain() = default;
-  pfx_frame describe(int width, int height, double time_seconds, uint64_t frame_index) const;
   std::unique_ptr<host::ParamStore> params_;
   std::unique_ptr<host::Chain> chain_;
 };
+
+// What an adapter tells its effects about a frame of that size: colour alone (no depth, normals or
+// lights arrive with a video frame or an application's), at the time and frame index the host
+// gives (a non-finite time is none).
+pfx_frame describe_video_frame(int width, int height, double time_seconds, uint64_t frame_index);
 
 // After a frame: false with *error ("GL error 0x0505 while running the chain") when the GL
 // reports an error.

@@ -163,6 +163,7 @@ std::unique_ptr<Plugin> describe_plugin(const std::string& path, const pfx_entry
   plugin->version = text_or(entry.version, "");
   plugin->abi_minor = entry.abi_minor;
   plugin->host = host;
+  plugin->get_factory = entry.get_factory;
   return plugin;
 }
 

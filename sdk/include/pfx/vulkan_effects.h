@@ -38,7 +38,8 @@ typedef struct pfx_vk_device {
   PFN_vkGetDeviceProcAddr get_device_proc_addr;
   /* The family of the queues the command buffers run on: graphics and compute. */
   uint32_t queue_family_index;
-  /* The Vulkan version the device was created for (VkApplicationInfo::apiVersion, at least 1.1). */
+  /* The Vulkan version the device was created for (VkApplicationInfo::apiVersion): VK_API_VERSION_1_0
+   * when the host does not know. An instance uses nothing newer than it. */
   uint32_t api_version;
 } pfx_vk_device;
 #define PFX_VK_DEVICE_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_vk_device, api_version)

@@ -1,6 +1,5 @@
-// pfx_vk_bridge_create and pfx_vk_bridge_destroy: the plugins, the settings, the GL thread and the
-// path the frames take.
-#include <cstdlib>
+// pfx_vk_bridge_create and pfx_vk_bridge_destroy: the plugins, the settings and the path the frames
+// take (bridge_paths.cpp).
 #include <cstring>
 
 #include "adapter_plugins.hpp"
@@ -14,39 +13,6 @@ namespace pfx::vk {
 namespace {
 
 const char* const kDeviceExtensions[] = {"VK_KHR_external_memory", "VK_KHR_external_memory_fd"};
-
-bool forced_host_memory(const pfx_vk_bridge_desc& desc) {
-  const char* variable = std::getenv("PFX_VK_HOST_MEMORY");
-  return (desc.flags & PFX_VK_FORCE_HOST_MEMORY) || (variable && std::strcmp(variable, "1") == 0);
-}
-
-// Whether GL and Vulkan can share memory, and why not: the GL side is asked on the worker.
-Path choose_path(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, std::string* why) {
-  if (forced_host_memory(desc)) {
-    *why = "host memory asked for";
-    return Path::HOST;
-  }
-  if (!bridge->functions.GetMemoryFdKHR) {
-    *why = "the Vulkan device was made without VK_KHR_external_memory_fd";
-    return Path::HOST;
-  }
-  if (!bridge->functions.GetPhysicalDeviceProperties2) {
-    *why = "the Vulkan instance gives no vkGetPhysicalDeviceProperties2";
-    return Path::HOST;
-  }
-  VkPhysicalDeviceIDProperties ids{};
-  ids.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES;
-  VkPhysicalDeviceProperties2 properties{};
-  properties.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
-  properties.pNext = &ids;
-  bridge->functions.GetPhysicalDeviceProperties2(desc.physical_device, &properties);
-  bool shares = false;
-  std::string worker_error;
-  if (!bridge->worker->run([&] { shares = bridge->gl->shared().check(ids.deviceUUID, ids.driverUUID, why); },
-                           &worker_error))
-    *why = worker_error;
-  return shares ? Path::SHARED : Path::HOST;
-}
 
 bool leaves_out_bad_settings(const pfx_vk_bridge_desc& desc) { return (desc.flags & PFX_VK_LEAVE_OUT_BAD_SETTINGS) != 0; }
 
@@ -94,8 +60,6 @@ pfx_vk_status settings_recipe(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& d
   if (desc.chain) left_out->insert(left_out->end(), problems.begin(), problems.end());
   else if (!default_chain_recipe(bridge, desc, recipe, lenient ? left_out : nullptr, error))
     return PFX_VK_BAD_SETTINGS;
-  if (!fit_recipe_to_colour(bridge, recipe, error))
-    return bridge->worker->renderer().empty() ? PFX_VK_NO_GL : PFX_VK_BAD_SETTINGS;
   return PFX_VK_OK;
 }
 
@@ -126,28 +90,6 @@ bool load_bridge_plugins(pfx_vk_bridge* bridge, const char* plugin_path, std::st
 
 host::Timing timing_for(const pfx_vk_bridge* bridge, uint32_t flags) {
   return flags & PFX_VK_TIME_PASSES ? app::default_timing(bridge->worker->renderer()) : host::Timing::OFF;
-}
-
-bool start_bridge_gl(pfx_vk_bridge* bridge, const pfx_vk_bridge_desc& desc, const app::ChainRecipe& recipe,
-                     std::string* error) {
-  bool created = false;
-  if (!bridge->worker->run(
-          [&] {
-            bridge->gl = std::make_unique<GlFrame>();
-            created = bridge->gl->create(*bridge->registry, recipe, error);
-            if (!created) return;
-            bridge->chain_text = bridge->gl->chain_text();
-            bridge->gl->set_timing(timing_for(bridge, desc.flags));
-          },
-          error))
-    return false;
-  if (!created) return false;
-  std::string why;
-  bridge->path = choose_path(bridge, desc, &why);
-  bridge->say(0, bridge->path == Path::SHARED ? "frames go through memory shared with the GL (" +
-                                                    bridge->worker->renderer() + ")"
-                                              : "frames go through host memory: " + why);
-  return true;
 }
 
 }  // namespace pfx::vk
@@ -182,36 +124,51 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_des
     vk::copy_error(message, error, error_size);
     return PFX_VK_BAD_SETTINGS;
   }
-  bridge->worker = adapters::GlWorker::start();
-  app::ChainRecipe recipe;
+  bridge->device.struct_size = sizeof bridge->device;
+  bridge->device.instance = desc->instance;
+  bridge->device.physical_device = desc->physical_device;
+  bridge->device.device = desc->device;
+  bridge->device.get_instance_proc_addr = desc->get_instance_proc_addr;
+  bridge->device.get_device_proc_addr = desc->get_device_proc_addr;
+  bridge->device.queue_family_index = desc->queue_family_index;
+  bridge->device.api_version = VK_API_VERSION_1_0;  // what every device offers: the caller does not say
+  bridge->queue = desc->queue;
+  bridge->set_loader_data = desc->set_device_loader_data;
+  bridge->flags = desc->flags;
   std::vector<app::RecipeProblem> left_out;
-  const pfx_vk_status settings = vk::settings_recipe(bridge.get(), *desc, &bridge->transfer, &recipe, &left_out, &message);
+  const pfx_vk_status settings =
+      vk::settings_recipe(bridge.get(), *desc, &bridge->transfer, &bridge->recipe, &left_out, &message);
   if (settings != PFX_VK_OK) {
     vk::copy_error(message, error, error_size);
     pfx_vk_bridge_destroy(bridge.release());
     return settings;
   }
-  vk::say_left_out(bridge.get(), left_out, recipe);
-  if (!vk::start_bridge_gl(bridge.get(), *desc, recipe, &message)) {
-    vk::copy_error(message, error, error_size);
-    // A worker that made its context ran the chain's creation: then an effect failed.
-    const bool has_gl = bridge->worker && !bridge->worker->renderer().empty();
-    pfx_vk_bridge_destroy(bridge.release());
-    return has_gl ? PFX_VK_CHAIN_FAILED : PFX_VK_NO_GL;
-  }
-  bridge->transport = std::make_unique<vk::Transport>(bridge->functions, desc->device, desc->physical_device,
-                                                      desc->queue);
-  if (!bridge->transport->init(desc->queue_family_index, desc->set_device_loader_data, &message)) {
+  vk::say_left_out(bridge.get(), left_out, bridge->recipe);
+  std::string why;
+  const bool native = vk::native_wanted(bridge.get(), desc->flags, bridge->recipe, &why);
+  const pfx_vk_status path = native ? vk::take_native_path(bridge.get(), bridge->recipe, &message)
+                                    : vk::take_gl_path(bridge.get(), bridge->recipe, &message);
+  if (path != PFX_VK_OK) {
     vk::copy_error(message, error, error_size);
     pfx_vk_bridge_destroy(bridge.release());
-    return PFX_VK_VULKAN_FAILED;
+    return path;
   }
+  bridge->say(0, native ? "the chain runs natively on the Vulkan device: no GL, no copies, no waits"
+                        : "the chain runs through OpenGL: " + why);
   *out = bridge.release();
   return PFX_VK_OK;
 }
 
 extern "C" PFX_VK_API void pfx_vk_bridge_destroy(pfx_vk_bridge* bridge) {
   if (!bridge) return;
+  if (bridge->frames)
+    bridge->say(0, std::to_string(bridge->frames) + " frames; the CPU waited for the device " +
+                       std::to_string(bridge->gl_waits + (bridge->ring ? bridge->ring->waits() : 0)) +
+                       " times (read-backs for captures aside)");
+  if (bridge->ring) bridge->ring->wait_idle();  // the native instances' work first
+  bridge->native.reset();
+  bridge->readback.reset();
+  bridge->ring.reset();
   bridge->transport.reset();  // waits for its copies first
   if (bridge->worker) {
     std::string ignored;

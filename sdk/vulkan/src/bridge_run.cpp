@@ -3,6 +3,7 @@
 
 #include "bridge.hpp"
 #include "copy_pass.hpp"
+#include "vk_submit.hpp"
 
 namespace pfx::vk {
 namespace {
@@ -24,9 +25,11 @@ uint32_t image_flags(const pfx_vk_image& image) {
 
 // A run that gives up before its copies (a bad argument, a chain or a copy in that failed): the
 // caller's semaphores still pass, so its frame goes on as if the bridge were not there.
+// A batch with no commands and no fence: it uses nothing of the bridge's that must be waited for.
 void pass_semaphores(pfx_vk_bridge* bridge, const pfx_vk_image& image) {
   std::string unused;
-  bridge->submitted = bridge->transport->copy_out(image, false, false, &unused);
+  bridge->submitted = submit_frame(bridge->functions, bridge->queue, VK_NULL_HANDLE, VK_NULL_HANDLE, image,
+                                   VK_PIPELINE_STAGE_TRANSFER_BIT, true, true, &unused);
 }
 
 // Makes the go-between for the image's size; when sharing fails, says so once and moves to host
@@ -112,7 +115,65 @@ bool run_chain(pfx_vk_bridge* bridge, const pfx_vk_image& image, std::string* er
     return false;
   }
   ++bridge->frames;
+  bridge->gl_waits += 2;
   return ran;
+}
+
+// The native chain's work for the image recorded into `commands`, its instances made first where
+// the size or format is new; false with *error and the status to return.
+pfx_vk_status record_native(pfx_vk_bridge* bridge, VkCommandBuffer commands, const pfx_vk_image& image,
+                            double time_seconds, std::string* error) {
+  CommandRing& ring = *bridge->ring;
+  NativeChain& chain = *bridge->native;
+  if (!chain.prepare(bridge->device, image.width, image.height, image.format, [&ring] { ring.wait_idle(); }, error))
+    return PFX_VK_CHAIN_FAILED;
+  return chain.record(commands, image.image, image.layout, false, time_seconds, bridge->frames, error)
+             ? PFX_VK_OK
+             : PFX_VK_CHAIN_FAILED;
+}
+
+// One frame on the native path: the effects' commands (between the read-backs asked for) in one
+// command buffer, submitted after the image's semaphores and signalling its own. The CPU waits
+// only for a read-back, or for a command buffer still in flight (CommandRing).
+pfx_vk_status run_native(pfx_vk_bridge* bridge, const pfx_vk_image& image) {
+  const double time_seconds = frame_time(bridge);
+  const bool reads_back = image.app_pixels || image.result_pixels;
+  if (!bridge->native->runs_effects() && !reads_back) {
+    ++bridge->frames;
+    if (image_flags(image) & PFX_VK_IMAGE_MAY_SKIP) return PFX_VK_OK;
+    pass_semaphores(bridge, image);
+    return bridge->submitted ? PFX_VK_OK : PFX_VK_VULKAN_FAILED;
+  }
+  std::string error;
+  const auto give_up = [&](pfx_vk_status status) {
+    bridge->last_error = error;
+    pass_semaphores(bridge, image);
+    return status;
+  };
+  if (reads_back && !bridge->readback)
+    bridge->readback = std::make_unique<FrameReadback>(bridge->functions, bridge->device.device,
+                                                       bridge->device.physical_device);
+  if (reads_back && !bridge->readback->prepare(image.width, image.height, &error)) return give_up(PFX_VK_VULKAN_FAILED);
+  CommandRing& ring = *bridge->ring;
+  const VkCommandBuffer commands = ring.begin(&error);
+  if (!commands) return give_up(PFX_VK_VULKAN_FAILED);
+  if (reads_back) bridge->readback->record(commands, image.image, image.layout, false);
+  // A chain that fails is not submitted: the next begin() resets the buffer.
+  const pfx_vk_status recorded = record_native(bridge, commands, image, time_seconds, &error);
+  if (recorded != PFX_VK_OK) return give_up(recorded);
+  if (reads_back) bridge->readback->record(commands, image.image, image.layout, true);
+  if (!ring.submit(image, &error)) return give_up(PFX_VK_VULKAN_FAILED);
+  bridge->submitted = true;
+  bridge->ran_passes = bridge->native->runs_effects();
+  ++bridge->frames;
+  if (reads_back) {
+    if (!ring.wait_last(&error)) {
+      bridge->last_error = error;
+      return PFX_VK_VULKAN_FAILED;
+    }
+    bridge->readback->hand_over(is_bgra(image.format), image.app_pixels, image.result_pixels);
+  }
+  return PFX_VK_OK;
 }
 
 }  // namespace
@@ -132,6 +193,16 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
     if (image && image->struct_size >= vk::kFirstImageSize) vk::pass_semaphores(bridge, *image);
     return PFX_VK_BAD_ARGUMENT;
   }
+  if (bridge->native && vk::is_eight_bit(image->format)) return vk::run_native(bridge, *image);
+  // The GL path, made now when the bridge took the native one (a 10-bit frame).
+  if (!bridge->gl) {
+    const pfx_vk_status started = vk::start_gl(bridge, bridge->recipe, &error);
+    if (started != PFX_VK_OK) {
+      bridge->last_error = error;
+      vk::pass_semaphores(bridge, *image);
+      return started;
+    }
+  }
   bool passes = true;
   if (!vk::runs_passes(bridge, *image, &passes, &error)) {
     bridge->last_error = error;
@@ -143,7 +214,7 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
   if (!passes && !image->app_pixels && !image->result_pixels) {
     ++bridge->frames;
     if (vk::image_flags(*image) & PFX_VK_IMAGE_MAY_SKIP) return PFX_VK_OK;
-    bridge->submitted = bridge->transport->copy_out(*image, false, false, &bridge->last_error);
+    vk::pass_semaphores(bridge, *image);
     return bridge->submitted ? PFX_VK_OK : PFX_VK_VULKAN_FAILED;
   }
   if (!vk::prepare(bridge, *image, &error) || !bridge->transport->copy_in(*image, &error)) {
@@ -154,12 +225,43 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, con
   const bool ran = vk::run_chain(bridge, *image, &error);
   if (!ran) bridge->last_error = error;
   bridge->ran_passes = ran && passes;
-  bridge->submitted = bridge->transport->copy_out(*image, true, ran && !bridge->dry_run, &error);
+  bridge->submitted = bridge->transport->copy_out(*image, ran && !bridge->dry_run, &error);
   if (!bridge->submitted) {
     bridge->last_error = error;
     return PFX_VK_VULKAN_FAILED;
   }
   return ran ? PFX_VK_OK : PFX_VK_CHAIN_FAILED;
+}
+
+extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_record(pfx_vk_bridge* bridge, VkCommandBuffer commands,
+                                                         const pfx_vk_image* image) {
+  if (!bridge) return PFX_VK_BAD_ARGUMENT;
+  bridge->last_error.clear();
+  bridge->ran_passes = false;
+  bridge->submitted = false;
+  if (!commands || !image || image->struct_size < vk::kFirstImageSize || !image->image || !image->width ||
+      !image->height || !vk::is_eight_bit(image->format)) {
+    bridge->last_error = "pfx_vk_bridge_record: a null command buffer or image, a struct_size too small, or an image "
+                         "that is not 8-bit";
+    return PFX_VK_BAD_ARGUMENT;
+  }
+  if (!bridge->native) {
+    bridge->last_error = "pfx_vk_bridge_record: the chain runs through OpenGL, which records nothing into a command "
+                         "buffer (pfx_vk_bridge_run takes it)";
+    return PFX_VK_BAD_ARGUMENT;
+  }
+  const double time_seconds = vk::frame_time(bridge);
+  if (bridge->native->runs_effects()) {
+    std::string error;
+    const pfx_vk_status recorded = vk::record_native(bridge, commands, *image, time_seconds, &error);
+    if (recorded != PFX_VK_OK) {
+      bridge->last_error = error;
+      return recorded;
+    }
+    bridge->ran_passes = true;
+  }
+  ++bridge->frames;
+  return PFX_VK_OK;
 }
 
 extern "C" PFX_VK_API int pfx_vk_bridge_submitted(const pfx_vk_bridge* bridge) {
@@ -168,6 +270,7 @@ extern "C" PFX_VK_API int pfx_vk_bridge_submitted(const pfx_vk_bridge* bridge) {
 
 extern "C" PFX_VK_API const char* pfx_vk_bridge_path(const pfx_vk_bridge* bridge) {
   if (!bridge) return "";
+  if (bridge->native) return "native";
   return bridge->path == vk::Path::SHARED ? "shared memory" : "host memory";
 }
 
@@ -195,7 +298,7 @@ extern "C" PFX_VK_API int pfx_vk_bridge_ran_passes(const pfx_vk_bridge* bridge) 
 }
 
 extern "C" PFX_VK_API double pfx_vk_bridge_copy_pass_ms(pfx_vk_bridge* bridge, uint32_t width, uint32_t height) {
-  if (!bridge || !width || !height) return 0;
+  if (!bridge || !width || !height || !bridge->worker) return 0;  // the native path has no GL
   double ms = 0;
   std::string unused;
   bridge->worker->run([&] { ms = gl::median_copy_pass_ms(int(width), int(height), 9); }, &unused);

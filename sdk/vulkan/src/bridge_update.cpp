@@ -22,19 +22,15 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_update(pfx_vk_bridge* bridge, 
       status = PFX_VK_BAD_SETTINGS;
       message = "preset: " + problem.message;
     }
-  std::string chain;
+  // The path the new chain takes, said when it is not the one the old chain took.
+  std::string why;
+  const bool native = status == PFX_VK_OK && vk::native_wanted(bridge, desc->flags, recipe, &why);
+  const bool was_native = bridge->native != nullptr;
   if (status == PFX_VK_OK) {
-    bool updated = false;
-    if (!bridge->worker->run(
-            [&] {
-              updated = bridge->gl->update(*bridge->registry, recipe, &message);
-              if (!updated) return;
-              chain = bridge->gl->chain_text();
-              bridge->gl->set_timing(vk::timing_for(bridge, desc->flags));
-            },
-            &message) ||
-        !updated)
-      status = PFX_VK_CHAIN_FAILED;
+    const uint32_t old_flags = bridge->flags;
+    bridge->flags = (desc->flags & ~PFX_VK_FORCE_HOST_MEMORY) | (old_flags & PFX_VK_FORCE_HOST_MEMORY);
+    status = native ? vk::take_native_path(bridge, recipe, &message) : vk::take_gl_path(bridge, recipe, &message);
+    if (status != PFX_VK_OK) bridge->flags = old_flags;
   }
   if (status != PFX_VK_OK) {
     vk::copy_error(message, error, error_size);
@@ -42,8 +38,11 @@ extern "C" PFX_VK_API pfx_vk_status pfx_vk_bridge_update(pfx_vk_bridge* bridge, 
   }
   vk::say_left_out(bridge, left_out, recipe);
   bridge->transfer = transfer;
-  bridge->chain_text = chain;
+  bridge->recipe = recipe;
   bridge->dry_run = (desc->flags & PFX_VK_DRY_RUN) != 0;
-  bridge->say(0, "settings applied: chain " + chain);
+  if (native != was_native)
+    bridge->say(0, native ? "the chain runs natively on the Vulkan device from now on"
+                          : "the chain runs through OpenGL from now on: " + why);
+  bridge->say(0, "settings applied: chain " + bridge->chain_text);
   return PFX_VK_OK;
 }

@@ -3,35 +3,9 @@
 
 #include <algorithm>
 
+#include "vk_commands.hpp"
+
 namespace pfx::vk {
-namespace {
-
-VkImageMemoryBarrier barrier_for(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
-                                 VkAccessFlags dst_access) {
-  VkImageMemoryBarrier barrier{};
-  barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
-  barrier.srcAccessMask = src_access;
-  barrier.dstAccessMask = dst_access;
-  barrier.oldLayout = from;
-  barrier.newLayout = to;
-  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  // Every layer: the caller's image has one, the go-between one or two.
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
-  return barrier;
-}
-
-VkCommandBufferBeginInfo one_time() {
-  VkCommandBufferBeginInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  return info;
-}
-
-constexpr VkAccessFlags kAnyAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-
-}  // namespace
 
 void Transport::record_blit(VkCommandBuffer commands, const pfx_vk_image& image, bool into_between) {
   // Layer 0 is what the chain samples, layer 1 what it draws. The image's top row meets the
@@ -163,35 +137,29 @@ void Transport::record_copy_back(VkCommandBuffer commands, const pfx_vk_image& i
                         0, nullptr, between_image_ ? 2 : 1, after);
 }
 
-bool Transport::copy_out(const pfx_vk_image& image, bool copied_in, bool copy_back, std::string* error) {
-  VkCommandBuffer commands = VK_NULL_HANDLE;
-  if (copied_in) {
-    wait_idle();  // the command buffer and fence are free again (copy_in waited already)
-    f_.ResetCommandBuffer(out_, 0);
-    const VkCommandBufferBeginInfo begin = one_time();
-    VkResult result = f_.BeginCommandBuffer(out_, &begin);
-    if (result == VK_SUCCESS) {
-      if (copy_back) {
-        record_copy_back(out_, image);
-      } else {
-        VkImageMemoryBarrier back = barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.layout, 0,
-                                                kAnyAccess);
-        f_.CmdPipelineBarrier(out_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
-                              nullptr, 0, nullptr, 1, &back);
-      }
-      result = f_.EndCommandBuffer(out_);
+bool Transport::copy_out(const pfx_vk_image& image, bool copy_back, std::string* error) {
+  wait_idle();  // the command buffer and fence are free again (copy_in waited already)
+  f_.ResetCommandBuffer(out_, 0);
+  const VkCommandBufferBeginInfo begin = one_time();
+  VkResult result = f_.BeginCommandBuffer(out_, &begin);
+  if (result == VK_SUCCESS) {
+    if (copy_back) {
+      record_copy_back(out_, image);
+    } else {
+      VkImageMemoryBarrier back =
+          barrier_for(image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.layout, 0, kAnyAccess);
+      f_.CmdPipelineBarrier(out_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0,
+                            nullptr, 1, &back);
     }
-    if (result != VK_SUCCESS) {
-      *error = "could not record the copy back: " + result_name(result);
-      return false;
-    }
-    commands = out_;
+    result = f_.EndCommandBuffer(out_);
   }
-  // Only a copy back touches the go-between and has to be waited for before it is used again; a
-  // batch that only passes the caller's semaphores on needs no fence (and reusing the one fence
-  // for it, unwaited, would submit a fence still in use).
-  if (!submit(commands, copied_in ? out_done_ : VK_NULL_HANDLE, image, !copied_in, true, error)) return false;
-  out_pending_ = out_pending_ || copied_in;
+  if (result != VK_SUCCESS) {
+    *error = "could not record the copy back: " + result_name(result);
+    return false;
+  }
+  // The go-between is used again only after this copy back completed.
+  if (!submit(out_, out_done_, image, false, true, error)) return false;
+  out_pending_ = true;
   return true;
 }
 

@@ -49,6 +49,7 @@ bool load_functions(VkInstance instance, VkDevice device, PFN_vkGetInstanceProcA
                   device_function(g, device, "vkCreateFence", &f.CreateFence, error) &&
                   device_function(g, device, "vkDestroyFence", &f.DestroyFence, error) &&
                   device_function(g, device, "vkWaitForFences", &f.WaitForFences, error) &&
+                  device_function(g, device, "vkGetFenceStatus", &f.GetFenceStatus, error) &&
                   device_function(g, device, "vkResetFences", &f.ResetFences, error) &&
                   device_function(g, device, "vkCreateImage", &f.CreateImage, error) &&
                   device_function(g, device, "vkDestroyImage", &f.DestroyImage, error) &&

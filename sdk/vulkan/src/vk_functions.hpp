@@ -30,6 +30,7 @@ struct Functions {
   PFN_vkCreateFence CreateFence = nullptr;
   PFN_vkDestroyFence DestroyFence = nullptr;
   PFN_vkWaitForFences WaitForFences = nullptr;
+  PFN_vkGetFenceStatus GetFenceStatus = nullptr;
   PFN_vkResetFences ResetFences = nullptr;
   PFN_vkCreateImage CreateImage = nullptr;
   PFN_vkDestroyImage DestroyImage = nullptr;

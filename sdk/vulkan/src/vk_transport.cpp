@@ -4,6 +4,9 @@
 #include <iterator>
 #include <vector>
 
+#include "vk_memory.hpp"
+#include "vk_submit.hpp"
+
 namespace pfx::vk {
 namespace {
 
@@ -113,26 +116,6 @@ bool Transport::prepared(Path path, uint32_t width, uint32_t height, Between bet
   return memory_ && path_ == path && width_ == width && height_ == height && between_ == between;
 }
 
-bool Transport::allocate(const VkMemoryRequirements& needs, VkMemoryPropertyFlags want, const void* next,
-                         VkDeviceMemory* memory, std::string* error) {
-  VkPhysicalDeviceMemoryProperties properties{};
-  f_.GetPhysicalDeviceMemoryProperties(physical_device_, &properties);
-  for (uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
-    if (!(needs.memoryTypeBits & (1u << i)) || (properties.memoryTypes[i].propertyFlags & want) != want) continue;
-    VkMemoryAllocateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-    info.pNext = next;
-    info.allocationSize = needs.size;
-    info.memoryTypeIndex = i;
-    const VkResult result = f_.AllocateMemory(device_, &info, nullptr, memory);
-    if (result == VK_SUCCESS) return true;
-    *error = "could not allocate the bridge's memory: " + result_name(result);
-    return false;
-  }
-  *error = "no Vulkan memory type fits the bridge's go-between";
-  return false;
-}
-
 bool Transport::make_shared_image(std::string* error) {
   VkExternalMemoryImageCreateInfo external{};
   external.sType = VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_IMAGE_CREATE_INFO;
@@ -164,8 +147,8 @@ bool Transport::make_shared_image(std::string* error) {
   VkExportMemoryAllocateInfo export_info{};
   export_info.sType = VK_STRUCTURE_TYPE_EXPORT_MEMORY_ALLOCATE_INFO;
   export_info.handleTypes = VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT;
-  if (!allocate(needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &export_info, &memory_, error) &&
-      !allocate(needs, 0, &export_info, &memory_, error))
+  if (!allocate_memory(f_, device_, physical_device_, needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &export_info, &memory_, error) &&
+      !allocate_memory(f_, device_, physical_device_, needs, 0, &export_info, &memory_, error))
     return false;
   result = f_.BindImageMemory(device_, between_image_, memory_, 0);
   if (result != VK_SUCCESS) {
@@ -177,27 +160,12 @@ bool Transport::make_shared_image(std::string* error) {
 }
 
 bool Transport::make_host_buffer(std::string* error) {
-  VkBufferCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-  info.size = row_bytes() * height_;
-  info.usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  VkResult result = f_.CreateBuffer(device_, &info, nullptr, &between_buffer_);
-  if (result != VK_SUCCESS) {
-    *error = "could not make the host-memory buffer: " + result_name(result);
-    return false;
-  }
-  VkMemoryRequirements needs{};
-  f_.GetBufferMemoryRequirements(device_, between_buffer_, &needs);
-  const VkMemoryPropertyFlags visible = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  // Cached memory reads back at memory speed; uncached is a fallback every device has.
-  if (!allocate(needs, visible | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, nullptr, &memory_, error) &&
-      !allocate(needs, visible, nullptr, &memory_, error))
-    return false;
-  result = f_.BindBufferMemory(device_, between_buffer_, memory_, 0);
-  if (result == VK_SUCCESS) result = f_.MapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_);
-  if (result != VK_SUCCESS) *error = "could not map the host-memory buffer: " + result_name(result);
-  return result == VK_SUCCESS;
+  HostBuffer made;
+  if (!pfx::vk::make_host_buffer(f_, device_, physical_device_, row_bytes() * height_, &made, error)) return false;
+  between_buffer_ = made.buffer;
+  memory_ = made.memory;
+  mapped_ = made.mapped;
+  return true;
 }
 
 bool Transport::prepare(Path path, uint32_t width, uint32_t height, Between between, int* fd,
@@ -234,25 +202,7 @@ bool Transport::prepare(Path path, uint32_t width, uint32_t height, Between betw
 
 bool Transport::submit(VkCommandBuffer commands, VkFence fence, const pfx_vk_image& image, bool wait, bool signal,
                        std::string* error) {
-  std::vector<VkPipelineStageFlags> stages(image.wait_semaphore_count, VK_PIPELINE_STAGE_TRANSFER_BIT);
-  if (image.wait_stages)
-    for (uint32_t i = 0; i < image.wait_semaphore_count; ++i) stages[i] = image.wait_stages[i];
-  VkSubmitInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-  if (wait && image.wait_semaphore_count) {
-    info.waitSemaphoreCount = image.wait_semaphore_count;
-    info.pWaitSemaphores = image.wait_semaphores;
-    info.pWaitDstStageMask = stages.data();
-  }
-  info.commandBufferCount = commands ? 1 : 0;
-  info.pCommandBuffers = commands ? &commands : nullptr;
-  if (signal && image.signal_semaphore) {
-    info.signalSemaphoreCount = 1;
-    info.pSignalSemaphores = &image.signal_semaphore;
-  }
-  const VkResult result = f_.QueueSubmit(queue_, 1, &info, fence);
-  if (result != VK_SUCCESS) *error = "vkQueueSubmit failed: " + result_name(result);
-  return result == VK_SUCCESS;
+  return submit_frame(f_, queue_, commands, fence, image, VK_PIPELINE_STAGE_TRANSFER_BIT, wait, signal, error);
 }
 
 }  // namespace pfx::vk

@@ -71,18 +71,14 @@ class Transport {
   // On failure nothing was submitted (the semaphores are still to be waited on).
   bool copy_in(const pfx_vk_image& image, std::string* error);
   // After copy_in: copies the go-between back into the image when copy_back (else leaves the image
-  // as it was), returns the image to its layout and signals its semaphore. Without a copy_in
-  // before it (copied_in false) it only waits on the image's semaphores and signals its own, in a
-  // batch with no fence: it uses nothing of the bridge's that must be waited for.
-  bool copy_out(const pfx_vk_image& image, bool copied_in, bool copy_back, std::string* error);
+  // as it was), returns the image to its layout and signals its semaphore.
+  bool copy_out(const pfx_vk_image& image, bool copy_back, std::string* error);
   // Waits for the last copy_out.
   void wait_idle();
 
  private:
   bool make_shared_image(std::string* error);
   bool make_host_buffer(std::string* error);
-  bool allocate(const VkMemoryRequirements& needs, VkMemoryPropertyFlags want, const void* next,
-                VkDeviceMemory* memory, std::string* error);
   void release_between();
   bool submit(VkCommandBuffer commands, VkFence fence, const pfx_vk_image& image, bool wait, bool signal,
               std::string* error);

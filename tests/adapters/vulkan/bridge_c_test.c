@@ -3,11 +3,14 @@
  * through the bridge, reads the image back and compares it with a PNG pfx-render made from the same
  * input (within one code value).
  *
- *   bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host [SET]
+ *   bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host|native|record [SET]
  *
  * SET: "effect.param=value" for the bridge's `set`, as pfx-render's --set took it.
  * "shared" lets the bridge share memory (and fails if it did not, or if it did not go by blits for
- * an 8-bit image and by copies for a 10-bit one); "host" forces host memory.
+ * an 8-bit image and by copies for a 10-bit one); "host" forces host memory; both time the passes,
+ * which keeps any chain on the GL path. "native" and "record" ask for nothing more, and fail unless
+ * the chain runs natively (an all-FX chain): "native" through pfx_vk_bridge_run, "record" through
+ * pfx_vk_bridge_record into a command buffer of this program's, which it submits itself.
  * Exit status 0 when every pixel's R, G and B are within one code of EXPECTED. */
 #include <stddef.h>
 #include <stdio.h>
@@ -213,12 +216,19 @@ static void log_line(void* user, int level, const char* message) {
 }
 
 /* What the bridge says of the run: the chain, whether a pass ran, the passes' times (glFinish and a
- * clock on a software renderer: complete at once; GPU timestamps arrive later) and the unit. */
-static int report_run(pfx_vk_bridge* bridge, const char* chain, uint32_t width, uint32_t height) {
+ * clock on a software renderer: complete at once; GPU timestamps arrive later) and the unit. The
+ * native path times nothing and has no GL to time the unit on. */
+static int report_run(pfx_vk_bridge* bridge, const char* chain, uint32_t width, uint32_t height, int native) {
   pfx_vk_frame_times times;
   const int runs_effects = strcmp(chain, "none") != 0;
   double copy_ms;
   uint32_t i;
+  if (native) {
+    printf("chain: %s; passes ran: %d\n", pfx_vk_bridge_chain(bridge), pfx_vk_bridge_ran_passes(bridge));
+    if (strcmp(pfx_vk_bridge_chain(bridge), chain) != 0) return fail("the bridge names another chain");
+    if (pfx_vk_bridge_ran_passes(bridge) != runs_effects) return fail("the bridge says otherwise of the passes it ran");
+    return pfx_vk_bridge_copy_pass_ms(bridge, width, height) == 0 || fail("a copy pass timed with no GL");
+  }
   memset(&times, 0, sizeof times);
   times.struct_size = sizeof times;
   if (pfx_vk_bridge_frame_times(bridge, &times) != PFX_VK_OK) return fail("pfx_vk_bridge_frame_times failed");
@@ -252,13 +262,39 @@ static int check_submissions(pfx_vk_bridge* bridge, pfx_vk_image* image, const c
   return 1;
 }
 
+/* The chain recorded into a command buffer of this program's, submitted and waited for here. */
+static pfx_vk_status record_chain(const context* c, pfx_vk_bridge* bridge, const pfx_vk_image* image) {
+  VkCommandBufferAllocateInfo info = {VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  VkCommandBufferBeginInfo begin = {VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  VkSubmitInfo submit = {VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  VkCommandBuffer commands;
+  pfx_vk_status status;
+  info.commandPool = c->pool;
+  info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  info.commandBufferCount = 1;
+  if (vkAllocateCommandBuffers(c->device, &info, &commands) != VK_SUCCESS) return PFX_VK_VULKAN_FAILED;
+  vkBeginCommandBuffer(commands, &begin);
+  status = pfx_vk_bridge_record(bridge, commands, image);
+  vkEndCommandBuffer(commands);
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commands;
+  if (status == PFX_VK_OK && vkQueueSubmit(c->queue, 1, &submit, VK_NULL_HANDLE) != VK_SUCCESS)
+    status = PFX_VK_VULKAN_FAILED;
+  vkQueueWaitIdle(c->queue);
+  vkFreeCommandBuffers(c->device, c->pool, 1, &commands);
+  return status;
+}
+
 static int run_bridge(const context* c, const gpu_image* g, VkFormat format, const char* plugins, const char* chain,
-                      const char* set, int host_memory, const char* want_path) {
+                      const char* set, const char* path) {
   pfx_vk_bridge_desc desc;
   pfx_vk_image image;
   pfx_vk_bridge* bridge = NULL;
   char error[512];
   pfx_vk_status status;
+  const int host_memory = strcmp(path, "host") == 0, records = strcmp(path, "record") == 0;
+  const int native = records || strcmp(path, "native") == 0;
+  const char* want_path = native ? "native" : host_memory ? "host memory" : "shared memory";
   memset(&desc, 0, sizeof desc);
   desc.struct_size = sizeof desc;
   desc.instance = c->instance;
@@ -272,7 +308,7 @@ static int run_bridge(const context* c, const gpu_image* g, VkFormat format, con
   desc.chain = chain;
   desc.set = set;
   desc.plugin_path = plugins;
-  desc.flags = (host_memory ? PFX_VK_FORCE_HOST_MEMORY : 0) | PFX_VK_TIME_PASSES;
+  desc.flags = native ? 0u : (host_memory ? PFX_VK_FORCE_HOST_MEMORY : 0) | PFX_VK_TIME_PASSES;
   desc.log = log_line;
   if (pfx_vk_bridge_create(&desc, &bridge, error, sizeof error) != PFX_VK_OK) return fail(error);
   memset(&image, 0, sizeof image);
@@ -282,13 +318,13 @@ static int run_bridge(const context* c, const gpu_image* g, VkFormat format, con
   image.width = g->width;
   image.height = g->height;
   image.layout = VK_IMAGE_LAYOUT_GENERAL;
-  status = pfx_vk_bridge_run(bridge, &image);
+  status = records ? record_chain(c, bridge, &image) : pfx_vk_bridge_run(bridge, &image);
   if (status != PFX_VK_OK) fprintf(stderr, "bridge_c_test: run: %s\n", pfx_vk_bridge_last_error(bridge));
   printf("path: %s\n", pfx_vk_bridge_path(bridge));
   if (strcmp(pfx_vk_bridge_path(bridge), want_path) != 0) status = PFX_VK_BAD_ARGUMENT;
-  if (status == PFX_VK_OK && !report_run(bridge, chain, image.width, image.height)) status = PFX_VK_BAD_ARGUMENT;
-  if (status == PFX_VK_OK && !check_submissions(bridge, &image, chain)) status = PFX_VK_BAD_ARGUMENT;
-  if (status == PFX_VK_OK && !host_memory && strcmp(chain, "none") != 0) {
+  if (status == PFX_VK_OK && !report_run(bridge, chain, image.width, image.height, native)) status = PFX_VK_BAD_ARGUMENT;
+  if (status == PFX_VK_OK && !records && !check_submissions(bridge, &image, chain)) status = PFX_VK_BAD_ARGUMENT;
+  if (status == PFX_VK_OK && !host_memory && !native && strcmp(chain, "none") != 0) {
     const int eight_bit = format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_B8G8R8A8_UNORM;
     printf("shared memory by %s\n", said_way == 'b' ? "blits" : said_way == 'c' ? "copies" : "(not said)");
     if (said_way != (eight_bit ? 'b' : 'c')) status = PFX_VK_BAD_ARGUMENT;
@@ -353,7 +389,9 @@ int main(int argc, char** argv) {
   size_t i, pixels, changed;
   VkFormat format;
   if (argc != 7 && argc != 8)
-    return fail("usage: bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 shared|host [SET]"), 2;
+    return fail("usage: bridge_c_test IN.png EXPECTED.png PLUGIN_DIR CHAIN rgba|bgra|a2b10g10r10|a2r10g10b10 "
+                "shared|host|native|record [SET]"),
+           2;
   input = stbi_load(argv[1], &width, &height, &channels, 4);
   want = stbi_load(argv[2], &want_width, &want_height, &channels, 4);
   if (!input || !want || want_width != width || want_height != height) return fail("could not read the PNGs"), 2;
@@ -376,8 +414,7 @@ int main(int argc, char** argv) {
     out[3] = input[i * 4 + 3];
   }
   if (!transfer(&c, &g, 1)) return 1;
-  if (!run_bridge(&c, &g, format, argv[3], argv[4], argc == 8 ? argv[7] : NULL, strcmp(argv[6], "host") == 0, strcmp(argv[6], "host") == 0 ? "host memory" : "shared memory"))
-    return 1;
+  if (!run_bridge(&c, &g, format, argv[3], argv[4], argc == 8 ? argv[7] : NULL, argv[6])) return 1;
   if (!transfer(&c, &g, 0)) return 1;
   /* A 10-bit result is judged at 8 bits, each code to the nearest: the expected picture is 8-bit. */
   got = (unsigned char*)g.mapped;

@@ -2,12 +2,13 @@
 // applications nobody here wrote: vkcube (vulkan-tools), mpv through both its Vulkan outputs, and
 // vkd3d-gears (vkd3d-demos: Direct3D 12 through vkd3d), in the states a user reaches: no effect,
 // an effect, an effect that changes nothing, a ReShade FX effect, a preset switched off and on
-// while the application runs, either memory path, vkBasalt stacked either way, a resized and a
-// minimised window, the end at --quit-after.
+// while the application runs, each path (native on the application's device, through the GL by
+// either memory), vkBasalt stacked either way, a resized and a minimised window, the end at
+// --quit-after.
 //
 // The validation layer goes below pfx's (VK_INSTANCE_LAYERS), where it sees what pfx submits as
-// well as what the application does, and logs every message of every kind (errors, warnings,
-// performance warnings) to a file. The application alone, under the same validation and doing the
+// well as what the application does, checks synchronisation too, and logs every message of every
+// kind (errors, warnings, performance warnings) to a file. The application alone, under the same validation and doing the
 // same, is the reference: a kind of message it does not give itself is pfx's, and fails the test.
 // (The applications are not all clean: mpv logs hundreds of errors of its own, as libplacebo names
 // its objects through an extension it did not enable.)
@@ -135,6 +136,7 @@ std::vector<std::string> validated_environment(const ScratchFolder& folder, cons
   std::filesystem::create_directories(settings_folder);
   std::ofstream(settings_folder + "/vk_layer_settings.txt")
       << "khronos_validation.report_flags = error,warn,perf\n"
+         "khronos_validation.enables = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT\n"
          "khronos_validation.debug_action = VK_DBG_LAYER_ACTION_LOG_MSG\n"
          "khronos_validation.log_filename = "
       << folder.file(name + ".validation.txt") << "\n";
@@ -198,7 +200,7 @@ Validated run_session(const ScratchFolder& folder, const std::string& name, cons
 
 // Waits for pfx's layer to say it runs (at the first present); fails with what the application said.
 void wait_for_the_layer(pfx::test::ViewerProcess& process) {
-  if (process.wait_for_line("frames go through", 60).empty())
+  if (process.wait_for_line("the chain runs", 60).empty())
     FAIL("pfx's layer did not start within 60 s (windows: " << pfx::test::describe_windows() << ")\n"
                                                             << process.output());
 }
@@ -208,12 +210,25 @@ void wait_for_the_layer(pfx::test::ViewerProcess& process) {
 void check_clean(const Validated& run, const Validated& alone) {
   INFO(run.output);
   CHECK(run.exit_code == 0);
-  CHECK(run.output.find("frames go through") != std::string::npos);
+  CHECK(run.output.find("the chain runs") != std::string::npos);
   CHECK(run.output.find("pass through") == std::string::npos);
   CHECK(messages_not_in(run.messages, alone.messages) == "");
 }
 
-// The chains a user reaches, on both memory paths.
+// The paths a chain's frames can take: natively on the application's device where every effect
+// runs on Vulkan, else (and when asked) through the GL by shared or host memory.
+std::vector<std::pair<std::string, std::vector<std::string>>> paths_for(bool runs_natively) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> paths;
+  if (runs_natively) paths.push_back({"native", {}});
+  for (const char* host_memory : {"0", "1"}) {
+    std::vector<std::string> settings = {std::string("PFX_VK_HOST_MEMORY=") + host_memory};
+    if (runs_natively) settings.push_back("PFX_VK_NATIVE=0");
+    paths.push_back({std::string("host-memory-") + host_memory, settings});
+  }
+  return paths;
+}
+
+// The chains a user reaches, on every path each can take.
 void check_every_chain(const App& app) {
   ScratchFolder folder("vulkan-validation-" + app.name);
   const Validated alone = app.counted.empty()
@@ -223,60 +238,65 @@ void check_every_chain(const App& app) {
                               : run_counted(folder, "alone", app, false);
   INFO(app.name << " alone:\n" << alone.output);
   REQUIRE(alone.exit_code == 0);
-  const std::vector<std::pair<std::string, std::vector<std::string>>> chains = {
-      {"none", {"PFX_INJECT_CHAIN=none"}},
-      {"bloom", {"PFX_INJECT_CHAIN=bloom"}},
-      {"bloom-strength-0", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_SET=bloom.strength=0"}},
+  struct Chain {
+    std::string name;
+    std::vector<std::string> settings;
+    bool runs_natively;
+  };
+  const std::vector<Chain> chains = {
+      {"none", {"PFX_INJECT_CHAIN=none"}, true},
+      {"bloom", {"PFX_INJECT_CHAIN=bloom"}, false},
+      {"bloom-strength-0", {"PFX_INJECT_CHAIN=bloom", "PFX_INJECT_SET=bloom.strength=0"}, false},
       // Five passes, four render targets drawn at once, targets cleared.
-      {"fx", {"PFX_FX_PATH=" PFX_FX_TESTS "/conformance/render_targets.fx", "PFX_INJECT_CHAIN=fx_render_targets"}}};
-  for (const auto& [chain, settings] : chains) {
-    for (const char* host_memory : {"0", "1"}) {
-      const std::string name = chain + "-host-memory-" + host_memory;
-      std::vector<std::string> with = settings;
-      with.push_back(std::string("PFX_VK_HOST_MEMORY=") + host_memory);
+      {"fx", {"PFX_FX_PATH=" PFX_FX_TESTS "/conformance/render_targets.fx", "PFX_INJECT_CHAIN=fx_render_targets"}, true}};
+  for (const auto& chain : chains) {
+    for (const auto& [path, path_settings] : paths_for(chain.runs_natively)) {
+      const std::string name = chain.name + "-" + path;
+      std::vector<std::string> with = chain.settings;
+      with.insert(with.end(), path_settings.begin(), path_settings.end());
       const Validated run = run_counted(folder, name, app, true, with);
       INFO(app.name << ", " << name << ":\n" << run.output);
       check_clean(run, alone);
       CHECK(run.output.find("ignored") == std::string::npos);  // the chain is the one asked for
+      CHECK((run.output.find("the chain runs natively") != std::string::npos) == (path == "native"));
     }
   }
 }
 
 }  // namespace
 
-TEST_CASE("validated: vkcube through no effect, bloom, bloom at strength 0 and an FX effect, on both paths",
+TEST_CASE("validated: vkcube through no effect, bloom, bloom at strength 0 and an FX effect, on every path each can take",
           "[validation][vkcube]") {
   check_every_chain(vkcube());
 }
 
-TEST_CASE("validated: mpv's gpu output through every kind of chain, on both paths", "[validation][mpv]") {
+TEST_CASE("validated: mpv's gpu output through every kind of chain, on every path each can take", "[validation][mpv]") {
   check_every_chain(mpv("gpu"));
 }
 
-TEST_CASE("validated: mpv's gpu-next output through every kind of chain, on both paths", "[validation][mpv]") {
+TEST_CASE("validated: mpv's gpu-next output through every kind of chain, on every path each can take", "[validation][mpv]") {
   check_every_chain(mpv("gpu-next"));
 }
 
-TEST_CASE("validated: vkd3d-gears (Direct3D 12 through vkd3d) through every kind of chain, on both paths, ended "
+TEST_CASE("validated: vkd3d-gears (Direct3D 12 through vkd3d) through every kind of chain, on every path each can take, ended "
           "at --quit-after",
           "[validation][vkd3d]") {
   check_every_chain(vkd3d_gears());
 }
 
-TEST_CASE("validated: an FX effect that fails at its first frame in vkcube, on both paths: the frames pass through "
+TEST_CASE("validated: an FX effect that fails at its first frame in vkcube, on every path: the frames pass through "
           "and vkcube ends normally",
           "[validation][vkcube]") {
-  // The test grade's LUT texture is not there: its pass fails once the chain has the frame, with
-  // the go-between filled and the GL's draws queued.
+  // The test grade's LUT texture is not there: its instance fails at the first frame (on the GL
+  // paths once the chain has the frame, with the go-between filled and the GL's draws queued).
   ScratchFolder folder("vulkan-validation-failing");
   const Validated alone = run_counted(folder, "alone", vkcube(), false);
   REQUIRE(alone.exit_code == 0);
-  for (const char* host_memory : {"0", "1"}) {
-    const std::string name = std::string("failing-host-memory-") + host_memory;
-    const Validated run =
-        run_counted(folder, name, vkcube(), true,
-                    {"PFX_FX_PATH=" PFX_FX_TESTS "/files/Grade.fx", "PFX_INJECT_CHAIN=fx_grade",
-                     std::string("PFX_VK_HOST_MEMORY=") + host_memory});
+  for (const auto& [path, path_settings] : paths_for(true)) {
+    const std::string name = "failing-" + path;
+    std::vector<std::string> settings = {"PFX_FX_PATH=" PFX_FX_TESTS "/files/Grade.fx", "PFX_INJECT_CHAIN=fx_grade"};
+    settings.insert(settings.end(), path_settings.begin(), path_settings.end());
+    const Validated run = run_counted(folder, name, vkcube(), true, settings);
     INFO(name << ":\n" << run.output);
     CHECK(run.exit_code == 0);
     CHECK(run.output.find("frame 1: frames pass through from now on: effect 'fx_grade'") != std::string::npos);

@@ -98,6 +98,56 @@ TEST_CASE("vkcube's frame 5 through bloom is pfx-render's bloom of the pristine 
   CHECK(changed >= 320 * 240 / 100);
 }
 
+// Whether the run's dynamic linker loaded Mesa's OpenGL driver (swrast_dri.so, kms_swrast_dri.so,
+// ...), which making any GL context on this machine does: LD_DEBUG=files names every library a
+// process loads.
+bool loaded_a_gl_driver(const std::string& output) { return output.find("_dri.so") != std::string::npos; }
+
+TEST_CASE("an all-FX chain in vkcube runs natively with no GL in the process; its frame 5 is pfx-render's of the "
+          "pristine frame 5 and the GL path's, within one code",
+          "[vkcube][native]") {
+  ScratchFolder folder("vulkan-native");
+  const std::vector<std::string> relief = {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", "PFX_INJECT_CHAIN=fx_relief",
+                                           "PFX_INJECT_SET=fx_relief.strength=2", "LD_DEBUG=files"};
+  const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none", "LD_DEBUG=files"});
+  const Frame native = vkcube_frame(folder, "native", relief);
+  std::vector<std::string> through_gl = relief;
+  through_gl.push_back("PFX_VK_NATIVE=0");
+  const Frame gl = vkcube_frame(folder, "gl", through_gl);
+  INFO(native.log << gl.log);
+  REQUIRE(pristine.run.exit_code == 0);
+  REQUIRE(native.run.exit_code == 0);
+  REQUIRE(gl.run.exit_code == 0);
+  CHECK(native.log.find("the chain runs natively on the Vulkan device") != std::string::npos);
+  CHECK(pristine.log.find("the chain runs natively on the Vulkan device") != std::string::npos);
+  CHECK(gl.log.find("the chain runs through OpenGL: the GL path was asked for") != std::string::npos);
+  // No GL context was made: the GL driver never loaded, where the GL path loads it.
+  CHECK_FALSE(loaded_a_gl_driver(native.run.output));
+  CHECK_FALSE(loaded_a_gl_driver(pristine.run.output));
+  CHECK(loaded_a_gl_driver(gl.run.output));
+  // Nor did the CPU wait for the device (the captures' read-backs aside), where the GL path waits
+  // twice a frame.
+  CHECK(native.log.find("; the CPU waited for the device 0 times") != std::string::npos);
+  CHECK(gl.log.find("; the CPU waited for the device 0 times") == std::string::npos);
+  CHECK(gl.log.find("; the CPU waited for the device") != std::string::npos);
+  REQUIRE(native.presented.width == 320);
+  REQUIRE(gl.presented.width == 320);
+  CHECK(difference(native.app, pristine.app).first == 0);
+  CHECK(difference(pristine.presented, pristine.app).first == 0);
+  const pfx::test::RunResult render = pfx::test::run_program(
+      {"/usr/bin/env", "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR,
+       "--input", folder.file("none.png"), "--chain", "fx_relief", "--set", "fx_relief.strength=2", "--out",
+       folder.file("render.png")});
+  INFO(render.output);
+  REQUIRE(render.exit_code == 0);
+  CHECK(difference(native.presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
+  CHECK(difference(native.presented, gl.presented).first <= 1);
+  // The relief shows on vkcube's frame: half of every pixel is the relief's grey.
+  const auto [changed_by, changed] = difference(native.presented, pristine.presented);
+  CHECK(changed_by >= 32);
+  CHECK(changed >= 320 * 240 / 2);
+}
+
 TEST_CASE("through host memory vkcube's frame 5 is the shared-memory frame, bit for bit", "[vkcube]") {
   ScratchFolder folder("vulkan-host-memory");
   const Frame shared = vkcube_frame(folder, "shared", {"PFX_INJECT_CHAIN=bloom"});
@@ -195,7 +245,7 @@ TEST_CASE("an edited preset applies while vkcube runs, and one that does not rea
   pfx::test::add_sanitizer_runtime(&argv);
   for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
   pfx::test::ViewerProcess app(argv);
-  REQUIRE_FALSE(app.wait_for_line("frames go through", 60).empty());
+  REQUIRE_FALSE(app.wait_for_line("the chain runs", 60).empty());
   // Other effects: made anew.
   replace_file(folder, preset, R"({"pfx_preset": 1, "chain": [{"effect": "glare"}, {"effect": "bloom", "enabled": false}]})");
   CHECK_FALSE(app.wait_for_line("settings applied: chain glare,bloom (off)", 10).empty());
@@ -500,7 +550,7 @@ TEST_CASE("vkcube resized mid-run: the re-created swapchain's frames go through 
   pfx::test::add_sanitizer_runtime(&argv);
   for (const char* arg : {PFX_VKCUBE, "--width", "320", "--height", "240"}) argv.push_back(arg);
   pfx::test::ViewerProcess vkcube(argv);
-  REQUIRE(!vkcube.wait_for_line("frames go through", 60).empty());
+  REQUIRE(!vkcube.wait_for_line("the chain runs", 60).empty());
   REQUIRE(pfx::test::keep_trying([] { return pfx::test::resize_window(320, 240, 200, 150); }));
   REQUIRE(vkcube.wait_exit(120) == 0);
   INFO(vkcube.output());

@@ -1,16 +1,28 @@
 /* pfx's Vulkan bridge: runs a pfx chain over a VkImage of the caller's (docs/sdk.md, "Vulkan").
  *
- * Plain C99. Link libpfxvulkan. The bridge owns an OpenGL 4.5 context on a thread of its own (EGL,
+ * Plain C99. Link libpfxvulkan. Frames take one of two paths, chosen from the chain:
+ *
+ * Native: where every effect of the chain runs on Vulkan (its plugin offers pfx.vulkan_effects/1,
+ * pfx/vulkan_effects.h: the FX plugin's ReShade FX effects do), the bridge records the effects'
+ * passes over the image itself into a command buffer of its own and submits it on the caller's
+ * queue, after the image's wait semaphores and signalling its semaphore. No OpenGL context is made,
+ * nothing is copied, and the CPU waits for nothing (but a command buffer of four frames before
+ * that has not completed, or a read-back the caller asks for). 8-bit images only; a 10-bit one
+ * takes the GL path.
+ *
+ * Through OpenGL, otherwise: the bridge owns an OpenGL 4.5 context on a thread of its own (EGL,
  * never the caller's GL), copies the image into memory that context shares with the Vulkan device
  * (VK_KHR_external_memory_fd + GL_EXT_memory_object_fd), runs the chain there, and copies the
  * result back into the image. Where sharing is not offered (an extension missing, the GL device's
  * UUIDs not those of the Vulkan device) or is switched off, it goes through host memory instead:
  * the same pixels, slower. Either way the two APIs are ordered by waiting for a fence on the Vulkan
- * side and for the GL to finish on the other.
+ * side and for the GL to finish on the other. A dry run, pass times, preprocessor definitions from
+ * a preset, PFX_VK_GL_PATH and PFX_VK_NATIVE=0 in the environment keep a chain on this path.
  *
- * The image holds an 8- or 10-bit display-referred frame (what a swapchain image holds): it is decoded to
- * linear light, the effects start at their display-referred defaults, and the result is encoded
- * back. Row 0 of the image is its top row, as Vulkan presents it.
+ * The image holds an 8- or 10-bit display-referred frame (what a swapchain image holds): the
+ * effects start at their display-referred defaults. On the GL path it is decoded to linear light
+ * and the result encoded back; FX effects read and write the 8-bit codes as they are on both
+ * paths. Row 0 of the image is its top row, as Vulkan presents it.
  *
  * Growth: every struct starts with struct_size; later versions only append fields, and a reader
  * reads a field only when struct_size covers it (the rule of pfx/core.h). */
@@ -53,6 +65,8 @@ typedef enum pfx_vk_status {
 /* Times every pass for pfx_vk_bridge_frame_times: GPU timestamps where the GL has trustworthy ones,
  * glFinish and a clock on a software renderer (which then waits for each pass). */
 #define PFX_VK_TIME_PASSES 0x8u
+/* Always the GL path, even for a chain that could run natively (to compare the two). */
+#define PFX_VK_GL_PATH 0x10u
 
 /* The log callback: level 0 information, 1 warning, 2 error. Called on any thread. */
 typedef void (*pfx_vk_log_fn)(void* user, int level, const char* message);
@@ -66,8 +80,8 @@ typedef struct pfx_vk_bridge_desc {
   VkDevice device;
   PFN_vkGetInstanceProcAddr get_instance_proc_addr;
   PFN_vkGetDeviceProcAddr get_device_proc_addr;
-  /* The queue the bridge submits its copies to, and its family (it must do transfers: any graphics
-   * or compute queue does). The caller does not use the queue from another thread during
+  /* The queue the bridge submits its work to, and its family (graphics and compute for the native
+   * path; any graphics or compute queue does transfers for the GL path). The caller does not use the queue from another thread during
    * pfx_vk_bridge_run, as Vulkan asks of every queue submission. */
   VkQueue queue;
   uint32_t queue_family_index;
@@ -84,7 +98,7 @@ typedef struct pfx_vk_bridge_desc {
   const char* transfer;     /* "srgb" (NULL: the default) or "linear": how the 8-bit values relate to light */
   const char* plugin_path;  /* plugin folders separated by ':'; NULL: the folder beside libpfxvulkan and PFX_PLUGIN_PATH */
   uint32_t flags;           /* PFX_VK_FORCE_HOST_MEMORY, PFX_VK_LEAVE_OUT_BAD_SETTINGS, PFX_VK_DRY_RUN,
-                               PFX_VK_TIME_PASSES */
+                               PFX_VK_TIME_PASSES, PFX_VK_GL_PATH */
   pfx_vk_log_fn log;        /* NULL: messages go nowhere */
   void* log_user;
   /* For a Vulkan layer: the loader's vkSetDeviceLoaderData (vk_layer.h), which the bridge calls on
@@ -98,13 +112,14 @@ typedef struct pfx_vk_bridge pfx_vk_bridge;
  * creates its device. *count gets their number. */
 PFX_VK_API const char* const* pfx_vk_bridge_device_extensions(uint32_t* count);
 
-/* Loads the plugins, checks the settings and starts the GL thread. The effects compile at the first
- * run. On failure *out is NULL and, when error is not NULL, error (of error_size bytes) says why. */
+/* Loads the plugins, checks the settings and chooses the path (the log says which, and why not
+ * the native one); the GL path starts its GL thread. The effects compile at the first run. On failure *out is NULL and, when error is not NULL, error (of error_size bytes) says why. */
 PFX_VK_API pfx_vk_status pfx_vk_bridge_create(const pfx_vk_bridge_desc* desc, pfx_vk_bridge** out, char* error,
                                               size_t error_size);
 /* New settings for a running bridge, such as a preset file edited while frames run: desc's chain,
  * set, preset, transfer and flags (PFX_VK_FORCE_HOST_MEMORY aside), read as pfx_vk_bridge_create reads them (its other members are
- * not read: the device, queue and plugins stay). When the chain names the same effects in the same
+ * not read: the device, queue and plugins stay). The new chain takes the path it allows, and the
+ * log says when that changes. When the chain names the same effects in the same
  * order only values and on/off flags change and no effect is created again; otherwise the effects
  * are made anew (their programs compile now). All or nothing: on failure the chain that ran keeps
  * running and error says why; a preset that does not read or apply fails it even with
@@ -125,7 +140,7 @@ typedef struct pfx_vk_image {
   uint32_t width, height;
   VkImageLayout layout; /* the layout it is in, and will be left in (PRESENT_SRC_KHR for a swapchain image) */
   /* Binary semaphores to wait on before the image is read (the application's rendering), with the
-   * stages that wait (NULL: TRANSFER for each). */
+   * stages that wait (NULL: TRANSFER for each on the GL path, every stage on the native one). */
   uint32_t wait_semaphore_count;
   const VkSemaphore* wait_semaphores;
   const VkPipelineStageFlags* wait_stages;
@@ -155,14 +170,29 @@ typedef struct pfx_vk_image {
  * wait_semaphores are still waited on and signal_semaphore still signalled, so the caller can go on
  * as if the bridge were not there (pfx_vk_bridge_submitted says when even that submission failed). */
 PFX_VK_API pfx_vk_status pfx_vk_bridge_run(pfx_vk_bridge* bridge, const pfx_vk_image* image);
+/* The native path's other way in, for an engine that submits its own work: records the chain's
+ * work over the image into `commands`, a primary command buffer the caller is recording (outside a
+ * render pass) for a queue of desc.queue_family_index, and returns; the caller submits it, with
+ * its own semaphores and fence, and the bridge submits and waits for nothing. The image is as for
+ * pfx_vk_bridge_run, 8-bit only; its semaphores, flags, app_pixels and result_pixels are not read.
+ * The buffers recorded must execute in the order they were recorded, and have completed before the
+ * next pfx_vk_bridge_update that changes the chain's effects, a call with an image of a fifth size
+ * or format (the bridge keeps the effects of four), or pfx_vk_bridge_destroy: the effects they
+ * used are freed then. PFX_VK_OK (nothing recorded
+ * when no effect is on); PFX_VK_BAD_ARGUMENT when the chain does not run natively
+ * (pfx_vk_bridge_path is not "native") or the image is not 8-bit; PFX_VK_CHAIN_FAILED when an
+ * effect could not be made or record: what was recorded before it is the whole work of the
+ * effects before it, so the buffer may still be submitted. */
+PFX_VK_API pfx_vk_status pfx_vk_bridge_record(pfx_vk_bridge* bridge, VkCommandBuffer commands,
+                                              const pfx_vk_image* image);
 /* Whether the last pfx_vk_bridge_run submitted the work that signals the image's signal_semaphore
  * (having waited on its wait_semaphores): 1 as a rule, and the caller waits on signal_semaphore;
  * 0 for a frame left alone under PFX_VK_IMAGE_MAY_SKIP, whose semaphores are untouched (the caller
  * waits on its own wait_semaphores), or when a submission itself failed (a lost device). */
 PFX_VK_API int pfx_vk_bridge_submitted(const pfx_vk_bridge* bridge);
 
-/* "shared memory" or "host memory": the path the last run took (before the first run: the path the
- * next one will try). */
+/* "native", "shared memory" or "host memory": the path 8-bit frames take (on the GL path: the one
+ * the last run took; before the first run, the one the next will try). */
 PFX_VK_API const char* pfx_vk_bridge_path(const pfx_vk_bridge* bridge);
 /* The chain that runs, as pfx-inject's log names it: effect ids in order, those switched off marked
  * ("glare,bloom (off)"), or "none". Valid until the next call on the bridge. */
@@ -172,7 +202,7 @@ PFX_VK_API const char* pfx_vk_bridge_chain(const pfx_vk_bridge* bridge);
 PFX_VK_API int pfx_vk_bridge_ran_passes(const pfx_vk_bridge* bridge);
 /* Times a full-frame copy pass between two RGBA16F textures of that size on the bridge's GL context
  * (the median of 9, each with glFinish around it and a clock): the unit pfx's benchmarks give costs
- * in, measured where the chain runs. 0 when it cannot be measured. Not during a pfx_vk_bridge_run of
+ * in, measured where the chain runs. 0 when it cannot be measured (the native path has no GL). Not during a pfx_vk_bridge_run of
  * the same bridge. */
 PFX_VK_API double pfx_vk_bridge_copy_pass_ms(pfx_vk_bridge* bridge, uint32_t width, uint32_t height);
 /* One pass's time in pfx_vk_frame_times. */

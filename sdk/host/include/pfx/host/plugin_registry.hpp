@@ -63,6 +63,9 @@ struct Plugin {
   const pfx_param_desc* (*params_at)(const char* effect_id, uint32_t width, uint32_t height) = nullptr;
   // The services this plugin was given (host_data points back at the registry's record).
   const pfx_host* host = nullptr;
+  // The plugin's get_factory, for the factories this registry does not read itself (a Vulkan
+  // host asks it for "pfx.vulkan_effects/1"): the caller checks the struct_size of what it gets.
+  const void* (*get_factory)(const char* factory_id) = nullptr;
   // What effects, importers and references point into: this host's layout of the plugin's own
   // structs (arrays stepped by their struct_size, fields its version lacks zeroed).
   std::shared_ptr<const HostLayoutDescriptors> descriptors;

@@ -1,0 +1,30 @@
+#include "vk_submit.hpp"
+
+#include <vector>
+
+namespace pfx::vk {
+
+bool submit_frame(const Functions& f, VkQueue queue, VkCommandBuffer commands, VkFence fence, const pfx_vk_image& image,
+                  VkPipelineStageFlags default_wait_stage, bool wait, bool signal, std::string* error) {
+  std::vector<VkPipelineStageFlags> stages(image.wait_semaphore_count, default_wait_stage);
+  if (image.wait_stages)
+    for (uint32_t i = 0; i < image.wait_semaphore_count; ++i) stages[i] = image.wait_stages[i];
+  VkSubmitInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  if (wait && image.wait_semaphore_count) {
+    info.waitSemaphoreCount = image.wait_semaphore_count;
+    info.pWaitSemaphores = image.wait_semaphores;
+    info.pWaitDstStageMask = stages.data();
+  }
+  info.commandBufferCount = commands ? 1 : 0;
+  info.pCommandBuffers = commands ? &commands : nullptr;
+  if (signal && image.signal_semaphore) {
+    info.signalSemaphoreCount = 1;
+    info.pSignalSemaphores = &image.signal_semaphore;
+  }
+  const VkResult result = f.QueueSubmit(queue, 1, &info, fence);
+  if (result != VK_SUCCESS) *error = "vkQueueSubmit failed: " + result_name(result);
+  return result == VK_SUCCESS;
+}
+
+}  // namespace pfx::vk
