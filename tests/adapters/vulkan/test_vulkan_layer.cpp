@@ -103,7 +103,7 @@ TEST_CASE("vkcube's frame 5 through bloom is pfx-render's bloom of the pristine 
 // process loads.
 bool loaded_a_gl_driver(const std::string& output) { return output.find("_dri.so") != std::string::npos; }
 
-TEST_CASE("an all-FX chain in vkcube runs natively with no GL in the process; its frame 5 is pfx-render's of the "
+TEST_CASE("an all-FX chain in vkcube runs natively with no GL in the process, and its frame 5 is pfx-render's of the "
           "pristine frame 5 and the GL path's, within one code",
           "[vkcube][native]") {
   ScratchFolder folder("vulkan-native");
@@ -474,31 +474,59 @@ long long heap_at(const std::string& log, uint64_t frame) {
 
 }  // namespace
 
+// The heap in use after frames 4,500, 6,500 and 8,500 of vkcube (64x64) with pfx-inject's
+// variables `settings`, and its log. The heap holds what lavapipe and llvmpipe allocate for every
+// Vulkan and GL object too (their images and textures are malloc'd), so a leaked image, texture
+// or command buffer shows there.
+struct HeapUse {
+  long long first = 0, middle = 0, last = 0;
+  std::string log;
+};
+HeapUse heap_over_8500_presents(const std::string& name, const std::vector<std::string>& settings) {
+  ScratchFolder folder("vulkan-8500-" + name);
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_LOG=" + folder.file("long.log"),
+                                   "PFX_INJECT_RESOURCES_AT=4500,6500,8500"};
+  argv.insert(argv.end(), settings.begin(), settings.end());
+  pfx::test::add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "8500", "--width", "64", "--height", "64"}) argv.push_back(arg);
+  const pfx::test::RunResult run = pfx::test::run_program(argv, 300);
+  HeapUse use;
+  use.log = pfx::test::read_text_file(folder.file("long.log"));
+  INFO(run.output << use.log);
+  REQUIRE(run.exit_code == 0);
+  use.first = heap_at(use.log, 4500);
+  use.middle = heap_at(use.log, 6500);
+  use.last = heap_at(use.log, 8500);
+  REQUIRE(use.first > 0);
+  REQUIRE(use.middle > 0);
+  REQUIRE(use.last > 0);
+  return use;
+}
+
 TEST_CASE("8,500 presents of vkcube through the default chain do not grow the heap", "[vkcube][long]") {
-  // The heap holds what lavapipe and llvmpipe allocate for every Vulkan and GL object too (their
-  // images and textures are malloc'd), so a leaked image, texture or command buffer shows here.
   // The bound is half of what a 16-byte block lost per frame adds over 2,000 frames.
   //
   // Measured from frame 4,500: lavapipe's vkCmdBlitImage makes one allocation of about 1 MB
   // after its first ~8,200 blits, whatever the frame's size (two blits a frame step at frame
   // ~4,100, one a frame at ~8,200), and none after that through 13,000 frames.
-  ScratchFolder folder("vulkan-8500");
-  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
-                                   "PFX_INJECT_LOG=" + folder.file("long.log"),
-                                   "PFX_INJECT_RESOURCES_AT=4500,6500,8500"};
-  pfx::test::add_sanitizer_runtime(&argv);
-  for (const char* arg : {PFX_VKCUBE, "--c", "8500", "--width", "64", "--height", "64"}) argv.push_back(arg);
-  const pfx::test::RunResult run = pfx::test::run_program(argv, 300);
-  const std::string log = pfx::test::read_text_file(folder.file("long.log"));
-  INFO(run.output << log);
-  REQUIRE(run.exit_code == 0);
-  CHECK(log.find("left out of the default chain") != std::string::npos);
-  const long long first = heap_at(log, 4500), middle = heap_at(log, 6500), last = heap_at(log, 8500);
-  REQUIRE(first > 0);
-  REQUIRE(middle > 0);
-  REQUIRE(last > 0);
-  CHECK(middle - first <= 16000);
-  CHECK(last - middle <= 16000);
+  const HeapUse use = heap_over_8500_presents("default", {});
+  INFO(use.log);
+  CHECK(use.log.find("left out of the default chain") != std::string::npos);
+  CHECK(use.middle - use.first <= 16000);
+  CHECK(use.last - use.middle <= 16000);
+}
+
+TEST_CASE("8,500 presents of vkcube through an FX effect on the native path do not grow the heap",
+          "[vkcube][long][native]") {
+  // The same bound, over the native path's command buffers, fences, and the effect's images,
+  // pipelines and descriptor sets.
+  const HeapUse use = heap_over_8500_presents(
+      "native", {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", "PFX_INJECT_CHAIN=fx_relief"});
+  INFO(use.log);
+  CHECK(use.log.find("the chain runs natively") != std::string::npos);
+  CHECK(use.middle - use.first <= 16000);
+  CHECK(use.last - use.middle <= 16000);
 }
 
 TEST_CASE("vkBasalt's CAS and pfx's bloom in one stack, in either order", "[vkcube][vkbasalt]") {
