@@ -1,7 +1,5 @@
 #include "fx_programs.hpp"
 
-#include <cstdlib>
-#include <cstring>
 #include <regex>
 
 #include <pfx/cpp/gl_program.hpp>
@@ -57,11 +55,6 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-FxPrograms::FxPrograms() {
-  const char* setting = std::getenv("PFX_FX_SPECIALISE");
-  enabled_ = !(setting && std::strcmp(setting, "0") == 0);
-}
-
 void FxPrograms::release(ProgramSet& set) {
   for (PassProgram& p : set.programs)
     if (p.program) glDeleteProgram(p.program);
@@ -73,34 +66,21 @@ void FxPrograms::release() {
   release(specialised_);
   release(pending_);
   running_ = &live_;
-  last_held_.clear();
-  first_frame_ = true;
-}
-
-pfx::fx::UniformConstants FxPrograms::held_values(const pfx::fx::EffectModel& model, const UniformValues& values) const {
-  pfx::fx::UniformConstants held(model.uniforms.size());
-  for (std::size_t i = 0; i < model.uniforms.size(); ++i)
-    if (model.uniforms[i].source.empty()) held[i] = values.of(static_cast<int>(i));
-  return held;
+  settle_.reset();
 }
 
 bool FxPrograms::choose(const pfx::fx::CompiledEffect& compiled, int technique, const UniformValues& values,
                         std::string* error) {
-  const auto now = std::chrono::steady_clock::now();
-  pfx::fx::UniformConstants held = enabled_ ? held_values(compiled.model, values) : pfx::fx::UniformConstants{};
-  if (held != last_held_) {
-    last_held_ = held;
-    if (!first_frame_) last_change_ = now;
-  }
-  const bool first_frame = first_frame_;
-  const bool settled = first_frame || std::chrono::duration<double>(now - last_change_).count() >= kSettleSeconds;
-  first_frame_ = false;
+  const bool enabled = settle_.enabled();
+  pfx::fx::UniformConstants held = enabled ? held_values(compiled.model, values) : pfx::fx::UniformConstants{};
+  const SettledValues::Frame frame = settle_.observe(held);
+  const bool first_frame = frame.first, settled = frame.settled;
   if (parallel_compile_ < 0) parallel_compile_ = pfx::gl::has_parallel_compile() ? 1 : 0;
 
   // A set compiling in the background for values that have moved on is no use.
   if (pending_.started && pending_.constants != held) release(pending_);
   const bool have_specialised = specialised_.built && specialised_.constants == held;
-  bool wants_specialised = enabled_ && (settled || have_specialised);
+  bool wants_specialised = enabled && (settled || have_specialised);
   if (wants_specialised && !have_specialised) {
     if (parallel_compile_ && live_.built && !first_frame) {
       // Off the frame path: the driver compiles while the live programs keep running, and the set

@@ -5,9 +5,9 @@
 // branches and loops they decide (ReShade's performance mode, made automatic). Both compute the
 // same pictures: a constant holds the bits the uniform would.
 //
-// Which set runs: the specialised one whenever the values have held still for kSettleSeconds, and
-// from the first frame (a renderer, a video host or a farm job never changes them); the live one
-// while they move (a slider being dragged), so no frame waits for a compile per value. Where the
+// Which set runs: the specialised one whenever the values have settled (fx_settled_values.hpp),
+// the live one while they move (a slider being dragged), so no frame waits for a compile per
+// value. Where the
 // driver compiles in the background (KHR_parallel_shader_compile), a specialised set for settled
 // values is compiled there while the live one keeps running, and takes over the frame it is
 // ready, so no frame waits for it either. A set is built the first time it is needed and kept; specialised programs go through the program cache
@@ -21,6 +21,7 @@
 
 #include "effect_compiler.hpp"
 #include "model/full_screen_pass.hpp"
+#include "fx_settled_values.hpp"
 #include "fx_uniform_values.hpp"
 
 namespace pfx_fx {
@@ -49,10 +50,7 @@ struct ProgramSet {
 
 class FxPrograms {
  public:
-  // How long values must hold still before the specialised programs are built for them.
-  static constexpr double kSettleSeconds = 0.5;
-
-  FxPrograms();
+  FxPrograms() = default;
   ~FxPrograms() = default;  // release() first, with the context current
   // Deletes every program (a new compile of the source). GL current.
   void release();
@@ -70,8 +68,6 @@ class FxPrograms {
   int cache_hits() const { return cache_hits_; }
 
  private:
-  // The values a specialised set would hold: each uniform without a frame source, else empty.
-  pfx::fx::UniformConstants held_values(const pfx::fx::EffectModel& model, const UniformValues& values) const;
   // A set is built in two halves: its GLSL generated and handed to the driver (or its programs
   // loaded from the cache), then, once ready() (at once unless the driver compiles on threads of
   // its own), checked, stored in the cache and its uniforms found.
@@ -80,15 +76,12 @@ class FxPrograms {
   bool finish_build(const pfx::fx::CompiledEffect& compiled, int technique, ProgramSet& set, std::string* error);
   static void release(ProgramSet& set);
 
-  bool enabled_ = true;
   int output_pass_ = -1;
   // pending_: a specialised set the driver compiles while live_ runs (KHR_parallel_shader_compile).
   ProgramSet live_, specialised_, pending_;
   int parallel_compile_ = -1;  // whether the GL offers it; -1 until asked (with the context current)
   const ProgramSet* running_ = &live_;
-  pfx::fx::UniformConstants last_held_;
-  std::chrono::steady_clock::time_point last_change_{};
-  bool first_frame_ = true;
+  SettledValues settle_;
   double build_ms_ = 0;
   int cache_hits_ = 0;
 };

@@ -1,6 +1,7 @@
 #include "fx_vulkan_effect.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -12,6 +13,7 @@
 
 #include "fx_catalog.hpp"
 #include "fx_frame_params.hpp"
+#include "fx_settled_values.hpp"
 #include "fx_texture_files.hpp"
 #include "fx_uniform_values.hpp"
 #include "texture_image.hpp"
@@ -44,6 +46,9 @@ class FxVulkanInstance {
   pfx::fx::vulkan::Technique technique_;
   UniformValues uniforms_;
   FrameParams frame_params_;
+  // When the values have settled, the technique runs pipelines with them compiled in.
+  SettledValues settle_;
+  bool told_live_ = false;  // why values run live, said once
 };
 
 pfx_status FxVulkanInstance::create(const pfx_vk_device& device, int width, int height, VkFormat format, std::string& error) {
@@ -79,12 +84,36 @@ pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame
   const pfx_value* values = frame_params_.resolve(entry_.params, params, notes);
   for (const std::string& note : notes) log(PFX_LOG_WARNING, note);
   uniforms_.update(compiled_->model, entry_.params, values, frame, false);
+  const pfx::fx::UniformConstants held =
+      settle_.enabled() ? held_values(compiled_->model, uniforms_) : pfx::fx::UniformConstants{};
+  const bool settled = settle_.observe(held).settled;
+  std::size_t held_count = 0;  // an effect with none has nothing to compile in
+  for (const auto& value : held) held_count += value.empty() ? 0 : 1;
+  bool specialised = false;
+  if (held_count && (settled || technique_.has_specialised(held))) {
+    // On the frame path, as the GL runtime builds where the driver cannot compile in the
+    // background: once per set of values that held still.
+    bool built = false;
+    std::string message;
+    const auto start = std::chrono::steady_clock::now();
+    specialised = technique_.specialise(*compiled_, held, cache_.handle(), &built, message);
+    if (built) {
+      cache_.save();
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      log(PFX_LOG_INFO, "values compiled in: " + std::to_string(held_count) + " uniforms as constants, pipelines built in " +
+                            std::to_string(static_cast<long>(ms)) + " ms");
+    }
+    if (!specialised && !told_live_) {
+      told_live_ = true;
+      log(PFX_LOG_INFO, "uniforms stay live: " + message);
+    }
+  }
   pfx::fx::vulkan::Frame f;
   f.image = image.image;
   f.layout = image.layout;
   f.final_layout = image.final_layout;
   f.keep_alpha = !(image.flags & PFX_VK_FRAME_ALPHA_UNUSED);
-  technique_.record(commands, f, uniforms_.all());
+  technique_.record(commands, f, uniforms_.all(), specialised ? &held : nullptr);
   return PFX_OK;
 }
 

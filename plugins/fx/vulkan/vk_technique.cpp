@@ -193,6 +193,9 @@ std::string Technique::create_pass(std::size_t index, const GeneratedPass& gener
   for (int unit : generated.sampler_units)
     pass.sampled.push_back(image_of_texture(model_->samplers[static_cast<std::size_t>(unit)].texture, pass.back_buffer));
   for (int unit : generated.image_units) pass.stored.push_back(model_->storages[static_cast<std::size_t>(unit)].texture);
+  pass.sampler_units = generated.sampler_units;
+  pass.image_units = generated.image_units;
+  pass.may_discard = generated.may_discard;
   const std::string* sources[2] = {pass.compute ? &generated.compute : &generated.vertex, &generated.fragment};
   const SpirvStage stages[2] = {pass.compute ? SpirvStage::kCompute : SpirvStage::kVertex, SpirvStage::kFragment};
   for (int i = 0; i < (pass.compute ? 1 : 2); ++i) {
@@ -311,12 +314,15 @@ std::string Technique::create_draw(Pass& pass, VkPipelineCache cache) {
   framebuffer.layers = 1;
   if (d_->vkCreateFramebuffer(d_->device, &framebuffer, nullptr, &pass.framebuffer) != VK_SUCCESS) return "vkCreateFramebuffer failed";
   pass.pipeline = create_graphics_pipeline(*d_, plan, cache);
+  pass.plan = plan;
   return pass.pipeline ? "" : "vkCreateGraphicsPipelines failed";
 }
 
 void Technique::destroy() {
   if (!d_) return;
   const Device& d = *d_;
+  for (Specialised& set : specialised_) destroy(set);
+  specialised_.clear();
   for (Pass& pass : passes_) {
     if (pass.pipeline) d.vkDestroyPipeline(d.device, pass.pipeline, nullptr);
     if (pass.framebuffer) d.vkDestroyFramebuffer(d.device, pass.framebuffer, nullptr);

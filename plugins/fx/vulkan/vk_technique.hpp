@@ -27,6 +27,7 @@
 #include "vk_device.hpp"
 #include "vk_frame_alpha.hpp"
 #include "vk_images.hpp"
+#include "vk_pipelines.hpp"
 #include "vk_texture_uploads.hpp"
 #include "vk_uniform_block.hpp"
 
@@ -63,8 +64,21 @@ class Technique {
   // `message` says why and nothing is left behind. `device` and `effect` outlive the technique.
   Status create(const Device& device, const CompiledEffect& effect, int technique, int width, int height, VkFormat frame_format,
                 VkPipelineCache cache, const TexelLoader& load_texels, std::string& message);
+  // Pipelines with `constants` compiled in (GLSL generated with them: the uniforms whose values
+  // have settled, fx_settled_values.hpp), so the driver folds what they decide. A pass whose
+  // specialised code samples or stores other textures than its live code keeps its live pipeline.
+  // Every set built is kept until destroy(), as frames still in flight may use it; at most
+  // kSpecialisedSets, after which values not seen before run the live pipelines. *built says a
+  // set was made now; false with `message` when it could not be (the live pipelines run on).
+  static constexpr std::size_t kSpecialisedSets = 8;
+  bool specialise(const CompiledEffect& effect, const UniformConstants& constants, VkPipelineCache cache, bool* built,
+                  std::string& message);
+  bool has_specialised(const UniformConstants& constants) const { return specialised_for(constants) != nullptr; }
   // The frame's work. `uniforms`: per model uniform, its components as the runtimes hold them.
-  void record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms);
+  // `constants`: the pipelines specialised for them (specialise()) where a set was built, else
+  // (and when null) the live ones. Both compute the same picture.
+  void record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms,
+              const UniformConstants* constants = nullptr);
   void destroy();
 
  private:
@@ -84,7 +98,20 @@ class Technique {
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
     int area_width = 1, area_height = 1;
+    // What a specialised pipeline must match: the live code's texture bindings and whether it may
+    // discard, and for a graphics pass what its pipeline is made from.
+    std::vector<int> sampler_units, image_units;
+    bool may_discard = false;
+    GraphicsPlan plan;
   };
+  // Pipelines for one set of settled values, per pass (null: the pass runs its live pipeline).
+  struct Specialised {
+    UniformConstants constants;
+    std::vector<VkPipeline> pipelines;
+    std::vector<VkShaderModule> modules;
+  };
+  const Specialised* specialised_for(const UniformConstants& constants) const;
+  void destroy(Specialised& set);
 
   Status check_supported(std::string& message) const;
   std::string create_images(VkFormat frame_format, const TexelLoader& load_texels);
@@ -96,7 +123,7 @@ class Technique {
   int image_of_texture(int texture, int back_buffer) const;
   VkImageView sampled_view(const SamplerInfo& sampler, int back_buffer) const;
   void record_uniforms(VkCommandBuffer commands, const std::vector<std::vector<double>>& uniforms);
-  void record_pass(VkCommandBuffer commands, Pass& pass);
+  void record_pass(VkCommandBuffer commands, Pass& pass, VkPipeline pipeline);
 
   const Device* d_ = nullptr;
   const EffectModel* model_ = nullptr;
@@ -117,6 +144,7 @@ class Technique {
   std::vector<unsigned char> block_bytes_;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   std::vector<Pass> passes_;
+  std::vector<Specialised> specialised_;
   bool started_ = false;  // the images were cleared: ReShade's textures start as zeros
 };
 

@@ -5,8 +5,10 @@
 
 namespace pfx::fx::vulkan {
 
-void Technique::record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms) {
+void Technique::record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms,
+                       const UniformConstants* constants) {
   const Device& d = *d_;
+  const Specialised* specialised = constants ? specialised_for(*constants) : nullptr;
   if (!started_) {
     for (std::size_t i = 0; i < images_.size(); ++i)
       if (images_[i].image) clear_image(d, commands, images_[i], static_cast<int>(i) == depth_image_);
@@ -26,7 +28,10 @@ void Technique::record(VkCommandBuffer commands, const Frame& frame, const std::
   caller.stage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
   Image* back_buffers = &images_[static_cast<std::size_t>(back_buffer_image_)];
   copy_image(d, commands, caller, back_buffers[0]);
-  for (Pass& pass : passes_) record_pass(commands, pass);
+  for (std::size_t i = 0; i < passes_.size(); ++i) {
+    const VkPipeline chosen = specialised ? specialised->pipelines[i] : VK_NULL_HANDLE;
+    record_pass(commands, passes_[i], chosen ? chosen : passes_[i].pipeline);
+  }
   // A technique that never writes the back buffer leaves the frame as it was.
   if (last_back_buffer_ != 0) {
     if (frame.keep_alpha) frame_alpha_.record(commands, back_buffers[0], back_buffers[last_back_buffer_]);
@@ -54,7 +59,7 @@ void Technique::record_uniforms(VkCommandBuffer commands, const std::vector<std:
   d.vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, kShaderStages, 0, 0, nullptr, 1, &b, 0, nullptr);
 }
 
-void Technique::record_pass(VkCommandBuffer commands, Pass& pass) {
+void Technique::record_pass(VkCommandBuffer commands, Pass& pass, VkPipeline pipeline) {
   const Device& d = *d_;
   auto image = [&](int index) -> Image& { return images_[static_cast<std::size_t>(index)]; };
   const bool stored_mips = pass.compute && pass.info->generate_mipmaps;
@@ -65,7 +70,7 @@ void Technique::record_pass(VkCommandBuffer commands, Pass& pass) {
   for (int s : pass.sampled)
     if (std::find(pass.stored.begin(), pass.stored.end(), s) == pass.stored.end()) use_for_sampling(d, commands, image(s));
   if (pass.compute) {
-    d.vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline);
+    d.vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     d.vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set, 0, nullptr);
     const int* groups = pass.info->dispatch;
     d.vkCmdDispatch(commands, static_cast<std::uint32_t>(groups[0]), static_cast<std::uint32_t>(groups[1]), static_cast<std::uint32_t>(groups[2]));
@@ -85,7 +90,7 @@ void Technique::record_pass(VkCommandBuffer commands, Pass& pass) {
   begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
   begin.pClearValues = clears.data();
   d.vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  d.vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
+  d.vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   d.vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.layout, 0, 1, &pass.set, 0, nullptr);
   d.vkCmdDraw(commands, static_cast<std::uint32_t>(pass.info->vertex_count), 1, 0, 0);
   d.vkCmdEndRenderPass(commands);

@@ -15,7 +15,7 @@ os.environ["PFX_FX_PATH"] = os.path.join(os.environ["PFX_SOURCE_DIR"], "tests", 
 
 import pfx  # noqa: E402
 
-SETTLE_SECONDS = 0.5  # FxPrograms::kSettleSeconds
+SETTLE_SECONDS = 0.5  # SettledValues::kSettleSeconds
 
 
 def picture():

@@ -276,7 +276,7 @@ struct PluginEffect {
   void* instance = nullptr;
 
   static void log(void*, pfx_log_level level, const char* message) {
-    if (level >= PFX_LOG_WARNING) std::printf("plugin: %s\n", message);
+    if (level >= PFX_LOG_INFO) std::printf("plugin: %s\n", message);
   }
   static pfx_gl_proc no_gl(void*, const char*) { return nullptr; }  // a host without GL
 

@@ -10,7 +10,10 @@ Vulkan host runs an effect: through the FX plugin PFX_FX_SO's "pfx.vulkan_effect
 passes in the Vulkan dialect compiled to SPIR-V by glslang and run by plugins/fx/vulkan on Mesa's
 lavapipe device for the file's frames, and judged as in GL: every check green, the input's bytes,
 or their inverse. effects/gain.fx then shows a parameter reaching the effect: at its default the
-picture is the input, at --set gain=0.25 the input's colour times 0.25. The files of RUN must run and pass with no message from the validation layer;
+picture is the input, at --set gain=0.25 the input's colour times 0.25. All of it twice: with the
+uniforms' values compiled in as constants from the first frame (the runtime's default: every
+value settled; uniforms.fx must say it compiled some in), and with every uniform live
+(PFX_FX_SPECIALISE=0): the same checks hold both ways. The files of RUN must run and pass with no message from the validation layer;
 every other file must be one the runtime says it does not run yet (exit status 3), so a file that
 starts to run is added to RUN rather than passing unseen. A file judged on another input (an EXR
 of non-finite values) is the GL runtime's to judge.
@@ -71,6 +74,23 @@ def run_all(checks, plugin, icd, scratch):
     env = dict(os.environ, VK_ICD_FILENAMES=icd, VK_INSTANCE_LAYERS="VK_LAYER_KHRONOS_validation",
                VK_LAYER_SETTINGS_PATH=scratch, XDG_CACHE_HOME=scratch)  # the pipeline cache stays out of the user's
     failures, ran = [], 0
+    for mode, specialise in (("specialised", "1"), ("live", "0")):
+        ran += run_mode(checks, plugin, log, dict(env, PFX_FX_SPECIALISE=specialise), mode, failures)
+    missing = [f for f in RUN if not os.path.exists(os.path.join(CONFORMANCE, f))]
+    if missing:
+        failures.append("RUN names files that are gone: %s" % missing)
+    for failure in failures:
+        print("FAIL: " + failure)
+    if failures:
+        return 1
+    print("ok: %d runs of conformance files hold on Vulkan (lavapipe) as in GL, uniforms compiled in and live, "
+          "with no message from the validation layer" % ran)
+    return 0
+
+
+def run_mode(checks, plugin, log, env, mode, failures):
+    """Every file of RUN and the gain checks with `env`; returns how many files ran."""
+    ran = 0
     for path in sorted(glob.glob(os.path.join(CONFORMANCE, "*.fx"))):
         name = os.path.basename(path)
         s = header(path)
@@ -88,11 +108,13 @@ def run_all(checks, plugin, icd, scratch):
         if name in RUN:
             ran += 1
             if result.returncode != 0:
-                failures.append("%s: %s" % (name, said))
+                failures.append("%s (%s): %s" % (name, mode, said))
             elif messages:
-                failures.append("%s: the validation layer said:\n%s" % (name, messages[:4000]))
+                failures.append("%s (%s): the validation layer said:\n%s" % (name, mode, messages[:4000]))
+            elif name == "uniforms.fx" and ("values compiled in" in said) != (mode == "specialised"):
+                failures.append("%s (%s): compiled values in where it should not, or not where it should: %s" % (name, mode, said))
             else:
-                print("%s: %s" % (name, said))
+                print("%s (%s): %s" % (name, mode, said))
         elif result.returncode != 3:
             failures.append("%s ran (%s): add it to RUN in %s" % (name, said, __file__))
     gain = os.path.join(HERE, "effects", "gain.fx")
@@ -105,18 +127,10 @@ def run_all(checks, plugin, icd, scratch):
         said = (result.stdout + result.stderr).strip()
         messages = open(log).read().strip() if os.path.exists(log) else ""
         if result.returncode != 0 or messages:
-            failures.append("%s: %s %s" % (name, said, messages[:4000]))
+            failures.append("%s (%s): %s %s" % (name, mode, said, messages[:4000]))
         else:
-            print("%s: %s" % (name, said))
-    missing = [f for f in RUN if not os.path.exists(os.path.join(CONFORMANCE, f))]
-    if missing:
-        failures.append("RUN names files that are gone: %s" % missing)
-    for failure in failures:
-        print("FAIL: " + failure)
-    if failures:
-        return 1
-    print("ok: %d conformance files hold on Vulkan (lavapipe) as in GL, with no message from the validation layer" % ran)
-    return 0
+            print("%s (%s): %s" % (name, mode, said))
+    return ran
 
 
 if __name__ == "__main__":

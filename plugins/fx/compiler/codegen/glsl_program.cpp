@@ -204,8 +204,9 @@ class ProgramBuilder {
     std::string out, block;  // block: Vulkan's uniforms, which live in a uniform block
     // In the model's order, never a pointer's: the same source gives the same GLSL on every run
     // (the program cache's key).
-    // Vulkan's block holds every live uniform of the effect, used here or not, so that each stage
-    // of each pass reads one buffer with one layout.
+    // Vulkan's block holds every uniform of the effect, used here or not, so that each stage of
+    // each pass, live or specialised, reads one buffer with one layout: a uniform compiled in as a
+    // constant keeps its place in the block under a name nothing reads.
     for (std::size_t index = 0; index < model_.uniforms.size(); ++index) {
       const VariableDecl* decl = model_.uniforms[index].decl;
       const bool used = globals.count(decl) > 0;
@@ -214,6 +215,8 @@ class ProgramBuilder {
       const std::vector<double>* value = constants_ && index < constants_->size() ? &(*constants_)[index] : nullptr;
       if (value && !value->empty() && can_be_constant(decl->resolved, *value)) {
         if (used) out += "const " + w.type(decl->resolved) + " " + name + " = " + constant_initialiser(w, decl->resolved, *value) + ";\n";
+        if (w.vulkan())
+          block += "  " + w.type(decl->resolved) + " pfx_held_" + std::to_string(index) + w.array_suffix(decl->resolved) + ";\n";
         continue;
       }
       if (w.vulkan()) block += "  " + w.type(decl->resolved) + " " + name + ";\n";
