@@ -105,7 +105,7 @@ bool run_image(pfx_vk_bridge* bridge, pfx_vk_image* image, uint64_t frame, uint3
     image->result_pixels = result.data();
   }
   // A frame the chain would not change adds nothing to the application's queue.
-  image->flags = PFX_VK_IMAGE_MAY_SKIP;
+  image->flags |= PFX_VK_IMAGE_MAY_SKIP;
   const pfx_vk_status status = pfx_vk_bridge_run(bridge, image);
   if (status != PFX_VK_OK) {
     log_line("frame " + std::to_string(frame) + ": frames pass through from now on: " +
@@ -166,6 +166,7 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
     image.width = s.extent.width;
     image.height = s.extent.height;
     image.layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    if (s.opaque) image.flags = PFX_VK_IMAGE_ALPHA_UNUSED;
     if (!application_waits_taken) {  // waited on once, by the first submission
       image.wait_semaphore_count = info->waitSemaphoreCount;
       image.wait_semaphores = info->pWaitSemaphores;

@@ -34,6 +34,7 @@ struct Swapchain {
   VkExtent2D extent{};
   std::vector<VkImage> images;
   std::vector<VkSemaphore> done;  // per image: the chain's result is in it
+  bool opaque = false;            // composited opaque: its images' alpha means nothing
   bool usable = false;            // false: its presents pass through (the log said why)
 };
 

@@ -65,6 +65,7 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateSwapchainKHR(VkDevice device, const VkSwapc
   record->handle = *swapchain;
   record->format = info->imageFormat;
   record->extent = info->imageExtent;
+  record->opaque = info->compositeAlpha == VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
   if (!why_not.empty()) log_once("swapchain format", "the swapchain's frames pass through: " + why_not);
   else if (!with_transfer) log_once("swapchain usage", "the swapchain's frames pass through: its images cannot be copied");
   record->usable = with_transfer && keep_images(d, record.get());

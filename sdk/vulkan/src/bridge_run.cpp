@@ -127,7 +127,8 @@ pfx_vk_status record_native(pfx_vk_bridge* bridge, VkCommandBuffer commands, con
   NativeChain& chain = *bridge->native;
   if (!chain.prepare(bridge->device, image.width, image.height, image.format, [&ring] { ring.wait_idle(); }, error))
     return PFX_VK_CHAIN_FAILED;
-  return chain.record(commands, image.image, image.layout, false, time_seconds, bridge->frames, error)
+  const bool alpha_unused = (image_flags(image) & PFX_VK_IMAGE_ALPHA_UNUSED) != 0;
+  return chain.record(commands, image.image, image.layout, alpha_unused, time_seconds, bridge->frames, error)
              ? PFX_VK_OK
              : PFX_VK_CHAIN_FAILED;
 }

@@ -152,7 +152,8 @@ typedef struct pfx_vk_image {
    * and tests; each costs a read-back. */
   uint8_t* app_pixels;
   uint8_t* result_pixels;
-  /* Added after result_pixels (read only when struct_size covers it): PFX_VK_IMAGE_MAY_SKIP. */
+  /* Added after result_pixels (read only when struct_size covers it): PFX_VK_IMAGE_MAY_SKIP,
+   * PFX_VK_IMAGE_ALPHA_UNUSED. */
   uint32_t flags;
 } pfx_vk_image;
 
@@ -162,6 +163,9 @@ typedef struct pfx_vk_image {
  * still submits an empty batch that waits and signals. For a layer, whose idle chain then adds
  * nothing to the application's queue. */
 #define PFX_VK_IMAGE_MAY_SKIP 0x1u
+/* The image's alpha means nothing to the caller (a swapchain composited opaque): the native path
+ * may leave any alpha there, and skips the work of keeping it. */
+#define PFX_VK_IMAGE_ALPHA_UNUSED 0x2u
 
 /* Runs the chain over the image (the N-th call is frame N - 1 for effects that animate) and submits
  * the copy of the result back. A frame the chain would not change (no effect on, or every effect a
