@@ -8,8 +8,9 @@ Two runs of vkcube, with pfx's Vulkan layer capturing frame 5 and running no eff
   2. with vkBasalt running the file. vkBasalt is an implicit layer and pfx's layer is enabled here
      as an explicit one, which the loader puts below every implicit layer: nearer the driver, so
      pfx's layer receives vkBasalt's output (its capture's .app.png).
-pfx-render then runs the same technique on the pristine frame. vkBasalt runs only a file's first
-technique, at vkcube's size (320x240).
+pfx-render then runs the same technique on the pristine frame, and pfx's layer runs it natively in a
+third run of vkcube (on the application's device, as vkBasalt does). vkBasalt runs only a file's
+first technique, at vkcube's size (320x240).
 """
 import os
 import re
@@ -126,6 +127,18 @@ class Oracle:
         result["passed_through"] = (result["ran"] and os.path.exists(presented)
                                     and np.abs(read(presented) - read(picture)).max() == 0)
         return result
+
+
+    def native(self, name, fx, technique):
+        """pfx's layer running `technique` of `fx` natively on vkcube's device, without vkBasalt:
+        (OUT/name.png, what it presented) or (None, why not)."""
+        code, output, log = self.frame(name, {"DISABLE_VKBASALT": "1", "PFX_FX_PATH": os.path.abspath(fx),
+                                              "PFX_INJECT_CHAIN": effect_id(technique)})
+        picture = os.path.join(self.out, name + ".png")
+        if code != 0 or not os.path.exists(picture) or "the chain runs natively" not in log:
+            return None, "vkcube with pfx's layer exited with %d (%s)\n%s%s" % (
+                code, "captured" if os.path.exists(picture) else "no capture", output[-2000:], log[-2000:])
+        return picture, ""
 
 
 def pfx_render(render, fx_path, technique, pristine, out_path, timeout=600):

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """vkBasalt as an independent compiler of the same FX source: one conformance file through
-vkBasalt in vkcube, and through pfx-render, must give the same picture within one code value.
+vkBasalt in vkcube, through pfx-render (GL), and through pfx's layer natively in vkcube (Vulkan),
+must give the same picture within one code value.
 
 usage (under an X server: ctest runs it in xvfb-run):
   run_vkbasalt.py --render PFX_RENDER --layer LIBPFXVULKANLAYER --vkcube VKCUBE --icd ICD_JSON
@@ -141,19 +142,31 @@ def compare(args):
     ran, says = oracle.pfx_render(args.render, fx, technique, pristine, ours_path, timeout=300)
     if not ran:
         return fail("pfx-render on %s: %s" % (name, says))
-    ours, theirs_picture = oracle.read(ours_path), oracle.read(theirs["picture"])
-    if ours.shape != theirs_picture.shape:
-        return fail("pfx-render gave %s, vkBasalt %s" % (ours.shape, theirs_picture.shape))
+    native_path, says = vkcube.native("native", fx, technique)
+    if not native_path:
+        return fail("pfx's layer did not run %s natively: %s" % (name, says))
+    theirs_picture = oracle.read(theirs["picture"])
+    for label, path in (("pfx-render", ours_path), ("pfx's layer, natively", native_path)):
+        failed = judge(label, name, technique, oracle.read(path), theirs_picture, args.out)
+        if failed:
+            return failed
+    return 0
 
+
+def judge(label, name, technique, ours, theirs_picture, out):
+    """Ours within one code of vkBasalt's picture on every judged pixel (the checks where vkBasalt is
+    wrong must hold in ours instead); 0, or fail()'s status."""
+    if ours.shape != theirs_picture.shape:
+        return fail("%s gave %s, vkBasalt %s" % (label, ours.shape, theirs_picture.shape))
     judged = np.ones(ours.shape[:2], dtype=bool)
     for check, why in sorted(VKBASALT_WRONG.get(name, {}).items()):
         columns = slice(4 * check, 4 * check + 4)
         cell = ours[:, columns]
         if not ((cell[..., 1] > 200) & (cell[..., 0] < 50)).all():
-            return fail("check %d of %s fails in pfx (HLSL: it holds): %s" % (check, name, why))
+            return fail("check %d of %s fails in %s (HLSL: it holds): %s" % (check, name, label, why))
         theirs_green = ((theirs_picture[:, columns, 1] > 200) & (theirs_picture[:, columns, 0] < 50)).all()
-        print("check %d not compared: vkBasalt 0.3.2.8 is wrong there (%s); it says %s, pfx says it holds"
-              % (check, why, "it holds now" if theirs_green else "it fails"))
+        print("check %d not compared: vkBasalt 0.3.2.8 is wrong there (%s); it says %s, %s says it holds"
+              % (check, why, "it holds now" if theirs_green else "it fails", label))
         judged[:, columns] = False
 
     diff = np.abs(ours - theirs_picture).max(axis=2)
@@ -161,11 +174,11 @@ def compare(args):
     worst = int(diff.max())
     if worst > 1:
         ys, xs = np.nonzero(diff > 1)
-        return fail("%s: %d pixels differ by more than one code, up to %d; first at (%d, %d): pfx %s, vkBasalt %s "
-                    "(pictures in %s)" % (name, len(xs), worst, xs[0], ys[0], ours[ys[0], xs[0]],
-                                          theirs_picture[ys[0], xs[0]], args.out))
-    print("ok: %s (technique %s): pfx-render and vkBasalt agree within %d code on all %d judged pixels at 320x240"
-          % (name, technique, worst, int(judged.sum())))
+        return fail("%s: %d pixels differ by more than one code, up to %d; first at (%d, %d): %s %s, vkBasalt %s "
+                    "(pictures in %s)" % (name, len(xs), worst, xs[0], ys[0], label, ours[ys[0], xs[0]],
+                                          theirs_picture[ys[0], xs[0]], out))
+    print("ok: %s (technique %s): %s and vkBasalt agree within %d code on all %d judged pixels at 320x240"
+          % (name, technique, label, worst, int(judged.sum())))
     return 0
 
 
