@@ -373,6 +373,9 @@ void check_resized_and_minimised(const App& app) {
   INFO(app.name << " alone:\n" << alone.output);
   REQUIRE(alone.exit_code == 0);
   check_clean(run_session(folder, "window", app, true, bloom, resize_hide_show, {width, height}), alone);
+  // The native path: the effect's instances made for the new size beside the old ones.
+  const std::vector<std::string> relief = {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", "PFX_INJECT_CHAIN=fx_relief"};
+  check_clean(run_session(folder, "window-native", app, true, relief, resize_hide_show, {width, height}), alone);
 }
 
 }  // namespace
@@ -385,8 +388,8 @@ TEST_CASE("validated: vkd3d-gears' window resized, minimised and restored", "[va
   check_resized_and_minimised(vkd3d_gears());
 }
 
-TEST_CASE("validated: vkBasalt's CAS and pfx's bloom stacked either way, ended at --quit-after with both layers' "
-          "work in flight",
+TEST_CASE("validated: vkBasalt's CAS and pfx's bloom stacked either way, and an FX effect natively above it, ended "
+          "at --quit-after with both layers' work in flight",
           "[validation][vkcube][vkbasalt]") {
   ScratchFolder folder("vulkan-validation-vkbasalt");
   std::ofstream(folder.file("vkBasalt.conf")) << "effects = cas\n";
@@ -412,5 +415,12 @@ TEST_CASE("validated: vkBasalt's CAS and pfx's bloom stacked either way, ended a
                                      "VK_INSTANCE_LAYERS=VK_LAYER_PFX_post_effects:VK_LAYER_KHRONOS_validation",
                                      "PFX_INJECT_CHAIN=bloom"});
     check_clean(run_counted(folder, "below", app, true, settings), alone);
+  }
+  SECTION("pfx natively above vkBasalt: an FX effect on the application's queue after vkBasalt's work") {
+    std::vector<std::string> settings = basalt;
+    settings.insert(settings.end(), {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", "PFX_INJECT_CHAIN=fx_relief"});
+    const Validated run = run_counted(folder, "above-native", app, true, settings);
+    check_clean(run, alone);
+    CHECK(run.output.find("the chain runs natively") != std::string::npos);
   }
 }
