@@ -430,13 +430,17 @@ TEST_CASE("pfx-inject --bench -- vkcube reports the application alone, an empty 
 }
 
 
-TEST_CASE("mpv playing through its Vulkan output shows bloom, the frame pfx-render gives, and ends normally", "[mpv]") {
-  ScratchFolder folder("vulkan-mpv");
+// mpv playing FFmpeg's test source through its Vulkan output with pfx's layer running `chain`
+// (with `settings`, NAME=VALUE), its 10th present captured: it ends normally, the chain shows, and
+// the frame is pfx-render's of mpv's own frame within one code. Returns pfx's log.
+std::string check_mpv(const std::string& name, const std::string& chain, const std::vector<std::string>& settings) {
+  ScratchFolder folder("vulkan-mpv-" + name);
   const std::string device = pfx::test::lavapipe_device_name();
   REQUIRE(!device.empty());
   std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
-                                   "PFX_INJECT_CHAIN=bloom", "PFX_INJECT_LOG=" + folder.file("mpv.log"),
+                                   "PFX_INJECT_CHAIN=" + chain, "PFX_INJECT_LOG=" + folder.file("mpv.log"),
                                    "PFX_INJECT_CAPTURE=10:" + folder.file("mpv")};
+  argv.insert(argv.end(), settings.begin(), settings.end());
   pfx::test::add_sanitizer_runtime(&argv);
   // A clip made by FFmpeg's test source inside mpv (colour bars, a moving gradient, a clock), every
   // frame shown and none dropped however loaded the machine is, so that the 10th present exists.
@@ -447,18 +451,35 @@ TEST_CASE("mpv playing through its Vulkan output shows bloom, the frame pfx-rend
                                  std::string("av://lavfi:testsrc2=size=320x240:rate=25:duration=1")})
     argv.push_back(arg);
   const pfx::test::RunResult run = pfx::test::run_program(argv, 120);
-  INFO(run.output << pfx::test::read_text_file(folder.file("mpv.log")));
+  const std::string log = pfx::test::read_text_file(folder.file("mpv.log"));
+  INFO(run.output << log);
   REQUIRE(run.exit_code == 0);
   const pfx::app::DisplayImage presented = pfx::test::read_png_file(folder.file("mpv.png"));
   const pfx::app::DisplayImage app = pfx::test::read_png_file(folder.file("mpv.app.png"));
   const auto [changed_by, changed] = difference(presented, app);
   CHECK(changed_by >= 16);
   CHECK(changed >= 320 * 240 / 20);
-  const pfx::test::RunResult render =
-      pfx::test::run_program({PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("mpv.app.png"),
-                              "--chain", "bloom", "--out", folder.file("render.png")});
+  std::vector<std::string> render_argv = {"/usr/bin/env"};
+  render_argv.insert(render_argv.end(), settings.begin(), settings.end());
+  for (const std::string& arg : {std::string(PFX_RENDER), std::string("--plugins"), std::string(PFX_PLUGIN_OUTPUT_DIR),
+                                 std::string("--input"), folder.file("mpv.app.png"), std::string("--chain"), chain,
+                                 std::string("--out"), folder.file("render.png")})
+    render_argv.push_back(arg);
+  const pfx::test::RunResult render = pfx::test::run_program(render_argv);
   REQUIRE(render.exit_code == 0);
   CHECK(difference(presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
+  return log;
+}
+
+TEST_CASE("mpv playing through its Vulkan output shows bloom, the frame pfx-render gives, and ends normally", "[mpv]") {
+  check_mpv("bloom", "bloom", {});
+}
+
+TEST_CASE("mpv playing through its Vulkan output with an FX effect natively shows it, the frame pfx-render gives, and "
+          "ends normally",
+          "[mpv][native]") {
+  const std::string log = check_mpv("native", "fx_relief", {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx"});
+  CHECK(log.find("the chain runs natively") != std::string::npos);
 }
 
 namespace {
