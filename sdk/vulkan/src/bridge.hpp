@@ -24,7 +24,7 @@ struct pfx_vk_bridge {
   // The caller's device and queue, and the desc's flags: what either path is made from.
   pfx_vk_device device{};
   VkQueue queue = VK_NULL_HANDLE;
-  pfx::vk::CommandRing::SetLoaderData set_loader_data = nullptr;
+  pfx::vk::SetLoaderData set_loader_data = nullptr;
   uint32_t flags = 0;
   std::unique_ptr<pfx::host::PluginRegistry> registry;
   // The chain as the settings give it, before the GL path fits it to colour: what a GL path

@@ -23,9 +23,10 @@ uint32_t image_flags(const pfx_vk_image& image) {
   return image.struct_size >= offsetof(pfx_vk_image, flags) + sizeof image.flags ? image.flags : 0u;
 }
 
-// A run that gives up before its copies (a bad argument, a chain or a copy in that failed): the
-// caller's semaphores still pass, so its frame goes on as if the bridge were not there.
-// A batch with no commands and no fence: it uses nothing of the bridge's that must be waited for.
+// A run that gives up before its work (a bad argument, a chain or a copy in that failed), or a frame
+// no effect would change: the caller's semaphores still pass, so its frame goes on as if the
+// bridge were not there. A batch with no commands and no fence: it uses nothing of the bridge's
+// that must be waited for.
 void pass_semaphores(pfx_vk_bridge* bridge, const pfx_vk_image& image) {
   std::string unused;
   bridge->submitted = submit_frame(bridge->functions, bridge->queue, VK_NULL_HANDLE, VK_NULL_HANDLE, image,

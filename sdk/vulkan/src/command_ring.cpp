@@ -13,26 +13,17 @@ CommandRing::~CommandRing() {
 }
 
 bool CommandRing::init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error) {
-  VkCommandPoolCreateInfo pool_info{};
-  pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-  pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  pool_info.queueFamilyIndex = queue_family_index;
-  VkResult result = f_.CreateCommandPool(device_, &pool_info, nullptr, &pool_);
+  VkCommandBuffer buffers[kSize] = {};
+  if (!make_command_buffers(f_, device_, queue_family_index, set_loader_data, kSize, &pool_, buffers, error))
+    return false;
   VkFenceCreateInfo fence_info{};
   fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-  for (Slot& slot : slots_) {
-    if (result != VK_SUCCESS) break;
-    VkCommandBufferAllocateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-    info.commandPool = pool_;
-    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    info.commandBufferCount = 1;
-    result = f_.AllocateCommandBuffers(device_, &info, &slot.commands);
-    // Dispatchable: made below the loader, it gets its dispatch table only from this callback.
-    if (result == VK_SUCCESS && set_loader_data) result = set_loader_data(device_, slot.commands);
-    if (result == VK_SUCCESS) result = f_.CreateFence(device_, &fence_info, nullptr, &slot.done);
+  VkResult result = VK_SUCCESS;
+  for (uint32_t i = 0; i < kSize && result == VK_SUCCESS; ++i) {
+    slots_[i].commands = buffers[i];
+    result = f_.CreateFence(device_, &fence_info, nullptr, &slots_[i].done);
   }
-  if (result != VK_SUCCESS) *error = "could not make the bridge's command buffers: " + result_name(result);
+  if (result != VK_SUCCESS) *error = "could not make the bridge's fences: " + result_name(result);
   return result == VK_SUCCESS;
 }
 

@@ -12,13 +12,13 @@
 #include <pfx/vulkan_bridge.h>
 
 #include "vk_functions.hpp"
+#include "vk_submit.hpp"
 
 namespace pfx::vk {
 
 class CommandRing {
  public:
   static constexpr uint32_t kSize = 4;
-  using SetLoaderData = VkResult(VKAPI_PTR*)(VkDevice, void*);
 
   CommandRing(const Functions& f, VkDevice device, VkQueue queue) : f_(f), device_(device), queue_(queue) {}
   ~CommandRing();  // after every submission completed

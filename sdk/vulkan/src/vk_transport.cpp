@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "vk_memory.hpp"
-#include "vk_submit.hpp"
 
 namespace pfx::vk {
 namespace {
@@ -62,31 +61,15 @@ Transport::~Transport() {
 }
 
 bool Transport::init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error) {
-  VkCommandPoolCreateInfo pool_info{};
-  pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-  pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  pool_info.queueFamilyIndex = queue_family_index;
-  VkResult result = f_.CreateCommandPool(device_, &pool_info, nullptr, &pool_);
-  if (result == VK_SUCCESS) {
-    VkCommandBufferAllocateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-    info.commandPool = pool_;
-    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    info.commandBufferCount = 2;
-    VkCommandBuffer buffers[2] = {};
-    result = f_.AllocateCommandBuffers(device_, &info, buffers);
-    in_ = buffers[0];
-    out_ = buffers[1];
-    // A command buffer is a dispatchable handle: made below the loader, it gets its dispatch
-    // table only from the loader's callback.
-    if (result == VK_SUCCESS && set_loader_data) result = set_loader_data(device_, in_);
-    if (result == VK_SUCCESS && set_loader_data) result = set_loader_data(device_, out_);
-  }
+  VkCommandBuffer buffers[2] = {};
+  if (!make_command_buffers(f_, device_, queue_family_index, set_loader_data, 2, &pool_, buffers, error)) return false;
+  in_ = buffers[0];
+  out_ = buffers[1];
   VkFenceCreateInfo fence_info{};
   fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-  if (result == VK_SUCCESS) result = f_.CreateFence(device_, &fence_info, nullptr, &in_done_);
+  VkResult result = f_.CreateFence(device_, &fence_info, nullptr, &in_done_);
   if (result == VK_SUCCESS) result = f_.CreateFence(device_, &fence_info, nullptr, &out_done_);
-  if (result != VK_SUCCESS) *error = "could not make the bridge's command buffers: " + result_name(result);
+  if (result != VK_SUCCESS) *error = "could not make the bridge's fences: " + result_name(result);
   // Once: which 8-bit formats the device can blit to and from their go-between's.
   for (VkFormat format : kEightBitFormats)
     if (can_blit(format) && can_blit(between_format(blitted(format)))) blit_formats_.push_back(format);

@@ -18,6 +18,7 @@
 #include <pfx/vulkan_bridge.h>
 
 #include "vk_functions.hpp"
+#include "vk_submit.hpp"
 
 namespace pfx::vk {
 
@@ -49,7 +50,6 @@ class Transport {
 
   // The command pool, its two command buffers and fences; false with *error. set_loader_data,
   // when not null, is called on each command buffer (pfx_vk_bridge_desc says why).
-  using SetLoaderData = VkResult(VKAPI_PTR*)(VkDevice, void*);
   bool init(uint32_t queue_family_index, SetLoaderData set_loader_data, std::string* error);
 
   // The go-between for an image of the format (one the bridge takes) on the path: blits only where

@@ -218,10 +218,22 @@ def test_pfx_inject_and_the_vulkan_layer_present_pfx_render_s_picture_of_the_app
     expected, _ = pfx_render(preset, tmp_path / "gl-app.png", tmp_path / "gl-render.png")
     assert np.array_equal(read_rgb(tmp_path / "gl.png"), expected), "pfx-inject"
 
-    output = run(*XVFB, VKCUBE, "--c", "3", "--width", "160", "--height", "120",
-                 env={"ENABLE_PFX_VULKAN": "1", "XDG_DATA_HOME": os.environ["PFX_BUILD_SHARE"],
-                      "PFX_INJECT_PRESET": preset, "PFX_INJECT_CAPTURE": f"3:{tmp_path / 'vk'}",
-                      "PFX_INJECT_QUIT_AFTER": "3"})
-    one_warning(output, preset, named)
-    expected, _ = pfx_render(preset, tmp_path / "vk.app.png", tmp_path / "vk-render.png")
-    assert worst(read_rgb(tmp_path / "vk.png"), expected) <= 1, "the Vulkan layer"
+    # The layer runs an all-FX chain natively on vkcube's device (what a user gets), and through the
+    # GL when asked (PFX_VK_NATIVE=0), which is pfx-render's code. A tie between two 8-bit codes
+    # (Edge.fx at strength 0.5 makes many: 1.5 c - 0.125 n in code units) may round the other way
+    # on Vulkan, by one code, and Grade's gain of 1.3 after it can make that two: the native path
+    # is held to two codes (one per effect) on at most 1 pixel in 100 (a value that did not reach
+    # the effect moves most of the pixels it changes), the GL path to one.
+    for path, extra, bar in (("native", {}, 2), ("gl", {"PFX_VK_NATIVE": "0"}, 1)):
+        output = run(*XVFB, VKCUBE, "--c", "3", "--width", "160", "--height", "120",
+                     env=dict({"ENABLE_PFX_VULKAN": "1", "XDG_DATA_HOME": os.environ["PFX_BUILD_SHARE"],
+                               "PFX_INJECT_PRESET": preset, "PFX_INJECT_CAPTURE": f"3:{tmp_path / path}",
+                               "PFX_INJECT_QUIT_AFTER": "3"}, **extra))
+        one_warning(output, preset, named)
+        assert ("the chain runs natively" in output) == (path == "native"), output
+        expected, _ = pfx_render(preset, tmp_path / f"{path}.app.png", tmp_path / f"{path}-render.png")
+        presented = read_rgb(tmp_path / f"{path}.png")
+        assert worst(presented, expected) <= bar, f"the Vulkan layer, {path}"
+        if path == "native":
+            differing = int((np.abs(presented.astype(int) - expected.astype(int)).max(axis=2) > 0).sum())
+            assert differing * 100 <= presented.shape[0] * presented.shape[1], f"the Vulkan layer natively: {differing}"
