@@ -148,6 +148,42 @@ TEST_CASE("an all-FX chain in vkcube runs natively with no GL in the process, an
   CHECK(changed >= 320 * 240 / 2);
 }
 
+TEST_CASE("pfx-inject --chain fx_relief -- vkcube: no GL driver in vkcube's process, and the frame the variables "
+          "set by hand give",
+          "[vkcube][native]") {
+  ScratchFolder folder("vulkan-native-launcher");
+  const Frame by_hand = vkcube_frame(folder, "by-hand", {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx",
+                                                         "PFX_INJECT_CHAIN=fx_relief"});
+  // The dynamic linker of every process pfx-inject starts writes the libraries it loads to
+  // FOLDER/ld.PID.
+  std::vector<std::string> argv = {"/usr/bin/env", "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx",
+                                   "LD_DEBUG=files", "LD_DEBUG_OUTPUT=" + folder.file("ld")};
+  pfx::test::add_sanitizer_runtime(&argv);
+  for (const std::string& arg : {std::string(PFX_INJECT), std::string("--chain"), std::string("fx_relief"),
+                                std::string("--capture"), "5:" + folder.file("launched"), std::string("--quit-after"),
+                                std::string("8"), std::string("--log"), folder.file("launched.log"), std::string("--"),
+                                std::string(PFX_VKCUBE), std::string("--width"), std::string("320"),
+                                std::string("--height"), std::string("240")})
+    argv.push_back(arg);
+  const pfx::test::RunResult launched = pfx::test::run_program(argv, 120);
+  const std::string log = pfx::test::read_text_file(folder.file("launched.log"));
+  INFO(launched.output << log << by_hand.log);
+  REQUIRE(launched.exit_code == 0);
+  REQUIRE(by_hand.run.exit_code == 0);
+  CHECK(log.find("the chain runs natively") != std::string::npos);
+  // vkcube's process is the one that loaded pfx's layer.
+  int with_layer = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder.path())) {
+    if (entry.path().filename().string().rfind("ld.", 0) != 0) continue;
+    const std::string loaded = pfx::test::read_text_file(entry.path().string());
+    if (loaded.find("libpfxvulkanlayer") == std::string::npos) continue;
+    ++with_layer;
+    CHECK_FALSE(loaded_a_gl_driver(loaded));
+  }
+  CHECK(with_layer == 1);
+  CHECK(difference(pfx::test::read_png_file(folder.file("launched.png")), by_hand.presented).first == 0);
+}
+
 TEST_CASE("through host memory vkcube's frame 5 is the shared-memory frame, bit for bit", "[vkcube]") {
   ScratchFolder folder("vulkan-host-memory");
   const Frame shared = vkcube_frame(folder, "shared", {"PFX_INJECT_CHAIN=bloom"});
