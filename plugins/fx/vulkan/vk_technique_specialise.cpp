@@ -17,20 +17,21 @@ void Technique::destroy(Specialised& set) {
   set = Specialised{};
 }
 
-bool Technique::specialise(const CompiledEffect& effect, const UniformConstants& constants, VkPipelineCache cache, bool* built,
-                           std::string& message) {
+bool Technique::specialise(const CompiledEffect& effect, const UniformConstants& constants, VkPipelineCache cache,
+                           bool* built, std::string& message) {
   *built = false;
   if (specialised_for(constants)) return true;
   if (specialised_.size() >= kSpecialisedSets)
-    return message = std::to_string(kSpecialisedSets) + " sets of values were compiled in already: new values run live", false;
+    return message = std::to_string(kSpecialisedSets) + " sets of values were compiled in already: new values run live",
+           false;
   Specialised set;
   set.constants = constants;
   set.pipelines.assign(passes_.size(), VK_NULL_HANDLE);
   Diagnostics diagnostics(effect.front->names);
   for (std::size_t i = 0; message.empty() && i < passes_.size(); ++i) {
     const Pass& pass = passes_[i];
-    const GeneratedPass generated =
-        generate_pass(effect.front->unit, *model_, technique_->passes[i], diagnostics, &constants, GlslDialect::kVulkan);
+    const GeneratedPass generated = generate_pass(effect.front->unit, *model_, technique_->passes[i], diagnostics,
+                                                  &constants, GlslDialect::kVulkan);
     if (diagnostics.has_errors()) {
       message = "the specialised code did not generate: " + diagnostics.format_all();
       break;

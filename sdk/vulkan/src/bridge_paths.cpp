@@ -67,9 +67,9 @@ pfx_vk_status make_gl_chain(pfx_vk_bridge* bridge, const app::ChainRecipe& fitte
   if (!fresh) return PFX_VK_OK;
   std::string why;
   bridge->path = choose_memory(bridge, &why);
-  bridge->say(0, bridge->path == Path::SHARED ? "frames go through memory shared with the GL (" +
-                                                    bridge->worker->renderer() + ")"
-                                              : "frames go through host memory: " + why);
+  bridge->say(0, bridge->path == Path::SHARED
+                     ? "frames go through memory shared with the GL (" + bridge->worker->renderer() + ")"
+                     : "frames go through host memory: " + why);
   return PFX_VK_OK;
 }
 
@@ -126,7 +126,8 @@ pfx_vk_status take_native_path(pfx_vk_bridge* bridge, const app::ChainRecipe& re
   const bool fresh = !bridge->native;
   if (fresh) bridge->native = std::make_unique<NativeChain>();
   CommandRing* ring = bridge->ring.get();
-  if (!bridge->native->set_recipe(*bridge->registry, recipe, [ring] { ring->wait_idle(); }, error)) {
+  if (!bridge->native->set_recipe(
+          *bridge->registry, recipe, [ring] { ring->wait_idle(); }, error)) {
     if (fresh) bridge->native.reset();
     return PFX_VK_BAD_SETTINGS;
   }

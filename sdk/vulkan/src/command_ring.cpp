@@ -65,8 +65,7 @@ bool CommandRing::submit(const pfx_vk_image& image, std::string* error) {
     *error = "could not record the frame's commands: " + result_name(result);
     return false;
   }
-  if (!submit_frame(f_, queue_, slot.commands, slot.done, image, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, true, true,
-                    error))
+  if (!submit_frame(f_, queue_, slot.commands, slot.done, image, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, true, true, error))
     return false;
   slot.pending = true;
   return true;

@@ -19,8 +19,8 @@ bool FrameReadback::prepare(uint32_t width, uint32_t height, std::string* error)
 
 void FrameReadback::record(VkCommandBuffer commands, VkImage image, VkImageLayout layout, bool after) {
   // Whatever wrote the image before (the application, or the effects) is done first.
-  const VkImageMemoryBarrier to_copy =
-      barrier_for(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  const VkImageMemoryBarrier to_copy = barrier_for(image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                                   VK_ACCESS_MEMORY_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
   f_.CmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
                         nullptr, 1, &to_copy);
   VkBufferImageCopy region{};  // rows tightly packed, row 0 the image's top row

@@ -13,10 +13,10 @@ const pfx_vulkan_effect_factory* factory_for(const host::PluginRegistry& registr
                                              const pfx_host** host) {
   const host::EffectInfo* effect = registry.find_effect(effect_id);
   if (!effect || !effect->plugin || !effect->plugin->get_factory) return nullptr;
-  const auto* factory =
-      static_cast<const pfx_vulkan_effect_factory*>(effect->plugin->get_factory(PFX_VULKAN_EFFECTS_FACTORY_ID));
-  if (!factory || factory->struct_size < PFX_VULKAN_EFFECT_FACTORY_MIN_SIZE || !factory->supports ||
-      !factory->create || !factory->record || !factory->destroy || factory->supports(effect_id.c_str()) != 1)
+  const auto* factory = static_cast<const pfx_vulkan_effect_factory*>(
+      effect->plugin->get_factory(PFX_VULKAN_EFFECTS_FACTORY_ID));
+  if (!factory || factory->struct_size < PFX_VULKAN_EFFECT_FACTORY_MIN_SIZE || !factory->supports || !factory->create ||
+      !factory->record || !factory->destroy || factory->supports(effect_id.c_str()) != 1)
     return nullptr;
   if (host) *host = effect->plugin->host;
   return factory;
@@ -71,7 +71,8 @@ bool NativeChain::set_recipe(const host::PluginRegistry& registry, const app::Ch
 
 std::string NativeChain::text() const {
   std::string text;
-  for (const auto& effect : effects_) text += (text.empty() ? "" : ",") + effect.name + (effect.enabled ? "" : " (off)");
+  for (const auto& effect : effects_)
+    text += (text.empty() ? "" : ",") + effect.name + (effect.enabled ? "" : " (off)");
   return text.empty() ? "none" : text;
 }
 
@@ -129,8 +130,8 @@ bool NativeChain::prepare(const pfx_vk_device& device, uint32_t width, uint32_t 
 
 bool NativeChain::record(VkCommandBuffer commands, VkImage image, VkImageLayout layout, bool alpha_unused,
                          double time_seconds, uint64_t frame_index, std::string* error) {
-  const pfx_frame frame =
-      adapters::describe_video_frame(int(current_->width), int(current_->height), time_seconds, frame_index);
+  const pfx_frame frame = adapters::describe_video_frame(int(current_->width), int(current_->height), time_seconds,
+                                                         frame_index);
   pfx_vk_frame_image target{};
   target.struct_size = sizeof target;
   target.image = image;
