@@ -9,6 +9,7 @@
 #include "fx_effect.hpp"
 #include "fx_instance.hpp"
 #include "fx_vulkan_effect.hpp"
+#include "codegen/spirv_module.hpp"
 
 namespace pfx_fx {
 namespace {
@@ -90,7 +91,8 @@ constexpr auto kPlugin = pfx::plugin::Plugin("org.pfx.fx")
                              .version("0.1.0")
                              .effect_factory(&kFactory)
                              .sources(&kSources)
-                             .factory(PFX_VULKAN_EFFECTS_FACTORY_ID, &kVulkanEffects);
+                             .factory(PFX_VULKAN_EFFECTS_FACTORY_ID, &kVulkanEffects)
+                             .on_deinit(pfx::fx::release_spirv_compiler);
 
 }  // namespace
 }  // namespace pfx_fx

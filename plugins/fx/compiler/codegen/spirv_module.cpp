@@ -8,11 +8,28 @@
 
 namespace pfx::fx {
 
+namespace {
+
+// glslang's tables (its built-in symbols, some 12 MB), made at the first compile. They live in the
+// library glslang is linked into (a plugin exports none of glslang's symbols, so no other user of
+// glslang in the process shares them), and release_spirv_compiler frees them before it unloads.
+std::mutex glslang_mutex;
+bool glslang_ready = false;
+
+}  // namespace
+
+void release_spirv_compiler() {
+  std::lock_guard<std::mutex> lock(glslang_mutex);
+  if (!glslang_ready) return;
+  glslang::FinalizeProcess();
+  glslang_ready = false;
+}
+
 bool compile_spirv(const std::string& vulkan_glsl, SpirvStage stage, std::vector<std::uint32_t>& words, std::string& log) {
-  // glslang's process-wide tables, set up once and kept: finalising them would break any other
-  // user of glslang in the host's process.
-  static std::once_flag initialised;
-  std::call_once(initialised, [] { glslang::InitializeProcess(); });
+  {
+    std::lock_guard<std::mutex> lock(glslang_mutex);
+    if (!glslang_ready) glslang_ready = glslang::InitializeProcess();
+  }
   const EShLanguage language = stage == SpirvStage::kVertex ? EShLangVertex : stage == SpirvStage::kFragment ? EShLangFragment : EShLangCompute;
   glslang::TShader shader(language);
   const char* text = vulkan_glsl.c_str();

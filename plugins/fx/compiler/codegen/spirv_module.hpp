@@ -13,5 +13,8 @@ enum class SpirvStage { kVertex, kFragment, kCompute };
 // The module of one stage. False with glslang's messages in `log` when it does not compile (a
 // compiler bug: the generator's GLSL is meant to be valid).
 bool compile_spirv(const std::string& vulkan_glsl, SpirvStage stage, std::vector<std::uint32_t>& words, std::string& log);
+// Frees glslang's tables (the next compile makes them again). For a library about to be unloaded
+// (the FX plugin's deinit), with no compile running: unloaded with them, they would be lost.
+void release_spirv_compiler();
 
 }  // namespace pfx::fx
