@@ -98,6 +98,22 @@ TEST_CASE("vkcube's frame 5 through bloom is pfx-render's bloom of the pristine 
   CHECK(changed >= 320 * 240 / 100);
 }
 
+// pfx-inject --chain CHAIN -- vkcube at 320x240 for 8 frames, frame 5 captured as FOLDER/launched.png
+// and the log in FOLDER/launched.log; `environment` (NAME=VALUE) set for both.
+pfx::test::RunResult launch_vkcube(const ScratchFolder& folder, const std::string& chain,
+                                   const std::vector<std::string>& environment) {
+  std::vector<std::string> argv = {"/usr/bin/env"};
+  argv.insert(argv.end(), environment.begin(), environment.end());
+  pfx::test::add_sanitizer_runtime(&argv);
+  for (const std::string& arg : {std::string(PFX_INJECT), std::string("--chain"), chain, std::string("--capture"),
+                                 "5:" + folder.file("launched"), std::string("--quit-after"), std::string("8"),
+                                 std::string("--log"), folder.file("launched.log"), std::string("--"),
+                                 std::string(PFX_VKCUBE), std::string("--width"), std::string("320"),
+                                 std::string("--height"), std::string("240")})
+    argv.push_back(arg);
+  return pfx::test::run_program(argv, 120);
+}
+
 // Whether the run's dynamic linker loaded Mesa's OpenGL driver (swrast_dri.so, kms_swrast_dri.so,
 // ...), which making any GL context on this machine does: LD_DEBUG=files names every library a
 // process loads.
@@ -156,16 +172,9 @@ TEST_CASE("pfx-inject --chain fx_relief -- vkcube: no GL driver in vkcube's proc
                                                          "PFX_INJECT_CHAIN=fx_relief"});
   // The dynamic linker of every process pfx-inject starts writes the libraries it loads to
   // FOLDER/ld.PID.
-  std::vector<std::string> argv = {"/usr/bin/env", "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx",
-                                   "LD_DEBUG=files", "LD_DEBUG_OUTPUT=" + folder.file("ld")};
-  pfx::test::add_sanitizer_runtime(&argv);
-  for (const std::string& arg : {std::string(PFX_INJECT), std::string("--chain"), std::string("fx_relief"),
-                                std::string("--capture"), "5:" + folder.file("launched"), std::string("--quit-after"),
-                                std::string("8"), std::string("--log"), folder.file("launched.log"), std::string("--"),
-                                std::string(PFX_VKCUBE), std::string("--width"), std::string("320"),
-                                std::string("--height"), std::string("240")})
-    argv.push_back(arg);
-  const pfx::test::RunResult launched = pfx::test::run_program(argv, 120);
+  const pfx::test::RunResult launched =
+      launch_vkcube(folder, "fx_relief",
+                    {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", "LD_DEBUG=files", "LD_DEBUG_OUTPUT=" + folder.file("ld")});
   const std::string log = pfx::test::read_text_file(folder.file("launched.log"));
   INFO(launched.output << log << by_hand.log);
   REQUIRE(launched.exit_code == 0);
@@ -327,15 +336,7 @@ TEST_CASE("frames before --from-frame pass through untouched and the chain runs 
 TEST_CASE("pfx-inject -- vkcube runs the chain through the layer, as the variables set by hand do", "[vkcube]") {
   ScratchFolder folder("vulkan-launcher");
   const Frame by_hand = vkcube_frame(folder, "by-hand", {"PFX_INJECT_CHAIN=bloom"});
-  std::vector<std::string> argv = {"/usr/bin/env"};
-  pfx::test::add_sanitizer_runtime(&argv);
-  for (const std::string& arg : {std::string(PFX_INJECT), std::string("--chain"), std::string("bloom"),
-                                std::string("--capture"), "5:" + folder.file("launched"), std::string("--quit-after"),
-                                std::string("8"), std::string("--log"), folder.file("launched.log"), std::string("--"),
-                                std::string(PFX_VKCUBE), std::string("--width"), std::string("320"),
-                                std::string("--height"), std::string("240")})
-    argv.push_back(arg);
-  const pfx::test::RunResult launched = pfx::test::run_program(argv, 120);
+  const pfx::test::RunResult launched = launch_vkcube(folder, "bloom", {});
   INFO(launched.output << pfx::test::read_text_file(folder.file("launched.log")) << by_hand.log);
   REQUIRE(launched.exit_code == 0);
   REQUIRE(by_hand.run.exit_code == 0);
