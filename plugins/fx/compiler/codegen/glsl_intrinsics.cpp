@@ -8,6 +8,7 @@
 #include "glsl_writer.hpp"
 
 #include "../sema/constant_value.hpp"
+#include "../text_lists.hpp"
 
 namespace pfx::fx {
 namespace {
@@ -43,12 +44,6 @@ const char* same_in_glsl(Intrinsic id) {
     case I::kFaceforward: return "faceforward"; case I::kModf: return "modf";
     default: return nullptr;
   }
-}
-
-std::string joined(const std::vector<std::string>& parts) {
-  std::string text;
-  for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? ", " : "") + parts[i];
-  return text;
 }
 
 // A sampling result (a GLSL gvec4) as the FX call's type: the sampler's element type.

@@ -1,19 +1,12 @@
 #include "effect_model.hpp"
 
-#include <cctype>
 #include <set>
 
 #include "../sema/constant_eval.hpp"
+#include "../text_lists.hpp"
 
 namespace pfx::fx {
 namespace {
-
-bool same_ignoring_case(const std::string& a, const std::string& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i]))) return false;
-  return true;
-}
 
 // The index of an enum state's value among `names` (case-insensitive), or -1.
 int enum_index(const Expr& value, std::initializer_list<const char*> names) {

@@ -1,28 +1,11 @@
 // State blocks of textures, samplers and storages, and the states of passes: each name must be
 // one its owner has, each value of the kind that state takes.
-#include <cctype>
-
 #include "../limits.hpp"
+#include "../text_lists.hpp"
 #include "analyzer.hpp"
 #include "constant_eval.hpp"
 
 namespace pfx::fx {
-namespace {
-
-std::string joined(const std::vector<std::string>& values) {
-  std::string text;
-  for (const std::string& v : values) text += (text.empty() ? "" : ", ") + v;
-  return text;
-}
-
-bool same_ignoring_case(const std::string& a, const std::string& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i]))) return false;
-  return true;
-}
-
-}  // namespace
 
 void Analyzer::check_object(VariableDecl& object) {
   const Type& type = object.resolved;
