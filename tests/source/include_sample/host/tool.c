@@ -1,0 +1,2 @@
+/* A host tool: may use sdk/. */
+#include "../sdk/api.h"

@@ -1,0 +1,2 @@
+/* Reaches up into host/: caught. */
+#include "../../host/shared.h"
