@@ -11,8 +11,6 @@ namespace {
 
 namespace sh = shaders;
 
-size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1) / alignment * alignment; }
-
 }  // namespace
 
 GpuLists::~GpuLists() {

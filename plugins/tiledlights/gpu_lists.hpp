@@ -20,6 +20,10 @@
 
 namespace pfx_tiledlights {
 
+// An offset into a buffer rounded up to a multiple of GL's storage-buffer offset alignment, so a
+// range of one buffer can be bound on its own.
+inline size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1) / alignment * alignment; }
+
 struct ListShape {
   bool clustered = false;
   int tiles_x = 0, tiles_y = 0, slices = 1;

@@ -80,8 +80,6 @@ void log_error(const Instance* inst, const std::string& message) {
   inst->host->log(inst->host->host_data, PFX_LOG_ERROR, ("tiledlights: " + message).c_str());
 }
 
-size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1) / alignment * alignment; }
-
 void destroy(void* self) {
   Instance* inst = static_cast<Instance*>(self);
   if (!inst) return;

@@ -5,7 +5,7 @@
 namespace pfx::inject {
 namespace {
 
-constexpr std::chrono::milliseconds kInterval{100};
+constexpr std::chrono::milliseconds kLookInterval{100};
 constexpr int kPresentsBetweenLooks = 16;
 
 // The modification time, the size and the inode: a preset replaced the way editors and the panel
@@ -27,14 +27,14 @@ void look(const std::string& path, long long* stamp, long long* size, unsigned l
 
 PresetWatch::PresetWatch(std::string path) : path_(std::move(path)) {
   if (!path_.empty()) look(path_, &stamp_, &size_, &inode_);
-  next_look_ = std::chrono::steady_clock::now() + kInterval;
+  next_look_ = std::chrono::steady_clock::now() + kLookInterval;
 }
 
 bool PresetWatch::changed() {
   if (path_.empty()) return false;
   const auto now = std::chrono::steady_clock::now();
   if (now < next_look_ && ++presents_since_look_ < kPresentsBetweenLooks) return false;
-  next_look_ = now + kInterval;
+  next_look_ = now + kLookInterval;
   presents_since_look_ = 0;
   long long stamp = 0, size = 0;
   unsigned long long inode = 0;

@@ -7,7 +7,7 @@
 namespace pfx::inject {
 namespace {
 
-constexpr std::chrono::milliseconds kInterval{250};
+constexpr std::chrono::milliseconds kWriteInterval{250};
 constexpr int kPresentsBetweenWrites = 16;
 
 }  // namespace
@@ -17,7 +17,7 @@ bool TimingsChannel::offer(uint64_t frame, const std::string& chain, const host:
   if (path_.empty() || report.times.frame == 0) return true;
   const auto now = std::chrono::steady_clock::now();
   if (now < next_write_ && ++presents_since_write_ < kPresentsBetweenWrites) return true;
-  next_write_ = now + kInterval;
+  next_write_ = now + kWriteInterval;
   presents_since_write_ = 0;
   nlohmann::ordered_json root;
   root["frame"] = frame;

@@ -10,7 +10,6 @@
 namespace pfx_dof {
 namespace {
 
-double coverage(double d, double r) { return std::clamp(r - d + 0.5, 0.0, 1.0); }
 double density(double r) { return 1.0 / (M_PI * (r * r + 1.0 / 12.0)); }
 
 Texture prepare(const GatherPlan& plan, const Texture& sharp, const std::vector<double>& coc, double max_coc) {
@@ -100,11 +99,11 @@ Texel gather(const GatherPlan& plan, const Texture& work, const std::vector<Ring
     const Texel& q = work.fetch(px + ox, py + oy);
     if (q[3] < center[3]) {
       const double r_q = std::max(0.5 * std::fabs(q[3]) * scale, 0.5);
-      const double w = area * coverage(d, r_q) * density(r_q);
+      const double w = area * disc_coverage(d, r_q) * density(r_q);
       for (int k = 0; k < 3; ++k) near_sum[k] += w * q[k];
       near_weight += w;
     } else {
-      const double w = area * coverage(d, r_p) * density(r_p);
+      const double w = area * disc_coverage(d, r_p) * density(r_p);
       for (int k = 0; k < 3; ++k) far_sum[k] += w * q[k];
       far_weight += w;
     }

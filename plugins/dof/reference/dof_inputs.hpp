@@ -4,6 +4,8 @@
 // the lens (with autofocus resolved against the depth), and each pixel's signed CoC.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <pfx/effect.h>
@@ -17,6 +19,10 @@ namespace pfx_dof {
 constexpr double kHalfMax = 65504.0;
 
 inline double safe_value(double v) { return std::isnan(v) ? 0.0 : std::clamp(v, -kHalfMax, kHalfMax); }
+
+// How much of a pixel at distance d from a disc's centre a disc of radius r covers: a one-pixel
+// ramp across the rim, as the scatter reference and the gather model both draw a disc.
+inline double disc_coverage(double d, double r) { return std::clamp(r - d + 0.5, 0.0, 1.0); }
 
 // color: width * height RGBA, rows bottom first; nonfinite: Nonfinite (dof_params.hpp).
 Texture safe_color(const pfx_frame& frame, const float* color, int nonfinite);

@@ -11,8 +11,6 @@
 namespace pfx_dof {
 namespace {
 
-double coverage(double d, double r) { return std::clamp(r - d + 0.5, 0.0, 1.0); }
-
 // A disc's weights summed over the integer grid, so each disc spreads exactly its pixel's colour.
 // Radii are quantised to 1/64 px for the table; the coverage itself uses the exact radius, so the
 // sum is off by far less than the quantisation suggests.
@@ -33,7 +31,7 @@ class DiscNorms {
     const int reach = static_cast<int>(std::ceil(r + 0.5));
     double sum = 0;
     for (int y = -reach; y <= reach; ++y)
-      for (int x = -reach; x <= reach; ++x) sum += coverage(std::hypot(double(x), double(y)), r);
+      for (int x = -reach; x <= reach; ++x) sum += disc_coverage(std::hypot(double(x), double(y)), r);
     return sum;
   }
   std::vector<double> sums_;
@@ -92,7 +90,7 @@ void evaluate_scatter_reference(const Settings& settings, const pfx_frame& frame
       for (int v = std::max(0, y - reach); v <= std::min(h - 1, y + reach); ++v)
         for (int u = std::max(0, x - reach); u <= std::min(w - 1, x + reach); ++u) {
           const size_t q = static_cast<size_t>(v) * w + u;
-          const double c = coverage(std::hypot(double(u - x), double(v - y)), radius[q]);
+          const double c = disc_coverage(std::hypot(double(u - x), double(v - y)), radius[q]);
           if (c <= 0) continue;
           list.push_back({order[q], c * weight[q], &sharp.texels[q]});
           total += c * weight[q];
