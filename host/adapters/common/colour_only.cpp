@@ -10,15 +10,49 @@
 namespace pfx::adapters {
 namespace {
 
-// The frame a renderer with every buffer would give: all inputs there, linear depth.
+// The frame a renderer with every buffer would give (all inputs there, linear depth), and the one
+// an application's picture or a video gives: colour alone.
 pfx_frame full_frame() {
   return app::describe_frame(64, 48, app::kEveryInput, PFX_DEPTH_LINEAR, app::make_camera(app::CameraOptions{}, 64, 48));
+}
+
+pfx_frame colour_frame() {
+  return app::describe_frame(64, 48, PFX_INPUT_COLOR, PFX_DEPTH_NONE, app::make_camera(app::CameraOptions{}, 64, 48));
 }
 
 void add_need(std::vector<std::string>* needs, const std::string& name) {
   if (std::find(needs->begin(), needs->end(), name) == needs->end()) needs->push_back(name);
 }
 
+// Declares the instance for `frame`; on success, the inputs other than colour (and the effect's own
+// targets) that the declaration asks for go to `needs`.
+bool declare_for(const host::EffectInfo& effect, void* instance, const std::vector<pfx_value>& values,
+                 const pfx_frame& frame, std::vector<std::string>* needs) {
+  pfx_declaration declaration{};
+  declaration.struct_size = sizeof declaration;
+  if (effect.desc->declare(instance, &frame, values.data(), &declaration) != PFX_OK) return false;
+  std::vector<std::string> targets;
+  for (uint32_t t = 0; t < declaration.target_count; ++t) targets.push_back(declaration.targets[t].name);
+  for (uint32_t p = 0; p < declaration.pass_count; ++p)
+    for (uint32_t i = 0; i < declaration.passes[p].input_count; ++i) {
+      const std::string name = declaration.passes[p].inputs[i].name;
+      if (name != PFX_INPUT_NAME_COLOR && std::find(targets.begin(), targets.end(), name) == targets.end())
+        add_need(needs, name);
+    }
+  const struct {
+    uint32_t bit;
+    const char* name;
+  } bits[] = {{PFX_INPUT_DEPTH, "depth"}, {PFX_INPUT_NORMAL, "normal"}, {PFX_INPUT_ALBEDO, "albedo"},
+              {PFX_INPUT_EMISSIVE, "emissive"}, {PFX_INPUT_LIGHTS, "lights"}};
+  for (const auto& bit : bits)
+    if (declaration.inputs & bit.bit) add_need(needs, bit.name);
+  return true;
+}
+
+// An effect runs on colour alone when, offered colour alone, it declares and asks for nothing
+// more; one that reads depth only where a frame has it (a ReShade FX effect reads the far plane
+// then) is one of them, as it runs the same in every host. The others are named by what they ask
+// of a frame that offers everything.
 EffectInputs classify(const host::EffectInfo& effect) {
   EffectInputs result;
   result.id = effect.desc->id;
@@ -30,27 +64,12 @@ EffectInputs classify(const host::EffectInfo& effect) {
   std::vector<pfx_value> values;
   for (uint32_t i = 0; i < effect.desc->param_count; ++i)
     values.push_back(host::default_for(effect.desc->params[i], host::DefaultSet::DISPLAY_REFERRED));
-  const pfx_frame frame = full_frame();
-  pfx_declaration declaration{};
-  declaration.struct_size = sizeof declaration;
-  if (effect.desc->declare(instance, &frame, values.data(), &declaration) != PFX_OK) {
+  std::vector<std::string> colour_needs;
+  if (declare_for(effect, instance, values, colour_frame(), &colour_needs) && colour_needs.empty()) {
+    result.colour_only = true;
+  } else if (!declare_for(effect, instance, values, full_frame(), &result.needs)) {
     result.error = "declare failed";
   } else {
-    std::vector<std::string> targets;
-    for (uint32_t t = 0; t < declaration.target_count; ++t) targets.push_back(declaration.targets[t].name);
-    for (uint32_t p = 0; p < declaration.pass_count; ++p)
-      for (uint32_t i = 0; i < declaration.passes[p].input_count; ++i) {
-        const std::string name = declaration.passes[p].inputs[i].name;
-        if (name != PFX_INPUT_NAME_COLOR && std::find(targets.begin(), targets.end(), name) == targets.end())
-          add_need(&result.needs, name);
-      }
-    const struct {
-      uint32_t bit;
-      const char* name;
-    } bits[] = {{PFX_INPUT_DEPTH, "depth"}, {PFX_INPUT_NORMAL, "normal"}, {PFX_INPUT_ALBEDO, "albedo"},
-                {PFX_INPUT_EMISSIVE, "emissive"}, {PFX_INPUT_LIGHTS, "lights"}};
-    for (const auto& bit : bits)
-      if (declaration.inputs & bit.bit) add_need(&result.needs, bit.name);
     result.colour_only = result.needs.empty();
   }
   effect.desc->destroy(instance);

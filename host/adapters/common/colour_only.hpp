@@ -1,8 +1,9 @@
 // Which effects need nothing but colour, told from what each declares: an instance is made (so a
 // GL context must be current) and asked, at its display-referred defaults, for the passes of a
-// frame that offers every input (depth, normal, albedo, emissive, lights); an effect whose passes
-// read the colour and its own targets alone, and ask for nothing more, runs on video frames.
-// Those get a frei0r plugin and an OBS filter of their own.
+// frame of colour alone; an effect that declares and asks for nothing more (its own targets aside)
+// runs on video frames and applications' pictures, as it does in pfx-render. Those get a frei0r
+// plugin and an OBS filter of their own. The others are asked again with a frame that offers
+// every input (depth, normal, albedo, emissive, lights), to name what they need.
 #pragma once
 
 #include <string>

@@ -663,6 +663,39 @@ TEST_CASE("an effect of a chosen chain that needs depth is switched off, said on
   CHECK(difference(with_dof.presented, bloom.presented).first == 0);
 }
 
+TEST_CASE("an FX effect that reads depth where a frame has one runs in vkcube on both paths, reading the far plane, "
+          "as pfx-render runs it on the frame vkcube drew",
+          "[vkcube][native]") {
+  ScratchFolder folder("vulkan-haze");
+  const std::vector<std::string> haze = {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Haze.fx", "PFX_INJECT_CHAIN=fx_haze"};
+  std::vector<std::string> through_gl = haze;
+  through_gl.push_back("PFX_VK_NATIVE=0");
+  const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none"});
+  const Frame native = vkcube_frame(folder, "native", haze);
+  const Frame gl = vkcube_frame(folder, "gl", through_gl);
+  INFO(native.log << gl.log);
+  REQUIRE(pristine.run.exit_code == 0);
+  REQUIRE(native.run.exit_code == 0);
+  REQUIRE(gl.run.exit_code == 0);
+  CHECK(native.log.find("the chain runs natively on the Vulkan device") != std::string::npos);
+  CHECK(gl.log.find("fx_haze off") == std::string::npos);
+  REQUIRE(native.presented.width == 320);
+  REQUIRE(gl.presented.width == 320);
+  const pfx::test::RunResult render =
+      pfx::test::run_program({"/usr/bin/env", "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Haze.fx", PFX_RENDER, "--plugins",
+                              PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("none.png"), "--chain", "fx_haze", "--out",
+                              folder.file("render.png")});
+  INFO(render.output);
+  REQUIRE(render.exit_code == 0);
+  const pfx::app::DisplayImage rendered = pfx::test::read_png_file(folder.file("render.png"));
+  CHECK(difference(native.presented, rendered).first <= 1);
+  CHECK(difference(gl.presented, rendered).first <= 1);
+  // The far plane everywhere: every pixel 0.6 of the way to the haze's colour.
+  const auto [changed_by, changed] = difference(native.presented, pristine.presented);
+  CHECK(changed_by >= 32);
+  CHECK(changed >= 320 * 240 * 9 / 10);
+}
+
 TEST_CASE("captures asked for when the chain has failed are each named in the log with the reason, once",
           "[vkcube]") {
   // The test grade's LUT texture is not there: the effect fails at its first frame, and from then
