@@ -119,21 +119,51 @@ pfx::test::RunResult launch_vkcube(const ScratchFolder& folder, const std::strin
 // process loads.
 bool loaded_a_gl_driver(const std::string& output) { return output.find("_dri.so") != std::string::npos; }
 
+// vkcube's frame 5 with no effect, through `settings` natively and through `settings` on the GL
+// path (PFX_VK_NATIVE=0); `pristine_extra` goes to the first run too. Each run ended normally.
+struct BothPaths {
+  Frame pristine, native, gl;
+};
+
+BothPaths on_both_paths(const ScratchFolder& folder, const std::vector<std::string>& settings,
+                        const std::vector<std::string>& pristine_extra = {}) {
+  std::vector<std::string> none = {"PFX_INJECT_CHAIN=none"};
+  none.insert(none.end(), pristine_extra.begin(), pristine_extra.end());
+  std::vector<std::string> through_gl = settings;
+  through_gl.push_back("PFX_VK_NATIVE=0");
+  BothPaths frames{vkcube_frame(folder, "none", none), vkcube_frame(folder, "native", settings),
+                   vkcube_frame(folder, "gl", through_gl)};
+  INFO(frames.native.log << frames.gl.log);
+  REQUIRE(frames.pristine.run.exit_code == 0);
+  REQUIRE(frames.native.run.exit_code == 0);
+  REQUIRE(frames.gl.run.exit_code == 0);
+  REQUIRE(frames.native.presented.width == 320);
+  REQUIRE(frames.gl.presented.width == 320);
+  return frames;
+}
+
+// pfx-render's picture of the pristine frame (none.png in `folder`) through the layer test effect
+// `fx_file` and the options after it.
+pfx::app::DisplayImage rendered_from_pristine(const ScratchFolder& folder, const std::string& fx_file,
+                                               const std::vector<std::string>& options) {
+  std::vector<std::string> argv = {"/usr/bin/env", "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/" + fx_file, PFX_RENDER,
+                                   "--plugins", PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("none.png"),
+                                   "--out", folder.file("render.png")};
+  argv.insert(argv.end(), options.begin(), options.end());
+  const pfx::test::RunResult render = pfx::test::run_program(argv);
+  INFO(render.output);
+  REQUIRE(render.exit_code == 0);
+  return pfx::test::read_png_file(folder.file("render.png"));
+}
+
 TEST_CASE("an all-FX chain in vkcube runs natively with no GL in the process, and its frame 5 is pfx-render's of the "
           "pristine frame 5 and the GL path's, within one code",
           "[vkcube][native]") {
   ScratchFolder folder("vulkan-native");
   const std::vector<std::string> relief = {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", "PFX_INJECT_CHAIN=fx_relief",
                                            "PFX_INJECT_SET=fx_relief.strength=2", "LD_DEBUG=files"};
-  const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none", "LD_DEBUG=files"});
-  const Frame native = vkcube_frame(folder, "native", relief);
-  std::vector<std::string> through_gl = relief;
-  through_gl.push_back("PFX_VK_NATIVE=0");
-  const Frame gl = vkcube_frame(folder, "gl", through_gl);
+  const auto [pristine, native, gl] = on_both_paths(folder, relief, {"LD_DEBUG=files"});
   INFO(native.log << gl.log);
-  REQUIRE(pristine.run.exit_code == 0);
-  REQUIRE(native.run.exit_code == 0);
-  REQUIRE(gl.run.exit_code == 0);
   CHECK(native.log.find("the chain runs natively on the Vulkan device") != std::string::npos);
   CHECK(pristine.log.find("the chain runs natively on the Vulkan device") != std::string::npos);
   CHECK(gl.log.find("the chain runs through OpenGL: the GL path was asked for") != std::string::npos);
@@ -146,17 +176,11 @@ TEST_CASE("an all-FX chain in vkcube runs natively with no GL in the process, an
   CHECK(native.log.find("; the CPU waited for the device 0 times") != std::string::npos);
   CHECK(gl.log.find("; the CPU waited for the device 0 times") == std::string::npos);
   CHECK(gl.log.find("; the CPU waited for the device") != std::string::npos);
-  REQUIRE(native.presented.width == 320);
-  REQUIRE(gl.presented.width == 320);
   CHECK(difference(native.app, pristine.app).first == 0);
   CHECK(difference(pristine.presented, pristine.app).first == 0);
-  const pfx::test::RunResult render = pfx::test::run_program(
-      {"/usr/bin/env", "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Relief.fx", PFX_RENDER, "--plugins", PFX_PLUGIN_OUTPUT_DIR,
-       "--input", folder.file("none.png"), "--chain", "fx_relief", "--set", "fx_relief.strength=2", "--out",
-       folder.file("render.png")});
-  INFO(render.output);
-  REQUIRE(render.exit_code == 0);
-  CHECK(difference(native.presented, pfx::test::read_png_file(folder.file("render.png"))).first <= 1);
+  const pfx::app::DisplayImage rendered =
+      rendered_from_pristine(folder, "Relief.fx", {"--chain", "fx_relief", "--set", "fx_relief.strength=2"});
+  CHECK(difference(native.presented, rendered).first <= 1);
   CHECK(difference(native.presented, gl.presented).first <= 1);
   // The relief shows on vkcube's frame: half of every pixel is the relief's grey.
   const auto [changed_by, changed] = difference(native.presented, pristine.presented);
@@ -668,26 +692,11 @@ TEST_CASE("an FX effect that reads depth where a frame has one runs in vkcube on
           "[vkcube][native]") {
   ScratchFolder folder("vulkan-haze");
   const std::vector<std::string> haze = {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Haze.fx", "PFX_INJECT_CHAIN=fx_haze"};
-  std::vector<std::string> through_gl = haze;
-  through_gl.push_back("PFX_VK_NATIVE=0");
-  const Frame pristine = vkcube_frame(folder, "none", {"PFX_INJECT_CHAIN=none"});
-  const Frame native = vkcube_frame(folder, "native", haze);
-  const Frame gl = vkcube_frame(folder, "gl", through_gl);
+  const auto [pristine, native, gl] = on_both_paths(folder, haze);
   INFO(native.log << gl.log);
-  REQUIRE(pristine.run.exit_code == 0);
-  REQUIRE(native.run.exit_code == 0);
-  REQUIRE(gl.run.exit_code == 0);
   CHECK(native.log.find("the chain runs natively on the Vulkan device") != std::string::npos);
   CHECK(gl.log.find("fx_haze off") == std::string::npos);
-  REQUIRE(native.presented.width == 320);
-  REQUIRE(gl.presented.width == 320);
-  const pfx::test::RunResult render =
-      pfx::test::run_program({"/usr/bin/env", "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Haze.fx", PFX_RENDER, "--plugins",
-                              PFX_PLUGIN_OUTPUT_DIR, "--input", folder.file("none.png"), "--chain", "fx_haze", "--out",
-                              folder.file("render.png")});
-  INFO(render.output);
-  REQUIRE(render.exit_code == 0);
-  const pfx::app::DisplayImage rendered = pfx::test::read_png_file(folder.file("render.png"));
+  const pfx::app::DisplayImage rendered = rendered_from_pristine(folder, "Haze.fx", {"--chain", "fx_haze"});
   CHECK(difference(native.presented, rendered).first <= 1);
   CHECK(difference(gl.presented, rendered).first <= 1);
   // The far plane everywhere: every pixel 0.6 of the way to the haze's colour.
