@@ -108,6 +108,17 @@ pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame
       log(PFX_LOG_INFO, "uniforms stay live: " + message);
     }
   }
+  // The live pipelines this frame runs, built the first time one is needed.
+  std::size_t live_built = 0;
+  const auto start = std::chrono::steady_clock::now();
+  const std::string error = technique_.prepare(specialised ? &held : nullptr, &live_built);
+  if (!error.empty()) return log(PFX_LOG_ERROR, error), PFX_ERROR;
+  if (live_built) {
+    cache_.save();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    log(PFX_LOG_INFO, "live pipelines built for " + std::to_string(live_built) + (live_built == 1 ? " pass" : " passes") +
+                          " in " + std::to_string(static_cast<long>(ms)) + " ms");
+  }
   pfx::fx::vulkan::Frame f;
   f.image = image.image;
   f.layout = image.layout;

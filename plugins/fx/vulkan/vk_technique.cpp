@@ -37,6 +37,7 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
                                     VkFormat frame_format, VkPipelineCache cache, const TexelLoader& load_texels, std::string& message) {
   destroy();
   d_ = &device;
+  cache_ = cache;
   model_ = &effect.model;
   if (technique < 0 || static_cast<std::size_t>(technique) >= model_->techniques.size())
     return message = "the effect has no technique " + std::to_string(technique), Status::kFailed;
@@ -67,7 +68,7 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
   for (std::size_t i = 0; message.empty() && i < generated.size(); ++i) {
     passes_.emplace_back();
     passes_.back().back_buffer = back_buffer;
-    message = create_pass(i, generated[i], cache);
+    message = create_pass(i, generated[i]);
     if (passes_.back().writes_back_buffer) back_buffer = next_back_buffer(back_buffer);
   }
   last_back_buffer_ = back_buffer;
@@ -181,7 +182,7 @@ std::string Technique::create_uniform_buffer() {
   return "";
 }
 
-std::string Technique::create_pass(std::size_t index, const GeneratedPass& generated, VkPipelineCache cache) {
+std::string Technique::create_pass(std::size_t index, const GeneratedPass& generated) {
   Pass& pass = passes_[index];
   const PassInfo& info = technique_->passes[index];
   pass.info = &info;
@@ -196,15 +197,41 @@ std::string Technique::create_pass(std::size_t index, const GeneratedPass& gener
   pass.sampler_units = generated.sampler_units;
   pass.image_units = generated.image_units;
   pass.may_discard = generated.may_discard;
-  const std::string* sources[2] = {pass.compute ? &generated.compute : &generated.vertex, &generated.fragment};
+  pass.live_code[0] = pass.compute ? generated.compute : generated.vertex;
+  if (!pass.compute) pass.live_code[1] = generated.fragment;
+  std::string error = create_bindings(pass, generated);
+  if (error.empty()) error = create_draw(pass);
+  return error.empty() ? "" : pass_label(info, index) + ": " + error;
+}
+
+std::string Technique::build_live(std::size_t index) {
+  Pass& pass = passes_[index];
+  if (pass.pipeline) return "";
   const SpirvStage stages[2] = {pass.compute ? SpirvStage::kCompute : SpirvStage::kVertex, SpirvStage::kFragment};
   for (int i = 0; i < (pass.compute ? 1 : 2); ++i) {
-    const std::string log = create_shader_module(*d_, *sources[i], stages[i], pass.modules[i]);
-    if (!log.empty()) return pass_label(info, index) + ": glslang refused the generated code: " + log;
+    if (pass.modules[i]) continue;
+    const std::string log = create_shader_module(*d_, pass.live_code[i], stages[i], pass.modules[i]);
+    if (!log.empty()) return pass_label(*pass.info, index) + ": glslang refused the generated code: " + log;
   }
-  std::string error = create_bindings(pass, generated);
-  if (error.empty()) error = create_draw(pass, cache);
-  return error.empty() ? "" : pass_label(info, index) + ": " + error;
+  if (pass.compute) {
+    pass.pipeline = create_compute_pipeline(*d_, pass.modules[0], pass.layout, cache_);
+    return pass.pipeline ? "" : pass_label(*pass.info, index) + ": vkCreateComputePipelines failed";
+  }
+  pass.plan.vertex = pass.modules[0], pass.plan.fragment = pass.modules[1];
+  pass.pipeline = create_graphics_pipeline(*d_, pass.plan, cache_);
+  return pass.pipeline ? "" : pass_label(*pass.info, index) + ": vkCreateGraphicsPipelines failed";
+}
+
+std::string Technique::prepare(const UniformConstants* constants, std::size_t* built) {
+  *built = 0;
+  const Specialised* specialised = constants ? specialised_for(*constants) : nullptr;
+  for (std::size_t i = 0; i < passes_.size(); ++i) {
+    if ((specialised && specialised->pipelines[i]) || passes_[i].pipeline) continue;
+    const std::string error = build_live(i);
+    if (!error.empty()) return error;
+    ++*built;
+  }
+  return "";
 }
 
 std::string Technique::create_bindings(Pass& pass, const GeneratedPass& generated) {
@@ -270,14 +297,11 @@ std::string Technique::create_bindings(Pass& pass, const GeneratedPass& generate
   return "";
 }
 
-std::string Technique::create_draw(Pass& pass, VkPipelineCache cache) {
-  if (pass.compute) {
-    pass.pipeline = create_compute_pipeline(*d_, pass.modules[0], pass.layout, cache);
-    return pass.pipeline ? "" : "vkCreateComputePipelines failed";
-  }
+// A graphics pass's render pass, framebuffer and the plan its pipelines are made from.
+std::string Technique::create_draw(Pass& pass) {
+  if (pass.compute) return "";
   GraphicsPlan plan;
   plan.pass = pass.info;
-  plan.vertex = pass.modules[0], plan.fragment = pass.modules[1];
   plan.layout = pass.layout;
   std::vector<VkImageView> views;
   for (std::size_t i = 0; i < pass.targets.size(); ++i) {
@@ -313,9 +337,8 @@ std::string Technique::create_draw(Pass& pass, VkPipelineCache cache) {
   framebuffer.height = static_cast<std::uint32_t>(plan.area_height);
   framebuffer.layers = 1;
   if (d_->vkCreateFramebuffer(d_->device, &framebuffer, nullptr, &pass.framebuffer) != VK_SUCCESS) return "vkCreateFramebuffer failed";
-  pass.pipeline = create_graphics_pipeline(*d_, plan, cache);
   pass.plan = plan;
-  return pass.pipeline ? "" : "vkCreateGraphicsPipelines failed";
+  return "";
 }
 
 void Technique::destroy() {

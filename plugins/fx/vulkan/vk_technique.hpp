@@ -4,7 +4,8 @@
 // their formats and mip levels (kept from frame to frame, as FX effects expect), a sampler per FX
 // sampler, the uniforms in one block updated inside the command buffer, two back buffers that
 // the passes draw between as ReShade's runtime does (beside a copy of the frame, which the first
-// passes sample until one writes the back buffer), and a pipeline per pass. record() writes a
+// passes sample until one writes the back buffer), and a pipeline per pass (built when a frame first
+// runs it: prepare()). record() writes a
 // frame's work into the caller's command buffer: the frame's image is copied in, each pass drawn
 // or dispatched with the barriers it needs, the picture copied back, the image left in the layout
 // asked for. Nothing is submitted and nothing waits: the owner submits on its queue, frames in
@@ -74,9 +75,15 @@ class Technique {
   bool specialise(const CompiledEffect& effect, const UniformConstants& constants, VkPipelineCache cache, bool* built,
                   std::string& message);
   bool has_specialised(const UniformConstants& constants) const { return specialised_for(constants) != nullptr; }
-  // The frame's work. `uniforms`: per model uniform, its components as the runtimes hold them.
-  // `constants`: the pipelines specialised for them (specialise()) where a set was built, else
-  // (and when null) the live ones. Both compute the same picture.
+  // Builds the live pipelines that a frame with `constants` (null: every uniform live) runs: those
+  // of passes without a specialised pipeline for them. Live pipelines are built when a frame
+  // first needs one, not at create(), so an effect whose values settle at once (a renderer, a
+  // video host) compiles each pass once. *built: how many were built now. "" or why not.
+  std::string prepare(const UniformConstants* constants, std::size_t* built);
+  // The frame's work, after prepare() with the same `constants`. `uniforms`: per model uniform,
+  // its components as the runtimes hold them. `constants`: the pipelines specialised for them
+  // (specialise()) where a set was built, else (and when null) the live ones. Both compute the
+  // same picture.
   void record(VkCommandBuffer commands, const Frame& frame, const std::vector<std::vector<double>>& uniforms,
               const UniformConstants* constants = nullptr);
   void destroy();
@@ -90,6 +97,7 @@ class Technique {
     int back_buffer = 0;  // which back buffer holds the picture when the pass starts (0: the frame's copy)
     std::vector<int> targets, sampled, stored;  // image indices
     std::vector<VkImageView> owned_views;       // storages' level views
+    std::string live_code[2];  // the live code's GLSL (compute, or vertex and fragment), compiled when first run
     VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
@@ -115,9 +123,10 @@ class Technique {
 
   Status check_supported(std::string& message) const;
   std::string create_images(VkFormat frame_format, const TexelLoader& load_texels);
-  std::string create_pass(std::size_t index, const GeneratedPass& generated, VkPipelineCache cache);
+  std::string create_pass(std::size_t index, const GeneratedPass& generated);
   std::string create_bindings(Pass& pass, const GeneratedPass& generated);
-  std::string create_draw(Pass& pass, VkPipelineCache cache);
+  std::string create_draw(Pass& pass);
+  std::string build_live(std::size_t index);
   std::string create_pool();            // a descriptor set per pass
   std::string create_uniform_buffer();  // the block, updated in each frame's commands
   int image_of_texture(int texture, int back_buffer) const;
@@ -126,6 +135,7 @@ class Technique {
   void record_pass(VkCommandBuffer commands, Pass& pass, VkPipeline pipeline);
 
   const Device* d_ = nullptr;
+  VkPipelineCache cache_ = VK_NULL_HANDLE;  // the owner's, for the live pipelines built later
   const EffectModel* model_ = nullptr;
   const TechniqueInfo* technique_ = nullptr;
   int width_ = 0, height_ = 0;

@@ -402,8 +402,12 @@ int make_technique(const pfx::fx::vulkan::Device& device, const std::string& fil
   const auto loader = [&file](const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& error) {
     return load_texels(file, texture, texels, error);
   };
-  const auto status =
+  auto status =
       runtime.create(device, effect, technique, judged.width, judged.height, VK_FORMAT_R8G8B8A8_UNORM, cache.handle(), loader, message);
+  // Every frame here runs the live pipelines: built now, while the cache is open.
+  std::size_t built = 0;
+  if (status == pfx::fx::vulkan::Technique::Status::kOk) message = runtime.prepare(nullptr, &built);
+  if (!message.empty()) status = pfx::fx::vulkan::Technique::Status::kFailed;
   cache.save();
   if (judged.report_cache)
     std::printf("pipeline cache: %s (%s)\n", cache.loaded() ? "from the file" : "started empty", cache.path().empty() ? "off" : cache.path().c_str());

@@ -12,7 +12,8 @@ lavapipe device for the file's frames, and judged as in GL: every check green, t
 or their inverse. effects/gain.fx then shows a parameter reaching the effect: at its default the
 picture is the input, at --set gain=0.25 the input's colour times 0.25. All of it twice: with the
 uniforms' values compiled in as constants from the first frame (the runtime's default: every
-value settled; uniforms.fx must say it compiled some in), and with every uniform live
+value settled; uniforms.fx must say it compiled some in, and build no live pipeline, which no
+frame runs), and with every uniform live
 (PFX_FX_SPECIALISE=0): the same checks hold both ways. The files of RUN must run and pass with no message from the validation layer;
 every other file must be one the runtime says it does not run yet (exit status 3), so a file that
 starts to run is added to RUN rather than passing unseen. A file judged on another input (an EXR
@@ -113,6 +114,8 @@ def run_mode(checks, plugin, log, env, mode, failures):
                 failures.append("%s (%s): the validation layer said:\n%s" % (name, mode, messages[:4000]))
             elif name == "uniforms.fx" and ("values compiled in" in said) != (mode == "specialised"):
                 failures.append("%s (%s): compiled values in where it should not, or not where it should: %s" % (name, mode, said))
+            elif name == "uniforms.fx" and ("live pipelines built" in said) != (mode == "live"):
+                failures.append("%s (%s): built live pipelines where none runs, or none where they run: %s" % (name, mode, said))
             else:
                 print("%s (%s): %s" % (name, mode, said))
         elif result.returncode != 3:
