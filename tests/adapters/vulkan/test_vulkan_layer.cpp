@@ -119,6 +119,8 @@ pfx::test::RunResult launch_vkcube(const ScratchFolder& folder, const std::strin
 // process loads.
 bool loaded_a_gl_driver(const std::string& output) { return output.find("_dri.so") != std::string::npos; }
 
+namespace {
+
 // vkcube's frame 5 with no effect, through `settings` natively and through `settings` on the GL
 // path (PFX_VK_NATIVE=0); `pristine_extra` goes to the first run too. Each run ended normally.
 struct BothPaths {
@@ -155,6 +157,8 @@ pfx::app::DisplayImage rendered_from_pristine(const ScratchFolder& folder, const
   REQUIRE(render.exit_code == 0);
   return pfx::test::read_png_file(folder.file("render.png"));
 }
+
+}  // namespace
 
 TEST_CASE("an all-FX chain in vkcube runs natively with no GL in the process, and its frame 5 is pfx-render's of the "
           "pristine frame 5 and the GL path's, within one code",
