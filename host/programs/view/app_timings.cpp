@@ -32,8 +32,9 @@ bool parse_app_times(const std::string& json, AppTimes* out, std::string* error)
 }
 
 bool AppTimingsReader::poll(double now_seconds) {
-  if (path_.empty() || (last_look_ >= 0 && now_seconds - last_look_ < 0.25)) return false;
+  if (path_.empty() || (last_look_ >= 0 && now_seconds - last_look_ < 0.25 && ++polls_since_look_ < 16)) return false;
   last_look_ = now_seconds;
+  polls_since_look_ = 0;
   struct stat info {};
   if (::stat(path_.c_str(), &info) != 0) return false;
   const long long stamp = static_cast<long long>(info.st_mtim.tv_sec) * 1000000000LL + info.st_mtim.tv_nsec;

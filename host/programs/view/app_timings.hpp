@@ -25,7 +25,9 @@ bool parse_app_times(const std::string& json, AppTimes* out, std::string* error)
 class AppTimingsReader {
  public:
   explicit AppTimingsReader(std::string path) : path_(std::move(path)) {}
-  // Reads the file again when it changed, at most every quarter second; true when new times came.
+  // Once a frame. Reads the file again when it changed, at most every quarter second or every 16th
+  // call, whichever comes first (a clock stopped by libfaketime would otherwise keep it from ever
+  // looking again); true when new times came.
   bool poll(double now_seconds);
   const AppTimes& latest() const { return latest_; }
   const std::string& path() const { return path_; }
@@ -33,6 +35,7 @@ class AppTimingsReader {
  private:
   std::string path_;
   double last_look_ = -1;
+  int polls_since_look_ = 0;
   long long stamp_ = -1;
   AppTimes latest_;
 };
