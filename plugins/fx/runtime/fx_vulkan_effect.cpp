@@ -37,6 +37,13 @@ class FxVulkanInstance {
   void log(pfx_log_level level, const std::string& message) const {
     host_->log(host_->host_data, level, ("fx: " + entry_.id + " (Vulkan): " + message).c_str());
   }
+  // After pipelines were built: the cache file keeps them, and the log says what took how long
+  // ("<what> in N ms").
+  void report_build(const std::string& what, std::chrono::steady_clock::time_point start) {
+    cache_.save();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    log(PFX_LOG_INFO, what + " in " + std::to_string(static_cast<long>(ms)) + " ms");
+  }
 
   const FxEffectEntry& entry_;
   const pfx_host* host_;
@@ -97,12 +104,8 @@ pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame
     std::string message;
     const auto start = std::chrono::steady_clock::now();
     specialised = technique_.specialise(*compiled_, held, cache_.handle(), &built, message);
-    if (built) {
-      cache_.save();
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      log(PFX_LOG_INFO, "values compiled in: " + std::to_string(held_count) + " uniforms as constants, pipelines built in " +
-                            std::to_string(static_cast<long>(ms)) + " ms");
-    }
+    if (built)
+      report_build("values compiled in: " + std::to_string(held_count) + " uniforms as constants, pipelines built", start);
     if (!specialised && !told_live_) {
       told_live_ = true;
       log(PFX_LOG_INFO, "uniforms stay live: " + message);
@@ -113,12 +116,8 @@ pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame
   const auto start = std::chrono::steady_clock::now();
   const std::string error = technique_.prepare(specialised ? &held : nullptr, &live_built);
   if (!error.empty()) return log(PFX_LOG_ERROR, error), PFX_ERROR;
-  if (live_built) {
-    cache_.save();
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    log(PFX_LOG_INFO, "live pipelines built for " + std::to_string(live_built) + (live_built == 1 ? " pass" : " passes") +
-                          " in " + std::to_string(static_cast<long>(ms)) + " ms");
-  }
+  if (live_built)
+    report_build("live pipelines built for " + std::to_string(live_built) + (live_built == 1 ? " pass" : " passes"), start);
   pfx::fx::vulkan::Frame f;
   f.image = image.image;
   f.layout = image.layout;
