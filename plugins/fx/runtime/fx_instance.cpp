@@ -88,63 +88,6 @@ GLuint transfer_program(const char* main, std::string* error) {
   return pfx::gl::build_fullscreen_program(source.c_str(), error);
 }
 
-void upload(GLuint program, GLint location, const pfx::fx::Type& type, const std::vector<double>& v) {
-  if (location < 0 || v.empty()) return;
-  GLsizei count = 1;
-  for (int size : type.array) count *= size;
-  int n = type.components();
-  if (type.shape == pfx::fx::Shape::kMatrix && !type.is_floating()) {
-    count *= type.rows;  // an integer or bool matrix is an array of its rows in GLSL
-    n = type.columns;
-  }
-  if (type.is_floating() || type.base == pfx::fx::BaseType::kFloat) {
-    std::vector<float> f(v.begin(), v.end());
-    if (type.shape == pfx::fx::Shape::kMatrix) {
-      // GLSL matRxC (see the code generator): R columns, the data row by row of the HLSL matrix.
-      int key = type.rows * 10 + type.columns;
-      switch (key) {
-        case 22: glProgramUniformMatrix2fv(program, location, count, GL_FALSE, f.data()); break;
-        case 33: glProgramUniformMatrix3fv(program, location, count, GL_FALSE, f.data()); break;
-        case 44: glProgramUniformMatrix4fv(program, location, count, GL_FALSE, f.data()); break;
-        case 23: glProgramUniformMatrix2x3fv(program, location, count, GL_FALSE, f.data()); break;
-        case 24: glProgramUniformMatrix2x4fv(program, location, count, GL_FALSE, f.data()); break;
-        case 32: glProgramUniformMatrix3x2fv(program, location, count, GL_FALSE, f.data()); break;
-        case 34: glProgramUniformMatrix3x4fv(program, location, count, GL_FALSE, f.data()); break;
-        case 42: glProgramUniformMatrix4x2fv(program, location, count, GL_FALSE, f.data()); break;
-        case 43: glProgramUniformMatrix4x3fv(program, location, count, GL_FALSE, f.data()); break;
-        default: break;
-      }
-      return;
-    }
-    switch (n) {
-      case 1: glProgramUniform1fv(program, location, count, f.data()); break;
-      case 2: glProgramUniform2fv(program, location, count, f.data()); break;
-      case 3: glProgramUniform3fv(program, location, count, f.data()); break;
-      default: glProgramUniform4fv(program, location, count, f.data()); break;
-    }
-    return;
-  }
-  if (type.base == pfx::fx::BaseType::kUint) {
-    std::vector<GLuint> u;
-    for (double x : v) u.push_back(static_cast<GLuint>(static_cast<long long>(x)));
-    switch (n) {
-      case 1: glProgramUniform1uiv(program, location, count, u.data()); break;
-      case 2: glProgramUniform2uiv(program, location, count, u.data()); break;
-      case 3: glProgramUniform3uiv(program, location, count, u.data()); break;
-      default: glProgramUniform4uiv(program, location, count, u.data()); break;
-    }
-    return;
-  }
-  std::vector<GLint> i;  // int and bool
-  for (double x : v) i.push_back(static_cast<GLint>(x));
-  switch (n) {
-    case 1: glProgramUniform1iv(program, location, count, i.data()); break;
-    case 2: glProgramUniform2iv(program, location, count, i.data()); break;
-    case 3: glProgramUniform3iv(program, location, count, i.data()); break;
-    default: glProgramUniform4iv(program, location, count, i.data()); break;
-  }
-}
-
 // Framebuffer bindings and viewport as the host set them, put back when a pass returns.
 struct SavedTargets {
   GLint draw = 0, read = 0, viewport[4] = {0, 0, 0, 0};
@@ -400,7 +343,18 @@ void FxInstance::release_gl() {
   delete_texture(back_buffer_[1]);
   delete_texture(fx_depth_);
   stencil_.release();
+  if (uniform_buffer_) glDeleteBuffers(1, &uniform_buffer_);
+  uniform_buffer_ = 0;
+  uploaded_block_.clear();
   gl_current_ = false;
+}
+
+void FxInstance::upload_uniforms() {
+  if (!uniform_buffer_) return;
+  pfx::fx::pack_uniform_block(compiled_->model, block_layout_, uniforms_.all(), block_bytes_);
+  if (block_bytes_ == uploaded_block_) return;  // the buffer holds these values already
+  glNamedBufferSubData(uniform_buffer_, 0, static_cast<GLsizeiptr>(block_bytes_.size()), block_bytes_.data());
+  uploaded_block_ = block_bytes_;
 }
 
 bool FxInstance::build_gl() {
@@ -422,6 +376,11 @@ bool FxInstance::build_gl() {
     glClearTexImage(fx_depth_.texture, 0, GL_RED, GL_FLOAT, &far);
   }
   if (!stencil_.create(technique(), compiled_width_, compiled_height_, error)) return log(PFX_LOG_ERROR, error), false;
+  block_layout_ = pfx::fx::layout_uniform_block(model);
+  if (block_layout_.size) {
+    glCreateBuffers(1, &uniform_buffer_);
+    glNamedBufferStorage(uniform_buffer_, static_cast<GLsizeiptr>(block_layout_.size), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
   textures_.resize(model.textures.size());
   for (std::size_t i = 0; i < model.textures.size(); ++i) {
     const pfx::fx::TextureInfo& info = model.textures[i];
@@ -480,6 +439,7 @@ void FxInstance::run_encode(const pfx_pass_context& context) {
   const pfx_value* values = frame_params_.resolve(entry_.params, context.params, notes);
   for (const std::string& note : notes) log(PFX_LOG_WARNING, note);
   uniforms_.update(compiled_->model, entry_.params, values, *context.frame, depth);
+  upload_uniforms();
   SavedTargets saved;
   if (depth) convert_depth(context);
   current_ = 0;
@@ -553,13 +513,7 @@ void FxInstance::bind_resources(const GeneratedPass& g, const PassProgram& p, in
     const GlTexture& t = textures_[static_cast<std::size_t>(s.texture)];
     glBindImageTexture(static_cast<GLuint>(unit), t.texture, s.mip_level, t.target == GL_TEXTURE_3D ? GL_TRUE : GL_FALSE, 0, GL_READ_WRITE, t.internal);
   }
-  p.uploaded.resize(g.uniforms.size());
-  for (std::size_t k = 0; k < g.uniforms.size(); ++k) {
-    const std::vector<double>& value = uniforms_.of(g.uniforms[k]);
-    if (value == p.uploaded[k]) continue;  // the program holds it already
-    upload(p.program, p.uniform_locations[k], model.uniforms[static_cast<std::size_t>(g.uniforms[k])].type, value);
-    p.uploaded[k] = value;
-  }
+  if (uniform_buffer_) glBindBufferBase(GL_UNIFORM_BUFFER, pfx::fx::kUniformBlockBinding, uniform_buffer_);
   if (p.target_height_location >= 0) glProgramUniform1f(p.program, p.target_height_location, static_cast<float>(target_height));
 }
 

@@ -22,6 +22,7 @@
 #include <glad/gl.h>
 #include <pfx/effect.h>
 
+#include "codegen/uniform_block.hpp"
 #include "effect_compiler.hpp"
 #include "fx_catalog.hpp"
 #include "fx_definitions.hpp"
@@ -75,6 +76,8 @@ class FxInstance {
   void draw_output(const pfx::fx::PassInfo& pass, const pfx::fx::GeneratedPass& g, const PassProgram& p,
                    const pfx_pass_context& context);
   void bind_resources(const pfx::fx::GeneratedPass& generated, const PassProgram& program, int target_height);
+  // This frame's uniform values into the uniform buffer, when they differ from what it holds.
+  void upload_uniforms();
   GLuint texture_for_sampler(const pfx::fx::SamplerInfo& sampler) const;
   const pfx::fx::TechniqueInfo& technique() const;
 
@@ -101,6 +104,11 @@ class FxInstance {
   std::vector<GLuint> samplers_;
   GlTexture back_buffer_[2];
   FxStencil stencil_;  // when a pass enables the stencil test
+  // The effect's uniform block (every pass of every program reads it): one buffer, written when a
+  // value changes, so a value is converted once per change, not once per pass or program.
+  pfx::fx::UniformBlockLayout block_layout_;
+  GLuint uniform_buffer_ = 0;  // 0: the effect has no uniforms
+  std::vector<unsigned char> block_bytes_, uploaded_block_;
   int current_ = 0;  // which back buffer holds the picture
   // The host's colour, while the picture is still there (samples_frame_): passes sample it as the
   // back buffer until one writes the back buffer; 0 from then on.

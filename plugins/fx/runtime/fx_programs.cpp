@@ -174,7 +174,6 @@ bool FxPrograms::finish_build(const pfx::fx::CompiledEffect& compiled, int techn
       cache.store(p.cache_key, p.program);
       p.cache_key.clear();
     }
-    for (int u : g.uniforms) p.uniform_locations.push_back(glGetUniformLocation(p.program, g.uniform_names.at(u).c_str()));
     p.target_height_location = glGetUniformLocation(p.program, GeneratedPass::kTargetHeightUniform);
     p.covers_target = pfx::fx::covers_back_buffer(pass, g.may_discard);
   }

@@ -28,10 +28,6 @@ namespace pfx_fx {
 
 struct PassProgram {
   GLuint program = 0;
-  std::vector<GLint> uniform_locations;  // per GeneratedPass::uniforms entry
-  // The values those uniforms hold now: GL keeps a program's uniforms, so a value is converted
-  // and uploaded only when it changed (updated as the running set is used, hence mutable).
-  mutable std::vector<std::vector<double>> uploaded;
   GLint target_height_location = -1;
   bool covers_target = true;  // draws every pixel of the back buffer (no copy needed first)
   // While the driver compiles it: the program cache's key to store it under once it has linked;

@@ -236,7 +236,7 @@ std::string Technique::prepare(const UniformConstants* constants, std::size_t* b
 
 std::string Technique::create_bindings(Pass& pass, const GeneratedPass& generated) {
   std::vector<VkDescriptorSetLayoutBinding> entries;
-  if (block_.size) entries.push_back({static_cast<std::uint32_t>(kVulkanUniformBinding), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr});
+  if (block_.size) entries.push_back({static_cast<std::uint32_t>(kUniformBlockBinding), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_ALL, nullptr});
   for (std::size_t unit = 0; unit < generated.sampler_units.size(); ++unit)
     entries.push_back({static_cast<std::uint32_t>(kVulkanFirstSamplerBinding + static_cast<int>(unit)), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                        VK_SHADER_STAGE_ALL, nullptr});
@@ -276,7 +276,7 @@ std::string Technique::create_bindings(Pass& pass, const GeneratedPass& generate
     w.pBufferInfo = image ? nullptr : &buffer;
     writes.push_back(w);
   };
-  if (block_.size) write(kVulkanUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, nullptr);
+  if (block_.size) write(kUniformBlockBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, nullptr);
   for (std::size_t unit = 0; unit < generated.sampler_units.size(); ++unit) {
     const int sampler = generated.sampler_units[unit];
     const bool stored = contains(pass.stored, pass.sampled[unit]);

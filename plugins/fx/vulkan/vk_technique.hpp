@@ -30,7 +30,7 @@
 #include "vk_images.hpp"
 #include "vk_pipelines.hpp"
 #include "vk_texture_uploads.hpp"
-#include "vk_uniform_block.hpp"
+#include "codegen/uniform_block.hpp"
 
 namespace pfx::fx::vulkan {
 

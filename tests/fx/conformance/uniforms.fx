@@ -1,6 +1,6 @@
 // Uniform values reach the shader with their types and layouts: scalars, vectors, a colour, a
 // combo's index, a bool, and uniforms that are not parameters (an array, a matrix, no initial
-// value).
+// value, an array of matrices and what follows it, an integer matrix).
 // size: 48x2
 #include "include/check.fxh"
 
@@ -14,6 +14,9 @@ uniform uint Big = 4000000000u;
 uniform float Weights[3] = { 1.0, 2.0, 4.0 };
 uniform float2x2 Rows = float2x2(1, 2, 3, 4);
 uniform float Unset;
+uniform float3x3 Frames[2] = { float3x3(1, 2, 3, 4, 5, 6, 7, 8, 9), float3x3(10, 11, 12, 13, 14, 15, 16, 17, 18) };
+uniform float Last = 0.5;
+uniform int2x2 IRows = int2x2(5, 6, 7, 8);
 
 bool Check(int i)
 {
@@ -27,6 +30,9 @@ bool Check(int i)
     case 5: return Weights[0] == 1.0 && Weights[2] == 4.0;
     case 6: return Rows[1][0] == 3.0 && Rows[0][1] == 2.0;
     case 7: return Unset == 0.0;
+    case 8: return Frames[0][0][2] == 3.0 && Frames[1][2][0] == 16.0 && Frames[1][1][1] == 14.0;
+    case 9: return Last == 0.5;
+    case 10: return IRows[1][0] == 7 && IRows[0][1] == 6;
     default: return true;
   }
 }

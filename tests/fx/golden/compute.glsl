@@ -3,6 +3,10 @@
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 1) in;
 layout(binding = 0, r32f) uniform coherent image2D G_SharedOut;
 shared float G_Slots[16];
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 vec2 pfx_flip(vec2 c) { return vec2(c.x, 1.0 - c.y); }
 vec3 pfx_flip(vec3 c) { return vec3(c.x, 1.0 - c.y, c.z); }
 ivec2 pfx_flip_texel(ivec2 c, int h) { return ivec2(c.x, h - 1 - c.y); }
@@ -36,6 +40,10 @@ layout(local_size_x = 8, local_size_y = 2, local_size_z = 1) in;
 layout(binding = 0) uniform sampler2D G_ReShade_ns_BackBuffer;
 layout(binding = 0, rgba32f) uniform coherent image2D G_CopyOut;
 layout(binding = 1, r32ui) uniform coherent uimage2D G_CountOut;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 vec2 pfx_flip(vec2 c) { return vec2(c.x, 1.0 - c.y); }
 vec3 pfx_flip(vec3 c) { return vec3(c.x, 1.0 - c.y, c.z); }
 ivec2 pfx_flip_texel(ivec2 c, int h) { return ivec2(c.x, h - 1 - c.y); }
@@ -59,6 +67,10 @@ void main() {
 }
 // technique compute pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -81,10 +93,13 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform int G_IZero;
 layout(binding = 0) uniform sampler2D G_SharedIn;
 layout(binding = 1) uniform sampler2D G_CopyIn;
 layout(binding = 2) uniform usampler2D G_CountIn;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

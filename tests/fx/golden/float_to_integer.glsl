@@ -1,5 +1,12 @@
 // technique float_to_integer pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  uint G_FromNegative;
+  int G_FromHuge;
+  uint G_FromHugeUnsigned;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -22,11 +29,13 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform float G_Zero;
-uniform int G_IZero;
-uniform uint G_FromNegative;
-uniform int G_FromHuge;
-uniform uint G_FromHugeUnsigned;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  uint G_FromNegative;
+  int G_FromHuge;
+  uint G_FromHugeUnsigned;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

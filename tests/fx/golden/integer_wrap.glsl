@@ -1,5 +1,19 @@
 // technique integer_wrap pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  uint G_MinusOne;
+  int G_PastMax;
+  uint G_AllOnes;
+  uint G_Product;
+  int G_Shifted;
+  uint G_ShiftedOut;
+  int G_NegatedMin;
+  uint G_FromInt;
+  int G_FromUint;
+  ivec2 G_Pair;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -22,16 +36,20 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform uint G_MinusOne;
-uniform int G_PastMax;
-uniform uint G_AllOnes;
-uniform uint G_Product;
-uniform int G_Shifted;
-uniform uint G_ShiftedOut;
-uniform int G_NegatedMin;
-uniform uint G_FromInt;
-uniform int G_FromUint;
-uniform ivec2 G_Pair;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  uint G_MinusOne;
+  int G_PastMax;
+  uint G_AllOnes;
+  uint G_Product;
+  int G_Shifted;
+  uint G_ShiftedOut;
+  int G_NegatedMin;
+  uint G_FromInt;
+  int G_FromUint;
+  ivec2 G_Pair;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

@@ -1,5 +1,9 @@
 // technique offsets_and_labels pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
 #line 64 3
@@ -19,6 +23,10 @@ void main() {
   gl_Position = p1;
 }
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
 int pfx_ftoi(float x) { return x >= 2147483648.0 ? 2147483647 : x > -2147483648.0 ? int(x) : x < 0.0 ? (-2147483647 - 1) : 0; }
@@ -41,6 +49,10 @@ void main() {
 }
 // technique offsets_and_labels pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -63,9 +75,12 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform int G_IZero;
 layout(binding = 0) uniform sampler2D G_Grid;
 ivec2 G_Shift;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

@@ -1,5 +1,12 @@
 // technique persistence pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -23,6 +30,13 @@ void main() {
 }
 #version 450
 layout(binding = 0) uniform sampler2D G_SCounter;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
@@ -50,6 +64,13 @@ void main() {
 }
 // technique persistence pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -73,6 +94,13 @@ void main() {
 }
 #version 450
 layout(binding = 0) uniform sampler2D G_SScratch;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
@@ -100,6 +128,13 @@ void main() {
 }
 // technique persistence pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -122,11 +157,14 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform int G_IZero;
-uniform int G_FrameCount;
-uniform float G_FrameTime;
-uniform float G_Timer;
 layout(binding = 0) uniform sampler2D G_SCounter;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_FrameCount;
+  float G_FrameTime;
+  float G_Timer;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

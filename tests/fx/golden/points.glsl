@@ -1,5 +1,9 @@
 // technique points pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 #line 9 1
 void F_PointVS(uint l_id, out vec4 l_position)
 #line 10 1
@@ -18,6 +22,10 @@ void main() {
   gl_Position = p1;
 }
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
 #line 16 1
@@ -36,6 +44,10 @@ void main() {
 }
 // technique points pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -58,8 +70,11 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform int G_IZero;
 layout(binding = 0) uniform sampler2D G_SPoints;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

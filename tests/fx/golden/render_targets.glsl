@@ -4,6 +4,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -29,6 +33,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
@@ -70,6 +78,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -95,6 +107,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
@@ -121,6 +137,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -146,6 +166,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
@@ -172,6 +196,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -197,6 +225,10 @@ void main() {
 struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
+};
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
 };
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
@@ -225,6 +257,10 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -251,13 +287,16 @@ struct S_Outputs {
   vec4 m_c;
   vec4 m_d;
 };
-uniform int G_IZero;
 layout(binding = 0) uniform sampler2D G_SFraction;
 layout(binding = 1) uniform sampler2D G_SA;
 layout(binding = 2) uniform sampler2D G_SB;
 layout(binding = 3) uniform sampler2D G_SC;
 layout(binding = 4) uniform sampler2D G_SD;
 layout(binding = 5) uniform sampler2D G_SCleared;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

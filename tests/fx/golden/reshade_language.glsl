@@ -1,5 +1,10 @@
 // technique reshade_language pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_Mode;
+};
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
 #line 64 3
@@ -19,6 +24,11 @@ void main() {
   gl_Position = p1;
 }
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_Mode;
+};
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
 #line 24 1
@@ -37,6 +47,11 @@ void main() {
 }
 // technique reshade_language pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_Mode;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -59,14 +74,16 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform float G_Zero;
-uniform int G_IZero;
-uniform int G_Mode;
 layout(binding = 0) uniform sampler2D G_LinearSampler;
 layout(binding = 1) uniform sampler2D G_SrgbSampler;
 vec4 G_Tint1;
 vec4 G_Tint2;
 mat3 G_Scale;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  int G_Mode;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

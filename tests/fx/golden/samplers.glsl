@@ -1,5 +1,9 @@
 // technique samplers pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -22,6 +26,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
@@ -43,6 +51,10 @@ void main() {
 }
 // technique samplers pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -65,6 +77,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
@@ -86,6 +102,10 @@ void main() {
 }
 // technique samplers pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -108,6 +128,10 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
@@ -129,6 +153,10 @@ void main() {
 }
 // technique samplers pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -151,7 +179,6 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform float G_Zero;
 layout(binding = 0) uniform sampler2D G_RowClamp;
 layout(binding = 1) uniform sampler2D G_RowWrap;
 layout(binding = 2) uniform sampler2D G_RowMirror;
@@ -160,6 +187,10 @@ layout(binding = 4) uniform sampler2D G_RowLinear;
 layout(binding = 5) uniform sampler2D G_EncodedRaw;
 layout(binding = 6) uniform sampler2D G_EncodedSrgb;
 layout(binding = 7) uniform sampler2D G_WrittenRaw;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

@@ -1,5 +1,9 @@
 // technique size_constants pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -28,6 +32,10 @@ layout(binding = 2) uniform sampler2D G_Frame;
 layout(binding = 3) uniform sampler2D G_Mipped;
 layout(binding = 4) uniform sampler2D G_Vanished;
 int G_Levels;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;

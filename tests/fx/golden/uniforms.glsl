@@ -1,5 +1,22 @@
 // technique uniforms pass 
 #version 450
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  float G_Strength;
+  vec3 G_Tint;
+  vec4 G_Edge;
+  int G_Mode;
+  bool G_Enabled;
+  ivec2 G_Cells;
+  uint G_Big;
+  float G_Weights[3];
+  mat2 G_Rows;
+  float G_Unset;
+  mat3 G_Frames[2];
+  float G_Last;
+  ivec2[2] G_IRows;
+};
 layout(location = 0) out vec4 pfx_v_TEXCOORD0;
 #line 63 3
 void F_PostProcessVS(uint l_id, out vec4 l_position, out vec2 l_texcoord)
@@ -22,16 +39,23 @@ void main() {
   pfx_v_TEXCOORD0 = vec4(p2, 0, 1);
 }
 #version 450
-uniform float G_Strength;
-uniform vec3 G_Tint;
-uniform vec4 G_Edge;
-uniform int G_Mode;
-uniform bool G_Enabled;
-uniform ivec2 G_Cells;
-uniform uint G_Big;
-uniform float G_Weights[3];
-uniform mat2 G_Rows;
-uniform float G_Unset;
+layout(binding = 0, std140) uniform pfx_uniforms {
+  float G_Zero;
+  int G_IZero;
+  float G_Strength;
+  vec3 G_Tint;
+  vec4 G_Edge;
+  int G_Mode;
+  bool G_Enabled;
+  ivec2 G_Cells;
+  uint G_Big;
+  float G_Weights[3];
+  mat2 G_Rows;
+  float G_Unset;
+  mat3 G_Frames[2];
+  float G_Last;
+  ivec2[2] G_IRows;
+};
 layout(location = 0) in vec4 pfx_v_TEXCOORD0;
 uniform float pfx_target_height;
 layout(location = 0) out vec4 pfx_target_0;
@@ -74,49 +98,58 @@ bool F_Near(vec3 l_a, vec3 l_b)
 #line 17 2
   return (F_Near(l_a.xy, l_b.xy) && F_Near(l_a.z, l_b.z));
 }
-#line 18 1
+#line 21 1
 bool F_Check(int l_i)
-#line 19 1
+#line 22 1
 {
-#line 20 1
+#line 23 1
   switch (l_i) {
     case 0:
-#line 22 1
+#line 25 1
       return (G_Strength == 0.75);
     case 1:
-#line 23 1
+#line 26 1
       return F_Near(G_Tint, vec3(0.100000001, 0.200000003, 0.300000012));
     case 2:
-#line 24 1
+#line 27 1
       return all(equal(G_Edge, vec4(0.5, 0.25, 0.125, 0.0625)));
     case 3:
-#line 25 1
+#line 28 1
       return ((G_Mode == 2) && G_Enabled);
     case 4:
-#line 26 1
+#line 29 1
       return (all(equal(G_Cells, ivec2((-3), 4))) && (G_Big == 4000000000u));
     case 5:
-#line 27 1
+#line 30 1
       return ((G_Weights[0] == 1.0) && (G_Weights[2] == 4.0));
     case 6:
-#line 28 1
+#line 31 1
       return ((G_Rows[1][0] == 3.0) && (G_Rows[0][1] == 2.0));
     case 7:
-#line 29 1
+#line 32 1
       return (G_Unset == 0.0);
+    case 8:
+#line 33 1
+      return (((G_Frames[0][0][2] == 3.0) && (G_Frames[1][2][0] == 16.0)) && (G_Frames[1][1][1] == 14.0));
+    case 9:
+#line 34 1
+      return (G_Last == 0.5);
+    case 10:
+#line 35 1
+      return ((G_IRows[1][0] == 7) && (G_IRows[0][1] == 6));
     default:
-#line 30 1
+#line 36 1
       return true;
   }
 }
-#line 34 1
+#line 40 1
 vec4 F_Main(vec4 l_position, vec2 l_texcoord)
-#line 35 1
+#line 41 1
 {
-#line 36 1
+#line 42 1
   return F_Verdict(F_Check(F_CheckIndex(l_position)));
 }
-#line 34 1
+#line 40 1
 void main() {
   vec4 p0;
   vec2 p1;

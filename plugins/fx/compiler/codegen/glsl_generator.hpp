@@ -17,7 +17,6 @@
 //  - What HLSL writes back (an out argument of another type, a matrix swizzle assigned to) goes
 //    through temporaries the function declares at its top; a function's statics are the
 //    program's, started in main().
-#include <map>
 #include <string>
 #include <vector>
 
@@ -33,11 +32,9 @@ struct GeneratedPass {
   // model.storages[image_units[i]].
   std::vector<int> sampler_units;
   std::vector<int> image_units;
-  // Uniforms the program reads as live uniforms (indices into model.uniforms, in order), each a
-  // plain GLSL uniform named uniform_names[index] (in the Vulkan dialect: every live uniform of
-  // the effect, the members of its block). Those compiled in as constants are not here.
+  // Uniforms the program reads live, from the effect's uniform block (indices into
+  // model.uniforms, in order). Those compiled in as constants are not here.
   std::vector<int> uniforms;
-  std::map<int, std::string> uniform_names;
   // The pixel shader may leave a pixel unwritten (discard or clip): a pass rendering to the back
   // buffer must then start from its contents.
   bool may_discard = false;
@@ -50,10 +47,11 @@ struct GeneratedPass {
 // GL_KHR_vulkan_glsl rules) for SPIR-V (spirv_module.hpp). A Vulkan image keeps its top row first
 // and a Vulkan framebuffer's origin is its top-left, as FX's are, so the row flips of the GL
 // dialect fall away there, and the vertex position's y is negated (Vulkan's clip space points y
-// down). Every live uniform of the effect lives in one std140 block, in the model's order, in
-// every stage of every pass; samplers and storages take the bindings below.
+// down). In both dialects every uniform of the effect lives in one std140 block, in the model's
+// order, in every stage of every pass (uniform_block.hpp); samplers and storages take the
+// bindings below.
 enum class GlslDialect { kOpenGL, kVulkan };
-constexpr int kVulkanUniformBinding = 0;        // descriptor set 0
+constexpr int kUniformBlockBinding = 0;         // GL: the uniform buffer binding; Vulkan: in descriptor set 0
 constexpr int kVulkanFirstSamplerBinding = 1;   // + the sampler's unit (GeneratedPass::sampler_units)
 constexpr int kVulkanFirstStorageBinding = 17;  // + the storage's unit; at most 16 samplers a pass
 

@@ -201,28 +201,24 @@ class ProgramBuilder {
   }
 
   std::string declarations(GlslWriter& w, Stage which, const std::set<const VariableDecl*>& globals) {
-    std::string out, block;  // block: Vulkan's uniforms, which live in a uniform block
+    std::string out, block;  // block: the effect's uniforms (uniform_block.hpp)
     // In the model's order, never a pointer's: the same source gives the same GLSL on every run
     // (the program cache's key).
-    // Vulkan's block holds every uniform of the effect, used here or not, so that each stage of
-    // each pass, live or specialised, reads one buffer with one layout: a uniform compiled in as a
+    // The block holds every uniform of the effect, used here or not, so that each stage of each
+    // pass, live or specialised, reads one buffer with one layout: a uniform compiled in as a
     // constant keeps its place in the block under a name nothing reads.
     for (std::size_t index = 0; index < model_.uniforms.size(); ++index) {
       const VariableDecl* decl = model_.uniforms[index].decl;
       const bool used = globals.count(decl) > 0;
-      if (!used && !w.vulkan()) continue;
       const std::string name = names_.global(decl) + w.array_suffix(decl->resolved);
       const std::vector<double>* value = constants_ && index < constants_->size() ? &(*constants_)[index] : nullptr;
       if (value && !value->empty() && can_be_constant(decl->resolved, *value)) {
         if (used) out += "const " + w.type(decl->resolved) + " " + name + " = " + constant_initialiser(w, decl->resolved, *value) + ";\n";
-        if (w.vulkan())
-          block += "  " + w.type(decl->resolved) + " pfx_held_" + std::to_string(index) + w.array_suffix(decl->resolved) + ";\n";
+        block += "  " + w.type(decl->resolved) + " pfx_held_" + std::to_string(index) + w.array_suffix(decl->resolved) + ";\n";
         continue;
       }
-      if (w.vulkan()) block += "  " + w.type(decl->resolved) + " " + name + ";\n";
-      else out += "uniform " + w.type(decl->resolved) + " " + name + ";\n";
-      result_.uniforms.push_back(static_cast<int>(index));
-      result_.uniform_names[static_cast<int>(index)] = names_.global(decl);
+      block += "  " + w.type(decl->resolved) + " " + name + ";\n";
+      if (used) result_.uniforms.push_back(static_cast<int>(index));
     }
     for (std::size_t i = 0; i < model_.samplers.size(); ++i) {
       const SamplerInfo& s = model_.samplers[i];
@@ -246,8 +242,7 @@ class ProgramBuilder {
       }
     for (const VariableDecl* v : model_.static_globals)
       if (globals.count(v)) out += w.type(v->resolved) + " " + names_.global(v) + w.array_suffix(v->resolved) + ";\n";
-    if (!block.empty())
-      out += "layout(set = 0, binding = " + std::to_string(kVulkanUniformBinding) + ", std140) uniform pfx_uniforms {\n" + block + "};\n";
+    if (!block.empty()) out += binding(kUniformBlockBinding, 0) + ", std140) uniform pfx_uniforms {\n" + block + "};\n";
     return out;
   }
 

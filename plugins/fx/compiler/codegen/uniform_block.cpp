@@ -1,25 +1,27 @@
-#include "vk_uniform_block.hpp"
+#include "uniform_block.hpp"
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-namespace pfx::fx::vulkan {
+namespace pfx::fx {
 namespace {
 
-struct Shape {
+struct BlockShape {
   std::size_t elements = 1;  // array elements
   int rows = 1, per_row = 1;
   bool slots = false;  // each element (matrix row) in a 16-byte slot
   std::size_t align = 4;
 };
 
-Shape shape_of(const Type& t) {
-  Shape s;
+BlockShape block_shape_of(const Type& t) {
+  BlockShape s;
   for (int size : t.array) s.elements *= static_cast<std::size_t>(size);
-  s.rows = t.is_matrix() ? t.rows : 1;
-  s.per_row = t.is_matrix() ? t.columns : t.components();
-  s.slots = t.is_array() || t.is_matrix();
+  // The shape of one element: is_matrix() and its kin answer false for an array.
+  const bool matrix = t.shape == Shape::kMatrix;
+  s.rows = matrix ? t.rows : 1;
+  s.per_row = matrix ? t.columns : t.components();
+  s.slots = t.is_array() || matrix;
   s.align = s.slots || s.per_row > 2 ? 16 : s.per_row == 2 ? 8 : 4;
   return s;
 }
@@ -42,7 +44,7 @@ UniformBlockLayout layout_uniform_block(const EffectModel& model) {
   UniformBlockLayout layout;
   std::size_t offset = 0;
   for (const UniformInfo& u : model.uniforms) {
-    const Shape s = shape_of(u.type);
+    const BlockShape s = block_shape_of(u.type);
     offset = (offset + s.align - 1) / s.align * s.align;
     layout.offsets.push_back(offset);
     const std::size_t row_bytes = s.slots ? 16 : static_cast<std::size_t>(s.per_row) * 4;
@@ -57,8 +59,8 @@ void pack_uniform_block(const EffectModel& model, const UniformBlockLayout& layo
   bytes.assign(layout.size, 0);
   for (std::size_t index = 0; index < model.uniforms.size(); ++index) {
     const Type& t = model.uniforms[index].type;
-    const Shape s = shape_of(t);
-    const BaseType base = t.is_floating() ? BaseType::kFloat : t.base;
+    const BlockShape s = block_shape_of(t);
+    const BaseType base = t.base == BaseType::kHalf || t.base == BaseType::kDouble ? BaseType::kFloat : t.base;
     const std::vector<double>* value = index < values.size() ? &values[index] : nullptr;
     std::size_t at = layout.offsets[index], next = 0;
     for (std::size_t e = 0; e < s.elements; ++e)
@@ -72,4 +74,4 @@ void pack_uniform_block(const EffectModel& model, const UniformBlockLayout& layo
   }
 }
 
-}  // namespace pfx::fx::vulkan
+}  // namespace pfx::fx
