@@ -18,7 +18,7 @@ struct Sizes {
   size_t minimum, today;
 };
 
-// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.7).
+// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.8).
 const std::map<std::string, Sizes>& pinned() {
   static const std::map<std::string, Sizes> sizes = {
       {"pfx_entry", {64, 64}},          {"pfx_host", {48, 56}},
@@ -32,7 +32,7 @@ const std::map<std::string, Sizes>& pinned() {
       {"pfx_import_result", {184, 184}}, {"pfx_import_material", {80, 104}},
       {"pfx_thread_pool", {32, 32}},    {"pfx_source_factory", {40, 56}},
       {"pfx_vk_device", {56, 56}},      {"pfx_vk_frame_image", {28, 32}},
-      {"pfx_vulkan_effect_factory", {40, 40}}};
+      {"pfx_vulkan_effect_factory", {40, 48}}};
   return sizes;
 }
 

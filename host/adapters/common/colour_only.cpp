@@ -30,7 +30,9 @@ bool declare_for(const host::EffectInfo& effect, void* instance, const std::vect
                  const pfx_frame& frame, std::vector<std::string>* needs) {
   pfx_declaration declaration{};
   declaration.struct_size = sizeof declaration;
-  if (effect.desc->declare(instance, &frame, values.data(), &declaration) != PFX_OK) return false;
+  // An effect without parameters still gets a valid pointer, as libpfxhost hands it one.
+  static const pfx_value none{};
+  if (effect.desc->declare(instance, &frame, values.empty() ? &none : values.data(), &declaration) != PFX_OK) return false;
   std::vector<std::string> targets;
   for (uint32_t t = 0; t < declaration.target_count; ++t) targets.push_back(declaration.targets[t].name);
   for (uint32_t p = 0; p < declaration.pass_count; ++p)

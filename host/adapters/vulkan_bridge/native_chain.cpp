@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include <pfx/cpp/definitions_list.hpp>
+
 #include "frame_chain.hpp"
 
 namespace pfx::vk {
@@ -22,23 +24,37 @@ const pfx_vulkan_effect_factory* factory_for(const host::PluginRegistry& registr
   return factory;
 }
 
+// Whether `factory` makes instances with preprocessor definitions (since ABI 1.8).
+bool takes_definitions(const pfx_vulkan_effect_factory& factory) {
+  return PFX_STRUCT_HAS(&factory, pfx_vulkan_effect_factory, create_with_definitions) &&
+         factory.create_with_definitions != nullptr;
+}
+
 }  // namespace
 
 bool NativeChain::takes(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* why) {
-  if (!recipe.source_definitions.empty()) {
-    *why = "the preset sets preprocessor definitions";
-    return false;
-  }
-  for (const auto& effect : recipe.effects)
-    if (!factory_for(registry, effect.id, nullptr)) {
+  for (const auto& effect : recipe.effects) {
+    const pfx_vulkan_effect_factory* factory = factory_for(registry, effect.id, nullptr);
+    if (!factory) {
       *why = effect.id + " runs on OpenGL only";
       return false;
     }
+    if (!recipe.source_definitions.empty() && !takes_definitions(*factory)) {
+      *why = "the preset sets preprocessor definitions, which " + effect.id + " takes on OpenGL only";
+      return false;
+    }
+  }
   return true;
 }
 
 bool NativeChain::set_recipe(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
                              const std::function<void()>& idle, std::string* error) {
+  // A malformed list is refused here, as the GL path's chain refuses it.
+  Definitions definitions;
+  if (!parse_definitions(recipe.source_definitions, &definitions, error)) {
+    *error = "preset PreprocessorDefinitions: " + *error;
+    return false;
+  }
   host::ParamStore store = app::store_for(recipe.effects, registry);
   if (!app::apply_recipe_values(recipe, &store, error, nullptr, "set")) return false;
   std::vector<Effect> fresh;
@@ -61,11 +77,13 @@ bool NativeChain::set_recipe(const host::PluginRegistry& registry, const app::Ch
   }
   bool same_effects = fresh.size() == effects_.size();
   for (size_t i = 0; same_effects && i < fresh.size(); ++i) same_effects = fresh[i].id == effects_[i].id;
-  if (!same_effects) {
+  // An instance keeps the definitions it was made with: other ones make the instances anew.
+  if (!same_effects || recipe.source_definitions != definitions_) {
     idle();
     destroy_instances();
   }
   effects_ = std::move(fresh);
+  definitions_ = recipe.source_definitions;
   return true;
 }
 
@@ -117,8 +135,12 @@ bool NativeChain::prepare(const pfx_vk_device& device, uint32_t width, uint32_t 
     if (!effect.enabled || current_->of_effect[i]) continue;
     char message[1024] = "";
     void* made = nullptr;
-    const pfx_status status = effect.factory->create(effect.host, effect.id.c_str(), &device, width, height, format,
-                                                     &made, message, sizeof message);
+    const pfx_status status =
+        definitions_.empty()
+            ? effect.factory->create(effect.host, effect.id.c_str(), &device, width, height, format, &made, message,
+                                     sizeof message)
+            : effect.factory->create_with_definitions(effect.host, effect.id.c_str(), &device, width, height, format,
+                                                      definitions_.c_str(), &made, message, sizeof message);
     if (status != PFX_OK) {
       *error = "effect '" + effect.id + "' could not be made on Vulkan: " + (*message ? message : "no reason given");
       return false;

@@ -26,14 +26,16 @@ class NativeChain {
   NativeChain& operator=(const NativeChain&) = delete;
 
   // Whether the recipe can run here: every effect of it (on or off, as a later update may switch
-  // it on) comes from a plugin whose Vulkan factory runs it, and it sets no preprocessor
-  // definitions (instances made on Vulkan take none). Else false with *why naming what does not.
+  // it on) comes from a plugin whose Vulkan factory runs it, and makes instances with
+  // preprocessor definitions (ABI 1.8) when the recipe sets some. Else false with *why naming
+  // what does not.
   static bool takes(const host::PluginRegistry& registry, const app::ChainRecipe& recipe, std::string* why);
 
-  // A recipe takes() accepts. When it names the same effects in the same order only values and
-  // on/off flags change; otherwise the instances go (after `idle`, which waits for the work that
-  // used them) and the new ones are made at the next prepare(). All or nothing: false with *error
-  // naming the assignment that does not apply, and the chain as it was.
+  // A recipe takes() accepts. When it names the same effects in the same order and the same
+  // preprocessor definitions, only values and on/off flags change; otherwise the instances go
+  // (after `idle`, which waits for the work that used them) and the new ones are made at the next
+  // prepare(). All or nothing: false with *error naming the assignment or definition that does
+  // not apply, and the chain as it was.
   bool set_recipe(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
                   const std::function<void()>& idle, std::string* error);
   // "fx_a,fx_b (off)" as FrameChain::text; "none" for no effect.
@@ -74,6 +76,7 @@ class NativeChain {
   void destroy_instances();
 
   std::vector<Effect> effects_;
+  std::string definitions_;  // the recipe's preprocessor definitions, which every instance was made with
   std::vector<Instances> sizes_;
   Instances* current_ = nullptr;  // prepare()'s, for record()
   uint64_t uses_ = 0;

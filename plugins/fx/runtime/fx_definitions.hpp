@@ -3,17 +3,16 @@
 // "NAME=VALUE,NAME2=VALUE2,FLAG" list of a ReShade preset's PreprocessorDefinitions= line, read
 // the way ReShade reads it.
 #include <string>
-#include <utility>
 #include <vector>
+
+#include <pfx/cpp/definitions_list.hpp>
 
 namespace pfx_fx {
 
-using Definitions = std::vector<std::pair<std::string, std::string>>;  // name, replacement text
-
-// The list's entries in order. White space around an entry, its name and its value is dropped and
-// empty entries are skipped; a name without a value ("FLAG" or "FLAG=") is defined as 1, as
-// ReShade does. False with *error naming the first entry whose name is not an identifier.
-bool parse_definitions(const std::string& list, Definitions* out, std::string* error);
+// The list is read by pfx::parse_definitions (pfx/cpp/definitions_list.hpp), which the Vulkan
+// bridge uses too.
+using pfx::Definitions;
+using pfx::parse_definitions;
 
 // Removes the definitions of names pfx defines itself (`own`: compile_options' defines, the
 // RESHADE_DEPTH_* settings that match the depth pfx hands FX effects) and returns their names.

@@ -12,6 +12,7 @@
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "fx_catalog.hpp"
+#include "fx_definitions.hpp"
 #include "fx_frame_params.hpp"
 #include "fx_settled_values.hpp"
 #include "fx_texture_files.hpp"
@@ -30,7 +31,11 @@ class FxVulkanInstance {
     technique_.destroy();
     cache_.destroy();
   }
-  pfx_status create(const pfx_vk_device& device, int width, int height, VkFormat format, std::string& error);
+  // `definitions`: the host's preprocessor definitions, without those pfx defines itself.
+  pfx_status create(const pfx_vk_device& device, int width, int height, VkFormat format, const Definitions& definitions,
+                    std::string& error);
+  // The host's list read as set_definitions reads it (fx_definitions.hpp); false with `error`.
+  bool read_definitions(const char* list, Definitions* out, std::string& error) const;
   pfx_status record(VkCommandBuffer commands, const pfx_vk_frame_image& image, const pfx_frame& frame, const pfx_value* params);
 
  private:
@@ -58,10 +63,25 @@ class FxVulkanInstance {
   bool told_live_ = false;  // why values run live, said once
 };
 
-pfx_status FxVulkanInstance::create(const pfx_vk_device& device, int width, int height, VkFormat format, std::string& error) {
+bool FxVulkanInstance::read_definitions(const char* list, Definitions* out, std::string& error) const {
+  if (!parse_definitions(list ? list : "", out, &error)) return error = "preprocessor definitions refused: " + error, false;
+  // As on GL: pfx hands FX effects its own depth and defines the depth settings itself.
+  const std::vector<std::string> ignored = remove_own_definitions(compile_options(1, 1).preprocessor.defines, out);
+  std::string names;
+  for (const std::string& name : ignored) names += (names.empty() ? "" : ", ") + name;
+  if (!names.empty())
+    log(PFX_LOG_WARNING, "preprocessor definitions ignored: " + names + " (pfx hands FX effects its own depth and sets these)");
+  return true;
+}
+
+pfx_status FxVulkanInstance::create(const pfx_vk_device& device, int width, int height, VkFormat format,
+                                    const Definitions& definitions, std::string& error) {
   error = device_.load(device.get_instance_proc_addr, device.instance, device.physical_device, device.get_device_proc_addr, device.device);
   if (!error.empty()) return error = "the device gives no " + error, PFX_ERROR;
-  compiled_ = pfx::fx::compile_effect(entry_.file, compile_options(width, height), false);
+  pfx::fx::FrontEndOptions options = compile_options(width, height);
+  // After the file's defaults and pfx's own, as the GL instance compiles with them.
+  options.preprocessor.defines.insert(options.preprocessor.defines.end(), definitions.begin(), definitions.end());
+  compiled_ = pfx::fx::compile_effect(entry_.file, options, false);
   if (!compiled_->ok()) return error = compiled_->errors(), PFX_ERROR;
   const auto& techniques = compiled_->model.techniques;
   if (static_cast<std::size_t>(entry_.technique_index) >= techniques.size() || techniques[static_cast<std::size_t>(entry_.technique_index)].name != entry_.technique)
@@ -152,8 +172,9 @@ int32_t supports(const char* effect_id) {
   }
 }
 
-pfx_status create(const pfx_host* host, const char* effect_id, const pfx_vk_device* device, uint32_t width, uint32_t height, VkFormat format,
-                  void** out_instance, char* error, uint32_t error_size) {
+pfx_status create_with_definitions(const pfx_host* host, const char* effect_id, const pfx_vk_device* device, uint32_t width,
+                                   uint32_t height, VkFormat format, const char* definitions, void** out_instance, char* error,
+                                   uint32_t error_size) {
   if (out_instance) *out_instance = nullptr;
   if (!host || !device || !out_instance || device->struct_size < PFX_VK_DEVICE_MIN_SIZE || width == 0 || height == 0 || width > 16384 ||
       height > 16384)
@@ -163,7 +184,9 @@ pfx_status create(const pfx_host* host, const char* effect_id, const pfx_vk_devi
     const FxEffectEntry* entry = find_effect(effect_id);
     if (!entry) return message = std::string("no FX effect '") + (effect_id ? effect_id : "") + "'", PFX_INVALID_ARGUMENT;
     auto fx = std::make_unique<FxVulkanInstance>(*entry, host);
-    const pfx_status made = fx->create(*device, static_cast<int>(width), static_cast<int>(height), format, message);
+    Definitions defined;
+    if (!fx->read_definitions(definitions, &defined, message)) return PFX_INVALID_ARGUMENT;
+    const pfx_status made = fx->create(*device, static_cast<int>(width), static_cast<int>(height), format, defined, message);
     if (made != PFX_OK) return made;
     std::lock_guard<std::mutex> lock(live_mutex);
     live.insert(fx.get());
@@ -172,6 +195,11 @@ pfx_status create(const pfx_host* host, const char* effect_id, const pfx_vk_devi
   });
   if (status != PFX_OK) copy_error(message.empty() ? "the instance could not be made" : message, error, error_size);
   return status;
+}
+
+pfx_status create(const pfx_host* host, const char* effect_id, const pfx_vk_device* device, uint32_t width, uint32_t height, VkFormat format,
+                  void** out_instance, char* error, uint32_t error_size) {
+  return create_with_definitions(host, effect_id, device, width, height, format, nullptr, out_instance, error, error_size);
 }
 
 pfx_status record(void* instance, VkCommandBuffer commands, const pfx_vk_frame_image* image, const pfx_frame* frame, const pfx_value* params) {
@@ -193,6 +221,7 @@ void destroy(void* instance) {
 
 }  // namespace
 
-const pfx_vulkan_effect_factory kVulkanEffects = {sizeof(pfx_vulkan_effect_factory), supports, create, record, destroy};
+const pfx_vulkan_effect_factory kVulkanEffects = {sizeof(pfx_vulkan_effect_factory), supports, create, record, destroy,
+                                                   create_with_definitions};
 
 }  // namespace pfx_fx

@@ -17,7 +17,8 @@
  * UUIDs not those of the Vulkan device) or is switched off, it goes through host memory instead:
  * the same pixels, slower. Either way the two APIs are ordered by waiting for a fence on the Vulkan
  * side and for the GL to finish on the other. A dry run, pass times, preprocessor definitions from
- * a preset, PFX_VK_GL_PATH and PFX_VK_NATIVE=0 in the environment keep a chain on this path.
+ * a preset for a plugin whose Vulkan factory takes none (older than ABI 1.8), PFX_VK_GL_PATH and
+ * PFX_VK_NATIVE=0 in the environment keep a chain on this path.
  *
  * The image holds an 8- or 10-bit display-referred frame (what a swapchain image holds): the
  * effects start at their display-referred defaults. On the GL path it is decoded to linear light

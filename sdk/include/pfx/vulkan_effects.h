@@ -86,6 +86,16 @@ typedef struct pfx_vulkan_effect_factory {
                        const pfx_value* params);
   /* After every command buffer the instance recorded has completed. */
   void (*destroy)(void* instance);
+  /* Appended after destroy: a host checks PFX_STRUCT_HAS before calling it, and it may be NULL (a
+   * factory without it still pairs: PFX_VULKAN_EFFECT_FACTORY_MIN_SIZE ends at destroy). As
+   * create, with preprocessor definitions for an effect made from a source file, in the form and
+   * with the meaning of pfx.sources/1's set_definitions ("NAME=VALUE,NAME2=VALUE2,FLAG"; NULL or
+   * "" sets none). An instance keeps its definitions: for others the host destroys it and creates
+   * another, as for another size. PFX_INVALID_ARGUMENT, with the reason in `error`, for a
+   * malformed list. */
+  pfx_status (*create_with_definitions)(const pfx_host* host, const char* effect_id, const pfx_vk_device* device,
+                                        uint32_t width, uint32_t height, VkFormat format, const char* definitions,
+                                        void** out_instance, char* error, uint32_t error_size); /* since 1.8 */
 } pfx_vulkan_effect_factory;
 #define PFX_VULKAN_EFFECT_FACTORY_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_vulkan_effect_factory, destroy)
 

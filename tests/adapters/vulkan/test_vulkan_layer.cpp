@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -707,6 +708,79 @@ TEST_CASE("an FX effect that reads depth where a frame has one runs in vkcube on
   const auto [changed_by, changed] = difference(native.presented, pristine.presented);
   CHECK(changed_by >= 32);
   CHECK(changed >= 320 * 240 * 9 / 10);
+}
+
+namespace {
+
+// A ReShade preset running Tinted.fx with the preprocessor definitions `definitions`.
+std::string tint_preset(const std::string& definitions) {
+  return "PreprocessorDefinitions=" + definitions + "\nTechniques=Tinted@Tinted.fx\nTechniqueSorting=Tinted@Tinted.fx\n";
+}
+
+// The largest distance of `presented` from `app` tinted by `amount` towards Tinted.fx's orange, in
+// 8-bit codes (FX effects read and write the display's codes as they are).
+int distance_from_tinted(const pfx::app::DisplayImage& presented, const pfx::app::DisplayImage& app, double amount) {
+  REQUIRE(presented.pixels.size() == app.pixels.size());
+  const double orange[3] = {255.0, 127.5, 0.0};
+  int worst = 0;
+  for (size_t i = 0; i < app.pixels.size(); i += size_t(app.channels))
+    for (size_t c = 0; c < 3; ++c) {
+      const double expected = app.pixels[i + c] + (orange[c] - app.pixels[i + c]) * amount;
+      worst = std::max(worst, int(std::lround(std::abs(presented.pixels[i + c] - expected))));
+    }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("a preset's preprocessor definitions run natively in vkcube, giving the GL path's and pfx-render's frame",
+          "[vkcube][native]") {
+  ScratchFolder folder("vulkan-definitions");
+  std::ofstream(folder.file("tint.ini")) << tint_preset("TINT_AMOUNT=0.5");
+  const std::vector<std::string> tinted = {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Tinted.fx",
+                                           "PFX_INJECT_PRESET=" + folder.file("tint.ini")};
+  const auto [pristine, native, gl] = on_both_paths(folder, tinted);
+  INFO(native.log << gl.log);
+  CHECK(native.log.find("the chain runs natively on the Vulkan device") != std::string::npos);
+  const pfx::app::DisplayImage rendered =
+      rendered_from_pristine(folder, "Tinted.fx", {"--preset", folder.file("tint.ini")});
+  CHECK(difference(native.presented, rendered).first <= 1);
+  CHECK(difference(gl.presented, rendered).first <= 1);
+  // Half way to orange, as the definition asks (the file's default, 0, would change nothing).
+  CHECK(distance_from_tinted(native.presented, pristine.presented, 0.5) <= 1);
+  CHECK(distance_from_tinted(gl.presented, pristine.presented, 0.5) <= 1);
+}
+
+TEST_CASE("new preprocessor definitions in an edited preset apply natively while vkcube runs, and a malformed list "
+          "leaves the chain running",
+          "[vkcube][native]") {
+  ScratchFolder folder("vulkan-definitions-edit");
+  const std::string preset = folder.file("tint.ini");
+  std::ofstream(preset) << tint_preset("TINT_AMOUNT=0.5");
+  // Frame 1,500 is captured: long after the edits below, which apply within a quarter of a second.
+  std::vector<std::string> argv = {"/usr/bin/env",
+                                   "XDG_DATA_HOME=" PFX_BUILD_SHARE,
+                                   "ENABLE_PFX_VULKAN=1",
+                                   "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Tinted.fx",
+                                   "PFX_INJECT_PRESET=" + preset,
+                                   "PFX_INJECT_CAPTURE=1500:" + folder.file("last"),
+                                   "PFX_INJECT_QUIT_AFTER=1501"};
+  pfx::test::add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
+  pfx::test::ViewerProcess app(argv);
+  REQUIRE_FALSE(app.wait_for_line("the chain runs natively", 60).empty());
+  replace_file(folder, preset, tint_preset("1TINT=0.5"));
+  const std::string refused = app.wait_for_line("the previous chain keeps running", 10);
+  CHECK(refused.find("'1TINT' is not a macro name") != std::string::npos);
+  replace_file(folder, preset, tint_preset("TINT_AMOUNT=0.25"));
+  CHECK_FALSE(app.wait_for_line("settings applied: chain fx_tinted", 10).empty());
+  const std::string quit = app.wait_for_line("quitting, as asked", 120);
+  INFO(app.output());
+  REQUIRE_FALSE(quit.empty());
+  CHECK(app.wait_exit(30) == 0);
+  CHECK(app.output().find("through OpenGL") == std::string::npos);
+  const auto presented = pfx::test::read_png_file(folder.file("last.png"));
+  CHECK(distance_from_tinted(presented, pfx::test::read_png_file(folder.file("last.app.png")), 0.25) <= 1);
 }
 
 TEST_CASE("captures asked for when the chain has failed are each named in the log with the reason, once",
