@@ -55,9 +55,38 @@ bool NativeChain::set_recipe(const host::PluginRegistry& registry, const app::Ch
     *error = "preset PreprocessorDefinitions: " + *error;
     return false;
   }
+  std::vector<Effect> fresh;
+  if (!effects_of(registry, recipe, &fresh, error)) return false;
+  bool same_effects = fresh.size() == effects_.size();
+  for (size_t i = 0; same_effects && i < fresh.size(); ++i) same_effects = fresh[i].id == effects_[i].id;
+  if (same_effects && recipe.source_definitions == definitions_) {
+    effects_ = std::move(fresh);
+    return true;
+  }
+  // Other effects, or other definitions (an instance keeps those it was made with): every
+  // instance is made anew. For the sizes frames have run at, that happens now, so that an effect
+  // that cannot be made (a file that does not compile with the new definitions) leaves the chain
+  // running as it was, as the GL path keeps the last version that compiled.
+  std::vector<Instances> made;
+  for (const Instances& old : sizes_) {
+    made.push_back({old.width, old.height, old.format, {}, old.last_used});
+    if (!make_missing(fresh, recipe.source_definitions, made.back(), error)) {
+      for (Instances& instances : made) destroy(fresh, instances);
+      return false;
+    }
+  }
+  idle();
+  destroy_instances();
+  effects_ = std::move(fresh);
+  definitions_ = recipe.source_definitions;
+  sizes_ = std::move(made);
+  return true;
+}
+
+bool NativeChain::effects_of(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
+                             std::vector<Effect>* effects, std::string* error) {
   host::ParamStore store = app::store_for(recipe.effects, registry);
   if (!app::apply_recipe_values(recipe, &store, error, nullptr, "set")) return false;
-  std::vector<Effect> fresh;
   std::map<std::string, size_t> numbers;
   for (const auto& wanted : recipe.effects) {
     Effect effect;
@@ -73,17 +102,8 @@ bool NativeChain::set_recipe(const host::PluginRegistry& registry, const app::Ch
       return false;
     }
     if (values) effect.values.assign(values, values + desc->param_count);
-    fresh.push_back(std::move(effect));
+    effects->push_back(std::move(effect));
   }
-  bool same_effects = fresh.size() == effects_.size();
-  for (size_t i = 0; same_effects && i < fresh.size(); ++i) same_effects = fresh[i].id == effects_[i].id;
-  // An instance keeps the definitions it was made with: other ones make the instances anew.
-  if (!same_effects || recipe.source_definitions != definitions_) {
-    idle();
-    destroy_instances();
-  }
-  effects_ = std::move(fresh);
-  definitions_ = recipe.source_definitions;
   return true;
 }
 
@@ -100,20 +120,21 @@ bool NativeChain::runs_effects() const {
   return false;
 }
 
-void NativeChain::destroy(Instances& instances) {
+void NativeChain::destroy(const std::vector<Effect>& effects, Instances& instances) {
   for (size_t i = 0; i < instances.of_effect.size(); ++i)
-    if (instances.of_effect[i]) effects_[i].factory->destroy(instances.of_effect[i]);
+    if (instances.of_effect[i]) effects[i].factory->destroy(instances.of_effect[i]);
   instances.of_effect.clear();
 }
 
 void NativeChain::destroy_instances() {
-  for (auto& instances : sizes_) destroy(instances);
+  for (auto& instances : sizes_) destroy(effects_, instances);
   sizes_.clear();
   current_ = nullptr;
 }
 
 bool NativeChain::prepare(const pfx_vk_device& device, uint32_t width, uint32_t height, VkFormat format,
                           const std::function<void()>& idle, std::string* error) {
+  device_ = device;
   current_ = nullptr;
   for (auto& instances : sizes_)
     if (instances.width == width && instances.height == height && instances.format == format) current_ = &instances;
@@ -122,30 +143,36 @@ bool NativeChain::prepare(const pfx_vk_device& device, uint32_t width, uint32_t 
       auto oldest = std::min_element(sizes_.begin(), sizes_.end(),
                                      [](const Instances& a, const Instances& b) { return a.last_used < b.last_used; });
       idle();
-      destroy(*oldest);
+      destroy(effects_, *oldest);
       sizes_.erase(oldest);
     }
     sizes_.push_back({width, height, format, {}, 0});
     current_ = &sizes_.back();
   }
-  current_->of_effect.resize(effects_.size(), nullptr);
   current_->last_used = ++uses_;
-  for (size_t i = 0; i < effects_.size(); ++i) {
-    const Effect& effect = effects_[i];
-    if (!effect.enabled || current_->of_effect[i]) continue;
+  return make_missing(effects_, definitions_, *current_, error);
+}
+
+bool NativeChain::make_missing(const std::vector<Effect>& effects, const std::string& definitions, Instances& instances,
+                               std::string* error) const {
+  instances.of_effect.resize(effects.size(), nullptr);
+  for (size_t i = 0; i < effects.size(); ++i) {
+    const Effect& effect = effects[i];
+    if (!effect.enabled || instances.of_effect[i]) continue;
     char message[1024] = "";
     void* made = nullptr;
     const pfx_status status =
-        definitions_.empty()
-            ? effect.factory->create(effect.host, effect.id.c_str(), &device, width, height, format, &made, message,
-                                     sizeof message)
-            : effect.factory->create_with_definitions(effect.host, effect.id.c_str(), &device, width, height, format,
-                                                      definitions_.c_str(), &made, message, sizeof message);
+        definitions.empty()
+            ? effect.factory->create(effect.host, effect.id.c_str(), &device_, instances.width, instances.height,
+                                     instances.format, &made, message, sizeof message)
+            : effect.factory->create_with_definitions(effect.host, effect.id.c_str(), &device_, instances.width,
+                                                      instances.height, instances.format, definitions.c_str(), &made,
+                                                      message, sizeof message);
     if (status != PFX_OK) {
       *error = "effect '" + effect.id + "' could not be made on Vulkan: " + (*message ? message : "no reason given");
       return false;
     }
-    current_->of_effect[i] = made;
+    instances.of_effect[i] = made;
   }
   return true;
 }

@@ -34,8 +34,9 @@ class NativeChain {
   // A recipe takes() accepts. When it names the same effects in the same order and the same
   // preprocessor definitions, only values and on/off flags change; otherwise the instances go
   // (after `idle`, which waits for the work that used them) and the new ones are made at the next
-  // prepare(). All or nothing: false with *error naming the assignment or definition that does
-  // not apply, and the chain as it was.
+  // prepare(), except at the sizes frames already ran at, made here so that one that cannot be
+  // made refuses the recipe. All or nothing: false with *error naming the assignment, definition
+  // or effect that does not apply, and the chain as it was.
   bool set_recipe(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
                   const std::function<void()>& idle, std::string* error);
   // "fx_a,fx_b (off)" as FrameChain::text; "none" for no effect.
@@ -72,13 +73,21 @@ class NativeChain {
     std::vector<void*> of_effect;
     uint64_t last_used = 0;
   };
-  void destroy(Instances& instances);
+  // The effects of `recipe` with their values; false with *error naming one that cannot run.
+  static bool effects_of(const host::PluginRegistry& registry, const app::ChainRecipe& recipe,
+                         std::vector<Effect>* effects, std::string* error);
+  // Makes the instances `instances` lacks of the effects that are on, on device_; false with
+  // *error naming the effect that could not be made (those made stay in `instances`).
+  bool make_missing(const std::vector<Effect>& effects, const std::string& definitions, Instances& instances,
+                    std::string* error) const;
+  void destroy(const std::vector<Effect>& effects, Instances& instances);
   void destroy_instances();
 
   std::vector<Effect> effects_;
   std::string definitions_;  // the recipe's preprocessor definitions, which every instance was made with
   std::vector<Instances> sizes_;
   Instances* current_ = nullptr;  // prepare()'s, for record()
+  pfx_vk_device device_{};        // the device of the last prepare(), where instances are made
   uint64_t uses_ = 0;
 };
 

@@ -752,7 +752,7 @@ TEST_CASE("a preset's preprocessor definitions run natively in vkcube, giving th
 }
 
 TEST_CASE("new preprocessor definitions in an edited preset apply natively while vkcube runs, and a malformed list "
-          "leaves the chain running",
+          "or one the file does not compile with leaves the chain running",
           "[vkcube][native]") {
   ScratchFolder folder("vulkan-definitions-edit");
   const std::string preset = folder.file("tint.ini");
@@ -772,6 +772,12 @@ TEST_CASE("new preprocessor definitions in an edited preset apply natively while
   replace_file(folder, preset, tint_preset("1TINT=0.5"));
   const std::string refused = app.wait_for_line("the previous chain keeps running", 10);
   CHECK(refused.find("'1TINT' is not a macro name") != std::string::npos);
+  // Definitions the file does not compile with: the instances made with them fail, the running
+  // ones stay (as the GL path keeps the last version that compiled).
+  replace_file(folder, preset, tint_preset("TINT_AMOUNT=*"));
+  // The compiler's errors take lines of their own before the line that ends the message.
+  CHECK_FALSE(app.wait_for_line("the previous chain keeps running", 60).empty());
+  CHECK(app.output().find("fx_tinted' could not be made on Vulkan") != std::string::npos);
   replace_file(folder, preset, tint_preset("TINT_AMOUNT=0.25"));
   CHECK_FALSE(app.wait_for_line("settings applied: chain fx_tinted", 10).empty());
   const std::string quit = app.wait_for_line("quitting, as asked", 120);
