@@ -147,10 +147,10 @@ std::unique_ptr<pfx::fx::CompiledEffect> FxInstance::compile_at(int width, int h
   compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!compiled->ok()) {
     *error = "does not compile at " + std::to_string(width) + "x" + std::to_string(height) + ":\n" + compiled->errors();
-    watch(*compiled);  // an edit that fixes it is picked up too
+    watch_.watch(*compiled, entry_.file);  // an edit that fixes it is picked up too
     return nullptr;
   }
-  watch(*compiled);
+  watch_.watch(*compiled, entry_.file);
   const auto& techniques = compiled->model.techniques;
   if (static_cast<std::size_t>(entry_.technique_index) >= techniques.size() ||
       techniques[static_cast<std::size_t>(entry_.technique_index)].name != entry_.technique) {
@@ -235,26 +235,9 @@ void FxInstance::note_ignored_features() {
                                                   "'#pragma " + pfx::fx::spell(pragma.tokens) + "' is ignored"}));
 }
 
-void FxInstance::watch(const pfx::fx::CompiledEffect& compiled) {
-  watched_.clear();
-  for (const std::string& file : compiled.front->preprocessed.included_files) {
-    std::error_code ec;
-    watched_.emplace_back(file, std::filesystem::last_write_time(file, ec));
-  }
-  if (watched_.empty()) watched_.emplace_back(entry_.file, std::filesystem::file_time_type{});
-}
-
 void FxInstance::reload_if_edited() {
-  const auto now = std::chrono::steady_clock::now();
-  if (!redefined_ && now - last_watch_ < std::chrono::milliseconds(kWatchIntervalMs)) return;
-  last_watch_ = now;
   const bool redefined = redefined_;
-  bool edited = redefined;
-  for (const auto& [file, time] : watched_) {
-    std::error_code ec;
-    edited = edited || std::filesystem::last_write_time(file, ec) != time;
-  }
-  if (!edited) return;
+  if (!redefined && !watch_.edited()) return;
   std::string error;
   auto compiled = compile_at(compiled_width_, compiled_height_, &error);
   if (!compiled) {
@@ -281,7 +264,7 @@ pfx_status FxInstance::declare(const pfx_frame* frame, const pfx_value* params, 
   if (compiled_ && redefined_ && w == compiled_width_ && h == compiled_height_) reload_if_edited();
   if (!compiled_ || w != compiled_width_ || h != compiled_height_) {
     if (!compiled_ && w == compiled_width_ && h == compiled_height_) {  // failed at this size: wait for an edit
-      last_watch_ = {};
+      watch_.look_next_time();
       reload_if_edited();
       if (pending_) adopt(std::move(pending_));
       if (!compiled_) return PFX_ERROR;

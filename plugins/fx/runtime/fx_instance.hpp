@@ -30,6 +30,7 @@
 #include "fx_pass_layout.hpp"
 #include "fx_gl_objects.hpp"
 #include "fx_programs.hpp"
+#include "fx_source_watch.hpp"
 #include "fx_stencil.hpp"
 #include "fx_uniform_values.hpp"
 
@@ -55,10 +56,9 @@ class FxInstance {
   void adopt(std::unique_ptr<pfx::fx::CompiledEffect> compiled);  // its passes, for the next run
   bool compile_source(int width, int height);  // CPU
   void note_ignored_features();  // once: what of the file pfx does not honour (#pragma reshade)
-  // Edits: the file and its includes are looked at every kWatchIntervalMs; an edit that compiles
-  // replaces the running version (parameter values kept: the host owns them), one that does not
-  // is logged and the last version that compiled keeps running.
-  void watch(const pfx::fx::CompiledEffect& compiled);
+  // Edits (watch_): an edit that compiles replaces the running version (parameter values kept:
+  // the host owns them), one that does not is logged and the last version that compiled keeps
+  // running.
   void reload_if_edited();
   // The descriptors of passes_ for layout_ and the compiled technique.
   void declare_passes();
@@ -126,11 +126,7 @@ class FxInstance {
   bool told_no_depth_ = false;
   bool told_ignored_ = false;
   double compile_ms_ = 0, gl_build_ms_ = 0;
-  // A few stat calls each time: often enough that an edit shows within half a second, its
-  // compile included, rare enough to cost nothing next to a frame.
-  static constexpr int kWatchIntervalMs = 100;
-  std::vector<std::pair<std::string, std::filesystem::file_time_type>> watched_;
-  std::chrono::steady_clock::time_point last_watch_{};
+  SourceWatch watch_;
   std::unique_ptr<pfx::fx::CompiledEffect> pending_;  // an edit with another pass count, for the next declare
   std::string report_;
 };

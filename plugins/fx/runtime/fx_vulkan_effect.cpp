@@ -15,10 +15,12 @@
 #include "fx_definitions.hpp"
 #include "fx_frame_params.hpp"
 #include "fx_settled_values.hpp"
+#include "fx_source_watch.hpp"
 #include "fx_texture_files.hpp"
 #include "fx_uniform_values.hpp"
 #include "texture_image.hpp"
 #include "vk_pipeline_cache.hpp"
+#include "vk_retired_techniques.hpp"
 #include "vk_technique.hpp"
 
 namespace pfx_fx {
@@ -28,7 +30,8 @@ class FxVulkanInstance {
  public:
   FxVulkanInstance(const FxEffectEntry& entry, const pfx_host* host) : entry_(entry), host_(host) {}
   ~FxVulkanInstance() {
-    technique_.destroy();
+    technique_.reset();
+    retired_.destroy_all();  // the host destroys an instance once its command buffers completed
     cache_.destroy();
   }
   // `definitions`: the host's preprocessor definitions, without those pfx defines itself.
@@ -39,6 +42,18 @@ class FxVulkanInstance {
   pfx_status record(VkCommandBuffer commands, const pfx_vk_frame_image& image, const pfx_frame& frame, const pfx_value* params);
 
  private:
+  // The file compiled at the instance's size with its definitions (never null: its included files
+  // are watched even when it failed); `error` says why it cannot run.
+  std::unique_ptr<pfx::fx::CompiledEffect> compile(std::string& error) const;
+  // A technique built from `compiled` on the device; null with `error`, and *unsupported set when
+  // it needs what the Vulkan runtime lacks.
+  std::unique_ptr<pfx::fx::vulkan::Technique> build(const pfx::fx::CompiledEffect& compiled, bool* unsupported,
+                                                    std::string& error);
+  // The file or an include was edited: a version that compiles and builds runs from this frame
+  // on (the old one retired until the frames using it complete); one that does not is logged and
+  // the running one stays, as on GL.
+  void reload();
+
   void log(pfx_log_level level, const std::string& message) const {
     host_->log(host_->host_data, level, ("fx: " + entry_.id + " (Vulkan): " + message).c_str());
   }
@@ -53,9 +68,14 @@ class FxVulkanInstance {
   const FxEffectEntry& entry_;
   const pfx_host* host_;
   pfx::fx::vulkan::Device device_;
+  int width_ = 0, height_ = 0;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
+  Definitions definitions_;
   std::unique_ptr<pfx::fx::CompiledEffect> compiled_;
   pfx::fx::vulkan::PipelineCacheFile cache_;
-  pfx::fx::vulkan::Technique technique_;
+  std::unique_ptr<pfx::fx::vulkan::Technique> technique_;
+  pfx::fx::vulkan::RetiredTechniques retired_;  // versions before an edit, while frames may use them
+  SourceWatch watch_;
   UniformValues uniforms_;
   FrameParams frame_params_;
   // When the values have settled, the technique runs pipelines with them compiled in.
@@ -74,19 +94,24 @@ bool FxVulkanInstance::read_definitions(const char* list, Definitions* out, std:
   return true;
 }
 
-pfx_status FxVulkanInstance::create(const pfx_vk_device& device, int width, int height, VkFormat format,
-                                    const Definitions& definitions, std::string& error) {
-  error = device_.load(device.get_instance_proc_addr, device.instance, device.physical_device, device.get_device_proc_addr, device.device);
-  if (!error.empty()) return error = "the device gives no " + error, PFX_ERROR;
-  pfx::fx::FrontEndOptions options = compile_options(width, height);
+std::unique_ptr<pfx::fx::CompiledEffect> FxVulkanInstance::compile(std::string& error) const {
+  pfx::fx::FrontEndOptions options = compile_options(width_, height_);
   // After the file's defaults and pfx's own, as the GL instance compiles with them.
-  options.preprocessor.defines.insert(options.preprocessor.defines.end(), definitions.begin(), definitions.end());
-  compiled_ = pfx::fx::compile_effect(entry_.file, options, false);
-  if (!compiled_->ok()) return error = compiled_->errors(), PFX_ERROR;
-  const auto& techniques = compiled_->model.techniques;
-  if (static_cast<std::size_t>(entry_.technique_index) >= techniques.size() || techniques[static_cast<std::size_t>(entry_.technique_index)].name != entry_.technique)
-    return error = "technique '" + entry_.technique + "' is no longer in " + entry_.file, PFX_ERROR;
-  if (!cache_.open(device_)) return error = "vkCreatePipelineCache failed", PFX_ERROR;
+  options.preprocessor.defines.insert(options.preprocessor.defines.end(), definitions_.begin(), definitions_.end());
+  auto compiled = pfx::fx::compile_effect(entry_.file, options, false);
+  if (!compiled->ok()) {
+    error = compiled->errors();
+    return compiled;
+  }
+  const auto& techniques = compiled->model.techniques;
+  if (static_cast<std::size_t>(entry_.technique_index) >= techniques.size() ||
+      techniques[static_cast<std::size_t>(entry_.technique_index)].name != entry_.technique)
+    error = "technique '" + entry_.technique + "' is no longer in " + entry_.file;
+  return compiled;
+}
+
+std::unique_ptr<pfx::fx::vulkan::Technique> FxVulkanInstance::build(const pfx::fx::CompiledEffect& compiled, bool* unsupported,
+                                                                     std::string& error) {
   const std::string effect_file = entry_.file;
   const auto load = [effect_file](const pfx::fx::TextureInfo& texture, pfx::fx::TextureTexels& texels, std::string& message) {
     const std::string path = find_texture_file(texture.source, effect_file);
@@ -96,17 +121,57 @@ pfx_status FxVulkanInstance::create(const pfx_vk_device& device, int width, int 
     }
     return pfx::fx::decode_texture_image(path, texture.width, texture.height, texture.dimension == 3 ? texture.depth : 1, texels, message);
   };
-  const auto status = technique_.create(device_, *compiled_, entry_.technique_index, width, height, format, cache_.handle(), load, error);
+  auto technique = std::make_unique<pfx::fx::vulkan::Technique>();
+  const auto status = technique->create(device_, compiled, entry_.technique_index, width_, height_, format_, cache_.handle(), load, error);
   cache_.save();
-  if (status == pfx::fx::vulkan::Technique::Status::kUnsupported) return PFX_UNSUPPORTED;
-  if (status != pfx::fx::vulkan::Technique::Status::kOk) return PFX_ERROR;
+  *unsupported = status == pfx::fx::vulkan::Technique::Status::kUnsupported;
+  if (status != pfx::fx::vulkan::Technique::Status::kOk) return nullptr;
+  return technique;
+}
+
+pfx_status FxVulkanInstance::create(const pfx_vk_device& device, int width, int height, VkFormat format,
+                                    const Definitions& definitions, std::string& error) {
+  error = device_.load(device.get_instance_proc_addr, device.instance, device.physical_device, device.get_device_proc_addr, device.device);
+  if (!error.empty()) return error = "the device gives no " + error, PFX_ERROR;
+  width_ = width, height_ = height, format_ = format, definitions_ = definitions;
+  compiled_ = compile(error);
+  watch_.watch(*compiled_, entry_.file);
+  if (!error.empty()) return PFX_ERROR;
+  if (!cache_.open(device_)) return error = "vkCreatePipelineCache failed", PFX_ERROR;
+  bool unsupported = false;
+  technique_ = build(*compiled_, &unsupported, error);
+  if (!technique_) return unsupported ? PFX_UNSUPPORTED : PFX_ERROR;
   uniforms_.reset(compiled_->model, entry_.params);
   frame_params_.reset(compiled_->model, entry_.params, width, height);
   return PFX_OK;
 }
 
+void FxVulkanInstance::reload() {
+  std::string error;
+  auto compiled = compile(error);
+  std::unique_ptr<pfx::fx::vulkan::Technique> technique;
+  bool unsupported = false;
+  if (error.empty()) technique = build(*compiled, &unsupported, error);
+  watch_.watch(*compiled, entry_.file);  // an edit that fixes it is picked up too
+  if (!technique) {
+    log(PFX_LOG_ERROR, "edited, and " + std::string(unsupported ? "needs what the Vulkan runtime lacks: " : "does not build:\n") + error +
+                           "\nThe last version that compiled keeps running.");
+    return;
+  }
+  retired_.retire(device_, std::move(technique_), std::move(compiled_));
+  technique_ = std::move(technique);
+  compiled_ = std::move(compiled);
+  uniforms_.reset(compiled_->model, entry_.params);
+  frame_params_.reset(compiled_->model, entry_.params, width_, height_);
+  settle_.reset();
+  told_live_ = false;
+  log(PFX_LOG_INFO, "reloaded " + entry_.file);
+}
+
 pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame_image& image, const pfx_frame& frame, const pfx_value* params) {
   if (!params && !entry_.params.descs.empty()) return PFX_INVALID_ARGUMENT;  // an effect without parameters may get none
+  retired_.release_finished();
+  if (watch_.edited()) reload();
   std::vector<std::string> notes;
   const pfx_value* values = frame_params_.resolve(entry_.params, params, notes);
   for (const std::string& note : notes) log(PFX_LOG_WARNING, note);
@@ -117,13 +182,13 @@ pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame
   std::size_t held_count = 0;  // an effect with none has nothing to compile in
   for (const auto& value : held) held_count += value.empty() ? 0 : 1;
   bool specialised = false;
-  if (held_count && (settled || technique_.has_specialised(held))) {
+  if (held_count && (settled || technique_->has_specialised(held))) {
     // On the frame path, as the GL runtime builds where the driver cannot compile in the
     // background: once per set of values that held still.
     bool built = false;
     std::string message;
     const auto start = std::chrono::steady_clock::now();
-    specialised = technique_.specialise(*compiled_, held, cache_.handle(), &built, message);
+    specialised = technique_->specialise(*compiled_, held, cache_.handle(), &built, message);
     if (built)
       report_build("values compiled in: " + std::to_string(held_count) + " uniforms as constants, pipelines built", start);
     if (!specialised && !told_live_) {
@@ -134,7 +199,7 @@ pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame
   // The live pipelines this frame runs, built the first time one is needed.
   std::size_t live_built = 0;
   const auto start = std::chrono::steady_clock::now();
-  const std::string error = technique_.prepare(specialised ? &held : nullptr, &live_built);
+  const std::string error = technique_->prepare(specialised ? &held : nullptr, &live_built);
   if (!error.empty()) return log(PFX_LOG_ERROR, error), PFX_ERROR;
   if (live_built)
     report_build("live pipelines built for " + std::to_string(live_built) + (live_built == 1 ? " pass" : " passes"), start);
@@ -143,7 +208,8 @@ pfx_status FxVulkanInstance::record(VkCommandBuffer commands, const pfx_vk_frame
   f.layout = image.layout;
   f.final_layout = image.final_layout;
   f.keep_alpha = !(image.flags & PFX_VK_FRAME_ALPHA_UNUSED);
-  technique_.record(commands, f, uniforms_.all(), specialised ? &held : nullptr);
+  technique_->record(commands, f, uniforms_.all(), specialised ? &held : nullptr);
+  retired_.mark(commands);
   return PFX_OK;
 }
 

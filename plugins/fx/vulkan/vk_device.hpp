@@ -21,7 +21,8 @@ namespace pfx::fx::vulkan {
   X(vkDestroyPipeline) X(vkCreateRenderPass) X(vkDestroyRenderPass) X(vkCreateFramebuffer) X(vkDestroyFramebuffer)   \
   X(vkCmdPipelineBarrier) X(vkCmdCopyImage) X(vkCmdBlitImage) X(vkCmdClearColorImage) X(vkCmdClearDepthStencilImage) X(vkCmdUpdateBuffer)           \
   X(vkCmdBeginRenderPass) X(vkCmdEndRenderPass) X(vkCmdBindPipeline) X(vkCmdBindDescriptorSets) X(vkCmdDraw)         \
-  X(vkCmdDispatch) X(vkCmdCopyBufferToImage) X(vkMapMemory) X(vkUnmapMemory) X(vkCreatePipelineCache) X(vkDestroyPipelineCache) X(vkGetPipelineCacheData)
+  X(vkCmdDispatch) X(vkCmdCopyBufferToImage) X(vkMapMemory) X(vkUnmapMemory) X(vkCreatePipelineCache) X(vkDestroyPipelineCache) X(vkGetPipelineCacheData) \
+  X(vkCreateEvent) X(vkDestroyEvent) X(vkGetEventStatus) X(vkCmdSetEvent)
 
 struct Device {
   VkPhysicalDevice physical = VK_NULL_HANDLE;

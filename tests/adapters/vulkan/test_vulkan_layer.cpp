@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -780,6 +781,44 @@ TEST_CASE("new preprocessor definitions in an edited preset apply natively while
   CHECK(app.output().find("fx_tinted' could not be made on Vulkan") != std::string::npos);
   replace_file(folder, preset, tint_preset("TINT_AMOUNT=0.25"));
   CHECK_FALSE(app.wait_for_line("settings applied: chain fx_tinted", 10).empty());
+  const std::string quit = app.wait_for_line("quitting, as asked", 120);
+  INFO(app.output());
+  REQUIRE_FALSE(quit.empty());
+  CHECK(app.wait_exit(30) == 0);
+  CHECK(app.output().find("through OpenGL") == std::string::npos);
+  const auto presented = pfx::test::read_png_file(folder.file("last.png"));
+  CHECK(distance_from_tinted(presented, pfx::test::read_png_file(folder.file("last.app.png")), 0.25) <= 1);
+}
+
+TEST_CASE("an FX file edited while vkcube runs natively reloads there, and an edit that does not compile leaves the "
+          "last version running",
+          "[vkcube][native]") {
+  ScratchFolder folder("vulkan-fx-reload");
+  // Tinted.fx with its amount written into the file, as a user edits a number.
+  std::ifstream original(PFX_LAYER_EFFECTS "/Tinted.fx");
+  const std::string text((std::istreambuf_iterator<char>(original)), std::istreambuf_iterator<char>());
+  const auto version = [&](const std::string& amount) { return "#define TINT_AMOUNT " + amount + "\n" + text; };
+  const std::string file = folder.file("Tinted.fx");
+  std::ofstream(file) << version("0.5");
+  std::vector<std::string> argv = {"/usr/bin/env",
+                                   "XDG_DATA_HOME=" PFX_BUILD_SHARE,
+                                   "ENABLE_PFX_VULKAN=1",
+                                   "PFX_FX_PATH=" + file,
+                                   "PFX_INJECT_CHAIN=fx_tinted",
+                                   "PFX_INJECT_RESOURCES_AT=2",
+                                   "PFX_INJECT_CAPTURE=5000:" + folder.file("last"),
+                                   "PFX_INJECT_QUIT_AFTER=5001"};
+  pfx::test::add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
+  pfx::test::ViewerProcess app(argv);
+  REQUIRE_FALSE(app.wait_for_line("the chain runs natively", 60).empty());
+  // The first frames ran with the first version, before any edit.
+  REQUIRE_FALSE(app.wait_for_line("frame 2: resident memory", 60).empty());
+  replace_file(folder, file, version("*"));
+  CHECK_FALSE(app.wait_for_line("The last version that compiled keeps running", 30).empty());
+  // Frame 5,000 is captured: long after the edit below, which applies within a quarter of a
+  // second (the reload itself is logged at the plugin's info level, which the layer leaves out).
+  replace_file(folder, file, version("0.25"));
   const std::string quit = app.wait_for_line("quitting, as asked", 120);
   INFO(app.output());
   REQUIRE_FALSE(quit.empty());
