@@ -305,21 +305,27 @@ void replace_file(const ScratchFolder& folder, const std::string& path, const st
   std::filesystem::rename(folder.file("replacing.tmp"), path);
 }
 
+// The command line of vkcube at 160x120 with the layer on and `settings` (NAME=VALUE), its frame
+// `last_frame` captured as FOLDER/last.png (and last.app.png), quitting after it: a run long
+// enough for edits made while it runs to apply well before that frame.
+std::vector<std::string> vkcube_until(const ScratchFolder& folder, const std::vector<std::string>& settings,
+                                      int last_frame) {
+  std::vector<std::string> argv = {"/usr/bin/env", "XDG_DATA_HOME=" PFX_BUILD_SHARE, "ENABLE_PFX_VULKAN=1",
+                                   "PFX_INJECT_CAPTURE=" + std::to_string(last_frame) + ":" + folder.file("last"),
+                                   "PFX_INJECT_QUIT_AFTER=" + std::to_string(last_frame + 1)};
+  argv.insert(argv.end(), settings.begin(), settings.end());
+  pfx::test::add_sanitizer_runtime(&argv);
+  for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
+  return argv;
+}
+
 TEST_CASE("an edited preset applies while vkcube runs, and one that does not read leaves the chain running",
           "[vkcube]") {
   ScratchFolder folder("vulkan-preset-edit");
   const std::string preset = folder.file("look.json");
   std::ofstream(preset) << R"({"pfx_preset": 1, "chain": [{"effect": "bloom"}]})";
   // Frame 2,000 is captured: long after the edits below, which apply within a quarter of a second.
-  std::vector<std::string> argv = {"/usr/bin/env",
-                                   "XDG_DATA_HOME=" PFX_BUILD_SHARE,
-                                   "ENABLE_PFX_VULKAN=1",
-                                   "PFX_INJECT_PRESET=" + preset,
-                                   "PFX_INJECT_CAPTURE=2000:" + folder.file("last"),
-                                   "PFX_INJECT_QUIT_AFTER=2001"};
-  pfx::test::add_sanitizer_runtime(&argv);
-  for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
-  pfx::test::ViewerProcess app(argv);
+  pfx::test::ViewerProcess app(vkcube_until(folder, {"PFX_INJECT_PRESET=" + preset}, 2000));
   REQUIRE_FALSE(app.wait_for_line("the chain runs", 60).empty());
   // Other effects: made anew.
   replace_file(folder, preset, R"({"pfx_preset": 1, "chain": [{"effect": "glare"}, {"effect": "bloom", "enabled": false}]})");
@@ -759,16 +765,8 @@ TEST_CASE("new preprocessor definitions in an edited preset apply natively while
   const std::string preset = folder.file("tint.ini");
   std::ofstream(preset) << tint_preset("TINT_AMOUNT=0.5");
   // Frame 1,500 is captured: long after the edits below, which apply within a quarter of a second.
-  std::vector<std::string> argv = {"/usr/bin/env",
-                                   "XDG_DATA_HOME=" PFX_BUILD_SHARE,
-                                   "ENABLE_PFX_VULKAN=1",
-                                   "PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Tinted.fx",
-                                   "PFX_INJECT_PRESET=" + preset,
-                                   "PFX_INJECT_CAPTURE=1500:" + folder.file("last"),
-                                   "PFX_INJECT_QUIT_AFTER=1501"};
-  pfx::test::add_sanitizer_runtime(&argv);
-  for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
-  pfx::test::ViewerProcess app(argv);
+  pfx::test::ViewerProcess app(
+      vkcube_until(folder, {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Tinted.fx", "PFX_INJECT_PRESET=" + preset}, 1500));
   REQUIRE_FALSE(app.wait_for_line("the chain runs natively", 60).empty());
   replace_file(folder, preset, tint_preset("1TINT=0.5"));
   const std::string refused = app.wait_for_line("the previous chain keeps running", 10);
@@ -800,17 +798,8 @@ TEST_CASE("an FX file edited while vkcube runs natively reloads there, and an ed
   const auto version = [&](const std::string& amount) { return "#define TINT_AMOUNT " + amount + "\n" + text; };
   const std::string file = folder.file("Tinted.fx");
   std::ofstream(file) << version("0.5");
-  std::vector<std::string> argv = {"/usr/bin/env",
-                                   "XDG_DATA_HOME=" PFX_BUILD_SHARE,
-                                   "ENABLE_PFX_VULKAN=1",
-                                   "PFX_FX_PATH=" + file,
-                                   "PFX_INJECT_CHAIN=fx_tinted",
-                                   "PFX_INJECT_RESOURCES_AT=2",
-                                   "PFX_INJECT_CAPTURE=5000:" + folder.file("last"),
-                                   "PFX_INJECT_QUIT_AFTER=5001"};
-  pfx::test::add_sanitizer_runtime(&argv);
-  for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
-  pfx::test::ViewerProcess app(argv);
+  pfx::test::ViewerProcess app(
+      vkcube_until(folder, {"PFX_FX_PATH=" + file, "PFX_INJECT_CHAIN=fx_tinted", "PFX_INJECT_RESOURCES_AT=2"}, 5000));
   REQUIRE_FALSE(app.wait_for_line("the chain runs natively", 60).empty());
   // The first frames ran with the first version, before any edit.
   REQUIRE_FALSE(app.wait_for_line("frame 2: resident memory", 60).empty());
