@@ -22,27 +22,29 @@ void RetiredTechniques::mark(VkCommandBuffer commands) {
     }
 }
 
-void RetiredTechniques::release(Entry& entry) {
-  entry.technique.reset();
-  entry.effect.reset();
-  if (entry.done) d_->vkDestroyEvent(d_->device, entry.done, nullptr);
-  entry.done = VK_NULL_HANDLE;
-}
-
 void RetiredTechniques::release_finished() {
   std::vector<Entry> kept;
   for (Entry& entry : entries_) {
-    if (entry.marked && d_->vkGetEventStatus(d_->device, entry.done) == VK_EVENT_SET)
-      release(entry);
-    else
+    if (entry.marked && d_->vkGetEventStatus(d_->device, entry.done) == VK_EVENT_SET) {
+      spent_.push_back(entry.done);
+      entry.technique.reset();
+      entry.effect.reset();
+    } else {
       kept.push_back(std::move(entry));
+    }
   }
   entries_ = std::move(kept);
 }
 
 void RetiredTechniques::destroy_all() {
-  for (Entry& entry : entries_) release(entry);
+  for (Entry& entry : entries_) {
+    entry.technique.reset();
+    entry.effect.reset();
+    if (entry.done) d_->vkDestroyEvent(d_->device, entry.done, nullptr);
+  }
   entries_.clear();
+  for (VkEvent event : spent_) d_->vkDestroyEvent(d_->device, event, nullptr);
+  spent_.clear();
 }
 
 }  // namespace pfx::fx::vulkan

@@ -29,7 +29,10 @@ class RetiredTechniques {
   // Command buffers run in the order they were recorded, so once it is set, every frame that used
   // the technique has completed.
   void mark(VkCommandBuffer commands);
-  // Destroys the techniques whose event the device has set.
+  // Destroys the techniques whose event the device has set. The event itself stays until
+  // destroy_all(): the command buffer that set it may still be running, and an event may only go
+  // once the commands that refer to it completed, which only the owner knows (one small object
+  // an edit).
   void release_finished();
   void destroy_all();
   std::size_t count() const { return entries_.size(); }
@@ -39,11 +42,11 @@ class RetiredTechniques {
     std::unique_ptr<Technique> technique;
     std::unique_ptr<CompiledEffect> effect;  // the model the technique points into
     VkEvent done = VK_NULL_HANDLE;           // none when it could not be made: kept until destroy_all()
-    bool marked = false;
+    bool marked = false;                     // mark() recorded its event
   };
-  void release(Entry& entry);
   const Device* d_ = nullptr;
   std::vector<Entry> entries_;
+  std::vector<VkEvent> spent_;  // events set, whose technique went
 };
 
 }  // namespace pfx::fx::vulkan
