@@ -99,7 +99,8 @@ Reported reported(GLuint program, const std::string& name, bool array) {
 
 }  // namespace
 
-TEST_CASE("the compiler's uniform block offsets are the ones GL's std140 gives the generated GLSL", "[fx][gl][uniforms]") {
+TEST_CASE("the compiler's uniform block offsets are the ones GL's std140 gives the generated GLSL",
+          "[fx][gl][uniforms]") {
   std::string error;
   auto context = pfx::app::HeadlessContext::create(&error);
   INFO(error);
@@ -115,7 +116,8 @@ TEST_CASE("the compiler's uniform block offsets are the ones GL's std140 gives t
   REQUIRE(pass.uniforms.size() == model.uniforms.size());  // every uniform is read, none compiled in
 
   GLuint program = glCreateProgram();
-  GLuint vertex = compile_stage(GL_VERTEX_SHADER, pass.vertex), fragment = compile_stage(GL_FRAGMENT_SHADER, pass.fragment);
+  GLuint vertex = compile_stage(GL_VERTEX_SHADER, pass.vertex),
+         fragment = compile_stage(GL_FRAGMENT_SHADER, pass.fragment);
   glAttachShader(program, vertex);
   glAttachShader(program, fragment);
   glLinkProgram(program);
@@ -128,7 +130,8 @@ TEST_CASE("the compiler's uniform block offsets are the ones GL's std140 gives t
   REQUIRE(members.size() == model.uniforms.size());
   for (std::size_t i = 0; i < model.uniforms.size(); ++i) {
     const pfx::fx::Type& type = model.uniforms[i].type;
-    const bool matrix = type.shape == pfx::fx::Shape::kMatrix, float_matrix = matrix && type.base == pfx::fx::BaseType::kFloat;
+    const bool matrix = type.shape == pfx::fx::Shape::kMatrix,
+               float_matrix = matrix && type.base == pfx::fx::BaseType::kFloat;
     // An integer matrix is declared as an array of its rows (GLSL has no integer matrices).
     const bool array = type.is_array() || (matrix && !float_matrix);
     const Reported gl = reported(program, members[i], array);

@@ -305,6 +305,8 @@ void replace_file(const ScratchFolder& folder, const std::string& path, const st
   std::filesystem::rename(folder.file("replacing.tmp"), path);
 }
 
+namespace {
+
 // The command line of vkcube at 160x120 with the layer on and `settings` (NAME=VALUE), its frame
 // `last_frame` captured as FOLDER/last.png (and last.app.png), quitting after it: a run long
 // enough for edits made while it runs to apply well before that frame.
@@ -318,6 +320,8 @@ std::vector<std::string> vkcube_until(const ScratchFolder& folder, const std::ve
   for (const char* arg : {PFX_VKCUBE, "--c", "100000", "--width", "160", "--height", "120"}) argv.push_back(arg);
   return argv;
 }
+
+}  // namespace
 
 TEST_CASE("an edited preset applies while vkcube runs, and one that does not read leaves the chain running",
           "[vkcube]") {
@@ -738,6 +742,18 @@ int distance_from_tinted(const pfx::app::DisplayImage& presented, const pfx::app
   return worst;
 }
 
+// The run of vkcube_until ended normally, natively all along, and its last frame is the
+// application's tinted by `amount`.
+void ends_natively_tinted(pfx::test::ViewerProcess& app, const ScratchFolder& folder, double amount) {
+  const std::string quit = app.wait_for_line("quitting, as asked", 120);
+  INFO(app.output());
+  REQUIRE_FALSE(quit.empty());
+  CHECK(app.wait_exit(30) == 0);
+  CHECK(app.output().find("through OpenGL") == std::string::npos);
+  const auto presented = pfx::test::read_png_file(folder.file("last.png"));
+  CHECK(distance_from_tinted(presented, pfx::test::read_png_file(folder.file("last.app.png")), amount) <= 1);
+}
+
 }  // namespace
 
 TEST_CASE("a preset's preprocessor definitions run natively in vkcube, giving the GL path's and pfx-render's frame",
@@ -779,13 +795,7 @@ TEST_CASE("new preprocessor definitions in an edited preset apply natively while
   CHECK(app.output().find("fx_tinted' could not be made on Vulkan") != std::string::npos);
   replace_file(folder, preset, tint_preset("TINT_AMOUNT=0.25"));
   CHECK_FALSE(app.wait_for_line("settings applied: chain fx_tinted", 10).empty());
-  const std::string quit = app.wait_for_line("quitting, as asked", 120);
-  INFO(app.output());
-  REQUIRE_FALSE(quit.empty());
-  CHECK(app.wait_exit(30) == 0);
-  CHECK(app.output().find("through OpenGL") == std::string::npos);
-  const auto presented = pfx::test::read_png_file(folder.file("last.png"));
-  CHECK(distance_from_tinted(presented, pfx::test::read_png_file(folder.file("last.app.png")), 0.25) <= 1);
+  ends_natively_tinted(app, folder, 0.25);
 }
 
 TEST_CASE("an FX file edited while vkcube runs natively reloads there, and an edit that does not compile leaves the "
@@ -808,13 +818,7 @@ TEST_CASE("an FX file edited while vkcube runs natively reloads there, and an ed
   // Frame 5,000 is captured: long after the edit below, which applies within a quarter of a
   // second (the reload itself is logged at the plugin's info level, which the layer leaves out).
   replace_file(folder, file, version("0.25"));
-  const std::string quit = app.wait_for_line("quitting, as asked", 120);
-  INFO(app.output());
-  REQUIRE_FALSE(quit.empty());
-  CHECK(app.wait_exit(30) == 0);
-  CHECK(app.output().find("through OpenGL") == std::string::npos);
-  const auto presented = pfx::test::read_png_file(folder.file("last.png"));
-  CHECK(distance_from_tinted(presented, pfx::test::read_png_file(folder.file("last.app.png")), 0.25) <= 1);
+  ends_natively_tinted(app, folder, 0.25);
 }
 
 TEST_CASE("captures asked for when the chain has failed are each named in the log with the reason, once",

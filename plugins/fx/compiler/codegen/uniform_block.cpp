@@ -54,8 +54,8 @@ UniformBlockLayout layout_uniform_block(const EffectModel& model) {
   return layout;
 }
 
-void pack_uniform_block(const EffectModel& model, const UniformBlockLayout& layout, const std::vector<std::vector<double>>& values,
-                        std::vector<unsigned char>& bytes) {
+void pack_uniform_block(const EffectModel& model, const UniformBlockLayout& layout,
+                        const std::vector<std::vector<double>>& values, std::vector<unsigned char>& bytes) {
   bytes.assign(layout.size, 0);
   for (std::size_t index = 0; index < model.uniforms.size(); ++index) {
     const Type& t = model.uniforms[index].type;

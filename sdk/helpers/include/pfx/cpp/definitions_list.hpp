@@ -37,9 +37,11 @@ inline bool parse_definitions(const std::string& list, Definitions* out, std::st
     if (entry.empty()) continue;
     const std::size_t equals = entry.find('=');
     const std::string name = detail::trimmed_definition_text(entry.substr(0, equals));
-    const std::string value = equals == std::string::npos ? "" : detail::trimmed_definition_text(entry.substr(equals + 1));
-    const bool identifier = !name.empty() && letter(name[0]) &&
-                            std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9'); });
+    const std::string value = equals == std::string::npos ? ""
+                                                          : detail::trimmed_definition_text(entry.substr(equals + 1));
+    const bool identifier = !name.empty() && letter(name[0]) && std::all_of(name.begin(), name.end(), [&](char c) {
+      return letter(c) || (c >= '0' && c <= '9');
+    });
     if (!identifier) {
       *error = "'" + entry + "': '" + name + "' is not a macro name (letters, digits and _, not starting with a digit)";
       return false;
