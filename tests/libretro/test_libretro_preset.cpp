@@ -12,7 +12,7 @@ using pfx::test::MemoryFiles;
 
 namespace {
 
-Preset read_ok(MemoryFiles& files, const std::string& path) {
+Preset read_preset_ok(MemoryFiles& files, const std::string& path) {
   Preset preset;
   std::string error;
   const bool read = read_preset(path, files.reader(), &preset, &error);
@@ -21,7 +21,7 @@ Preset read_ok(MemoryFiles& files, const std::string& path) {
   return preset;
 }
 
-std::string read_error(MemoryFiles& files, const std::string& path) {
+std::string read_preset_error(MemoryFiles& files, const std::string& path) {
   Preset preset;
   std::string error;
   CHECK_FALSE(read_preset(path, files.reader(), &preset, &error));
@@ -33,7 +33,7 @@ std::string read_error(MemoryFiles& files, const std::string& path) {
 TEST_CASE("preset passes: a pass that says nothing more than its shader gets RetroArch's defaults", "[preset]") {
   MemoryFiles files;
   files.texts["/c/plain.slangp"] = "shaders = 1\nshader0 = shaders/plain.slang\n";
-  const Preset preset = read_ok(files, "/c/plain.slangp");
+  const Preset preset = read_preset_ok(files, "/c/plain.slangp");
   CHECK(preset.format == PresetFormat::kSlang);
   CHECK(preset.root == "/c/plain.slangp");
   REQUIRE(preset.passes.size() == 1);
@@ -63,7 +63,7 @@ TEST_CASE("preset passes: every per-pass key, quoted and bare, in a .glslp", "[p
       "shader1 = b.glsl\nfilter_linear1 = 0\nwrap_mode1 = mirrored_repeat\nsrgb_framebuffer1 = true\n"
       "scale_type_x1 = absolute\nscale_x1 = 800.0\nscale_y1 = 2\nframe_count_mod1 = \"2\"\n"
       "shader2 = c.glsl\nwrap_mode2 = clamp_to_edge\nscale_type_y2 = viewport\nscale_x2 = 3\nscale_y2 = 1.5\n";
-  const Preset preset = read_ok(files, "/c/all.glslp");
+  const Preset preset = read_preset_ok(files, "/c/all.glslp");
   CHECK(preset.format == PresetFormat::kGlsl);
   REQUIRE(preset.passes.size() == 3);
   const PresetPass& a = preset.passes[0];
@@ -102,7 +102,7 @@ TEST_CASE("preset passes: what RetroArch ignores is a warning and the default", 
   MemoryFiles files;
   files.texts["/c/w.slangp"] =
       "shaders = 1\nshader0 = a.slang\nfilter_linear0 = yes\nwrap_mode0 = clamp\nframe_count_mod0 = often\n";
-  const Preset preset = read_ok(files, "/c/w.slangp");
+  const Preset preset = read_preset_ok(files, "/c/w.slangp");
   const PresetPass& pass = preset.passes.at(0);
   CHECK_FALSE(pass.filter_linear.has_value());
   CHECK(pass.wrap == WrapMode::kClampToBorder);
@@ -140,7 +140,7 @@ TEST_CASE("preset passes: what RetroArch refuses is an error naming the file and
   for (const auto& [text, expected] : cases) {
     files.texts["/c/x.slangp"] = text;
     INFO(text);
-    CHECK(read_error(files, "/c/x.slangp") == expected);
+    CHECK(read_preset_error(files, "/c/x.slangp") == expected);
   }
 }
 
@@ -151,7 +151,7 @@ TEST_CASE("preset passes: 50,000 shader lines under 'shaders = 64' read in well 
     text += "shader" + std::to_string(i) + " = pass.slang\nscale_type" + std::to_string(i) + " = source\n";
   files.texts["/c/long.slangp"] = text;
   const auto start = std::chrono::steady_clock::now();
-  const Preset preset = read_ok(files, "/c/long.slangp");
+  const Preset preset = read_preset_ok(files, "/c/long.slangp");
   CHECK(preset.passes.size() == 64);
   CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
 }
@@ -164,7 +164,7 @@ TEST_CASE("preset textures: ids from the list, files relative to the preset, the
       "mask = ../textures/mask.png\nmask_linear = true\nmask_wrap_mode = repeat\nmask_mipmap = \"true\"\n"
       "grain = grain.png\n"
       "palette = /abs/palette.png\npalette_linear = false\n";
-  const Preset preset = read_ok(files, "/c/crt/lut.slangp");
+  const Preset preset = read_preset_ok(files, "/c/crt/lut.slangp");
   REQUIRE(preset.textures.size() == 3);
   CHECK(preset.textures[0].id == "mask");
   CHECK(preset.textures[0].path == "/c/textures/mask.png");
@@ -193,7 +193,7 @@ TEST_CASE("preset references: passes and textures from the root, values from eve
       "shaders = 1\nshader0 = crt.slang\ntextures = mask\nmask = mask.png\n"
       "from_root = 3\nshared = 30\nlast = 300\n";
   files.texts["/c/values/more.params"] = "shared = 40\nlast = 400\n";
-  const Preset preset = read_ok(files, "/c/top.slangp");
+  const Preset preset = read_preset_ok(files, "/c/top.slangp");
   CHECK(preset.path == "/c/top.slangp");
   CHECK(preset.root == "/c/root/crt.slangp");
   REQUIRE(preset.passes.size() == 1);  // the root's passes; top's 'shaders' is not read
@@ -221,17 +221,17 @@ TEST_CASE("preset references: cycles, missing files, a root without passes and a
           "[preset][bad]") {
   MemoryFiles files;
   files.texts["/c/self.slangp"] = "#reference self.slangp\nshaders = 1\nshader0 = a.slang\n";
-  CHECK(read_error(files, "/c/self.slangp") ==
+  CHECK(read_preset_error(files, "/c/self.slangp") ==
         "/c/self.slangp:1: references go more than 16 deep (does a preset reference itself?)");
   files.texts["/c/a.slangp"] = "#reference b.slangp\n";
   files.texts["/c/b.slangp"] = "\n#reference a.slangp\n";
-  CHECK(read_error(files, "/c/a.slangp").find("references go more than 16 deep") != std::string::npos);
+  CHECK(read_preset_error(files, "/c/a.slangp").find("references go more than 16 deep") != std::string::npos);
   files.texts["/c/lost.slangp"] = "#reference \"gone.slangp\"\n";
-  CHECK(read_error(files, "/c/lost.slangp") == "/c/lost.slangp:1: #reference: /c/gone.slangp: no such file");
+  CHECK(read_preset_error(files, "/c/lost.slangp") == "/c/lost.slangp:1: #reference: /c/gone.slangp: no such file");
   files.texts["/c/values.slangp"] = "x = 1\n";
   files.texts["/c/on-values.slangp"] = "#reference values.slangp\n";
   CHECK(
-      read_error(files, "/c/on-values.slangp") ==
+      read_preset_error(files, "/c/on-values.slangp") ==
       "/c/values.slangp: has no 'shaders' key, and the chain of first references from /c/on-values.slangp ends there");
   files.texts["/c/root.slangp"] = "shaders = 1\nshader0 = a.slang\n";
   // Values files that each reference the next twice: the list of files would double with each.
@@ -241,9 +241,9 @@ TEST_CASE("preset references: cycles, missing files, a root without passes and a
                                                           ".params\n#reference v" + std::to_string(i + 1) + ".params\n";
   files.texts["/c/v12.params"] = "v = 2\n";
   files.texts["/c/wide.slangp"] = "#reference root.slangp\n#reference v0.params\n";
-  CHECK(read_error(files, "/c/wide.slangp").find(": references reach files more than 256 times") != std::string::npos);
+  CHECK(read_preset_error(files, "/c/wide.slangp").find(": references reach files more than 256 times") != std::string::npos);
   files.texts["/c/two.slangp"] = "#reference root.slangp\n#reference root.slangp\n";
-  CHECK(read_error(files, "/c/two.slangp") ==
+  CHECK(read_preset_error(files, "/c/two.slangp") ==
         "/c/two.slangp:2: only the first #reference may lead to a preset with passes ('shaders'); this one leads to "
         "/c/root.slangp");
 }

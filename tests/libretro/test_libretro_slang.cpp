@@ -37,7 +37,7 @@ const char* const kDarken =
     "layout(set = 0, binding = 2) uniform sampler2D Source;\n"
     "void main() { FragColor = scaled(texture(Source, vTexCoord), 1.0 - global.amount); }\n";
 
-SlangSource read_ok(MemoryFiles& files, const std::string& path) {
+SlangSource read_slang_ok(MemoryFiles& files, const std::string& path) {
   SlangSource source;
   std::string error;
   const bool read = read_slang(path, files.reader(), &source, &error);
@@ -46,7 +46,7 @@ SlangSource read_ok(MemoryFiles& files, const std::string& path) {
   return source;
 }
 
-std::string read_error(MemoryFiles& files, const std::string& path) {
+std::string read_slang_error(MemoryFiles& files, const std::string& path) {
   SlangSource source;
   std::string error;
   CHECK_FALSE(read_slang(path, files.reader(), &source, &error));
@@ -81,7 +81,7 @@ TEST_CASE("slang shaders: the two stages, the include spliced in, the pragmas re
   MemoryFiles files;
   files.texts["/s/shaders/darken.slang"] = kDarken;
   files.texts["/s/shaders/include/common.inc"] = "vec4 scaled(vec4 c, float by) { return vec4(c.rgb * by, c.a); }\n";
-  const SlangSource source = read_ok(files, "/s/shaders/darken.slang");
+  const SlangSource source = read_slang_ok(files, "/s/shaders/darken.slang");
   CHECK(source.name == "Darkened");
   CHECK(source.format == "R16G16B16A16_SFLOAT");
   REQUIRE(source.parameters.size() == 2);
@@ -118,7 +118,7 @@ TEST_CASE("slang shaders: the compiler's messages name the file and line the cod
   files.texts["/s/shaders/darken.slang"] = broken;
   files.texts["/s/shaders/include/common.inc"] =
       "// two lines\nvec4 scaled(vec4 c, float by) { return vec4(c.rgb * by, c.a); }\n";
-  const SlangSource source = read_ok(files, "/s/shaders/darken.slang");
+  const SlangSource source = read_slang_ok(files, "/s/shaders/darken.slang");
   const std::string errors = glslang_errors(source.fragment, "frag");
   INFO(errors);
   CHECK(contains(errors, "/s/shaders/darken.slang:17"));
@@ -131,9 +131,9 @@ TEST_CASE("slang shaders: an optional include that is missing is skipped, a requ
   text.replace(text.find("#include \"include/common.inc\""), 29,
                "#pragma include_optional \"nowhere.inc\"\nvec4 scaled(vec4 c, float by) { return c * by; }");
   files.texts["/s/opt.slang"] = text;
-  CHECK(read_ok(files, "/s/opt.slang").files == std::vector<std::string>{"/s/opt.slang"});
+  CHECK(read_slang_ok(files, "/s/opt.slang").files == std::vector<std::string>{"/s/opt.slang"});
   files.texts["/s/req.slang"] = kDarken;
-  CHECK(read_error(files, "/s/req.slang") == "/s/req.slang:2: #include: /s/include/common.inc: no such file");
+  CHECK(read_slang_error(files, "/s/req.slang") == "/s/req.slang:2: #include: /s/include/common.inc: no such file");
 }
 
 TEST_CASE("slang shaders: malformed files are errors naming the file and line", "[slang][bad]") {
@@ -161,14 +161,14 @@ TEST_CASE("slang shaders: malformed files are errors naming the file and line", 
   for (const auto& [text, expected] : cases) {
     files.texts["/s/x.slang"] = text;
     INFO(text);
-    CHECK(read_error(files, "/s/x.slang") == expected);
+    CHECK(read_slang_error(files, "/s/x.slang") == expected);
   }
   // Numbers read one after the other as RetroArch's sscanf reads them, what follows ignored.
   files.texts["/s/x.slang"] =
       "#version 450\n#pragma parameter a \"A\" 1.0 -3.0 3.0 1.0  // a note\n"
       "#pragma parameter b \"B\"  0  0 0.0.001 0.001\n#pragma parameter c \"C\" 0.5 0 1 ///note\n" +
       stages;
-  const SlangSource read = read_ok(files, "/s/x.slang");
+  const SlangSource read = read_slang_ok(files, "/s/x.slang");
   REQUIRE(read.parameters.size() == 3);
   CHECK(read.parameters[0].minimum == -3.0);
   CHECK(read.parameters[0].step == 1.0);
@@ -178,14 +178,14 @@ TEST_CASE("slang shaders: malformed files are errors naming the file and line", 
   // The same parameter declared twice alike is one parameter (shaders share includes that declare them).
   files.texts["/s/x.slang"] = "#version 450\n#pragma parameter p \"P\" 0 0 1\n#pragma parameter p \"P\" 0 0 1\n" +
                               stages;
-  CHECK(read_ok(files, "/s/x.slang").parameters.size() == 1);
+  CHECK(read_slang_ok(files, "/s/x.slang").parameters.size() == 1);
 }
 
 TEST_CASE("slang shaders: an include loop and includes that multiply stop with an error, not a hang", "[slang][bad]") {
   MemoryFiles files;
   files.texts["/s/loop.slang"] = "#version 450\n#include \"loop.inc\"\n";
   files.texts["/s/loop.inc"] = "// again\n#include \"loop.inc\"\n";
-  CHECK(read_error(files, "/s/loop.slang") ==
+  CHECK(read_slang_error(files, "/s/loop.slang") ==
         "/s/loop.inc:2: includes nest more than 32 deep (does a file include itself?)");
   // Each level includes the next twice: 2^30 copies of the last without a bound.
   files.texts["/s/wide.slang"] = "#version 450\n#include \"w0.inc\"\n";
@@ -193,10 +193,10 @@ TEST_CASE("slang shaders: an include loop and includes that multiply stop with a
     files.texts["/s/w" + std::to_string(i) + ".inc"] = "#include \"w" + std::to_string(i + 1) + ".inc\"\n#include \"w" +
                                                        std::to_string(i + 1) + ".inc\"\n";
   files.texts["/s/w30.inc"] = "// the last\n";
-  CHECK(contains(read_error(files, "/s/wide.slang"), ".inc:2: more than 4096 includes in one shader"));
+  CHECK(contains(read_slang_error(files, "/s/wide.slang"), ".inc:2: more than 4096 includes in one shader"));
   // Few includes of much code.
   files.texts["/s/big.slang"] =
       "#version 450\n#include \"big.inc\"\n#include \"big.inc\"\n#include \"big.inc\"\n#include \"big.inc\"\n";
   files.texts["/s/big.inc"] = std::string(5u << 20, ' ') + "\n";
-  CHECK(read_error(files, "/s/big.slang") == "/s/big.inc:1: the shader grows past 16 MiB of code with its includes");
+  CHECK(read_slang_error(files, "/s/big.slang") == "/s/big.inc:1: the shader grows past 16 MiB of code with its includes");
 }
