@@ -241,7 +241,8 @@ TEST_CASE("preset references: cycles, missing files, a root without passes and a
                                                           ".params\n#reference v" + std::to_string(i + 1) + ".params\n";
   files.texts["/c/v12.params"] = "v = 2\n";
   files.texts["/c/wide.slangp"] = "#reference root.slangp\n#reference v0.params\n";
-  CHECK(read_preset_error(files, "/c/wide.slangp").find(": references reach files more than 256 times") != std::string::npos);
+  CHECK(read_preset_error(files, "/c/wide.slangp").find(": references reach files more than 256 times") !=
+        std::string::npos);
   files.texts["/c/two.slangp"] = "#reference root.slangp\n#reference root.slangp\n";
   CHECK(read_preset_error(files, "/c/two.slangp") ==
         "/c/two.slangp:2: only the first #reference may lead to a preset with passes ('shaders'); this one leads to "

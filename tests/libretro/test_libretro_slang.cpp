@@ -198,5 +198,6 @@ TEST_CASE("slang shaders: an include loop and includes that multiply stop with a
   files.texts["/s/big.slang"] =
       "#version 450\n#include \"big.inc\"\n#include \"big.inc\"\n#include \"big.inc\"\n#include \"big.inc\"\n";
   files.texts["/s/big.inc"] = std::string(5u << 20, ' ') + "\n";
-  CHECK(read_slang_error(files, "/s/big.slang") == "/s/big.inc:1: the shader grows past 16 MiB of code with its includes");
+  CHECK(read_slang_error(files, "/s/big.slang") ==
+        "/s/big.inc:1: the shader grows past 16 MiB of code with its includes");
 }
