@@ -11,6 +11,7 @@
 #include "effect_compiler.hpp"
 #include "fx_effect.hpp"
 #include "fx_frame_params.hpp"
+#include "vk_technique.hpp"
 
 namespace pfx_fx {
 namespace {
@@ -89,6 +90,7 @@ void add_file(FxCatalog& c, const std::string& file, std::set<std::string>& ids)
     entry->file = file;
     entry->technique = technique.name;
     entry->technique_index = static_cast<int>(t);
+    entry->vulkan_unsupported = pfx::fx::vulkan::Technique::unsupported_reason(model, static_cast<int>(t));
     entry->label = pfx::fx::annotation_string(technique.annotations, "ui_label", technique.name);
     entry->description = pfx::fx::annotation_string(technique.annotations, "ui_tooltip",
                                                     "ReShade FX technique " + technique.name + " from " + fs::path(file).filename().string());

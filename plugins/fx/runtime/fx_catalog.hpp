@@ -23,6 +23,7 @@ struct FxEffectEntry {
   std::string technique;  // the technique's name in it
   int technique_index = 0;
   ParamTable params;  // as at 1920x1080
+  std::string vulkan_unsupported;  // why the Vulkan runtime cannot run it, "" when it can
   pfx_effect_desc desc{};
   // params_at's tables, per frame size asked for (kept until the plugin goes: hosts hold them).
   mutable std::mutex sized_mutex;

@@ -232,7 +232,8 @@ void copy_error(const std::string& message, char* error, uint32_t error_size) {
 
 int32_t supports(const char* effect_id) {
   try {
-    return find_effect(effect_id) ? 1 : 0;
+    const FxEffectEntry* entry = find_effect(effect_id);
+    return entry && entry->vulkan_unsupported.empty() ? 1 : 0;
   } catch (...) {
     return 0;
   }

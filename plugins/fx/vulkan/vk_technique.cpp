@@ -43,8 +43,8 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
     return message = "the effect has no technique " + std::to_string(technique), Status::kFailed;
   technique_ = &model_->techniques[static_cast<std::size_t>(technique)];
   width_ = width, height_ = height;
-  const Status supported = check_supported(message);
-  if (supported != Status::kOk) return supported;
+  message = unsupported_reason(*model_, technique);
+  if (!message.empty()) return Status::kUnsupported;
   Diagnostics diagnostics(effect.front->names);
   std::vector<GeneratedPass> generated;
   for (const PassInfo& pass : technique_->passes)
@@ -80,17 +80,15 @@ Technique::Status Technique::create(const Device& device, const CompiledEffect& 
   return Status::kFailed;
 }
 
-Technique::Status Technique::check_supported(std::string& message) const {
-  for (std::size_t index = 0; index < technique_->passes.size(); ++index) {
-    const PassInfo& pass = technique_->passes[index];
-    for (int i = 0; message.empty() && i < pass.render_target_count; ++i)
-      if (pass.render_targets[i] >= 0 && model_->textures[static_cast<std::size_t>(pass.render_targets[i])].dimension != 2)
-        message = pass_label(pass, index) + " renders to a texture that is not 2D";
-    if (!message.empty()) break;
+std::string Technique::unsupported_reason(const EffectModel& model, int technique) {
+  const TechniqueInfo& info = model.techniques.at(static_cast<std::size_t>(technique));
+  for (std::size_t index = 0; index < info.passes.size(); ++index) {
+    const PassInfo& pass = info.passes[index];
+    for (int i = 0; i < pass.render_target_count; ++i)
+      if (pass.render_targets[i] >= 0 && model.textures[static_cast<std::size_t>(pass.render_targets[i])].dimension != 2)
+        return pass_label(pass, index) + " renders to a texture that is not 2D, which the Vulkan runtime does not run yet";
   }
-  if (message.empty()) return Status::kOk;
-  message += ", which the Vulkan runtime does not run yet";
-  return Status::kUnsupported;
+  return "";
 }
 
 std::string Technique::create_images(VkFormat frame_format, const TexelLoader& load_texels) {

@@ -65,6 +65,10 @@ class Technique {
   // `message` says why and nothing is left behind. `device` and `effect` outlive the technique.
   Status create(const Device& device, const CompiledEffect& effect, int technique, int width, int height, VkFormat frame_format,
                 VkPipelineCache cache, const TexelLoader& load_texels, std::string& message);
+  // Why this runtime cannot run technique `technique` of `model`, "" when it can: a pass that
+  // renders to a texture that is not 2D (the GL runtime draws into its first layer). The plugin
+  // asks at listing, so that a host sends such an effect to GL.
+  static std::string unsupported_reason(const EffectModel& model, int technique);
   // Pipelines with `constants` compiled in (GLSL generated with them: the uniforms whose values
   // have settled, fx_settled_values.hpp), so the driver folds what they decide. A pass whose
   // specialised code samples or stores other textures than its live code keeps its live pipeline.
@@ -121,7 +125,6 @@ class Technique {
   const Specialised* specialised_for(const UniformConstants& constants) const;
   void destroy(Specialised& set);
 
-  Status check_supported(std::string& message) const;
   std::string create_images(VkFormat frame_format, const TexelLoader& load_texels);
   std::string create_pass(std::size_t index, const GeneratedPass& generated);
   std::string create_bindings(Pass& pass, const GeneratedPass& generated);

@@ -756,6 +756,24 @@ void ends_natively_tinted(pfx::test::ViewerProcess& app, const ScratchFolder& fo
 
 }  // namespace
 
+TEST_CASE("an FX effect the Vulkan runtime cannot run (a pass drawing into a 3D texture) sends the chain through "
+          "OpenGL, said in the log, and runs there as pfx-render runs it",
+          "[vkcube][native]") {
+  ScratchFolder folder("vulkan-volume");
+  const Frame volume =
+      vkcube_frame(folder, "volume", {"PFX_FX_PATH=" PFX_LAYER_EFFECTS "/Volume.fx", "PFX_INJECT_CHAIN=fx_volume"});
+  INFO(volume.run.output << volume.log);
+  REQUIRE(volume.run.exit_code == 0);
+  CHECK(volume.log.find("the chain runs through OpenGL: fx_volume runs on OpenGL only") != std::string::npos);
+  CHECK(volume.log.find("pass through") == std::string::npos);
+  REQUIRE(volume.presented.width == 320);
+  std::filesystem::copy_file(folder.file("volume.app.png"), folder.file("none.png"));
+  const pfx::app::DisplayImage rendered = rendered_from_pristine(folder, "Volume.fx", {"--chain", "fx_volume"});
+  CHECK(difference(volume.presented, rendered).first <= 1);
+  // Half way to orange everywhere (the 3D texture's first layer, drawn by the first pass).
+  CHECK(distance_from_tinted(volume.presented, volume.app, 0.5) <= 1);
+}
+
 TEST_CASE("a preset's preprocessor definitions run natively in vkcube, giving the GL path's and pfx-render's frame",
           "[vkcube][native]") {
   ScratchFolder folder("vulkan-definitions");
