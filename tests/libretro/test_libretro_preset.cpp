@@ -192,7 +192,7 @@ TEST_CASE("preset references: passes and textures from the root, values from eve
   files.texts["/c/root/crt.slangp"] =
       "shaders = 1\nshader0 = crt.slang\ntextures = mask\nmask = mask.png\n"
       "from_root = 3\nshared = 30\nlast = 300\n";
-  files.texts["/c/values/more.params"] = "shared = 40\nlast = 400\n";
+  files.texts["/c/values/more.params"] = "shared = 40\nlast = 400\nfrom_root = nan\n";
   const Preset preset = read_preset_ok(files, "/c/top.slangp");
   CHECK(preset.path == "/c/top.slangp");
   CHECK(preset.root == "/c/root/crt.slangp");

@@ -263,7 +263,7 @@ bool ends_with(const std::string& text, const std::string& end) {
 std::optional<double> Preset::parameter_value(const std::string& id) const {
   for (auto layer = layers.rbegin(); layer != layers.rend(); ++layer)
     if (const PresetEntry* entry = layer->find(id))
-      if (const auto value = leading_number(entry->value)) return value;
+      if (const auto value = leading_number(entry->value); value && std::isfinite(*value)) return value;
   return std::nullopt;
 }
 

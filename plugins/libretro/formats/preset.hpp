@@ -59,7 +59,8 @@ struct Preset {
   std::vector<LookupTexture> textures;
   std::vector<std::string> warnings;
 
-  // The value the preset gives parameter `id` (a `#pragma parameter` of its shaders), if any.
+  // The value the preset gives parameter `id` (a `#pragma parameter` of its shaders), if any: the
+  // last file's that gives a finite number.
   std::optional<double> parameter_value(const std::string& id) const;
 
   // The files whose entries give parameter values, in the order they apply (later wins).
