@@ -1,0 +1,37 @@
+#pragma once
+// A preset's passes compiled for GL, as an instance makes them at create: each shader read
+// (slang_source.hpp), both stages compiled to SPIR-V by glslang, reflected against the preset's
+// names (its aliases, lookup textures and parameters) and turned into GLSL 4.50 by SPIRV-Cross,
+// then built into a GL program with a uniform buffer for its uniform block and one for its push
+// constants. Errors name the preset and the shader's file and line.
+#include <string>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "lr_catalog.hpp"
+#include "slang_gl.hpp"
+#include "slang_reflection.hpp"
+#include "slang_source.hpp"
+
+namespace pfx_libretro {
+
+struct LrPass {
+  std::string name;  // `#pragma name`, or "" (the preset's alias wins)
+  std::string format;
+  pfx::libretro::PassInterface reads;
+  pfx::libretro::GlPassCode code;
+  GLuint program = 0;
+  GLuint uniform_buffer = 0, push_buffer = 0;            // 0 where the pass has no such block
+  std::vector<unsigned char> uniform_bytes, push_bytes;  // what the buffers hold
+};
+
+// Compiles every pass of the entry's preset to GLSL (CPU only). False with why in *error.
+bool compile_passes(const LrEffectEntry& entry, std::vector<LrPass>* passes, std::string* error);
+
+// Builds the GL programs and buffers. The pass that draws into the host's output (`to_output`)
+// reads gl_FragCoord with an upper-left origin, as every other pass does in its own texture.
+bool build_pass_programs(std::vector<LrPass>& passes, bool last_to_output, std::string* error);
+void release_pass_programs(std::vector<LrPass>& passes);
+
+}  // namespace pfx_libretro
