@@ -160,11 +160,13 @@ std::string plugin_listing_json(const pfx::host::PluginRegistry& registry, const
     p["effects"] = nlohmann::ordered_json::array();
     for (const pfx_effect_desc* effect : plugin->effects) {
       nlohmann::ordered_json e = effect_json(*effect);
-      // An effect made from a ReShade FX file (the FX plugin): which file, which technique.
+      // An effect made from a file: a ReShade FX file's technique (the FX plugin), a libretro preset
+      // (the libretro plugin), or a file of another plugin.
       auto source = plugin->effect_sources.find(effect->id);
       if (source != plugin->effect_sources.end()) {
-        e["fx_file"] = source->second.file;
-        e["fx_technique"] = source->second.name;
+        const bool fx = plugin->id == "org.pfx.fx", libretro = plugin->id == "org.pfx.libretro";
+        e[fx ? "fx_file" : libretro ? "libretro_preset" : "source_file"] = source->second.file;
+        if (!libretro) e[fx ? "fx_technique" : "source_name"] = source->second.name;
       }
       p["effects"].push_back(e);
     }

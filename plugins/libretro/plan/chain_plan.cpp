@@ -34,8 +34,13 @@ ChainPlan plan_chain(const Preset& preset, const std::vector<std::string>& forma
         plan.history = std::max(plan.history, sampler.semantic.index);
     }
   if (count > 0) {
-    const bool last_scaled = preset.passes.back().scaled;
-    plan.finish = last_scaled || plan.passes.back().feedback;
+    // A last pass at the viewport's size draws straight into the output: RetroArch's stock blit
+    // would copy it texel for texel. Not an sRGB one, which that blit reads back decoded.
+    const PresetPass& last = preset.passes.back();
+    const bool viewport_sized = last.x.type == ScaleType::kViewport && last.y.type == ScaleType::kViewport &&
+                                last.x.factor == 1.0 && last.y.factor == 1.0;
+    plan.finish = (last.scaled && !(viewport_sized && plan.passes.back().format != "R8G8B8A8_SRGB")) ||
+                  plan.passes.back().feedback;
     // Into the host's 8-bit output as it is: the format is the output's.
     plan.passes.back().to_output = !plan.finish;
     if (!plan.finish) plan.passes.back().format = "R8G8B8A8_UNORM";

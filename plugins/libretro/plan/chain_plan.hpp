@@ -7,7 +7,8 @@
 //   - a pass without a scale type renders at its source's size; the last one at the viewport's,
 //     straight into the output;
 //   - a last pass with a scale type renders into a texture of its own, and a blit stretches it over
-//     the output (RetroArch appends the same stock pass);
+//     the output (RetroArch appends the same stock pass); pfx leaves the blit out where it would
+//     copy texel for texel (the viewport's size, not sRGB);
 //   - sizes are rounded half away from zero (roundf) and kept within 1..16384 (RetroArch keeps no
 //     bound; a zero-sized or larger framebuffer cannot be made in GL);
 //   - only a pass with a scale type takes srgb_framebufferN (R8G8B8A8_SRGB, winning) or

@@ -79,14 +79,14 @@ void add_preset(LrCatalog& c, const std::string& folder, const std::string& file
     c.errors.push_back({file, as_error(error)});
     return;
   }
-  std::vector<SlangSource> sources;
-  for (const PresetPass& pass : entry->preset.passes) {
-    const SlangSource* source = shaders.read(pass.shader, &error);
+  std::vector<const SlangSource*> sources;
+  for (std::size_t i = 0; i < entry->preset.passes.size(); ++i) {
+    const SlangSource* source = shaders.read(entry->preset.passes[i].shader, &error);
     if (!source) {
-      c.errors.push_back({file, as_error(error)});
+      c.errors.push_back({file, as_error(error) + " (pass " + std::to_string(i) + " of " + file + ")"});
       return;
     }
-    sources.push_back(*source);
+    sources.push_back(source);
   }
   std::vector<std::string> warnings;
   build_parameters(entry->preset, sources, entry->params, warnings);

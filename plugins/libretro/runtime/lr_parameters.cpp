@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <unordered_map>
 
 #include <pfx/cpp/descriptors.hpp>
 #include <pfx/cpp/identifier.hpp>
@@ -27,18 +28,18 @@ bool same_settings(const SlangParameter& a, const SlangParameter& b) {
 
 }  // namespace
 
-void build_parameters(const Preset& preset, const std::vector<SlangSource>& sources, LrParameters& out,
+void build_parameters(const Preset& preset, const std::vector<const SlangSource*>& sources, LrParameters& out,
                       std::vector<std::string>& warnings) {
   std::vector<const SlangParameter*> declared;
-  for (const SlangSource& source : sources)
-    for (const SlangParameter& parameter : source.parameters) {
-      auto first = std::find_if(declared.begin(), declared.end(),
-                                [&](const SlangParameter* p) { return p->id == parameter.id; });
-      if (first == declared.end()) {
+  std::unordered_map<std::string, const SlangParameter*> first;  // some presets declare hundreds in every pass
+  for (const SlangSource* source : sources)
+    for (const SlangParameter& parameter : source->parameters) {
+      auto [found, added] = first.emplace(parameter.id, &parameter);
+      if (added) {
         declared.push_back(&parameter);
-      } else if (!same_settings(**first, parameter)) {
+      } else if (!same_settings(*found->second, parameter)) {
         warnings.push_back(parameter.place.text() + ": warning: parameter '" + parameter.id + "' is declared at " +
-                           (*first)->place.text() + " with other settings; those apply");
+                           found->second->place.text() + " with other settings; those apply");
       }
     }
   std::set<std::string> ids = {"content_width", "content_height"};
