@@ -5,9 +5,9 @@
 // Which pictures are pairs, found by name so a new pair is checked without touching this file:
 //   1. NAME-before.png and NAME-after.png in the same folder, anywhere under docs/ (docs/inject,
 //      and docs/hosts/<adapter>-before.png / -after.png for the video-host adapters).
-//   2. In a folder of one effect's pictures (docs/effects/EFFECT/), the effect's input is
-//      before.png or input.png, and every other picture there of the input's size is the effect
-//      run over it with some setting: each is a pair with the input. A picture of another size
+//   2. In a folder of one input's pictures (docs/effects/EFFECT/, docs/fx/, docs/libretro/), the
+//      input is before.png or input.png, and every other picture there of the input's size is an
+//      effect run over it with some setting: each is a pair with the input. A picture of another size
 //      must be one of the plots named in kPlots, or the test fails: nothing is left out silently.
 // A pair meant to be the same picture (two settings that give the same result) goes in
 // kMeantToBeEqual, and the page showing it says so beside the pictures.
@@ -50,7 +50,7 @@ std::vector<Pair> pairs_under(const fs::path& docs) {
     if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
       pairs.push_back({path.parent_path() / (name.substr(0, name.size() - suffix.size()) + "-before.png"), path});
   }
-  for (const auto& effect : fs::directory_iterator(docs / "effects")) {
+  for (const auto& effect : fs::recursive_directory_iterator(docs)) {
     if (!effect.is_directory()) continue;
     fs::path input;
     for (const char* name : {"before.png", "input.png"})

@@ -75,6 +75,28 @@ TEST_CASE("the bloom filter and the chain filter give the frame of pfx-render wi
   release({bloom, chain, image});
 }
 
+TEST_CASE("a libretro preset in the chain filter, its content size set, gives the frame of pfx-render within one code",
+          "[obs]") {
+  // Before the plugins load: the libretro plugin reads its folders once per process.
+  setenv("PFX_LIBRETRO_PATH", PFX_SOURCE_DIR "/tests/libretro/conformance", 1);
+  ObsSession& obs = ObsSession::get();
+  Scratch scratch;
+  const auto picture = write_photo_crop(scratch / "in.png", 200, 180, 96, 64);
+  const auto reference = pfx_render_picture(scratch / "in.png", "libretro_passthrough",
+                                            {"libretro_passthrough.content_height=16"}, scratch / "pfx-render.png");
+  REQUIRE(worst_difference_pictures(reference, picture) > 8);  // 16 lines of content over 64 show
+
+  obs_source_t* image = obs.image_source(scratch / "in.png");
+  obs_data_t* values = settings_of([](obs_data_t* s) {
+    obs_data_set_string(s, "chain", "libretro_passthrough");
+    obs_data_set_string(s, "set", "libretro_passthrough.content_height=16");
+  });
+  obs_source_t* chain = obs.add_filter(image, "pfx_chain_filter", values);
+  CHECK(worst_difference(obs.render(image), reference) <= 1);
+  obs_data_release(values);
+  release({chain, image});
+}
+
 TEST_CASE("the picture in docs/hosts.md is what the bloom filter gives in OBS", "[obs]") {
   // PFX_OBS_WRITE_DOCS_PICTURES=1 makes the pair first: the before picture cut from a photograph
   // Debian ships, the after picture what OBS gives now.
