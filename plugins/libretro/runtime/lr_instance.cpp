@@ -221,6 +221,7 @@ void LrInstance::draw_into(GLuint texture, PixelSize size, bool srgb) {
 }
 
 void LrInstance::run_content(const pfx_pass_context& context) {
+  textures_.upload_lookups();
   if (remake_ || !textures_.made()) {
     textures_.make(plan_, content_, sizes_);
     remake_ = false;
@@ -350,9 +351,10 @@ void LrInstance::run_finish(const pfx_pass_context& context) {
 }
 
 const char* LrInstance::report_json() {
-  char text[160];
-  std::snprintf(text, sizeof text, "\"passes\": %zu, \"compile_ms\": %.1f, \"gl_build_ms\": %.1f", passes_.size(),
-                compile_ms_, gl_build_ms_);
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "\"passes\": %zu, \"compile_ms\": %.1f, \"gl_build_ms\": %.1f, \"texture_bytes\": %zu", passes_.size(),
+                compile_ms_, gl_build_ms_, textures_.bytes());
   report_ = text;
   return report_.c_str();
 }

@@ -32,7 +32,8 @@ class LrInstance {
   pfx_status create();
   pfx_status declare(const pfx_frame* frame, const pfx_value* params, pfx_declaration* out);
   pfx_status run_pass(const pfx_pass_context* context);
-  // "passes", "compile_ms" (the shaders to GLSL, on the CPU) and "gl_build_ms" (the GL programs).
+  // "passes", "compile_ms" (the shaders to GLSL, on the CPU), "gl_build_ms" (the GL programs) and
+  // "texture_bytes" (what the chain's own textures hold: the host's peak target bytes leave them out).
   const char* report_json();
 
  private:

@@ -33,7 +33,8 @@ struct LrParameters {
 
 // The parameters of a preset whose passes' shaders are `sources`; `warnings` collects ids declared
 // twice with different settings (the first declaration is kept).
-void build_parameters(const pfx::libretro::Preset& preset, const std::vector<const pfx::libretro::SlangSource*>& sources,
-                      LrParameters& out, std::vector<std::string>& warnings);
+void build_parameters(const pfx::libretro::Preset& preset,
+                      const std::vector<const pfx::libretro::SlangSource*>& sources, LrParameters& out,
+                      std::vector<std::string>& warnings);
 
 }  // namespace pfx_libretro

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "lr_images.hpp"
 
@@ -52,6 +53,18 @@ int full_mip_levels(PixelSize size) {
   return 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(std::max(size.width, size.height)))));
 }
 
+std::size_t texture_bytes(const std::string& format, PixelSize size, int levels) {
+  // Components times their bits, from the name: R16G16_SFLOAT is 2 x 16 bits.
+  std::size_t bits = 0;
+  for (std::size_t at = 0; at < format.size() && format[at] != '_'; ++at)
+    if (format[at] >= 'A' && format[at] <= 'Z') bits += static_cast<std::size_t>(std::atoi(format.c_str() + at + 1));
+  std::size_t bytes = 0;
+  for (int level = 0; level < levels; ++level)
+    bytes += static_cast<std::size_t>(std::max(1, size.width >> level)) *
+             static_cast<std::size_t>(std::max(1, size.height >> level));
+  return bytes * (bits / 8);
+}
+
 namespace {
 
 // A texture of `levels` mips, every texel zero: history and feedback start black.
@@ -90,15 +103,26 @@ bool LrTextures::load_lookups(const pfx::libretro::Preset& preset, std::string* 
     }
     Lookup lookup;
     lookup.size = {image.width, image.height};
-    const int levels = texture.mipmap ? full_mip_levels(lookup.size) : 1;
-    glCreateTextures(GL_TEXTURE_2D, 1, &lookup.texture);
-    glTextureStorage2D(lookup.texture, levels, GL_RGBA8, image.width, image.height);
-    glTextureSubImage2D(lookup.texture, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                        image.rgba.data());
-    if (levels > 1) glGenerateTextureMipmap(lookup.texture);
-    lookups_.push_back(lookup);
+    lookup.mipmap = texture.mipmap;
+    lookup.rgba = std::move(image.rgba);
+    lookup_bytes_ += texture_bytes("R8G8B8A8_UNORM", lookup.size, texture.mipmap ? full_mip_levels(lookup.size) : 1);
+    lookups_.push_back(std::move(lookup));
   }
   return true;
+}
+
+void LrTextures::upload_lookups() {
+  for (Lookup& lookup : lookups_) {
+    if (lookup.texture) continue;
+    const int levels = lookup.mipmap ? full_mip_levels(lookup.size) : 1;
+    glCreateTextures(GL_TEXTURE_2D, 1, &lookup.texture);
+    glTextureStorage2D(lookup.texture, levels, GL_RGBA8, lookup.size.width, lookup.size.height);
+    // Rows of RGBA8 meet the contract's alignment of 4; nothing is bound to the unpack buffer.
+    glTextureSubImage2D(lookup.texture, 0, 0, 0, lookup.size.width, lookup.size.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        lookup.rgba.data());
+    if (levels > 1) glGenerateTextureMipmap(lookup.texture);
+    lookup.rgba = {};
+  }
 }
 
 void LrTextures::make(const ChainPlan& plan, PixelSize content, const std::vector<PixelSize>& sizes) {
@@ -106,6 +130,7 @@ void LrTextures::make(const ChainPlan& plan, PixelSize content, const std::vecto
   original_levels_ = plan.original_mipmapped ? full_mip_levels(content) : 1;
   history_.resize(static_cast<std::size_t>(plan.history) + 1);
   for (GLuint& texture : history_) texture = cleared_texture(GL_RGBA8, content, original_levels_, false);
+  frame_bytes_ = history_.size() * texture_bytes("R8G8B8A8_UNORM", content, original_levels_);
   current_ = 0;
   passes_.assign(plan.passes.size(), PassTextures{});
   for (std::size_t i = 0; i < plan.passes.size(); ++i) {
@@ -114,8 +139,10 @@ void LrTextures::make(const ChainPlan& plan, PixelSize content, const std::vecto
     PassTextures& t = passes_[i];
     t.levels = pass.mipmapped ? full_mip_levels(sizes[i]) : 1;
     const bool integer = pfx::libretro::is_integer_format(pass.format);
-    for (int k = 0; k < (pass.feedback ? 2 : 1); ++k)
+    for (int k = 0; k < (pass.feedback ? 2 : 1); ++k) {
       t.texture[k] = cleared_texture(gl_format(pass.format), sizes[i], t.levels, integer);
+      frame_bytes_ += texture_bytes(pass.format, sizes[i], t.levels);
+    }
   }
   parity_ = 0;
   made_ = true;
@@ -169,7 +196,8 @@ void LrTextures::release_frame_textures() {
 
 void LrTextures::release() {
   release_frame_textures();
-  for (Lookup& lookup : lookups_) glDeleteTextures(1, &lookup.texture);
+  for (Lookup& lookup : lookups_)
+    if (lookup.texture) glDeleteTextures(1, &lookup.texture);
   lookups_.clear();
   for (auto& [key, sampler] : samplers_) glDeleteSamplers(1, &sampler);
   samplers_.clear();

@@ -28,8 +28,11 @@ class LrTextures {
   LrTextures& operator=(const LrTextures&) = delete;
   ~LrTextures() { release(); }
 
-  // The preset's lookup textures, decoded and uploaded. False with the file and why in *error.
+  // The preset's lookup textures, decoded (no GL). False with the file and why in *error.
   bool load_lookups(const pfx::libretro::Preset& preset, std::string* error);
+  // Uploads what load_lookups decoded, once: in a pass, where the ABI sets the pixel store
+  // (create runs under whatever state the host's engine left).
+  void upload_lookups();
   // Makes the frame textures for a picture of `content` and passes of `sizes` (history and
   // feedback start black again).
   void make(const pfx::libretro::ChainPlan& plan, pfx::libretro::PixelSize content,
@@ -46,6 +49,8 @@ class LrTextures {
   int pass_levels(int pass) const { return passes_[static_cast<std::size_t>(pass)].levels; }
   int original_levels() const { return original_levels_; }
   bool made() const { return made_; }
+  // The bytes the frame and lookup textures hold (every mip level), for the effect's report.
+  std::size_t bytes() const { return frame_bytes_ + lookup_bytes_; }
 
   // A sampler object (made once) that filters linearly or not, wraps so, and uses mips or not.
   GLuint sampler(bool linear, pfx::libretro::WrapMode wrap, bool mipmaps);
@@ -58,6 +63,8 @@ class LrTextures {
   struct Lookup {
     GLuint texture = 0;
     pfx::libretro::PixelSize size;
+    bool mipmap = false;
+    std::vector<unsigned char> rgba;  // until uploaded
   };
   std::vector<GLuint> history_;  // ring: history_[current_] is this frame's
   int original_levels_ = 1;
@@ -67,6 +74,7 @@ class LrTextures {
   std::vector<Lookup> lookups_;
   std::map<std::tuple<bool, int, bool>, GLuint> samplers_;
   bool made_ = false;
+  std::size_t frame_bytes_ = 0, lookup_bytes_ = 0;
   void release_frame_textures();
 };
 
@@ -74,5 +82,7 @@ class LrTextures {
 GLenum gl_format(const std::string& format);
 // Mip levels of a full chain for a texture of `size`.
 int full_mip_levels(pfx::libretro::PixelSize size);
+// Bytes of a texture of `size` with `levels` mips, in a `#pragma format`.
+std::size_t texture_bytes(const std::string& format, pfx::libretro::PixelSize size, int levels);
 
 }  // namespace pfx_libretro
