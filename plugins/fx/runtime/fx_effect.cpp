@@ -1,10 +1,9 @@
 #include "fx_effect.hpp"
 
-#include <array>
 #include <mutex>
 #include <set>
-#include <utility>
 
+#include <pfx/cpp/create_functions.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "fx_instance.hpp"
@@ -14,8 +13,6 @@ namespace {
 
 std::mutex live_mutex;
 std::set<const void*> live;  // the instances made and not destroyed
-
-using CreateFn = pfx_status (*)(const pfx_host*, void**);
 
 pfx_status create_effect(std::size_t index, const pfx_host* host, void** out_instance) {
   if (!out_instance || !pfx::plugin::usable_host(host)) return PFX_INVALID_ARGUMENT;
@@ -31,17 +28,7 @@ pfx_status create_effect(std::size_t index, const pfx_host* host, void** out_ins
   });
 }
 
-template <std::size_t I>
-pfx_status create_at(const pfx_host* host, void** out_instance) {
-  return create_effect(I, host, out_instance);
-}
-
-template <std::size_t... I>
-constexpr std::array<CreateFn, sizeof...(I)> create_table(std::index_sequence<I...>) {
-  return {&create_at<I>...};
-}
-
-constexpr std::array<CreateFn, kMaxEffects> kCreate = create_table(std::make_index_sequence<kMaxEffects>{});
+constexpr auto kCreate = pfx::plugin::create_functions<kMaxEffects, create_effect>();
 
 void destroy(void* instance) {
   try {
@@ -56,7 +43,8 @@ void destroy(void* instance) {
 
 pfx_status declare(void* instance, const pfx_frame* frame, const pfx_value* params, pfx_declaration* out) {
   if (!instance || !pfx::plugin::usable_declare_arguments(frame, params, out)) return PFX_INVALID_ARGUMENT;
-  return pfx::plugin::without_exceptions([&] { return static_cast<FxInstance*>(instance)->declare(frame, params, out); });
+  return pfx::plugin::without_exceptions(
+      [&] { return static_cast<FxInstance*>(instance)->declare(frame, params, out); });
 }
 
 pfx_status run_pass(void* instance, const pfx_pass_context* context) {

@@ -1,16 +1,12 @@
 #include "lr_effect.hpp"
 
-#include <array>
-#include <utility>
-
+#include <pfx/cpp/create_functions.hpp>
 #include <pfx/cpp/plugin_entry.hpp>
 
 #include "lr_instance.hpp"
 
 namespace pfx_libretro {
 namespace {
-
-using CreateFn = pfx_status (*)(const pfx_host*, void**);
 
 pfx_status create_effect(std::size_t index, const pfx_host* host, void** out_instance) {
   if (!out_instance || !pfx::plugin::usable_host(host)) return PFX_INVALID_ARGUMENT;
@@ -25,17 +21,7 @@ pfx_status create_effect(std::size_t index, const pfx_host* host, void** out_ins
   });
 }
 
-template <std::size_t I>
-pfx_status create_at(const pfx_host* host, void** out_instance) {
-  return create_effect(I, host, out_instance);
-}
-
-template <std::size_t... I>
-constexpr std::array<CreateFn, sizeof...(I)> create_table(std::index_sequence<I...>) {
-  return {&create_at<I>...};
-}
-
-constexpr std::array<CreateFn, kMaxEffects> kCreate = create_table(std::make_index_sequence<kMaxEffects>{});
+constexpr auto kCreate = pfx::plugin::create_functions<kMaxEffects, create_effect>();
 
 void destroy(void* instance) {
   try {
