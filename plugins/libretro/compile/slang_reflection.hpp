@@ -1,8 +1,7 @@
 #pragma once
-// What a slang pass's SPIR-V reads, found by SPIRV-Cross's reflection (Debian's
-// libspirv-cross-c-shared): its uniform block and push constants, each member the pass uses with
-// its offset and what its name stands for (slang_semantics.hpp), and its samplers with their
-// bindings. The format's rules are checked here, as RetroArch checks them: descriptor set 0, at
+// What a slang pass's SPIR-V reads, found by SPIRV-Cross's reflection (Debian's static
+// libraries): its uniform block and push constants, each member the pass uses with its offset and
+// what its name stands for (slang_semantics.hpp), and its samplers with their bindings. The format's rules are checked here, as RetroArch checks them: descriptor set 0, at
 // most one block of each kind, the same block at the same binding in both stages with its members
 // at the same offsets, samplers only in the fragment stage, every name one the format knows, of
 // the type the format gives it.
