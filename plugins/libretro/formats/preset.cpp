@@ -298,6 +298,14 @@ bool read_preset(const std::string& path, const TextReader& read, Preset* out, s
   out->format = ends_with(root->path, ".glslp") ? PresetFormat::kGlsl : PresetFormat::kSlang;
   RootReader reader(*root, *out, *error);
   if (!reader.passes() || !reader.textures(layers)) return false;
+  if (const PresetEntry* feedback = root->find("feedback_pass")) {
+    const auto pass = leading_unsigned(feedback->value);
+    if (pass && *pass < out->passes.size())
+      out->feedback_pass = static_cast<int>(*pass);
+    else
+      out->warnings.push_back(feedback->place.text() + ": '" + feedback->value +
+                              "' is not a pass of this preset: no pass is fed back");
+  }
   std::vector<const PresetFile*> warned;  // a file reached by two references warns once
   for (const PresetFile* layer : layers) {
     out->layers.push_back(*layer);

@@ -57,6 +57,9 @@ struct Preset {
   PresetFormat format = PresetFormat::kSlang;
   std::vector<PresetPass> passes;
   std::vector<LookupTexture> textures;
+  // `feedback_pass` (the GLSL form): the pass whose last-frame output GLSL shaders sample as
+  // `FeedbackTexture`; -1 for none. Slang shaders name theirs (PassFeedbackN) instead.
+  int feedback_pass = -1;
   std::vector<std::string> warnings;
 
   // The value the preset gives parameter `id` (a `#pragma parameter` of its shaders), if any: the

@@ -59,9 +59,8 @@ bool quoted(const std::string& text, std::string* inside) {
   return true;
 }
 
-// `ID "Label" initial minimum maximum [step]`, read as RetroArch reads it (with sscanf): the
-// numbers one after the other, each as long as it reads as one ("0.0.001" is 0.0 then .001), what
-// follows the last ignored (collections write comments there). "" or why not.
+}  // namespace
+
 std::string parse_parameter(const std::string& text, SlangParameter* out) {
   std::istringstream words(text);
   if (!(words >> out->id)) return "a parameter needs an id";
@@ -86,6 +85,8 @@ std::string parse_parameter(const std::string& text, SlangParameter* out) {
   out->step = values.size() == 4 ? values[3] : 0.1 * (values[2] - values[1]);
   return "";
 }
+
+namespace {
 
 enum class Stage { kBoth, kVertex, kFragment };
 

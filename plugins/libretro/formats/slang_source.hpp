@@ -38,6 +38,12 @@ constexpr std::size_t kMaxSlangSourceBytes = 16u << 20;
 // False with "file:line: why" in *error.
 bool read_slang(const std::string& path, const TextReader& read, SlangSource* out, std::string* error);
 
+// The text after `#pragma parameter`: `ID "Label" initial minimum maximum [step]`, read as
+// RetroArch reads it (with sscanf): the numbers one after the other, each as long as it reads as one
+// ("0.0.001" is 0.0 then .001), what follows the last ignored (collections write comments there).
+// Returns "" or why not. Both shader forms write parameters so.
+std::string parse_parameter(const std::string& text, SlangParameter* out);
+
 // The formats `#pragma format` may name, as RetroArch lists them.
 bool is_slang_format(const std::string& name);
 

@@ -11,6 +11,7 @@
 
 #include <pfx/cpp/identifier.hpp>
 
+#include "glsl_source.hpp"
 #include "lr_effect.hpp"
 #include "slang_source.hpp"
 
@@ -27,14 +28,16 @@ std::string plugin_folder() {
   return ".";
 }
 
-// Every .slangp under `folder` (or the file itself), sorted, so the list is the same on every run.
+// Every .slangp and .glslp under `folder` (or the file itself), sorted, so the list is the same on
+// every run.
 std::vector<std::string> preset_files(const std::string& folder) {
   std::vector<std::string> files;
   std::error_code ec;
   if (fs::is_regular_file(folder, ec)) return {folder};
   for (fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
        !ec && it != end; it.increment(ec))
-    if (it->is_regular_file(ec) && it->path().extension() == ".slangp") files.push_back(it->path().string());
+    if (it->is_regular_file(ec) && (it->path().extension() == ".slangp" || it->path().extension() == ".glslp"))
+      files.push_back(it->path().string());
   std::sort(files.begin(), files.end());
   return files;
 }
@@ -54,7 +57,10 @@ class ShaderParameters {
     if (found == read_.end()) {
       Entry entry;
       SlangSource full;
-      if (read_slang(path, read_text_file, &full, &entry.error)) entry.source.parameters = std::move(full.parameters);
+      const bool glsl = fs::path(path).extension() != ".slang";  // .glsl, or what a .glslp names
+      if (glsl ? read_glsl(path, read_text_file, &full, &entry.error)
+               : read_slang(path, read_text_file, &full, &entry.error))
+        entry.source.parameters = std::move(full.parameters);
       entry.ok = entry.error.empty();
       found = read_.emplace(path, std::move(entry)).first;
     }
@@ -93,14 +99,17 @@ void add_preset(LrCatalog& c, const std::string& folder, const std::string& file
   std::error_code ec;
   fs::path relative = fs::is_directory(folder, ec) ? fs::relative(file, folder, ec) : fs::path(file).filename();
   if (ec || relative.empty()) relative = fs::path(file).filename();
-  const std::string base = "libretro_" + pfx::identifier_from(relative.replace_extension().string());
+  // The GLSL form of a preset has the slang form's id and "_glsl": collections ship both.
+  const bool glsl = entry->preset.format == PresetFormat::kGlsl;
+  const std::string base = "libretro_" + pfx::identifier_from(relative.replace_extension().string()) +
+                           (glsl ? "_glsl" : "");
   entry->id = base;
   for (int k = 2; ids.count(entry->id); ++k) entry->id = base + "_" + std::to_string(k);
   ids.insert(entry->id);
   entry->file = file;
-  entry->label = fs::path(file).stem().string();
-  entry->description = "libretro shader preset " + relative.string() + " (" +
-                       std::to_string(entry->preset.passes.size()) +
+  entry->label = fs::path(file).stem().string() + (glsl ? " (GLSL)" : "");
+  entry->description = std::string(glsl ? "libretro GLSL shader preset " : "libretro shader preset ") +
+                       relative.string() + " (" + std::to_string(entry->preset.passes.size()) +
                        (entry->preset.passes.size() == 1 ? " pass)" : " passes)");
   c.effects.push_back(std::move(entry));
 }

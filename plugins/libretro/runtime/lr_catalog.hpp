@@ -1,12 +1,13 @@
 #pragma once
 // Every libretro preset the plugin offers, found once per process (on the first call of the effect
-// factory, never in init): each `*.slangp` under the folders of PFX_LIBRETRO_PATH (':'-separated,
+// factory, never in init): each `*.slangp` and `*.glslp` under the folders of PFX_LIBRETRO_PATH (':'-separated,
 // searched with their sub-folders) and the folder installed beside the plugin
 // (<plugin folder>/libretro/shaders). Listing reads the presets and their shaders' `#pragma
 // parameter` lines only; the passes are compiled when an instance is made, so a collection of
 // thousands of presets lists quickly. Each preset becomes an effect "libretro_<path>", the preset's
 // path under its search folder without the extension made into an id (crt/crt-geom.slangp:
-// libretro_crt_crt_geom), with its shaders' parameters; a preset that cannot be read is kept with
+// libretro_crt_crt_geom; a .glslp adds "_glsl": libretro_crt_crt_geom_glsl), with its shaders'
+// parameters; a preset that cannot be read is kept with
 // its error and stops nothing else.
 #include <memory>
 #include <string>

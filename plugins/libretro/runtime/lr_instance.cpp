@@ -7,6 +7,7 @@
 #include <pfx/cpp/gl_program.hpp>
 
 #include "content_size.hpp"
+#include "lr_glsl_pass.hpp"
 #include "lr_uniform_values.hpp"
 
 namespace pfx_libretro {
@@ -33,6 +34,10 @@ constexpr float kIdentity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}
 // Position (x, y) in 0..1 to clip (2x - 1, 1 - 2y): y = 0 at the output's top, since GL counts
 // its rows from the bottom.
 constexpr float kOutputMvp[16] = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
+// The GLSL form's MVPMatrix: RetroArch's orthographic projection of 0..1 (near -1, far 1), for a
+// pass into a texture; flipped like kOutputMvp for the pass into the output.
+constexpr float kGlslMvp[16] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, -1, 0, -1, -1, 0, 1};
+constexpr float kGlslOutputMvp[16] = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, -1, 0, -1, 1, 0, 1};
 
 // The host's frame (bottom row first) into the original picture (top row first), each texel the
 // average of taps x taps bilinear samples over its footprint: an exact copy at the same size.
@@ -103,6 +108,7 @@ LrInstance::~LrInstance() {
   textures_.release();
   if (vao_) glDeleteVertexArrays(1, &vao_);
   if (vertices_) glDeleteBuffers(1, &vertices_);
+  if (glsl_vertices_) glDeleteBuffers(1, &glsl_vertices_);
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
   if (content_program_) glDeleteProgram(content_program_);
   if (finish_program_) glDeleteProgram(finish_program_);
@@ -125,12 +131,20 @@ pfx_status LrInstance::create() {
     log(PFX_LOG_ERROR, error);
     return PFX_ERROR;
   }
+  compile_ms_ = ms_since(start);
+  start = Clock::now();
+  const std::vector<float>& glsl_vertices = glsl_vertex_data();
+  glCreateBuffers(1, &glsl_vertices_);
+  glNamedBufferStorage(glsl_vertices_, static_cast<GLsizeiptr>(glsl_vertices.size() * sizeof(float)),
+                       glsl_vertices.data(), 0);
+  if (!link_glsl_passes(entry_, passes_, glsl_vertices_, &error)) {  // what they read is known once linked
+    log(PFX_LOG_ERROR, error);
+    return PFX_ERROR;
+  }
   std::vector<std::string> formats;
   std::vector<PassInterface> reads;
   for (const LrPass& pass : passes_) formats.push_back(pass.format), reads.push_back(pass.reads);
   plan_ = plan_chain(entry_.preset, formats, reads);
-  compile_ms_ = ms_since(start);
-  start = Clock::now();
   const bool last_to_output = !plan_.passes.empty() && plan_.passes.back().to_output;
   if (!build_pass_programs(passes_, last_to_output, &error) ||
       !(content_program_ = pfx::gl::build_fullscreen_program(kContentShader, &error)) ||
@@ -311,7 +325,10 @@ void LrInstance::run_preset_pass(int index) {
   // else: the host bound its output and viewport, and left sRGB encoding off (display-referred).
 
   PassValues values;
-  values.mvp = plan.to_output ? kOutputMvp : kIdentity;
+  if (pass.glsl)
+    values.mvp = plan.to_output ? kGlslOutputMvp : kGlslMvp;
+  else
+    values.mvp = plan.to_output ? kOutputMvp : kIdentity;
   values.output = sizes_[static_cast<std::size_t>(index)];
   values.source = index == 0 ? content_ : sizes_[static_cast<std::size_t>(index - 1)];
   values.original = content_;
@@ -333,10 +350,11 @@ void LrInstance::run_preset_pass(int index) {
     glNamedBufferSubData(pass.push_buffer, 0, static_cast<GLsizeiptr>(pass.push_bytes.size()), pass.push_bytes.data());
     glBindBufferBase(GL_UNIFORM_BUFFER, pass.code.push_binding, pass.push_buffer);
   }
+  if (pass.glsl) set_glsl_values(pass, values);
   bind_samplers(index);
   glUseProgram(pass.program);
-  glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLE_STRIP, plan.to_output ? 4 : 0, 4);
+  glBindVertexArray(pass.glsl ? pass.glsl_vao : vao_);
+  glDrawArrays(GL_TRIANGLE_STRIP, plan.to_output && !pass.glsl ? 4 : 0, 4);
   if (plan.mipmapped) glGenerateTextureMipmap(textures_.pass_output(index));
 }
 

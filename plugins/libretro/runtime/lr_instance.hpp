@@ -67,7 +67,7 @@ class LrInstance {
 
   LrTextures textures_;
   bool remake_ = true;  // the frame textures do not fit the declared sizes
-  GLuint vao_ = 0, vertices_ = 0, framebuffer_ = 0, content_program_ = 0, finish_program_ = 0;
+  GLuint vao_ = 0, vertices_ = 0, glsl_vertices_ = 0, framebuffer_ = 0, content_program_ = 0, finish_program_ = 0;
   std::vector<GLuint> high_units_;  // units past 15 the running pass bound, unbound when it returns
   double compile_ms_ = 0, gl_build_ms_ = 0;
   std::string report_;

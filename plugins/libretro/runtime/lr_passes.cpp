@@ -2,6 +2,7 @@
 
 #include <pfx/cpp/gl_program.hpp>
 
+#include "glsl_source.hpp"
 #include "slang_spirv.hpp"
 
 namespace pfx_libretro {
@@ -10,6 +11,18 @@ using namespace pfx::libretro;
 
 bool compile_passes(const LrEffectEntry& entry, std::vector<LrPass>* passes, std::string* error) {
   const Preset& preset = entry.preset;
+  if (preset.format == PresetFormat::kGlsl) {
+    passes->assign(preset.passes.size(), LrPass{});
+    for (std::size_t i = 0; i < preset.passes.size(); ++i) {
+      SlangSource source;
+      if (!read_glsl(preset.passes[i].shader, read_text_file, &source, error)) return false;
+      LrPass& pass = (*passes)[i];
+      pass.glsl = true;
+      pass.code.vertex = std::move(source.vertex);
+      pass.code.fragment = std::move(source.fragment);
+    }
+    return true;
+  }
   std::vector<SlangSource> sources(preset.passes.size());
   SemanticContext context;
   for (std::size_t i = 0; i < preset.passes.size(); ++i) {
@@ -63,6 +76,7 @@ GLuint block_buffer(const ReflectedBlock& block, std::vector<unsigned char>* byt
 bool build_pass_programs(std::vector<LrPass>& passes, bool last_to_output, std::string* error) {
   for (std::size_t i = 0; i < passes.size(); ++i) {
     LrPass& pass = passes[i];
+    if (pass.glsl) continue;  // linked by link_glsl_passes
     const std::string fragment = last_to_output && i + 1 == passes.size() ? with_upper_left_origin(pass.code.fragment)
                                                                           : pass.code.fragment;
     const GLenum stages[] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
@@ -83,6 +97,7 @@ void release_pass_programs(std::vector<LrPass>& passes) {
     if (pass.program) glDeleteProgram(pass.program);
     if (pass.uniform_buffer) glDeleteBuffers(1, &pass.uniform_buffer);
     if (pass.push_buffer) glDeleteBuffers(1, &pass.push_buffer);
+    if (pass.glsl_vao) glDeleteVertexArrays(1, &pass.glsl_vao);
     pass = LrPass{};
   }
 }

@@ -27,6 +27,27 @@ PixelSize indexed(const std::vector<PixelSize>* sizes, int index) {
 
 }  // namespace
 
+PixelSize semantic_size(const Semantic& semantic, const PassValues& values) {
+  switch (semantic.kind) {
+    case SemanticKind::kOutputSize:
+      return values.output;
+    case SemanticKind::kFinalViewportSize:
+      return values.viewport;
+    case SemanticKind::kOriginalSize:
+    case SemanticKind::kOriginalHistorySize:
+      return values.original;
+    case SemanticKind::kSourceSize:
+      return values.source;
+    case SemanticKind::kPassOutputSize:
+    case SemanticKind::kPassFeedbackSize:
+      return indexed(values.pass_sizes, semantic.index);
+    case SemanticKind::kUserSize:
+      return indexed(values.lookup_sizes, semantic.index);
+    default:
+      return PixelSize{};
+  }
+}
+
 void write_block_values(const ReflectedBlock& block, const PassValues& values, std::vector<unsigned char>& bytes) {
   for (const ReflectedMember& member : block.members) {
     const std::uint32_t at = member.offset;
@@ -36,10 +57,8 @@ void write_block_values(const ReflectedBlock& block, const PassValues& values, s
         put(bytes, at, values.mvp, 16);
         break;
       case SemanticKind::kOutputSize:
-        put_size(bytes, at, values.output);
-        break;
       case SemanticKind::kFinalViewportSize:
-        put_size(bytes, at, values.viewport);
+        put_size(bytes, at, semantic_size(member.semantic, values));
         break;
       case SemanticKind::kFrameCount:
         put(bytes, at, &values.frame_count, 1);
@@ -79,17 +98,11 @@ void write_block_values(const ReflectedBlock& block, const PassValues& values, s
       }
       case SemanticKind::kOriginalSize:
       case SemanticKind::kOriginalHistorySize:
-        put_size(bytes, at, values.original);
-        break;
       case SemanticKind::kSourceSize:
-        put_size(bytes, at, values.source);
-        break;
       case SemanticKind::kPassOutputSize:
       case SemanticKind::kPassFeedbackSize:
-        put_size(bytes, at, indexed(values.pass_sizes, index));
-        break;
       case SemanticKind::kUserSize:
-        put_size(bytes, at, indexed(values.lookup_sizes, index));
+        put_size(bytes, at, semantic_size(member.semantic, values));
         break;
       default:
         break;  // textures are not block members

@@ -21,6 +21,9 @@ struct PassValues {
   float original_fps = 60;
 };
 
+// The size a size semantic (OutputSize, SourceSize, PassOutputSize2...) stands for this frame.
+pfx::libretro::PixelSize semantic_size(const pfx::libretro::Semantic& semantic, const PassValues& values);
+
 // Writes every member of `block` into `bytes` (block.size bytes).
 void write_block_values(const pfx::libretro::ReflectedBlock& block, const PassValues& values,
                         std::vector<unsigned char>& bytes);

@@ -1,0 +1,29 @@
+#pragma once
+// A pass of a GLSL-form preset (.glslp) on GL. Its code goes to GL as written (glsl_source.hpp):
+// what it reads is found once it links, by GL's list of the program's active uniforms and
+// attributes, named as RetroArch's gl driver names them (glsl_names.hpp); each sampler gets a
+// texture unit, each value is set with glProgramUniform every frame, and a vertex array feeds the
+// attributes: VertexCoord (0..1 over the target), TexCoord and every `<picture>TexCoord` (0..1
+// over the picture: each texture is its picture's size), Color and COLOR (white).
+#include <string>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "lr_passes.hpp"
+#include "lr_uniform_values.hpp"
+
+namespace pfx_libretro {
+
+// Links the GL program of every GLSL pass of `passes` and finds what it reads (into pass.reads
+// and pass.glsl_values). `vertices` is the buffer of glsl_vertex_data(). False with the
+// compiler's message, lines as file:line:column, in *error.
+bool link_glsl_passes(const LrEffectEntry& entry, std::vector<LrPass>& passes, GLuint vertices, std::string* error);
+
+// The quad a GLSL pass draws as a strip: per vertex VertexCoord (x, y), TexCoord (u, v), Color.
+const std::vector<float>& glsl_vertex_data();
+
+// Sets the pass's values for this frame (MVPMatrix, sizes, FrameCount, parameters).
+void set_glsl_values(const LrPass& pass, const PassValues& values);
+
+}  // namespace pfx_libretro

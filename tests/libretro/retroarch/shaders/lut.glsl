@@ -1,0 +1,39 @@
+// A lookup texture over the picture.
+#if defined(VERTEX)
+#if __VERSION__ >= 130
+#define COMPAT_VARYING out
+#define COMPAT_ATTRIBUTE in
+#else
+#define COMPAT_VARYING varying
+#define COMPAT_ATTRIBUTE attribute
+#endif
+COMPAT_ATTRIBUTE vec4 VertexCoord;
+COMPAT_ATTRIBUTE vec4 TexCoord;
+COMPAT_VARYING vec4 TEX0;
+uniform mat4 MVPMatrix;
+void main() {
+  gl_Position = MVPMatrix * VertexCoord;
+  TEX0 = TexCoord;
+}
+#elif defined(FRAGMENT)
+#if __VERSION__ >= 130
+#define COMPAT_VARYING in
+#define COMPAT_TEXTURE texture
+out vec4 FragColor;
+#else
+#define COMPAT_VARYING varying
+#define FragColor gl_FragColor
+#define COMPAT_TEXTURE texture2D
+#endif
+COMPAT_VARYING vec4 TEX0;
+uniform sampler2D Texture;
+uniform sampler2D palette;
+uniform vec2 TextureSize;
+uniform vec2 InputSize;
+// Half the picture, half the lookup texture `palette` stretched over the picture.
+void main() {
+  vec2 uv = TEX0.xy * TextureSize / InputSize;
+  vec3 c = COMPAT_TEXTURE(Texture, TEX0.xy).rgb;
+  FragColor = vec4(0.5 * c + 0.5 * COMPAT_TEXTURE(palette, uv).rgb, 1.0);
+}
+#endif
