@@ -47,3 +47,4 @@ pfx_manual_page(pfx-import pfx-import "import a 3D model through pfx's importer 
 pfx_manual_page(pfx-farm pfx-farm "render a sequence with pfx-render as Slurm jobs")
 pfx_manual_page(pfx-inject pfx-inject "run pfx effects inside an unmodified OpenGL or Vulkan application")
 pfx_manual_page(pfx-fx-check pfx-fx-check "compile, run and compare every ReShade FX effect of shader folders")
+pfx_manual_page(pfx-libretro-check pfx-libretro-check "run and compare every libretro shader preset of shader folders")

@@ -31,6 +31,9 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 cp "$deb" "$scratch/pfx.deb"
 cp "$build_dir/bin/obs-module-search" "$scratch/" 2>/dev/null || true
+# A GLSL-form preset written for the RetroArch comparison, for pfx-libretro-check in the root.
+mkdir "$scratch/libretro"
+cp -r "$source_dir/tests/libretro/retroarch/shaders" "$source_dir/tests/libretro/retroarch/pictures.glslp" "$scratch/libretro/"
 
 # Inside a mount namespace of its own: the root, the checks, and the package's removal.
 cat > "$scratch/in_root.sh" <<'INNER'
@@ -50,6 +53,7 @@ done
 chmod 1777 "$root/tmp"
 cp "$scratch/pfx.deb" "$root/tmp/"
 [[ -f "$scratch/obs-module-search" ]] && cp "$scratch/obs-module-search" "$root/tmp/"
+cp -r "$scratch/libretro" "$root/tmp/"
 
 passed=0 failed=0
 # check NAME COMMAND: COMMAND (a shell line) in the root with nothing in the environment but
@@ -116,6 +120,11 @@ check "pfx-fx-check --compare-vkbasalt finds its oracle in /usr/share/pfx, the i
    python3 -c \"
 import json; row = json.load(open('/tmp/compare.json'))['files'][0]
 assert row['vkbasalt_ran'] and row['pfx_ran'] and row['max_diff'] <= 1, row\""
+check "pfx-libretro-check --compare-retroarch finds its oracle in /usr/share/pfx and the installed libretro plugin" \
+  "pfx-libretro-check --compare-retroarch --json /tmp/libretro > /tmp/libretro.json &&
+   python3 -c \"
+import json; row = json.load(open('/tmp/libretro.json'))['presets'][0]
+assert row['ran'] and row['changed'] and row['retroarch']['matches'], row\""
 check "man finds a manual page for every program in /usr/bin" \
   "for program in \$(dpkg-query -L pfx | grep '^/usr/bin/'); do
      page=\$(man -w \"\$(basename \"\$program\")\") && test \"\$page\" = /usr/share/man/man1/\$(basename \"\$program\").1.gz ||
