@@ -10,8 +10,10 @@ usage: test_libretro_plugin.py PFX_RENDER CONFORMANCE_DIR OUT_DIR
 - a preset referencing itself, one whose pass file is missing and one of 50,000 passes are load
   errors (the last one quickly), and stop no other preset;
 - a preset whose shader does not compile and one whose lookup texture is not an image fail when
-  the effect is made, with a message naming the file (and the line, for the shader), and
-  pfx-render exits 4;
+  the effect is made, with a message naming the file (and the line, for the shader; file:line:
+  column for a GLSL-form shader), and pfx-render exits 4;
+- a .glslp lists as libretro_<path>_glsl beside the .slangp presets; one whose pass file is
+  missing is a load error; a feedback_pass that names no pass does not stop it;
 - the folder given need not exist: that is a load error too.
 """
 import json
@@ -89,6 +91,15 @@ def main():
         f.write("shaders = 1\nshader0 = shaders/copy.slang\n")
     with open(os.path.join(bad, "missing_pass.slangp"), "w") as f:
         f.write("shaders = 2\nshader0 = shaders/copy.slang\nshader1 = shaders/not_there.slang\n")
+    # The GLSL form beside it: a good preset (its id gains _glsl), one whose pass file is missing.
+    with open(os.path.join(conformance, "..", "retroarch", "shaders", "copy.glsl")) as f:
+        copy_glsl = f.read()
+    with open(os.path.join(bad, "shaders", "copy.glsl"), "w") as f:
+        f.write(copy_glsl)
+    with open(os.path.join(bad, "good.glslp"), "w") as f:
+        f.write("shaders = 1\nshader0 = shaders/copy.glsl\nfeedback_pass = 7\n")
+    with open(os.path.join(bad, "missing_glsl.glslp"), "w") as f:
+        f.write("shaders = 1\nshader0 = shaders/gone.glsl\n")
     with open(os.path.join(bad, "huge.slangp"), "w") as f:
         f.write("shaders = 50000\n" + "".join(f"shader{i} = shaders/copy.slang\n" for i in range(50000)))
     start = time.monotonic()
@@ -98,10 +109,11 @@ def main():
         fail(f"--list over broken presets failed: {result.stderr}")
     listing = json.loads(result.stdout)
     ids = {e["id"] for e in libretro_plugin(listing)["effects"]}
-    if ids != {"libretro_good"}:
-        fail(f"the listing of the broken folder is {sorted(ids)}, not just libretro_good")
+    if ids != {"libretro_good", "libretro_good_glsl"}:
+        fail(f"the listing of the broken folder is {sorted(ids)}, not just libretro_good and libretro_good_glsl")
     errors = "\n".join(listing["load_errors"])
-    for name, words in (("missing_pass.slangp", "not_there.slang"), ("huge.slangp", "50000")):
+    for name, words in (("missing_pass.slangp", "not_there.slang"), ("huge.slangp", "50000"),
+                        ("missing_glsl.glslp", "gone.glsl")):
         if not any(name in e and words in e for e in listing["load_errors"]):
             fail(f"{name}: no load error naming {words}: {errors}")
     if took > 60:
@@ -117,6 +129,27 @@ def main():
         result = run(pfx_render, conformance, ["--input", picture, "--chain", effect, "--out", os.path.join(out_dir, "x.exr")])
         if result.returncode != 4 or words not in result.stderr:
             fail(f"{effect}: exit {result.returncode} (not 4) or no '{words}' in:\n{result.stderr}")
+
+    # A GLSL-form shader GL refuses: exit 4, the file, line and column of the error. A
+    # feedback_pass that is not a pass is only a warning (RetroArch ignores it).
+    broken_glsl = os.path.join(out_dir, "broken_glsl")
+    os.makedirs(broken_glsl, exist_ok=True)
+    with open(os.path.join(broken_glsl, "syntax_error.glsl"), "w") as f:
+        f.write(copy_glsl.replace("  FragColor = vec4(", "  FragColor = vec4(undeclared_name + "))
+    line = next(n for n, text in enumerate(open(os.path.join(broken_glsl, "syntax_error.glsl")), 1)
+                if "undeclared_name" in text)
+    with open(os.path.join(broken_glsl, "does_not_compile.glslp"), "w") as f:
+        f.write("shaders = 1\nshader0 = syntax_error.glsl\n")
+    result = run(pfx_render, broken_glsl, ["--input", picture, "--chain", "libretro_does_not_compile_glsl", "--out",
+                                           os.path.join(out_dir, "x.exr")])
+    words = f"syntax_error.glsl:{line}:"
+    if result.returncode != 4 or words not in result.stderr or "undeclared_name" not in result.stderr:
+        fail(f"the GLSL shader that does not compile: exit {result.returncode} (not 4) or no '{words}' in:\n"
+             f"{result.stderr}")
+    result = run(pfx_render, bad, ["--input", picture, "--chain", "libretro_good_glsl", "--out",
+                                   os.path.join(out_dir, "good_glsl.exr")])
+    if result.returncode != 0:
+        fail(f"the good GLSL preset with a feedback_pass that is not a pass did not run: {result.stderr}")
 
     # A folder that does not exist.
     result = run(pfx_render, os.path.join(out_dir, "nowhere"), ["--list", "--json"])
