@@ -94,8 +94,8 @@ void add_preset(LrCatalog& c, const std::string& folder, const std::string& file
     }
     sources.push_back(source);
   }
-  std::vector<std::string> warnings;
-  build_parameters(entry->preset, sources, entry->params, warnings);
+  entry->warnings = entry->preset.warnings;
+  build_parameters(entry->preset, sources, entry->params, entry->warnings);
   std::error_code ec;
   fs::path relative = fs::is_directory(folder, ec) ? fs::relative(file, folder, ec) : fs::path(file).filename();
   if (ec || relative.empty()) relative = fs::path(file).filename();

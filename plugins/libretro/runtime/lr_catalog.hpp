@@ -25,6 +25,9 @@ struct LrEffectEntry {
   std::string file;  // the preset loaded
   pfx::libretro::Preset preset;
   LrParameters params;
+  // What the preset's reader and the parameters let pass with a default (an unknown wrap mode, a
+  // parameter declared twice differently): logged when an instance is made.
+  std::vector<std::string> warnings;
   pfx_effect_desc desc{};
 };
 

@@ -125,6 +125,7 @@ pfx_status LrInstance::create() {
     return PFX_UNSUPPORTED;
   }
   if (!pfx::gl::load_gl_or_log(host_, "libretro")) return PFX_GL_ERROR;
+  for (const std::string& warning : entry_.warnings) log(PFX_LOG_WARNING, warning);
   std::string error;
   Clock::time_point start = Clock::now();
   if (!compile_passes(entry_, &passes_, &error)) {
@@ -316,6 +317,17 @@ void LrInstance::bind_samplers(int index) {
   }
 }
 
+void LrInstance::update_block(const ReflectedBlock& block, const PassValues& values, GLuint buffer,
+                              std::vector<unsigned char>& uploaded) {
+  // A still picture with still parameters gives the same values every frame: upload only a change.
+  // `uploaded` starts as the buffer was made (zeros), so it always holds what the buffer holds.
+  scratch_ = uploaded;
+  write_block_values(block, values, scratch_);
+  if (scratch_ == uploaded) return;
+  uploaded.swap(scratch_);
+  glNamedBufferSubData(buffer, 0, static_cast<GLsizeiptr>(uploaded.size()), uploaded.data());
+}
+
 void LrInstance::run_preset_pass(int index) {
   LrPass& pass = passes_[static_cast<std::size_t>(index)];
   const PassPlan& plan = plan_.passes[static_cast<std::size_t>(index)];
@@ -340,14 +352,11 @@ void LrInstance::run_preset_pass(int index) {
   values.frame_time_delta_us = frame_time_delta_us_;
   values.original_fps = fps_;
   if (pass.uniform_buffer) {
-    write_block_values(pass.reads.uniforms, values, pass.uniform_bytes);
-    glNamedBufferSubData(pass.uniform_buffer, 0, static_cast<GLsizeiptr>(pass.uniform_bytes.size()),
-                         pass.uniform_bytes.data());
+    update_block(pass.reads.uniforms, values, pass.uniform_buffer, pass.uniform_bytes);
     glBindBufferBase(GL_UNIFORM_BUFFER, pass.reads.uniforms.binding, pass.uniform_buffer);
   }
   if (pass.push_buffer) {
-    write_block_values(pass.reads.push, values, pass.push_bytes);
-    glNamedBufferSubData(pass.push_buffer, 0, static_cast<GLsizeiptr>(pass.push_bytes.size()), pass.push_bytes.data());
+    update_block(pass.reads.push, values, pass.push_buffer, pass.push_bytes);
     glBindBufferBase(GL_UNIFORM_BUFFER, pass.code.push_binding, pass.push_buffer);
   }
   if (pass.glsl) set_glsl_values(pass, values);

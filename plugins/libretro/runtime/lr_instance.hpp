@@ -21,6 +21,7 @@
 #include "lr_catalog.hpp"
 #include "lr_passes.hpp"
 #include "lr_textures.hpp"
+#include "lr_uniform_values.hpp"
 
 namespace pfx_libretro {
 
@@ -40,6 +41,9 @@ class LrInstance {
   void log(pfx_log_level level, const std::string& message) const;
   void run_content(const pfx_pass_context& context);
   void run_preset_pass(int index);
+  // Writes the block's values for this frame and uploads them where they changed.
+  void update_block(const pfx::libretro::ReflectedBlock& block, const PassValues& values, GLuint buffer,
+                    std::vector<unsigned char>& uploaded);
   void run_finish(const pfx_pass_context& context);
   // Binds what pass `index` samples to the units its shader names.
   void bind_samplers(int index);
@@ -68,7 +72,8 @@ class LrInstance {
   LrTextures textures_;
   bool remake_ = true;  // the frame textures do not fit the declared sizes
   GLuint vao_ = 0, vertices_ = 0, glsl_vertices_ = 0, framebuffer_ = 0, content_program_ = 0, finish_program_ = 0;
-  std::vector<GLuint> high_units_;  // units past 15 the running pass bound, unbound when it returns
+  std::vector<unsigned char> scratch_;  // a block's values being written
+  std::vector<GLuint> high_units_;      // units past 15 the running pass bound, unbound when it returns
   double compile_ms_ = 0, gl_build_ms_ = 0;
   std::string report_;
 };
