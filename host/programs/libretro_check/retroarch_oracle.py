@@ -101,15 +101,17 @@ def retroarch(binary, preset, picture, out_dir, timeout=300):
     return read_png(shot), None
 
 
-def pfx(render, preset, effect, picture, out_dir, timeout=600):
-    """pfx-render's picture of the effect `effect` (preset `preset`) over `picture` at the frame
-    RetroArch's screenshot shows, or (None, why not)."""
+def pfx(render, preset, effect, picture, out_dir, timeout=600, folders=None):
+    """pfx-render's picture of the effect `effect` over `picture` at the frame RetroArch's
+    screenshot shows, or (None, why not). The effect is found with PFX_LIBRETRO_PATH at
+    `folders` (':'-separated), by default the preset file alone (whose effect is then
+    libretro_<file name>)."""
     last = FRAMES + 1
     for n in range(last + 1):
         link = os.path.join(out_dir, "in.%04d.png" % n)
         if not os.path.lexists(link):
             os.symlink(os.path.abspath(picture), link)
-    env = dict(os.environ, PFX_LIBRETRO_PATH=preset)
+    env = dict(os.environ, PFX_LIBRETRO_PATH=folders or preset)
     why = _run([render, "--input", os.path.join(out_dir, "in.%04d.png"), "--frames", "0-%d" % last, "--overwrite",
                 "--chain", effect, "--out", os.path.join(out_dir, "pfx.%04d.png")],
                os.path.join(out_dir, "pfx-render.log"), env, timeout)

@@ -56,7 +56,9 @@ bool read_glsl(const std::string& path, const TextReader& read, SlangSource* out
   }
   if (version.empty() || version_number(version) < 140)
     version = "#version " + std::to_string(kGlslCoreVersion) + " core";
-  const std::string head = version + "\n";
+  // C-style initialisers (`float w[3] = {...}`), which compatibility contexts accept at every
+  // version and some of the collection's shaders use, need GLSL 4.20 or this extension in core.
+  const std::string head = version + "\n#extension GL_ARB_shading_language_420pack : enable\n";
   const std::string tail = "#define PARAMETER_UNIFORM\n#line 1\n" + body;
   out->vertex = head + "#define VERTEX\n" + tail;
   out->fragment = head + "#define FRAGMENT\n" + tail;

@@ -10,7 +10,8 @@
 // contexts, which a core context refuses), is compiled as GLSL 3.30 core, as RetroArch compiles a
 // file without one on a GL 3.3 core context: the collections' `#if __VERSION__ >= 130` branches
 // then choose `in`/`out` and `texture()`. 3.30, not 4.50, since 4.00 reserves words (`sample`,
-// `patch`, `subroutine`) that such shaders use as names.
+// `patch`, `subroutine`) that such shaders use as names. GL_ARB_shading_language_420pack is enabled
+// where the driver has it, for the C-style initialisers compatibility contexts take.
 #include <string>
 
 #include "preset_file.hpp"

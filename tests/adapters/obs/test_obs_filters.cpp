@@ -97,6 +97,55 @@ TEST_CASE("a libretro preset in the chain filter, its content size set, gives th
   release({chain, image});
 }
 
+// Not a test: a collection's presets in OBS against pfx-render, by hand, at a size and content
+// height given. OBS counts frames its own way, so a preset that reads FrameCount (NTSC phases) is
+// compared with pfx-render's frames 0 to 3 and the closest is taken. Hidden from ctest; run with
+// the collection and a picture named:
+//   export PFX_LIBRETRO_PATH=slang-shaders/crt PFX_OBS_PICTURE=photo.png PFX_OBS_CONTENT_HEIGHT=240
+//   PFX_OBS_EFFECTS=libretro_crt_geom,libretro_crt_lottes xvfb-run -a build/bin/test_obs_filters '[.libretro]'
+TEST_CASE("libretro presets of a collection in the chain filter against pfx-render, by hand", "[.libretro]") {
+  const char* effects = std::getenv("PFX_OBS_EFFECTS");
+  const char* picture = std::getenv("PFX_OBS_PICTURE");
+  const char* lines = std::getenv("PFX_OBS_CONTENT_HEIGHT");
+  REQUIRE(effects);
+  REQUIRE(picture);
+  ObsSession& obs = ObsSession::get();
+  Scratch scratch;
+  for (int k = 0; k < 4; ++k) std::filesystem::copy_file(picture, scratch / ("in." + std::to_string(k) + ".png"));
+  const std::string list = effects;
+  for (std::size_t start = 0; start < list.size();) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string effect = list.substr(start, end - start);
+    start = end + 1;
+    const std::string set = lines ? effect + ".content_height=" + lines : std::string();
+    obs_source_t* image = obs.image_source(picture);
+    obs_data_t* values = settings_of([&](obs_data_t* s) {
+      obs_data_set_string(s, "chain", effect.c_str());
+      obs_data_set_string(s, "set", set.c_str());
+    });
+    obs_source_t* chain = obs.add_filter(image, "pfx_chain_filter", values);
+    const ObsFrame frame = obs.render(image);
+    const Result made = pfx_render("--plugins " PFX_PLUGIN_OUTPUT_DIR " --input " + (scratch / "in.%d.png") +
+                                   " --frames 0-3 --chain " + effect + (set.empty() ? "" : " --set " + set) +
+                                   " --out " + (scratch / (effect + ".%d.png")));
+    INFO(made.err);
+    REQUIRE(made.exit_code == 0);
+    int best = 256, best_frame = 0;
+    for (int k = 0; k < 4; ++k) {
+      const int worst = worst_difference(frame, read_picture(scratch / (effect + "." + std::to_string(k) + ".png")));
+      if (worst < best) best = worst, best_frame = k;
+    }
+    std::printf("%s: %ux%u in OBS, at most %d codes from pfx-render's frame %d, which changed the picture by up to "
+                "%d\n",
+                effect.c_str(), frame.width, frame.height, best, best_frame,
+                worst_difference_pictures(read_picture(scratch / (effect + ".0.png")), read_picture(picture)));
+    std::fflush(stdout);  // each line as it comes: a collection's presets take long
+    CHECK(best <= 1);
+    obs_data_release(values);
+    release({chain, image});
+  }
+}
+
 TEST_CASE("the picture in docs/hosts.md is what the bloom filter gives in OBS", "[obs]") {
   // PFX_OBS_WRITE_DOCS_PICTURES=1 makes the pair first: the before picture cut from a photograph
   // Debian ships, the after picture what OBS gives now.
