@@ -1,6 +1,6 @@
 #include "lr_glsl_pass.hpp"
 
-#include <cctype>
+#include <string>
 
 #include <pfx/cpp/gl_program.hpp>
 
