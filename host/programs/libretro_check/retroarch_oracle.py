@@ -65,7 +65,12 @@ def picture_at_size(picture, out_dir):
 
 
 def read_png(path):
-    buf = oiio.ImageBuf(path)
+    """A PNG's colour as written. pfx's outputs carry the alpha the last pass wrote (below 1 where a
+    pass read past an edge); RetroArch's window shows colour alone, so the colour is read straight,
+    not multiplied by alpha as OpenImageIO would by default."""
+    config = oiio.ImageSpec()
+    config.attribute("oiio:UnassociatedAlpha", 1)
+    buf = oiio.ImageBuf(path, 0, 0, config)
     if buf.has_error:
         raise OSError("cannot read %s: %s" % (path, buf.geterror()))
     return buf.get_pixels(oiio.UINT8)[..., :3].astype(np.int64)
