@@ -11,7 +11,7 @@ bool ends_with(const std::string& text, const std::string& end) {
 }
 
 // The number `text` ends with after `prefix` ("Pass12", "Pass" -> 12), or -1.
-int number_after(const std::string& text, const std::string& prefix) {
+int digits_after(const std::string& text, const std::string& prefix) {
   if (text.size() <= prefix.size() || text.size() > prefix.size() + 4 || text.compare(0, prefix.size(), prefix) != 0)
     return -1;
   int number = 0;
@@ -33,14 +33,14 @@ std::optional<Semantic> picture(const std::string& base, const SemanticContext& 
     return Semantic{SemanticKind::kPassFeedback, feedback_pass};
   }
   if (base == "Prev") return Semantic{SemanticKind::kOriginalHistory, 1};
-  if (const int n = number_after(base, "PassPrev"); n >= 1) {
+  if (const int n = digits_after(base, "PassPrev"); n >= 1) {
     if (n == pass + 1 && pass > 0) return Semantic{SemanticKind::kOriginal, 0};
     if (n <= pass) return Semantic{SemanticKind::kPassOutput, pass - n};
     return std::nullopt;
   }
-  if (const int n = number_after(base, "Prev"); n >= 1 && n < kHistoryNames)
+  if (const int n = digits_after(base, "Prev"); n >= 1 && n < kHistoryNames)
     return Semantic{SemanticKind::kOriginalHistory, n + 1};
-  if (const int n = number_after(base, "Pass"); n >= 1 && n <= pass) return Semantic{SemanticKind::kPassOutput, n - 1};
+  if (const int n = digits_after(base, "Pass"); n >= 1 && n <= pass) return Semantic{SemanticKind::kPassOutput, n - 1};
   for (int i = 0; i < pass && i < static_cast<int>(context.aliases.size()); ++i)
     if (!context.aliases[static_cast<std::size_t>(i)].empty() && context.aliases[static_cast<std::size_t>(i)] == base)
       return Semantic{SemanticKind::kPassOutput, i};
