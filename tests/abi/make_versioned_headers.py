@@ -23,7 +23,7 @@ FUTURE_FIELDS = ("  uint64_t future_count; /* since 1.99 (fixture headers only) 
 def old_version(text):
     # A field may span lines: the lines before its last start with a name and end with a comma.
     text = re.sub(r"^(?:[ \t]*[A-Za-z_][^\n;{}]*,\n)*[^\n]*;\s*/\* since 1\.\d+ \*/\n", "", text, flags=re.M)
-    return text.replace("#define PFX_ABI_MINOR 8u", "#define PFX_ABI_MINOR 0u")
+    return text.replace("#define PFX_ABI_MINOR 9u", "#define PFX_ABI_MINOR 0u")
 
 
 def future_version(text):
@@ -33,7 +33,7 @@ def future_version(text):
         return "typedef struct %s {%s%s} %s;" % (name, body, FUTURE_FIELDS if sized else "", name)
 
     text = re.sub(r"typedef struct (pfx_\w+) \{(.*?)\} \1;", grow, text, flags=re.S)
-    return text.replace("#define PFX_ABI_MINOR 8u", "#define PFX_ABI_MINOR 99u")
+    return text.replace("#define PFX_ABI_MINOR 9u", "#define PFX_ABI_MINOR 99u")
 
 
 def main():
@@ -45,7 +45,7 @@ def main():
             continue
         with open(os.path.join(source, "pfx", name)) as f:
             text = f.read()
-        if "#define PFX_ABI_MINOR" in text and "#define PFX_ABI_MINOR 8u" not in text:
+        if "#define PFX_ABI_MINOR" in text and "#define PFX_ABI_MINOR 9u" not in text:
             sys.exit("make_versioned_headers.py: core.h's PFX_ABI_MINOR changed; update this script")
         with open(os.path.join(out, "pfx", name), "w") as f:
             f.write(transform(text))

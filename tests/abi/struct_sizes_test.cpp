@@ -18,12 +18,12 @@ struct Sizes {
   size_t minimum, today;
 };
 
-// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.8).
+// x86-64 and other LP64 targets. "today" is sizeof with this tree's headers (ABI 1.9).
 const std::map<std::string, Sizes>& pinned() {
   static const std::map<std::string, Sizes> sizes = {
       {"pfx_entry", {64, 64}},          {"pfx_host", {48, 56}},
       {"pfx_param_desc", {140, 176}},   {"pfx_effect_factory", {24, 24}},
-      {"pfx_effect_desc", {88, 88}},    {"pfx_frame", {200, 200}},
+      {"pfx_effect_desc", {88, 96}},    {"pfx_frame", {200, 200}},
       {"pfx_light", {32, 32}},          {"pfx_target_desc", {40, 40}},
       {"pfx_pass_desc", {56, 56}},      {"pfx_declaration", {40, 48}},
       {"pfx_pass_context", {68, 72}},   {"pfx_reference_factory", {24, 24}},

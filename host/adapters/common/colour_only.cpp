@@ -58,6 +58,12 @@ bool declare_for(const host::EffectInfo& effect, void* instance, const std::vect
 EffectInputs classify(const host::EffectInfo& effect) {
   EffectInputs result;
   result.id = effect.desc->id;
+  // The effect's promise (ABI 1.9) answers without an instance, whose create may compile programs;
+  // the registry's copy of the descriptor has flags 0 for a plugin older than the field.
+  if (effect.desc->flags & PFX_EFFECT_COLOR_ONLY) {
+    result.colour_only = true;
+    return result;
+  }
   void* instance = nullptr;
   if (effect.desc->create(effect.plugin->host, &instance) != PFX_OK || !instance) {
     result.error = "create failed";

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <pfx/host/frame_plan.hpp>
+
+#include "camera_options.hpp"
+#include "frame_description.hpp"
 #include "random_params.hpp"
 #include "render_rig.hpp"
 #include "synthetic_inputs.hpp"
@@ -23,6 +27,25 @@ std::string describe_values(RenderRig& rig, const std::string& effect_id) {
     text += (text.empty() ? "" : " ") + key + "=" + rig.params().get_text(key);
   }
   return text.empty() ? "(no parameters)" : text;
+}
+
+// With the values the store holds now: an effect that promises PFX_EFFECT_COLOR_ONLY must ask a
+// frame of colour alone for nothing more, since hosts of video frames offer it on that promise
+// without asking. `set` names the values for the message.
+void check_colour_promise(RenderRig& rig, const std::string& set, CheckReporter& report) {
+  if (!(rig.effect()->flags & PFX_EFFECT_COLOR_ONLY)) return;
+  const pfx_frame frame = pfx::app::describe_frame(64, 48, PFX_INPUT_COLOR, PFX_DEPTH_NONE,
+                                                   pfx::app::make_camera(pfx::app::CameraOptions{}, 64, 48));
+  uint32_t inputs = 0;
+  std::string error;
+  if (!rig.chain().inputs_needed(0, frame, &inputs, &error)) {
+    report.problem(set + ": declare failed for a frame of colour alone: " + error);
+    return;
+  }
+  const uint32_t more = inputs & ~static_cast<uint32_t>(PFX_INPUT_COLOR);
+  if (more)
+    report.problem("it promises PFX_EFFECT_COLOR_ONLY, but with " + set + " it asks a frame of colour alone for " +
+                   pfx::host::frame_input_names(more) + ": hosts of video frames offer it on that promise without asking");
 }
 
 }  // namespace
@@ -50,6 +73,7 @@ void check_random(const std::string& path, const std::string& effect_id, uint64_
   SplitMix64 rng(seed);
   const pfx::app::Image gradient = gradient_image(48, 32);
   const pfx::app::Image hostile = hostile_image(37, 23);
+  check_colour_promise(rig, "its defaults", report);
   for (int run = 0; run < runs; ++run) {
     const std::vector<pfx_value> values = random_parameter_set(*desc, rng);
     const std::string set = "random set " + std::to_string(run + 1) + " of seed " + std::to_string(seed);
@@ -66,6 +90,7 @@ void check_random(const std::string& path, const std::string& effect_id, uint64_
     report.fact("set", std::to_string(run + 1) + ": " + values_text);
     rig.render(gradient, set + " on gradient 48x32 [" + values_text + "]");
     rig.render(hostile, set + " on NaN/Inf/70000 37x23 [" + values_text + "]");
+    check_colour_promise(rig, set, report);
   }
 }
 

@@ -81,6 +81,9 @@ void fill_effect_desc(FxEffectEntry& entry, std::size_t index) {
   d.declare = declare;
   d.run_pass = run_pass;
   d.report_json = report_json;
+  // A technique reads depth only where the frame has it (the far plane otherwise): hosts of video
+  // frames need not make an instance (which compiles the file) to learn that it runs on colour.
+  d.flags = PFX_EFFECT_COLOR_ONLY;
 }
 
 }  // namespace pfx_fx

@@ -3,15 +3,23 @@
 #include <regex>
 
 #include <pfx/cpp/gl_program.hpp>
+#include <pfx/cpp/program_cache.hpp>
 
 #include "fx_pass_layout.hpp"
-#include "fx_program_cache.hpp"
 
 namespace pfx_fx {
 namespace {
 
 using pfx::fx::GeneratedPass;
 using pfx::fx::PassInfo;
+using pfx::gl::ProgramCache;
+
+// Compiled programs of FX passes in $XDG_CACHE_HOME/pfx/fx-programs (program_cache.hpp);
+// PFX_FX_CACHE=0 turns the cache off. The GLSL itself is generated at every start: it costs a few
+// milliseconds on the CPU. Specialised programs (fx_programs.hpp) add one set per distinct set of
+// values an effect settles on, so the folder is bounded: 256 MiB, the programs used longest ago
+// deleted first.
+ProgramCache fx_program_cache() { return ProgramCache("fx-programs", "PFX_FX_CACHE", "0.1.0", 256ull << 20); }
 
 // The driver's "0:12(5): error" names the source string; the generated code's #line directives
 // made that the FX file's index, so the message can name the file.
@@ -135,7 +143,7 @@ bool FxPrograms::start_build(const pfx::fx::CompiledEffect& compiled, int techni
   }
   for (std::size_t i = 0; i < set.constants.size(); ++i)
     set.constant_count += pfx::fx::can_be_constant(model.uniforms[i].decl->resolved, set.constants[i]) ? 1 : 0;
-  const ProgramCache cache;
+  const ProgramCache cache = fx_program_cache();
   for (const GeneratedPass& g : set.generated) {
     PassProgram p;
     p.program = start_cached_program(cache, g, &p.cache_key, &cache_hits_);
@@ -157,7 +165,7 @@ bool FxPrograms::finish_build(const pfx::fx::CompiledEffect& compiled, int techn
   const auto start = std::chrono::steady_clock::now();
   const pfx::fx::EffectModel& model = compiled.model;
   const pfx::fx::TechniqueInfo& info = model.techniques[static_cast<std::size_t>(technique)];
-  const ProgramCache cache;
+  const ProgramCache cache = fx_program_cache();
   for (std::size_t i = 0; i < set.programs.size(); ++i) {
     PassProgram& p = set.programs[i];
     const GeneratedPass& g = set.generated[i];

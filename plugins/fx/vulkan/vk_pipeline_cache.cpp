@@ -4,7 +4,7 @@
 #include <cstring>
 #include <vector>
 
-#include "cache_files.hpp"
+#include <pfx/cpp/cache_files.hpp>
 
 namespace pfx::fx::vulkan {
 namespace {
@@ -28,7 +28,7 @@ bool names_device(const std::string& data, const VkPhysicalDeviceProperties& p) 
 bool PipelineCacheFile::open(const Device& d) {
   d_ = &d;
   const VkPhysicalDeviceProperties& p = d.properties;
-  const std::string folder = cache::folder_for("fx-vulkan");
+  const std::string folder = pfx::cache::folder_for("fx-vulkan", "PFX_FX_CACHE");
   std::string data;
   if (!folder.empty()) {
     char name[64];
@@ -40,7 +40,7 @@ bool PipelineCacheFile::open(const Device& d) {
       path_ += hex;
     }
     path_ += ".bin";
-    if (!cache::read_checked(path_, kMagic, data) || !names_device(data, p) || data.size() > kMaxBytes) data.clear();
+    if (!pfx::cache::read_checked(path_, kMagic, data) || !names_device(data, p) || data.size() > kMaxBytes) data.clear();
   }
   VkPipelineCacheCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO;
@@ -63,7 +63,7 @@ void PipelineCacheFile::save() {
   std::string data(size, '\0');
   if (d_->vkGetPipelineCacheData(d_->device, cache_, &size, data.data()) != VK_SUCCESS) return;
   data.resize(size);
-  if (cache::write_checked(path_, kMagic, data)) loaded_bytes_ = size;
+  if (pfx::cache::write_checked(path_, kMagic, data)) loaded_bytes_ = size;
 }
 
 void PipelineCacheFile::destroy() {

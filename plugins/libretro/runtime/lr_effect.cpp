@@ -65,6 +65,9 @@ void fill_effect_desc(LrEffectEntry& entry, std::size_t index) {
   d.declare = declare;
   d.run_pass = run_pass;
   d.report_json = report_json;
+  // Every pass reads the frame's colour and its own pictures: hosts of video frames need not make
+  // an instance (which compiles every pass) to learn it.
+  d.flags = PFX_EFFECT_COLOR_ONLY;
 }
 
 }  // namespace pfx_libretro

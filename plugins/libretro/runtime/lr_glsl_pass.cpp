@@ -117,7 +117,8 @@ const std::vector<float>& glsl_vertex_data() {
   return data;
 }
 
-bool link_glsl_passes(const LrEffectEntry& entry, std::vector<LrPass>& passes, GLuint vertices, std::string* error) {
+bool link_glsl_passes(const LrEffectEntry& entry, std::vector<LrPass>& passes, GLuint vertices,
+                      const pfx::gl::ProgramCache& cache, int* from_cache, std::string* error) {
   const Preset& preset = entry.preset;
   SemanticContext context;
   for (const PresetPass& pass : preset.passes) context.aliases.push_back(pass.alias);
@@ -129,7 +130,9 @@ bool link_glsl_passes(const LrEffectEntry& entry, std::vector<LrPass>& passes, G
     const GLenum stages[] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
     const char* sources[] = {pass.code.vertex.c_str(), pass.code.fragment.c_str()};
     std::string log;
-    pass.program = pfx::gl::build_program(stages, sources, 2, &log);
+    bool cached = false;
+    pass.program = cache.build(stages, sources, 2, &log, &cached);
+    *from_cache += cached ? 1 : 0;
     if (!pass.program) {
       *error = "pass " + std::to_string(i) + " (" + preset.passes[i].shader + ") does not compile:\n" +
                with_file_lines(log, preset.passes[i].shader);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glad/gl.h>
+#include <pfx/cpp/program_cache.hpp>
 
 #include "lr_passes.hpp"
 #include "lr_uniform_values.hpp"
@@ -16,9 +17,11 @@
 namespace pfx_libretro {
 
 // Links the GL program of every GLSL pass of `passes` and finds what it reads (into pass.reads
-// and pass.glsl_values). `vertices` is the buffer of glsl_vertex_data(). False with the
-// compiler's message, lines as file:line:column, in *error.
-bool link_glsl_passes(const LrEffectEntry& entry, std::vector<LrPass>& passes, GLuint vertices, std::string* error);
+// and pass.glsl_values), through `cache` (*from_cache counts the programs it gave). `vertices` is
+// the buffer of glsl_vertex_data(). False with the compiler's message, lines as file:line:column,
+// in *error.
+bool link_glsl_passes(const LrEffectEntry& entry, std::vector<LrPass>& passes, GLuint vertices,
+                      const pfx::gl::ProgramCache& cache, int* from_cache, std::string* error);
 
 // The quad a GLSL pass draws as a strip: per vertex VertexCoord (x, y), TexCoord (u, v), Color.
 const std::vector<float>& glsl_vertex_data();

@@ -138,7 +138,9 @@ pfx_status LrInstance::create() {
   glCreateBuffers(1, &glsl_vertices_);
   glNamedBufferStorage(glsl_vertices_, static_cast<GLsizeiptr>(glsl_vertices.size() * sizeof(float)),
                        glsl_vertices.data(), 0);
-  if (!link_glsl_passes(entry_, passes_, glsl_vertices_, &error)) {  // what they read is known once linked
+  const pfx::gl::ProgramCache cache = libretro_program_cache();
+  // GLSL passes first: what they read is known once linked.
+  if (!link_glsl_passes(entry_, passes_, glsl_vertices_, cache, &programs_from_cache_, &error)) {
     log(PFX_LOG_ERROR, error);
     return PFX_ERROR;
   }
@@ -147,7 +149,7 @@ pfx_status LrInstance::create() {
   for (const LrPass& pass : passes_) formats.push_back(pass.format), reads.push_back(pass.reads);
   plan_ = plan_chain(entry_.preset, formats, reads);
   const bool last_to_output = !plan_.passes.empty() && plan_.passes.back().to_output;
-  if (!build_pass_programs(passes_, last_to_output, &error) ||
+  if (!build_pass_programs(passes_, last_to_output, cache, &programs_from_cache_, &error) ||
       !(content_program_ = pfx::gl::build_fullscreen_program(kContentShader, &error)) ||
       !(finish_program_ = pfx::gl::build_fullscreen_program(kFinishShader, &error))) {
     log(PFX_LOG_ERROR, error);
@@ -378,10 +380,11 @@ void LrInstance::run_finish(const pfx_pass_context& context) {
 }
 
 const char* LrInstance::report_json() {
-  char text[200];
+  char text[256];
   std::snprintf(text, sizeof text,
-                "\"passes\": %zu, \"compile_ms\": %.1f, \"gl_build_ms\": %.1f, \"texture_bytes\": %zu", passes_.size(),
-                compile_ms_, gl_build_ms_, textures_.bytes());
+                "\"passes\": %zu, \"compile_ms\": %.1f, \"gl_build_ms\": %.1f, \"programs_from_cache\": %d, "
+                "\"texture_bytes\": %zu",
+                passes_.size(), compile_ms_, gl_build_ms_, programs_from_cache_, textures_.bytes());
   report_ = text;
   return report_.c_str();
 }

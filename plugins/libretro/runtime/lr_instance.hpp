@@ -75,6 +75,7 @@ class LrInstance {
   std::vector<unsigned char> scratch_;  // a block's values being written
   std::vector<GLuint> high_units_;      // units past 15 the running pass bound, unbound when it returns
   double compile_ms_ = 0, gl_build_ms_ = 0;
+  int programs_from_cache_ = 0;  // of this instance's pass programs, those the cache gave
   std::string report_;
 };
 

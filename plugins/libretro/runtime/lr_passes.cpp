@@ -73,7 +73,14 @@ GLuint block_buffer(const ReflectedBlock& block, std::vector<unsigned char>* byt
 
 }  // namespace
 
-bool build_pass_programs(std::vector<LrPass>& passes, bool last_to_output, std::string* error) {
+pfx::gl::ProgramCache libretro_program_cache() {
+  // The version is the plugin's: a program's GLSL is what SPIRV-Cross wrote or the shader's own,
+  // so the key changes with it; the version guards what the plugin adds around it.
+  return pfx::gl::ProgramCache("libretro-programs", "PFX_LIBRETRO_CACHE", "0.1.0", 256ull << 20);
+}
+
+bool build_pass_programs(std::vector<LrPass>& passes, bool last_to_output, const pfx::gl::ProgramCache& cache,
+                         int* from_cache, std::string* error) {
   for (std::size_t i = 0; i < passes.size(); ++i) {
     LrPass& pass = passes[i];
     if (pass.glsl) continue;  // linked by link_glsl_passes
@@ -81,7 +88,9 @@ bool build_pass_programs(std::vector<LrPass>& passes, bool last_to_output, std::
                                                                           : pass.code.fragment;
     const GLenum stages[] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
     const char* sources[] = {pass.code.vertex.c_str(), fragment.c_str()};
-    pass.program = pfx::gl::build_program(stages, sources, 2, error);
+    bool cached = false;
+    pass.program = cache.build(stages, sources, 2, error, &cached);
+    *from_cache += cached ? 1 : 0;
     if (!pass.program) {
       *error = "pass " + std::to_string(i) + ": the GL code SPIRV-Cross wrote does not build: " + *error;
       return false;

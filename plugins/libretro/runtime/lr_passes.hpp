@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glad/gl.h>
+#include <pfx/cpp/program_cache.hpp>
 
 #include "lr_catalog.hpp"
 #include "slang_gl.hpp"
@@ -42,9 +43,16 @@ struct LrPass {
 // False with why in *error.
 bool compile_passes(const LrEffectEntry& entry, std::vector<LrPass>* passes, std::string* error);
 
-// Builds the GL programs and buffers of the slang passes. The pass that draws into the host's output (`to_output`)
-// reads gl_FragCoord with an upper-left origin, as every other pass does in its own texture.
-bool build_pass_programs(std::vector<LrPass>& passes, bool last_to_output, std::string* error);
+// Builds the GL programs and buffers of the slang passes, the programs through `cache`
+// (*from_cache counts the programs it gave). The pass that draws into the host's output
+// (`to_output`) reads gl_FragCoord with an upper-left origin, as every other pass does in its own
+// texture.
+bool build_pass_programs(std::vector<LrPass>& passes, bool last_to_output, const pfx::gl::ProgramCache& cache,
+                         int* from_cache, std::string* error);
+
+// The cache of compiled programs: $XDG_CACHE_HOME/pfx/libretro-programs, at most 256 MiB;
+// PFX_LIBRETRO_CACHE=0 turns it off. A context must be current.
+pfx::gl::ProgramCache libretro_program_cache();
 void release_pass_programs(std::vector<LrPass>& passes);
 
 }  // namespace pfx_libretro

@@ -29,7 +29,7 @@ extern "C" {
 #endif
 
 #define PFX_ABI_MAJOR 1u
-#define PFX_ABI_MINOR 8u
+#define PFX_ABI_MINOR 9u
 
 /* The size of a struct up to and including one of its fields: the size a writer of the version
  * that ended with that field sets. */

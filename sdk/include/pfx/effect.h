@@ -259,8 +259,19 @@ typedef struct pfx_effect_desc {
   /* Optional (may be NULL): figures of the last frame as the members of a JSON object, without
    * braces, e.g. "\"lights_visible\": 120". Owned by the instance, valid until the next call. */
   const char* (*report_json)(void* instance);
+  uint32_t flags;  /* PFX_EFFECT_* promises about every instance; 0: none */ /* since 1.9 */
 } pfx_effect_desc;
 #define PFX_EFFECT_DESC_MIN_SIZE PFX_STRUCT_SIZE_THROUGH(pfx_effect_desc, report_json)
+
+/* Promises an effect may make (pfx_effect_desc.flags, since 1.9).
+ * COLOR_ONLY: offered a frame of colour alone (pfx_frame.inputs PFX_INPUT_COLOR, no depth), every
+ * declaration of this effect, whatever its parameter values, names no input but "color" and its
+ * own targets and sets no PFX_INPUT_* bit. A host that would make an instance only to learn this
+ * (an adapter choosing which effects run on video frames and applications' pictures) may trust the
+ * bit and make none: for a plugin that compiles programs in create, over a collection of many
+ * effects, that is the difference between starting at once and compiling them all. pfx-validate
+ * checks the promise. An effect that reads more where a frame offers it (depth) may still make it. */
+enum { PFX_EFFECT_COLOR_ONLY = 1u << 0 };
 
 /* What get_factory(PFX_EFFECTS_FACTORY_ID) returns. */
 typedef struct pfx_effect_factory {

@@ -167,6 +167,20 @@ TEST_CASE("broken_false_promise: the 8-bit frames check fails an effect whose pr
     if (c["check"] != "8-bit frames" && c["check"] != "heap growth") CHECK(c["status"] == "pass");
 }
 
+TEST_CASE("broken_false_color_only: the random params check fails an effect that promises colour alone and asks "
+          "for depth", "[validate][fixtures]") {
+  const nlohmann::json plugin = validate_json(misbehaving("broken_false_color_only"), "", 1);
+  const auto& random = check(plugin, "random params", "broken_false_color_only");
+  CHECK(random["status"] == "FAIL");
+  CHECK(any_problem_contains(random, "it promises PFX_EFFECT_COLOR_ONLY, but with its defaults it asks a frame of "
+                                     "colour alone for depth"));
+  CHECK(any_problem_contains(random, "with random set 2 of seed 1 it asks a frame of colour alone for depth"));
+  // Given every input it renders as a copy: no other check fails it (8-bit frames skips it, as it
+  // makes no promise about sampling).
+  for (const auto& c : plugin["checks"])
+    if (c["check"] != "random params" && c["check"] != "heap growth") CHECK(c["status"] != "FAIL");
+}
+
 TEST_CASE("broken_writes_nan: the output is not finite where the input was", "[validate][fixtures]") {
   const nlohmann::json plugin = validate_json(misbehaving("broken_writes_nan"));
   const auto& defaults = check(plugin, "defaults", "broken_writes_nan");

@@ -148,7 +148,7 @@ class Param {
 constexpr Param param(const char* id) { return Param(id); }
 
 // One effect (pfx_effect_desc): its id and callbacks by name. Left out: the label is the id, the
-// description "", no parameters, no report_json; create, destroy, declare and run_pass are required.
+// description "", no parameters, no report_json, no promises; create, destroy, declare and run_pass are required.
 class Effect {
  public:
   constexpr explicit Effect(const char* id) : d_() {
@@ -191,6 +191,12 @@ class Effect {
   }
   constexpr Effect& report_json(const char* (*fn)(void*)) {
     d_.report_json = fn;
+    return *this;
+  }
+  // The promise that, offered a frame of colour alone, it asks for nothing more
+  // (PFX_EFFECT_COLOR_ONLY): hosts of video frames then offer it without making an instance.
+  constexpr Effect& color_only() {
+    d_.flags |= PFX_EFFECT_COLOR_ONLY;
     return *this;
   }
 

@@ -1,23 +1,32 @@
-#include "cache_files.hpp"
+// Header-only C++ helpers for plugin authors: files of compiled code a plugin keeps between runs
+// (GL program binaries, a Vulkan pipeline cache): where they live, how a file proves it is whole,
+// and how it is written so that a reader never sees half of one. A folder per kind under
+// $XDG_CACHE_HOME/pfx (else ~/.cache/pfx). A file is an 8-byte magic, a 64-bit FNV-1a checksum of
+// what follows, and its payload; one whose magic or checksum is wrong is treated as absent (the
+// caller builds again and writes it anew). Files are written under a temporary name and renamed
+// when complete, so two processes writing the same file leave one whole file.
+#pragma once
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
 #include <utility>
 #include <vector>
 
-namespace pfx::fx::cache {
+namespace pfx::cache {
 
-namespace fs = std::filesystem;
-
-std::string folder_for(const char* kind) {
-  const char* off = std::getenv("PFX_FX_CACHE");
+// The folder for caches of `kind` ("fx-programs"), or "" when there is no home or the environment
+// variable `off_variable` is "0" (the user's switch for this plugin's caches).
+inline std::string folder_for(const char* kind, const char* off_variable) {
+  const char* off = std::getenv(off_variable);
   if (off && std::strcmp(off, "0") == 0) return "";
   const char* xdg = std::getenv("XDG_CACHE_HOME");
   const char* home = std::getenv("HOME");
@@ -26,13 +35,15 @@ std::string folder_for(const char* kind) {
   return "";
 }
 
-std::uint64_t fnv1a(const std::string& bytes, std::uint64_t seed) {
+// FNV-1a, 64 bits, from a seed.
+inline std::uint64_t fnv1a(const std::string& bytes, std::uint64_t seed = 0xCBF29CE484222325ull) {
   std::uint64_t hash = seed;
   for (unsigned char c : bytes) hash = (hash ^ c) * 0x100000001B3ull;
   return hash;
 }
 
-bool read_checked(const std::string& path, const char* magic, std::string& payload) {
+// The payload of a whole file with `magic` (8 bytes), or false.
+inline bool read_checked(const std::string& path, const char* magic, std::string& payload) {
   std::ifstream file(path, std::ios::binary);
   if (!file) return false;
   std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
@@ -43,7 +54,10 @@ bool read_checked(const std::string& path, const char* magic, std::string& paylo
   return fnv1a(payload) == checksum;
 }
 
-bool write_checked(const std::string& path, const char* magic, const std::string& payload) {
+// Writes the file atomically, creating its folder; false when the disk refuses (a cache is an
+// aid: callers go on without it).
+inline bool write_checked(const std::string& path, const char* magic, const std::string& payload) {
+  namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(fs::path(path).parent_path(), ec);
   static std::atomic<unsigned> counter{0};
@@ -65,7 +79,11 @@ bool write_checked(const std::string& path, const char* magic, const std::string
   return !ec;
 }
 
-void keep_within(const std::string& folder, std::uintmax_t max_bytes) {
+// Deletes the .bin files of `folder` used longest ago (by modification time; a reader touches
+// what it uses) while it holds more than `max_bytes`, down to three quarters of it. Files another
+// process deletes first are passed over.
+inline void keep_within(const std::string& folder, std::uintmax_t max_bytes) {
+  namespace fs = std::filesystem;
   std::error_code ec;
   std::vector<std::pair<fs::file_time_type, fs::path>> files;
   std::uintmax_t total = 0;
@@ -85,4 +103,4 @@ void keep_within(const std::string& folder, std::uintmax_t max_bytes) {
   }
 }
 
-}  // namespace pfx::fx::cache
+}  // namespace pfx::cache
