@@ -50,9 +50,11 @@ RETROARCH_FAILURES = ("Failed to compile", "Failed to link", "Failed to load GLS
                       "Failed to initialize shader", "falling back to stock")
 
 
-# The size the comparison runs at. RetroArch's image viewer gives pfx's picture back byte for byte
-# here, and the tests' presets agree to the code; on a 512x512 picture some of the collection's
-# presets come out differently in RetroArch (the cause is not known yet), so pictures are resized.
+# The size the comparison runs at, one for every picture so that results compare: RetroArch's
+# image viewer gives pfx's picture back byte for byte here, and the tests' presets agree to the
+# code. RetroArch's gl driver holds a picture in a square power-of-two texture (1024x1024 here),
+# pfx in one of its own size: shaders that read texture coordinates without scaling them by
+# InputSize/TextureSize come out differently at any size but a square power of two.
 SIZE = (640, 360)
 
 

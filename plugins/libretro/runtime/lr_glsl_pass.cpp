@@ -62,7 +62,10 @@ void find_uniforms(LrPass& pass, const SemanticContext& context, int feedback_pa
     glGetActiveUniform(pass.program, static_cast<GLuint>(i), sizeof name, nullptr, &size, &type, name);
     std::string id = name;
     if (ends_with(id, "[0]")) id.resize(id.size() - 3);
-    const auto meaning = find_glsl_name(id, context, feedback_pass);
+    auto meaning = find_glsl_name(id, context, feedback_pass);
+    // A sampler RetroArch does not name keeps unit 0, where its gl driver binds the pass's input
+    // (Texture's unit): crt-hyllian reads its input as `s_p`.
+    if (!meaning && type == GL_SAMPLER_2D) meaning = find_glsl_name("Texture", context, feedback_pass);
     const GLint location = glGetUniformLocation(pass.program, name);
     if (!meaning || location < 0) continue;  // not one RetroArch sets: left at its initial value
     if (meaning->texture) {
