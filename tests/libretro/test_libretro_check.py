@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""pfx-libretro-check over the small collection beside this script (collection/: one preset that
+runs, one missing a pass, one whose shader reads its own output of this frame): its rows, its
+summary per folder, its exit status, and that --jobs and --every change how much runs at once and
+how much is checked, not what a row says.
+
+usage: test_libretro_check.py PFX-LIBRETRO-CHECK"""
+import json
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+COLLECTION = os.path.join(HERE, "collection")
+failures = []
+
+
+def check(condition, what):
+    print("%s: %s" % ("ok" if condition else "FAILED", what))
+    if not condition:
+        failures.append(what)
+
+
+def run(tool, *args):
+    result = subprocess.run([tool] + list(args), capture_output=True, text=True)
+    return result.returncode, result.stdout, result.stderr
+
+
+def rows_of(stdout):
+    report = json.loads(stdout)
+    return report, {os.path.relpath(r["preset"], COLLECTION): r for r in report["presets"]}
+
+
+def main():
+    tool = sys.argv[1]
+    status, out, err = run(tool, "--json", COLLECTION)
+    check(status == 1, "a collection with a preset that does not run exits 1 (got %d)" % status)
+    report, rows = rows_of(out)
+    # The listing has the two presets it could read; the one missing a pass is named as not read.
+    check(sorted(rows) == ["broken/noncausal.slangp", "good/darken.slangp"], "rows for the presets listed: %s" % sorted(rows))
+    check(any("missing-pass.slangp" in e for e in report["not_read"]), "the preset missing a pass is named as not read")
+    good = rows.get("good/darken.slangp", {})
+    check(good.get("ran") and good.get("finite") and good.get("changed"),
+          "darken ran, gave finite colour and changed the picture: %s" % good)
+    # Run with its file alone on the path, the row still names the effect as the folder lists it.
+    check(good.get("effect") == "libretro_good_darken", "the row's effect is the folder's id: %s" % good.get("effect"))
+    check(good.get("folder") == "good", "the row's folder is its top-level folder")
+    check(isinstance(good.get("compile_ms"), float) and good["compile_ms"] > 0, "darken's compile time is given")
+    bad = rows.get("broken/noncausal.slangp", {})
+    check(bad.get("ran") is False and "PassOutput0" in bad.get("error", ""),
+          "the non-causal preset did not run, and the row says why: %s" % bad.get("error"))
+    check(report["folders"] == {"broken": {"presets": 1, "ran": 0, "finite": 0, "changed": 0},
+                                "good": {"presets": 1, "ran": 1, "finite": 1, "changed": 1}},
+          "the summary per folder: %s" % report["folders"])
+
+    # Two at a time: the same rows in the same order, times aside.
+    status2, out2, _ = run(tool, "--json", "--jobs", "2", COLLECTION)
+    same = lambda r: {k: v for k, v in r.items() if k not in ("compile_ms", "run_ms")}
+    check(status2 == 1 and [same(r) for r in json.loads(out2)["presets"]] == [same(r) for r in report["presets"]],
+          "--jobs 2 gives the rows --jobs 1 gives")
+
+    # Every second preset: the first of the listing's order only.
+    _, out3, _ = run(tool, "--json", "--every", "2", COLLECTION)
+    checked = [r["effect"] for r in json.loads(out3)["presets"]]
+    check(checked == [report["presets"][0]["effect"]], "--every 2 checks the first of two presets: %s" % checked)
+
+    # The table a person reads, and the good folder alone exits 0.
+    status4, out4, _ = run(tool, os.path.join(COLLECTION, "good"))
+    check(status4 == 0 and "1 presets: 1 ran, 1 finite, 1 changed the picture; 0 could not be read" in out4,
+          "a folder whose presets all run exits 0 with its count line")
+    for bad_args in (["--jobs", "0"], ["--every", "none"], ["/nonexistent/folder"]):
+        status5, _, err5 = run(tool, *bad_args + ([COLLECTION] if bad_args[0].startswith("--") else []))
+        check(status5 == 2 and "pfx-libretro-check:" in err5, "%s is a usage error (2, got %d)" % (" ".join(bad_args), status5))
+
+    print("%d failed" % len(failures) if failures else "all passed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
