@@ -112,10 +112,16 @@ GLuint attribute_array(GLuint program, GLuint vertices) {
 }  // namespace
 
 const std::vector<float>& glsl_vertex_data() {
-  // Strip order; (0, 0) is the target's first row (the picture's top) and TexCoord (0, 0) the
-  // picture's first row, so the picture keeps its way up from pass to pass.
+  // Two strips. TexCoord (0, 0) is always the picture's first row (its top), so the picture keeps
+  // its way up from pass to pass. VertexCoord is as RetroArch's gl driver gives it: for a pass into
+  // a texture (0, 0) is the target's first row, the picture's top; for the pass onto the screen it
+  // is turned over, y = 1 at the picture's top. A shader that makes its texture coordinates from
+  // VertexCoord (cocktail-cabinet does) sees the picture the right way up only so.
   static const std::vector<float> data = {
+      // into a texture of the chain
       0, 0, 0, 0, 1, 1, 1, 1, 1, 0, 1, 0, 1, 1, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+      // into the output
+      0, 1, 0, 0, 1, 1, 1, 1, 1, 1, 1, 0, 1, 1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 0, 1, 1, 1, 1, 1, 1,
   };
   return data;
 }

@@ -3,8 +3,9 @@
 // what it reads is found once it links, by GL's list of the program's active uniforms and
 // attributes, named as RetroArch's gl driver names them (glsl_names.hpp); each sampler gets a
 // texture unit, each value is set with glProgramUniform every frame, and a vertex array feeds the
-// attributes: VertexCoord (0..1 over the target), TexCoord and every `<picture>TexCoord` (0..1
-// over the picture: each texture is its picture's size), Color and COLOR (white).
+// attributes: VertexCoord (0..1 over the target, y turned over onto the output), TexCoord and
+// every `<picture>TexCoord` (0..1 over the picture: each texture is its picture's size), Color and
+// COLOR (white).
 #include <string>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace pfx_libretro {
 bool link_glsl_passes(const LrEffectEntry& entry, std::vector<LrPass>& passes, GLuint vertices,
                       const pfx::gl::ProgramCache& cache, int* from_cache, std::string* error);
 
-// The quad a GLSL pass draws as a strip: per vertex VertexCoord (x, y), TexCoord (u, v), Color.
+// The quads a GLSL pass draws, as two strips (vertices 0-3 into a texture of the chain, 4-7 onto
+// the output): per vertex VertexCoord (x, y), TexCoord (u, v), Color.
 const std::vector<float>& glsl_vertex_data();
 
 // Sets the pass's values for this frame (MVPMatrix, sizes, FrameCount, parameters).

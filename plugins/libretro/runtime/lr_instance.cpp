@@ -34,10 +34,11 @@ constexpr float kIdentity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}
 // Position (x, y) in 0..1 to clip (2x - 1, 1 - 2y): y = 0 at the output's top, since GL counts
 // its rows from the bottom.
 constexpr float kOutputMvp[16] = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, 1, 0, -1, 1, 0, 1};
-// The GLSL form's MVPMatrix: RetroArch's orthographic projection of 0..1 (near -1, far 1), for a
-// pass into a texture; flipped like kOutputMvp for the pass into the output.
+// The GLSL form's MVPMatrix: RetroArch's orthographic projection of 0..1 (near -1, far 1), for
+// every pass. Into a texture, y = 0 lands on its first row (the picture's top); into the output
+// (bottom row first) the output pass's VertexCoord has y = 1 at the picture's top, as
+// glsl_vertex_data() says, so the same matrix puts the top on top.
 constexpr float kGlslMvp[16] = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, -1, 0, -1, -1, 0, 1};
-constexpr float kGlslOutputMvp[16] = {2, 0, 0, 0, 0, -2, 0, 0, 0, 0, -1, 0, -1, 1, 0, 1};
 
 // The host's frame (bottom row first) into the original picture (top row first), each texel the
 // average of taps x taps bilinear samples over its footprint: an exact copy at the same size.
@@ -340,7 +341,7 @@ void LrInstance::run_preset_pass(int index) {
 
   PassValues values;
   if (pass.glsl)
-    values.mvp = plan.to_output ? kGlslOutputMvp : kGlslMvp;
+    values.mvp = kGlslMvp;
   else
     values.mvp = plan.to_output ? kOutputMvp : kIdentity;
   values.output = sizes_[static_cast<std::size_t>(index)];
@@ -365,7 +366,7 @@ void LrInstance::run_preset_pass(int index) {
   bind_samplers(index);
   glUseProgram(pass.program);
   glBindVertexArray(pass.glsl ? pass.glsl_vao : vao_);
-  glDrawArrays(GL_TRIANGLE_STRIP, plan.to_output && !pass.glsl ? 4 : 0, 4);
+  glDrawArrays(GL_TRIANGLE_STRIP, plan.to_output ? 4 : 0, 4);  // each vertex buffer's second strip: onto the output
   if (plan.mipmapped) glGenerateTextureMipmap(textures_.pass_output(index));
 }
 

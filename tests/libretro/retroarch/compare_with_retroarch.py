@@ -21,7 +21,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import retroarch_oracle as oracle  # noqa: E402
 
 W, H = 640, 360
-CASES = ["passthrough", "scale_parameters", "pictures", "frames", "lut", "unnamed_sampler"]
+CASES = ["passthrough", "scale_parameters", "pictures", "frames", "lut", "unnamed_sampler", "vertex_coord"]
 
 
 def picture():
