@@ -2,13 +2,15 @@
 """pfx-libretro-check over the small collection beside this script (collection/: one preset that
 runs, one missing a pass, one whose shader reads its own output of this frame): its rows, its
 summary per folder, its exit status, and that --jobs and --every change how much runs at once and
-how much is checked, not what a row says.
+how much is checked, not what a row says, and that --timeout stops a preset that hangs.
 
 usage: test_libretro_check.py PFX-LIBRETRO-CHECK"""
 import json
 import os
 import subprocess
 import sys
+import tempfile
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 COLLECTION = os.path.join(HERE, "collection")
@@ -68,7 +70,20 @@ def main():
     status4, out4, _ = run(tool, os.path.join(COLLECTION, "good"))
     check(status4 == 0 and "1 presets: 1 ran, 1 finite, 1 changed the picture; 0 could not be read" in out4,
           "a folder whose presets all run exits 0 with its count line")
-    for bad_args in (["--jobs", "0"], ["--every", "none"], ["/nonexistent/folder"]):
+    # A pfx-render that hangs on an effect (as a GL compiler can): the row says it was stopped.
+    with tempfile.TemporaryDirectory() as folder:
+        hanging = os.path.join(folder, "pfx-render")
+        with open(hanging, "w") as f:
+            f.write("#!/bin/sh\nfor a in \"$@\"; do case \"$a\" in libretro_*) sleep 60;; esac; done\n"
+                    "exec '%s' \"$@\"\n" % os.path.join(os.path.dirname(os.path.abspath(tool)), "pfx-render"))
+        os.chmod(hanging, 0o755)
+        started = time.monotonic()
+        status6, out6, _ = run(tool, "--json", "--timeout", "2", "--render", hanging, os.path.join(COLLECTION, "good"))
+        took = time.monotonic() - started
+        row = json.loads(out6)["presets"][0] if status6 == 1 else {}
+        check(not row.get("ran") and "ran past 2 s" in row.get("error", "") and took < 50,
+              "--timeout 2 stops a pfx-render that hangs and says so (%.0f s): %s" % (took, row.get("error")))
+    for bad_args in (["--jobs", "0"], ["--every", "none"], ["--timeout", "-1"], ["/nonexistent/folder"]):
         status5, _, err5 = run(tool, *bad_args + ([COLLECTION] if bad_args[0].startswith("--") else []))
         check(status5 == 2 and "pfx-libretro-check:" in err5, "%s is a usage error (2, got %d)" % (" ".join(bad_args), status5))
 
