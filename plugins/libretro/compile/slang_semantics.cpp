@@ -26,6 +26,13 @@ constexpr Named kValues[] = {
     {"Rotation", SemanticKind::kRotation},
     {"TotalSubFrames", SemanticKind::kTotalSubFrames},
     {"CurrentSubFrame", SemanticKind::kCurrentSubFrame},
+    {"HDRMode", SemanticKind::kHdrMode},
+    {"BrightnessNits", SemanticKind::kBrightnessNits},
+    {"Scanlines", SemanticKind::kScanlines},
+    {"SubpixelLayout", SemanticKind::kSubpixelLayout},
+    {"ExpandGamut", SemanticKind::kExpandGamut},
+    {"InverseTonemap", SemanticKind::kInverseTonemap},
+    {"HDR10", SemanticKind::kHdr10},
     {"OriginalSize", SemanticKind::kOriginalSize},
     {"SourceSize", SemanticKind::kSourceSize},
 };
@@ -150,12 +157,19 @@ SemanticType semantic_type(SemanticKind kind) {
     case SemanticKind::kRotation:
     case SemanticKind::kTotalSubFrames:
     case SemanticKind::kCurrentSubFrame:
+    case SemanticKind::kHdrMode:
+    case SemanticKind::kSubpixelLayout:
+    case SemanticKind::kExpandGamut:
       return SemanticType::kUint;
     case SemanticKind::kFrameDirection:
       return SemanticType::kInt;
     case SemanticKind::kOriginalFps:
     case SemanticKind::kOriginalAspect:
     case SemanticKind::kOriginalAspectRotated:
+    case SemanticKind::kBrightnessNits:
+    case SemanticKind::kScanlines:
+    case SemanticKind::kInverseTonemap:
+    case SemanticKind::kHdr10:
     case SemanticKind::kParameter:
       return SemanticType::kFloat;
     case SemanticKind::kOriginal:

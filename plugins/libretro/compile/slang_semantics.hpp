@@ -26,6 +26,14 @@ enum class SemanticKind {
   kRotation,             // uint, quarter turns
   kTotalSubFrames,       // uint
   kCurrentSubFrame,      // uint
+  // RetroArch's HDR pipeline, which pfx does not have: its values for an SDR display.
+  kHdrMode,         // uint: 0 off, 1 HDR10, 2 scRGB
+  kBrightnessNits,  // float: paper white
+  kScanlines,       // float: the HDR pipeline's own scanlines on (1) or off
+  kSubpixelLayout,  // uint: those scanlines' subpixel order
+  kExpandGamut,     // uint: colour boost, 0 none
+  kInverseTonemap,  // float: on (1) or off
+  kHdr10,           // float: HDR10 conversion on (1) or off
   kParameter,            // float; index into the preset's parameters
   kOriginalSize,         // vec4; the frame's
   kSourceSize,           // vec4; the pass's input

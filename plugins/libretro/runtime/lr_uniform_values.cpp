@@ -8,6 +8,9 @@ using namespace pfx::libretro;
 
 namespace {
 
+// BrightnessNits with the HDR pipeline off: RetroArch's default paper white.
+constexpr float kSdrPaperWhiteNits = 200.0f;
+
 template <typename T>
 void put(std::vector<unsigned char>& bytes, std::uint32_t offset, const T* values, std::size_t count) {
   if (offset + sizeof(T) * count <= bytes.size()) std::memcpy(bytes.data() + offset, values, sizeof(T) * count);
@@ -87,6 +90,26 @@ void write_block_values(const ReflectedBlock& block, const PassValues& values, s
       case SemanticKind::kCurrentSubFrame: {  // one frame shown once: one sub-frame, the first
         const std::uint32_t one = 1;
         put(bytes, at, &one, 1);
+        break;
+      }
+      // pfx hands effects display-referred SDR frames and wants them back so: RetroArch's HDR
+      // pipeline off, which every shader reading these names takes as pass-through.
+      case SemanticKind::kHdrMode:
+      case SemanticKind::kSubpixelLayout:
+      case SemanticKind::kExpandGamut: {
+        const std::uint32_t off = 0;
+        put(bytes, at, &off, 1);
+        break;
+      }
+      case SemanticKind::kScanlines:
+      case SemanticKind::kInverseTonemap:
+      case SemanticKind::kHdr10: {
+        const float off = 0.0f;
+        put(bytes, at, &off, 1);
+        break;
+      }
+      case SemanticKind::kBrightnessNits: {
+        put(bytes, at, &kSdrPaperWhiteNits, 1);
         break;
       }
       case SemanticKind::kParameter: {

@@ -193,6 +193,8 @@ CASES = {
                                expect=lambda p: sizes(H, W, (5, 3), (W, H), (15, 9), (5, 3)), tolerance=0),
     "content_size": dict(preset="passthrough", sets=["content_width=5", "content_height=3"],
                          expect=lambda p: block_means(p, 3, 3), tolerance=1),
+    # HDR off (BrightnessNits 200, the other HDR names 0), one sub-frame, the first, no rotation.
+    "fixed_values": dict(preset="fixed_values", expect=lambda p: solid(H, W, (200, 8, 30)), tolerance=0),
     "top_by_texcoord": dict(preset="top_by_texcoord", expect=lambda p: halves(H, W, 4), tolerance=0),
     "top_by_fragcoord_last": dict(preset="top_by_fragcoord_last", expect=lambda p: halves(H, W, 4), tolerance=0),
     "top_by_fragcoord_chain": dict(preset="top_by_fragcoord_chain", expect=lambda p: halves(H, W, 4), tolerance=0),
