@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""pfx-libretro-check over the small collection beside this script (collection/: one preset that
-runs, one missing a pass, one whose shader reads its own output of this frame): its rows, its
+"""pfx-libretro-check over the small collection beside this script (collection/: three presets that
+run, two of them with names a folder's listing tells apart only by a number, one missing a pass,
+one whose shader reads its own output of this frame): its rows, its
 summary per folder, its exit status, and that --jobs and --every change how much runs at once and
 how much is checked, not what a row says, and that --timeout stops a preset that hangs.
 
@@ -39,7 +40,8 @@ def main():
     check(status == 1, "a collection with a preset that does not run exits 1 (got %d)" % status)
     report, rows = rows_of(out)
     # The listing has the two presets it could read; the one missing a pass is named as not read.
-    check(sorted(rows) == ["broken/noncausal.slangp", "good/darken.slangp"], "rows for the presets listed: %s" % sorted(rows))
+    check(sorted(rows) == ["broken/noncausal.slangp", "good/darken.slangp", "good/twice+dark.slangp",
+                           "good/twice-dark.slangp"], "rows for the presets listed: %s" % sorted(rows))
     check(any("missing-pass.slangp" in e for e in report["not_read"]), "the preset missing a pass is named as not read")
     good = rows.get("good/darken.slangp", {})
     check(good.get("ran") and good.get("finite") and good.get("changed"),
@@ -48,11 +50,16 @@ def main():
     check(good.get("effect") == "libretro_good_darken", "the row's effect is the folder's id: %s" % good.get("effect"))
     check(good.get("folder") == "good", "the row's folder is its top-level folder")
     check(isinstance(good.get("compile_ms"), float) and good["compile_ms"] > 0, "darken's compile time is given")
+    # Alone on the path both are libretro_twice_dark; the rows keep the folder's ids.
+    twins = [rows.get("good/twice+dark.slangp", {}), rows.get("good/twice-dark.slangp", {})]
+    check([t.get("effect") for t in twins] == ["libretro_good_twice_dark", "libretro_good_twice_dark_2"] and
+          all(t.get("ran") and t.get("changed") for t in twins),
+          "two presets whose ids the folder's listing numbers both run: %s" % [t.get("error") for t in twins])
     bad = rows.get("broken/noncausal.slangp", {})
     check(bad.get("ran") is False and "PassOutput0" in bad.get("error", ""),
           "the non-causal preset did not run, and the row says why: %s" % bad.get("error"))
     check(report["folders"] == {"broken": {"presets": 1, "ran": 0, "finite": 0, "changed": 0},
-                                "good": {"presets": 1, "ran": 1, "finite": 1, "changed": 1}},
+                                "good": {"presets": 3, "ran": 3, "finite": 3, "changed": 3}},
           "the summary per folder: %s" % report["folders"])
 
     # Two at a time: the same rows in the same order, times aside.
@@ -61,14 +68,15 @@ def main():
     check(status2 == 1 and [same(r) for r in json.loads(out2)["presets"]] == [same(r) for r in report["presets"]],
           "--jobs 2 gives the rows --jobs 1 gives")
 
-    # Every second preset: the first of the listing's order only.
+    # Every second preset: the first and the third of the listing's order.
     _, out3, _ = run(tool, "--json", "--every", "2", COLLECTION)
     checked = [r["effect"] for r in json.loads(out3)["presets"]]
-    check(checked == [report["presets"][0]["effect"]], "--every 2 checks the first of two presets: %s" % checked)
+    check(checked == [report["presets"][0]["effect"], report["presets"][2]["effect"]],
+          "--every 2 checks the first and third of four presets: %s" % checked)
 
     # The table a person reads, and the good folder alone exits 0.
     status4, out4, _ = run(tool, os.path.join(COLLECTION, "good"))
-    check(status4 == 0 and "1 presets: 1 ran, 1 finite, 1 changed the picture; 0 could not be read" in out4,
+    check(status4 == 0 and "3 presets: 3 ran, 3 finite, 3 changed the picture; 0 could not be read" in out4,
           "a folder whose presets all run exits 0 with its count line")
     # A pfx-render that hangs on an effect (as a GL compiler can): the row says it was stopped.
     with tempfile.TemporaryDirectory() as folder:

@@ -72,8 +72,11 @@ std::string check_preset(const std::string& path) {
 // A failure's kind: its step and message without file names and lines.
 std::string kind_of(const std::string& failure) {
   std::string kind = failure;
-  for (std::size_t at; (at = kind.find('/')) != std::string::npos;) {
-    const std::size_t end = kind.find(": ", at);
+  for (std::size_t slash; (slash = kind.find('/')) != std::string::npos;) {
+    // The whole path, from the start of its word: a relative one starts before its first '/'.
+    const std::size_t space = slash == 0 ? std::string::npos : kind.rfind(' ', slash);
+    const std::size_t at = space == std::string::npos ? 0 : space + 1;
+    const std::size_t end = kind.find(": ", slash);
     kind.erase(at, end == std::string::npos ? std::string::npos : end + 2 - at);
   }
   return kind.substr(0, 160);
