@@ -93,7 +93,8 @@ def main():
               "--timeout 2 stops a pfx-render that hangs and says so (%.0f s): %s" % (took, row.get("error")))
     for bad_args in (["--jobs", "0"], ["--every", "none"], ["--timeout", "-1"], ["/nonexistent/folder"]):
         status5, _, err5 = run(tool, *bad_args + ([COLLECTION] if bad_args[0].startswith("--") else []))
-        check(status5 == 2 and "pfx-libretro-check:" in err5, "%s is a usage error (2, got %d)" % (" ".join(bad_args), status5))
+        check(status5 == 2 and "pfx-libretro-check:" in err5,
+              "%s is a usage error (2, got %d)" % (" ".join(bad_args), status5))
 
     print("%d failed" % len(failures) if failures else "all passed")
     return 1 if failures else 0
